@@ -1,0 +1,101 @@
+"""The plug-in interface every controller under test implements.
+
+A controller sees only what a real robot would: its odometry, its laser scan and the static map it was given;
+never the simulator's true state. The mission executor hands it one goal at a time and reads its status, the way
+an action client talks to a navigation action server (thesis 4.3.2, 5.1.6.4).
+
+User controllers register under the entry-point group ``rei.controllers`` (name -> factory taking a ``str``
+argument, the text after ``name:`` on the command line).
+"""
+
+from __future__ import annotations
+
+import enum
+from abc import ABC, abstractmethod
+from dataclasses import dataclass
+
+import numpy as np
+
+from rei.geometry import Pose2D, Twist2D
+
+
+class NavStatus(enum.Enum):
+    """State of the navigation action (thesis Fig. 22); names match the wire protocol's ``nav_state``."""
+
+    IDLE = "IDLE"
+    ACTIVE = "ACTIVE"
+    SUCCEEDED = "SUCCEEDED"
+    ABORTED = "ABORTED"
+    CANCELLED = "CANCELLED"
+
+
+@dataclass(frozen=True, slots=True)
+class LaserScan:
+    """One planar scan. Beam i points at ``angle_min + i * angle_increment`` in the robot frame.
+
+    Ranges beyond ``range_max`` (nothing hit) are reported as ``inf``.
+    """
+
+    t: float
+    angle_min: float
+    angle_increment: float
+    range_min: float
+    range_max: float
+    ranges: np.ndarray
+
+
+@dataclass(frozen=True, slots=True)
+class Observation:
+    """What the robot knows at one control step."""
+
+    t: float
+    odom: Pose2D
+    odom_twist: Twist2D
+    scan: LaserScan | None
+
+
+@dataclass(frozen=True, slots=True)
+class NavGoal:
+    """A navigation goal in the world frame, with the tolerance the mission accepts."""
+
+    index: int
+    pose: Pose2D
+    tolerance: float
+
+
+@dataclass(frozen=True, slots=True)
+class StaticMap:
+    """What a controller may know in advance: the static world (walls, furniture), as footprint boxes.
+
+    Each obstacle is ``(x, y, yaw, size_x, size_y)`` of an oriented rectangle; cylinders come as their bounding
+    square. ``bounds`` is ``(xmin, ymin, xmax, ymax)`` of the floors. Humans and other moving objects are not in it.
+    """
+
+    bounds: tuple[float, float, float, float]
+    obstacles: tuple[tuple[float, float, float, float, float], ...]
+    robot_size: tuple[float, float]
+
+
+class Controller(ABC):
+    """A robot controller under test, stepped by the simulation at its control rate."""
+
+    @abstractmethod
+    def reset(self, static_map: StaticMap, start: Pose2D) -> None:
+        """Called once before the mission starts."""
+
+    @abstractmethod
+    def set_goal(self, goal: NavGoal) -> None:
+        """Start working on a new goal; the status becomes ACTIVE."""
+
+    @abstractmethod
+    def cancel(self) -> None:
+        """Withdraw the current goal (the mission executor's timeout); the status becomes CANCELLED."""
+
+    @abstractmethod
+    def step(self, observation: Observation) -> Twist2D:
+        """Return the velocity command for the next control period."""
+
+    @property
+    @abstractmethod
+    def status(self) -> NavStatus:
+        """Current state of the navigation action."""
