@@ -1,0 +1,136 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.dsl.derived;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import org.rei.context.AsciiLayout;
+import org.rei.context.BuildingBlock;
+import org.rei.context.ContextFactory;
+import org.rei.context.Floor;
+import org.rei.context.GridLayout;
+import org.rei.context.Layout;
+import org.rei.context.Wall;
+
+/**
+ * Turns a compact room description into the explicit floor graph of the context metamodel: floor F_x_y on every
+ * cell (x from the left, y from the bottom) with its neighbours, and a wall W_x_y_side on every side that borders
+ * no floor.
+ */
+public final class RoomDesugaring {
+
+	/** Map characters that are not floors; everything else that is not blank is a floor. */
+	static final char WALL_CHAR = '#';
+
+	private RoomDesugaring() {
+	}
+
+	public static List<BuildingBlock> blocksOf(Layout layout) {
+		if (layout instanceof GridLayout grid) {
+			return build(fullGrid(grid.getColumns(), grid.getRows()));
+		}
+		if (layout instanceof AsciiLayout ascii) {
+			return build(cellsOf(ascii.getMap()));
+		}
+		return List.of();
+	}
+
+	public static String floorName(int x, int y) {
+		return "F_" + x + "_" + y;
+	}
+
+	public static String wallName(int x, int y, String side) {
+		return "W_" + x + "_" + y + "_" + side;
+	}
+
+	private static boolean[][] fullGrid(int columns, int rows) {
+		boolean[][] cells = new boolean[Math.max(columns, 0)][Math.max(rows, 0)];
+		for (boolean[] column : cells) {
+			java.util.Arrays.fill(column, true);
+		}
+		return cells;
+	}
+
+	/**
+	 * Cells of a drawn map, indexed [x][y]: the bottom line is row 0, and the drawing is cropped to its floors so
+	 * that the bottom-left floor is F_0_0 whatever border is drawn around it.
+	 */
+	static boolean[][] cellsOf(String map) {
+		List<String> lines = map == null ? List.of() : map.lines().toList();
+		int height = lines.size();
+		int width = lines.stream().mapToInt(String::length).max().orElse(0);
+		int minX = Integer.MAX_VALUE, minY = Integer.MAX_VALUE, maxX = -1, maxY = -1;
+		boolean[][] drawn = new boolean[width][height];
+		for (int row = 0; row < height; row++) {
+			String line = lines.get(row);
+			int y = height - 1 - row;
+			for (int x = 0; x < line.length(); x++) {
+				char c = line.charAt(x);
+				if (!Character.isWhitespace(c) && c != WALL_CHAR) {
+					drawn[x][y] = true;
+					minX = Math.min(minX, x);
+					maxX = Math.max(maxX, x);
+					minY = Math.min(minY, y);
+					maxY = Math.max(maxY, y);
+				}
+			}
+		}
+		if (maxX < 0) {
+			return new boolean[0][0];
+		}
+		boolean[][] cells = new boolean[maxX - minX + 1][maxY - minY + 1];
+		for (int x = minX; x <= maxX; x++) {
+			for (int y = minY; y <= maxY; y++) {
+				cells[x - minX][y - minY] = drawn[x][y];
+			}
+		}
+		return cells;
+	}
+
+	private static List<BuildingBlock> build(boolean[][] cells) {
+		int width = cells.length;
+		int height = width == 0 ? 0 : cells[0].length;
+		Floor[][] floors = new Floor[width][height];
+		List<BuildingBlock> blocks = new ArrayList<>();
+		for (int y = 0; y < height; y++) {
+			for (int x = 0; x < width; x++) {
+				if (cells[x][y]) {
+					Floor floor = DerivedMarker.mark(ContextFactory.eINSTANCE.createFloor());
+					floor.setName(floorName(x, y));
+					floors[x][y] = floor;
+					blocks.add(floor);
+				}
+			}
+		}
+		List<BuildingBlock> walls = new ArrayList<>();
+		for (int y = 0; y < height; y++) {
+			for (int x = 0; x < width; x++) {
+				Floor floor = floors[x][y];
+				if (floor == null) {
+					continue;
+				}
+				floor.setTop(neighbour(floors, x, y + 1, x, y, "top", walls));
+				floor.setRight(neighbour(floors, x + 1, y, x, y, "right", walls));
+				floor.setBottom(neighbour(floors, x, y - 1, x, y, "bottom", walls));
+				floor.setLeft(neighbour(floors, x - 1, y, x, y, "left", walls));
+			}
+		}
+		blocks.addAll(walls);
+		return blocks;
+	}
+
+	private static BuildingBlock neighbour(Floor[][] floors, int nx, int ny, int x, int y, String side,
+			List<BuildingBlock> walls) {
+		boolean inside = nx >= 0 && ny >= 0 && nx < floors.length && ny < floors[nx].length;
+		if (inside && floors[nx][ny] != null) {
+			return floors[nx][ny];
+		}
+		Wall wall = DerivedMarker.mark(ContextFactory.eINSTANCE.createWall());
+		wall.setName(wallName(x, y, side));
+		walls.add(wall);
+		return wall;
+	}
+}

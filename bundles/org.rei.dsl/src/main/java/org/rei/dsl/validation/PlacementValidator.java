@@ -1,0 +1,100 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.dsl.validation;
+
+import java.util.HashMap;
+import java.util.Map;
+
+import org.eclipse.emf.ecore.EReference;
+import org.eclipse.xtext.validation.Check;
+import org.rei.catalogue.ObjectCategory;
+import org.rei.catalogue.ObjectType;
+import org.rei.catalogue.RobotType;
+import org.rei.context.ContextPackage;
+import org.rei.context.DynamicObject;
+import org.rei.context.Environment;
+import org.rei.context.Floor;
+import org.rei.context.Human;
+import org.rei.context.PhysicalObject;
+import org.rei.context.Robot;
+import org.rei.context.SimulationObject;
+import org.rei.context.StaticObject;
+import org.rei.context.Wall;
+
+/** Objects stand on floor centres, one per floor, and their catalogue types fit the role they play. */
+public class PlacementValidator extends ReiCheckBase {
+
+	@Check
+	public void checkTypeFitsRole(SimulationObject object) {
+		ObjectType type = object.getType();
+		if (type == null || type.eIsProxy()) {
+			return; // untyped floors, walls and humans get the catalogue defaults; unknown names are linking errors
+		}
+		ObjectCategory expected = expectedCategory(object);
+		boolean robotMismatch = object instanceof Robot && !(type instanceof RobotType);
+		if (type.getCategory() != expected || robotMismatch) {
+			error("Type " + type.getName() + " is a " + type.getCategory() + " type, but '" + object.getName()
+					+ "' needs a " + expected + " type", object, ContextPackage.Literals.SIMULATION_OBJECT__TYPE,
+					ReiIssueCodes.TYPE_CATEGORY);
+		}
+	}
+
+	@Check
+	public void checkOneObjectPerFloor(Environment environment) {
+		Map<Floor, PhysicalObject> occupants = new HashMap<>();
+		for (PhysicalObject object : environment.getOwnedObjects()) {
+			occupy(occupants, object);
+		}
+		if (environment.getOwnedRobot() != null) {
+			occupy(occupants, environment.getOwnedRobot());
+		}
+	}
+
+	private void occupy(Map<Floor, PhysicalObject> occupants, PhysicalObject object) {
+		Floor floor = startFloor(object);
+		if (floor == null || floor.eIsProxy()) {
+			return;
+		}
+		PhysicalObject first = occupants.putIfAbsent(floor, object);
+		if (first != null) {
+			EReference feature = object instanceof DynamicObject ? ContextPackage.Literals.DYNAMIC_OBJECT__OWNED_TRAJECTORY
+					: ContextPackage.Literals.PHYSICAL_OBJECT__FLOOR;
+			error("Floor " + floor.getName() + " is already taken by '" + first.getName()
+					+ "': expected a free floor, one object per floor centre", object, feature,
+					ReiIssueCodes.FLOOR_OCCUPIED);
+		}
+	}
+
+	/** Where an object stands at the start: its floor, or the first control point of its trajectory. */
+	static Floor startFloor(PhysicalObject object) {
+		if (object instanceof DynamicObject dynamic && dynamic.getOwnedTrajectory() != null
+				&& !dynamic.getOwnedTrajectory().getOwnedControlPoints().isEmpty()) {
+			return dynamic.getOwnedTrajectory().getOwnedControlPoints().get(0).getFloor();
+		}
+		return object.getFloor();
+	}
+
+	private static ObjectCategory expectedCategory(SimulationObject object) {
+		if (object instanceof Floor) {
+			return ObjectCategory.FLOOR;
+		}
+		if (object instanceof Wall) {
+			return ObjectCategory.WALL;
+		}
+		if (object instanceof Human) {
+			return ObjectCategory.HUMAN;
+		}
+		if (object instanceof DynamicObject) {
+			return ObjectCategory.DYNAMIC;
+		}
+		if (object instanceof Robot) {
+			return ObjectCategory.ROBOT;
+		}
+		if (object instanceof StaticObject) {
+			return ObjectCategory.STATIC;
+		}
+		throw new IllegalArgumentException("unexpected element " + object.eClass().getName());
+	}
+}

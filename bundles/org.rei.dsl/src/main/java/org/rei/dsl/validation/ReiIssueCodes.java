@@ -1,0 +1,27 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.dsl.validation;
+
+/** Codes of the issues the validators report; tests and quick fixes key on these, not on message text. */
+public interface ReiIssueCodes {
+	String PREFIX = "org.rei.dsl.";
+
+	String DUPLICATE_NAME = PREFIX + "duplicateName";
+	String MISSING_ROBOT = PREFIX + "missingRobot";
+	String MULTIPLE_ROBOTS = PREFIX + "multipleRobots";
+	String BLOCKS_WITH_LAYOUT = PREFIX + "blocksWithLayout";
+	String EMPTY_LAYOUT = PREFIX + "emptyLayout";
+	String NON_POSITIVE = PREFIX + "nonPositive";
+	String TYPE_CATEGORY = PREFIX + "typeCategory";
+	String FLOOR_OCCUPIED = PREFIX + "floorOccupied";
+	String TRAJECTORY_TOO_SHORT = PREFIX + "trajectoryTooShort";
+	String TRAJECTORY_TIME_ORDER = PREFIX + "trajectoryTimeOrder";
+	String NEGATIVE_TIME = PREFIX + "negativeTime";
+	String MISSING_MISSION = PREFIX + "missingMission";
+	String TOO_FEW_GOALS = PREFIX + "tooFewGoals";
+	String GOAL_UNREACHABLE = PREFIX + "goalUnreachable";
+	String GOAL_OCCUPIED = PREFIX + "goalOccupied";
+	String THRESHOLD_ORDER = PREFIX + "thresholdOrder";
+}
