@@ -1,0 +1,124 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.cli;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+import org.eclipse.emf.common.util.URI;
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.EStructuralFeature;
+import org.eclipse.xtext.nodemodel.INode;
+import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
+import org.eclipse.xtext.resource.XtextResource;
+import org.eclipse.xtext.resource.XtextResourceSet;
+import org.eclipse.xtext.util.CancelIndicator;
+import org.eclipse.xtext.validation.CheckMode;
+import org.eclipse.xtext.validation.IResourceValidator;
+import org.eclipse.xtext.validation.Issue;
+import org.rei.context.TestCase;
+import org.rei.context.layout.LayoutProblem;
+import org.rei.dsl.ReiStandaloneSetup;
+import org.rei.generator.ArtifactGenerator;
+import org.rei.generator.GenerationException;
+import org.rei.generator.GeneratorOptions;
+
+import com.google.inject.Injector;
+
+/**
+ * Validates a .rei file and generates its artifacts, outside any IDE. Used by the command line and by the Maven
+ * plugin; one instance can process many files (the language is set up once).
+ */
+public final class HeadlessGenerator {
+
+	/** What came of one file: its diagnostics and, when it generated, the files written. */
+	public record Result(List<Diagnostic> diagnostics, List<Path> written) {
+		public boolean hasErrors() {
+			return diagnostics.stream().anyMatch(Diagnostic::isError);
+		}
+	}
+
+	private final Injector injector;
+	private final ArtifactGenerator generator;
+
+	public HeadlessGenerator(Path templateOverrides) {
+		this.injector = ReiStandaloneSetup.doSetup();
+		this.generator = new ArtifactGenerator(new GeneratorOptions(templateOverrides));
+	}
+
+	/** Parses and validates; the file must exist (callers report missing files themselves). */
+	public Result validate(Path file) {
+		return new Result(diagnostics(file, load(file)), List.of());
+	}
+
+	/** Validates, then writes the artifacts into {@code outputDir} when there is no error. */
+	public Result generate(Path file, Path outputDir) throws IOException {
+		XtextResource resource = load(file);
+		List<Diagnostic> diagnostics = diagnostics(file, resource);
+		if (diagnostics.stream().anyMatch(Diagnostic::isError)) {
+			return new Result(diagnostics, List.of());
+		}
+		Files.createDirectories(outputDir);
+		try {
+			return new Result(diagnostics, generator.generate((TestCase) resource.getContents().get(0), outputDir));
+		} catch (GenerationException e) {
+			List<Diagnostic> all = new ArrayList<>(diagnostics);
+			if (e.problems().isEmpty()) {
+				all.add(new Diagnostic(file, 1, 1, Diagnostic.Severity.ERROR, e.getMessage(), null));
+			}
+			for (LayoutProblem problem : e.problems()) {
+				all.add(at(file, problem.element(), problem.feature(), problem.message(), problem.code()));
+			}
+			return new Result(all, List.of());
+		}
+	}
+
+	private XtextResource load(Path file) {
+		XtextResourceSet resourceSet = injector.getInstance(XtextResourceSet.class);
+		return (XtextResource) resourceSet.getResource(URI.createFileURI(file.toAbsolutePath().toString()), true);
+	}
+
+	private List<Diagnostic> diagnostics(Path file, XtextResource resource) {
+		IResourceValidator validator = resource.getResourceServiceProvider().getResourceValidator();
+		List<Diagnostic> result = new ArrayList<>();
+		for (Issue issue : validator.validate(resource, CheckMode.ALL, CancelIndicator.NullImpl)) {
+			Diagnostic.Severity severity = switch (issue.getSeverity()) {
+			case ERROR -> Diagnostic.Severity.ERROR;
+			case WARNING -> Diagnostic.Severity.WARNING;
+			default -> null;
+			};
+			if (severity != null) {
+				result.add(new Diagnostic(file, orOne(issue.getLineNumber()), orOne(issue.getColumn()), severity,
+						issue.getMessage(), issue.getCode()));
+			}
+		}
+		if (result.isEmpty() && resource.getContents().isEmpty()) {
+			result.add(new Diagnostic(file, 1, 1, Diagnostic.Severity.ERROR, "Expected a test case: 'testcase NAME { ... }'", null));
+		}
+		return result;
+	}
+
+	private static Diagnostic at(Path file, EObject element, EStructuralFeature feature, String message, String code) {
+		List<INode> nodes = feature == null ? List.of() : NodeModelUtils.findNodesForFeature(element, feature);
+		INode node = nodes.isEmpty() ? NodeModelUtils.findActualNodeFor(element) : nodes.get(0);
+		for (EObject e = element; node == null && e != null; e = e.eContainer()) {
+			node = NodeModelUtils.findActualNodeFor(e);
+		}
+		int line = node == null ? 1 : node.getStartLine();
+		int column = 1;
+		if (node != null) {
+			String text = node.getRootNode().getText();
+			column = node.getOffset() - text.lastIndexOf('\n', node.getOffset() - 1);
+		}
+		return new Diagnostic(file, line, column, Diagnostic.Severity.ERROR, message, code);
+	}
+
+	private static int orOne(Integer value) {
+		return value == null || value < 1 ? 1 : value;
+	}
+}

@@ -1,0 +1,186 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.cli;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * {@code rei-cli validate FILE...} and {@code rei-cli generate FILE -o DIR [--templates DIR]}.
+ * Exit codes: 0 fine, 1 the test case has errors, 2 the command itself is wrong or a file cannot be read or written.
+ */
+public final class Main {
+
+	static final int OK = 0;
+	static final int INVALID = 1;
+	static final int USAGE = 2;
+
+	private static final String USAGE_TEXT = """
+			usage: rei-cli validate FILE.rei [FILE.rei ...] [--quiet] [--repeat N]
+			       rei-cli generate FILE.rei -o OUTDIR [--templates DIR] [--quiet] [--repeat N]
+			  --templates DIR  EGL templates in DIR replace the built-in ones of the same name
+			  --repeat N       run N times in one process and print each run's time (for benchmarks)
+			  --quiet          print diagnostics only
+			exit codes: 0 ok, 1 the test case has errors, 2 bad command or unreadable/unwritable files""";
+
+	private final PrintStream out;
+	private final PrintStream err;
+
+	Main(PrintStream out, PrintStream err) {
+		this.out = out;
+		this.err = err;
+	}
+
+	public static void main(String[] args) {
+		System.exit(new Main(System.out, System.err).run(args));
+	}
+
+	int run(String[] args) {
+		Options options;
+		try {
+			options = Options.parse(args);
+		} catch (IllegalArgumentException e) {
+			err.println("rei-cli: " + e.getMessage());
+			err.println(USAGE_TEXT);
+			return USAGE;
+		}
+		if (options.help) {
+			out.println(USAGE_TEXT);
+			return OK;
+		}
+		for (Path file : options.files) {
+			if (!Files.isRegularFile(file) || !Files.isReadable(file)) {
+				err.println("rei-cli: cannot read " + file + ": no such file");
+				return USAGE;
+			}
+		}
+		HeadlessGenerator generator = new HeadlessGenerator(options.templates);
+		int status = OK;
+		for (int iteration = 1; iteration <= options.repeat; iteration++) {
+			long start = System.nanoTime();
+			status = runOnce(generator, options, iteration == options.repeat);
+			if (options.repeat > 1) {
+				out.printf(Locale.ROOT, "iteration %d: %.1f ms%n", iteration, (System.nanoTime() - start) / 1e6);
+			}
+			if (status == USAGE) {
+				break;
+			}
+		}
+		return status;
+	}
+
+	private int runOnce(HeadlessGenerator generator, Options options, boolean report) {
+		int status = OK;
+		for (Path file : options.files) {
+			HeadlessGenerator.Result result;
+			try {
+				result = options.command.equals("generate") ? generator.generate(file, options.output)
+						: generator.validate(file);
+			} catch (IOException e) {
+				err.println("rei-cli: cannot write " + options.output + ": " + e.getMessage());
+				return USAGE;
+			}
+			if (report) {
+				result.diagnostics().forEach(err::println);
+				if (!options.quiet) {
+					result.written().forEach(path -> out.println("wrote " + path));
+				}
+			}
+			if (result.hasErrors()) {
+				status = INVALID;
+			}
+		}
+		if (report && !options.quiet && status == OK && options.command.equals("validate")) {
+			out.println(options.files.size() == 1 ? options.files.get(0) + " is valid"
+					: options.files.size() + " test cases are valid");
+		}
+		return status;
+	}
+
+	/** The parsed command line. */
+	private static final class Options {
+		String command;
+		final List<Path> files = new ArrayList<>();
+		Path output;
+		Path templates;
+		boolean quiet;
+		boolean help;
+		int repeat = 1;
+
+		static Options parse(String[] args) {
+			Options o = new Options();
+			for (int i = 0; i < args.length; i++) {
+				String arg = args[i];
+				switch (arg) {
+				case "-h", "--help" -> o.help = true;
+				case "-q", "--quiet" -> o.quiet = true;
+				case "-o", "--output" -> o.output = Path.of(value(args, ++i, arg));
+				case "--templates" -> o.templates = Path.of(value(args, ++i, arg));
+				case "--repeat" -> o.repeat = positive(value(args, ++i, arg), arg);
+				default -> {
+					if (arg.startsWith("-")) {
+						throw new IllegalArgumentException("unknown option " + arg);
+					} else if (o.command == null) {
+						o.command = arg;
+					} else {
+						o.files.add(Path.of(arg));
+					}
+				}
+				}
+			}
+			if (o.help) {
+				return o;
+			}
+			if (o.command == null || !(o.command.equals("validate") || o.command.equals("generate"))) {
+				throw new IllegalArgumentException(o.command == null ? "expected a command"
+						: "unknown command '" + o.command + "': expected validate or generate");
+			}
+			if (o.files.isEmpty()) {
+				throw new IllegalArgumentException("expected a .rei file");
+			}
+			for (Path file : o.files) {
+				if (!file.toString().endsWith(".rei")) {
+					throw new IllegalArgumentException("expected a .rei file, got " + file);
+				}
+			}
+			if (o.command.equals("generate")) {
+				if (o.output == null) {
+					throw new IllegalArgumentException("generate needs an output folder: -o OUTDIR");
+				}
+				if (o.files.size() != 1) {
+					throw new IllegalArgumentException("generate takes one .rei file");
+				}
+			}
+			if (o.templates != null && !Files.isDirectory(o.templates)) {
+				throw new IllegalArgumentException("--templates " + o.templates + " is not a folder");
+			}
+			return o;
+		}
+
+		private static String value(String[] args, int i, String option) {
+			if (i >= args.length) {
+				throw new IllegalArgumentException(option + " needs a value");
+			}
+			return args[i];
+		}
+
+		private static int positive(String text, String option) {
+			try {
+				int n = Integer.parseInt(text);
+				if (n >= 1) {
+					return n;
+				}
+			} catch (NumberFormatException e) {
+				// reported below
+			}
+			throw new IllegalArgumentException(option + " expects a whole number of at least 1, got " + text);
+		}
+	}
+}
