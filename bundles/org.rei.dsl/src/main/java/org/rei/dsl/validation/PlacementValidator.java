@@ -53,7 +53,7 @@ public class PlacementValidator extends ReiCheckBase {
 	}
 
 	private void occupy(Map<Floor, PhysicalObject> occupants, PhysicalObject object) {
-		Floor floor = startFloor(object);
+		Floor floor = object.startFloor();
 		if (floor == null || floor.eIsProxy()) {
 			return;
 		}
@@ -65,15 +65,6 @@ public class PlacementValidator extends ReiCheckBase {
 					+ "': expected a free floor, one object per floor centre", object, feature,
 					ReiIssueCodes.FLOOR_OCCUPIED);
 		}
-	}
-
-	/** Where an object stands at the start: its floor, or the first control point of its trajectory. */
-	static Floor startFloor(PhysicalObject object) {
-		if (object instanceof DynamicObject dynamic && dynamic.getOwnedTrajectory() != null
-				&& !dynamic.getOwnedTrajectory().getOwnedControlPoints().isEmpty()) {
-			return dynamic.getOwnedTrajectory().getOwnedControlPoints().get(0).getFloor();
-		}
-		return object.getFloor();
 	}
 
 	private static ObjectCategory expectedCategory(SimulationObject object) {

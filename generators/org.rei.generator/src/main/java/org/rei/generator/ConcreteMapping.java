@@ -1,0 +1,257 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.generator;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+import org.eclipse.emf.common.util.URI;
+import org.eclipse.emf.ecore.resource.Resource;
+import org.eclipse.emf.ecore.resource.impl.ResourceImpl;
+import org.rei.catalogue.Catalogue;
+import org.rei.catalogue.ObjectCategory;
+import org.rei.catalogue.ObjectType;
+import org.rei.catalogue.Shape;
+import org.rei.catalogue.util.Catalogues;
+import org.rei.context.BuildingBlock;
+import org.rei.context.ControlPoint;
+import org.rei.context.DynamicObject;
+import org.rei.context.Environment;
+import org.rei.context.Floor;
+import org.rei.context.Human;
+import org.rei.context.Mission;
+import org.rei.context.NavigationTask;
+import org.rei.context.PhysicalObject;
+import org.rei.context.Robot;
+import org.rei.context.StaticObject;
+import org.rei.context.Task;
+import org.rei.context.TestCase;
+import org.rei.context.Wall;
+import org.rei.context.layout.FloorLayout;
+import org.rei.context.layout.WallPlacement;
+import org.rei.mission.GeometricGoal;
+import org.rei.mission.MissionDescription;
+import org.rei.mission.MissionFactory;
+import org.rei.mission.Pose2D;
+import org.rei.runtime.ConcreteEnvironment;
+import org.rei.runtime.ConcreteObject;
+import org.rei.runtime.Pose;
+import org.rei.runtime.RuntimeFactory;
+
+/**
+ * The model-to-model step: abstract test case + floor layout to the concrete environment (every body with its
+ * pose and size) and the concrete mission (goals as world-frame poses), thesis 4.1.3 and 4.3.1.
+ */
+final class ConcreteMapping {
+
+	/** Result of one mapping; the EGL templates read these. */
+	record Result(ConcreteEnvironment environment, MissionDescription mission, List<ConcreteObject> bodies,
+			List<ConcreteObject> floors, ConcreteObject robot, List<DynamicObject> animated,
+			Map<PhysicalObject, ConcreteObject> concrete, List<ObjectType> types) {
+	}
+
+	private final ObjectType floorType;
+	private final ObjectType wallType;
+	private final ObjectType humanType;
+	private final ObjectType robotType;
+
+	ConcreteMapping(Catalogue defaults) {
+		this.floorType = require(defaults, "Floor");
+		this.wallType = require(defaults, "Wall");
+		this.humanType = require(defaults, "Human");
+		this.robotType = require(defaults, "Waffle");
+	}
+
+	private static ObjectType require(Catalogue catalogue, String name) {
+		return Catalogues.find(catalogue, name)
+				.orElseThrow(() -> new IllegalStateException("default catalogue has no " + name + " type"));
+	}
+
+	/** The type used for walls without one; the layout must agree with the generator on wall thickness. */
+	ObjectType defaultWallType() {
+		return wallType;
+	}
+
+	Result map(TestCase testCase, FloorLayout layout) throws GenerationException {
+		Environment env = testCase.getOwnedEnvironment();
+		double size = env.getFloorSize();
+		ConcreteEnvironment world = RuntimeFactory.eINSTANCE.createConcreteEnvironment();
+		world.setName(env.getName());
+		world.setFloorSize(size);
+		List<ConcreteObject> bodies = new ArrayList<>();
+		List<ConcreteObject> floors = new ArrayList<>();
+		List<DynamicObject> animated = new ArrayList<>();
+		Map<PhysicalObject, ConcreteObject> concrete = new HashMap<>();
+		Map<String, ObjectType> types = new LinkedHashMap<>();
+
+		for (BuildingBlock block : env.getOwnedBlocks()) {
+			ConcreteObject body;
+			if (block instanceof Floor floor) {
+				ObjectType type = typeOf(floor.getType(), floorType, types);
+				double[] centre = layout.centreOf(floor);
+				// the floor's top surface is z = 0
+				body = body(floor.getName(), type, ObjectCategory.FLOOR, size, size, type.getSizeZ(), centre[0],
+						centre[1], -type.getSizeZ() / 2, 0, floor);
+				floors.add(body);
+			} else if (block instanceof Wall wall) {
+				WallPlacement p = layout.placementOf(wall)
+						.orElseThrow(() -> new GenerationException("wall " + wall.getName() + " has no place"));
+				typeOf(p.type(), wallType, types);
+				body = body(wall.getName(), p.type(), ObjectCategory.WALL, p.sizeX(), p.sizeY(), p.sizeZ(), p.x(),
+						p.y(), p.z(), 0, p.floor());
+			} else {
+				continue;
+			}
+			bodies.add(body);
+		}
+		for (PhysicalObject object : env.getOwnedObjects()) {
+			ConcreteObject body = physical(object, layout, types);
+			bodies.add(body);
+			concrete.put(object, body);
+			if (object instanceof DynamicObject dynamic) {
+				checkTrajectory(dynamic, layout);
+				animated.add(dynamic);
+			}
+		}
+		world.getOwnedObjects().addAll(bodies);
+		ConcreteObject robot = null;
+		if (env.getOwnedRobot() != null) {
+			robot = physical(env.getOwnedRobot(), layout, types);
+			world.getOwnedObjects().add(robot); // last: it is no entry of objects[] but a body of the world
+		}
+		MissionDescription mission = mission(testCase, env, robot, layout);
+		contain(world, "world.runtime");
+		contain(mission, "mission.mission");
+		return new Result(world, mission, bodies, floors, robot, animated, concrete, List.copyOf(types.values()));
+	}
+
+	/** InMemoryEmfModel needs a resource; nothing is ever saved. */
+	private static void contain(org.eclipse.emf.ecore.EObject root, String name) {
+		Resource resource = new ResourceImpl(URI.createURI("rei:/" + name));
+		resource.getContents().add(root);
+	}
+
+	private ConcreteObject physical(PhysicalObject object, FloorLayout layout, Map<String, ObjectType> types)
+			throws GenerationException {
+		Floor floor = object.startFloor();
+		if (floor == null || layout.cellOf(floor).isEmpty()) {
+			throw new GenerationException(object.getName() + " does not stand on a floor of the room");
+		}
+		ObjectCategory category;
+		ObjectType fallback;
+		if (object instanceof Robot) {
+			category = ObjectCategory.ROBOT;
+			fallback = robotType;
+		} else if (object instanceof Human) {
+			category = ObjectCategory.HUMAN;
+			fallback = humanType;
+		} else if (object instanceof DynamicObject) {
+			category = ObjectCategory.DYNAMIC;
+			fallback = null;
+		} else if (object instanceof StaticObject) {
+			category = ObjectCategory.STATIC;
+			fallback = null;
+		} else {
+			throw new GenerationException("unknown kind of object: " + object.eClass().getName());
+		}
+		if (object.getType() == null && fallback == null) {
+			throw new GenerationException(object.getName() + " has no type");
+		}
+		ObjectType type = typeOf(object.getType(), fallback, types);
+		double[] centre = layout.centreOf(floor);
+		double sizeX = type.getSizeX();
+		double sizeY = type.getShape() == Shape.CYLINDER ? sizeX : type.getSizeY();
+		// bodies are posed at their centre, the robot at its base on the ground
+		double z = category == ObjectCategory.ROBOT ? 0 : type.getSizeZ() / 2;
+		return body(object.getName(), type, category, sizeX, sizeY, type.getSizeZ(), centre[0], centre[1], z,
+				Math.toRadians(object.getYaw()), floor);
+	}
+
+	private static ObjectType typeOf(ObjectType declared, ObjectType fallback, Map<String, ObjectType> used) {
+		ObjectType type = declared != null ? declared : fallback;
+		used.putIfAbsent(type.getName(), type);
+		return type;
+	}
+
+	private static ConcreteObject body(String name, ObjectType type, ObjectCategory category, double sizeX,
+			double sizeY, double sizeZ, double x, double y, double z, double yaw, Floor standsOn) {
+		ConcreteObject body = RuntimeFactory.eINSTANCE.createConcreteObject();
+		body.setName(name);
+		body.setType(type);
+		body.setCategory(category);
+		body.setSizeX(sizeX);
+		body.setSizeY(sizeY);
+		body.setSizeZ(sizeZ);
+		Pose pose = RuntimeFactory.eINSTANCE.createPose();
+		pose.setX(x);
+		pose.setY(y);
+		pose.setZ(z);
+		pose.setYaw(yaw);
+		body.setPose(pose);
+		body.setStandsOn(standsOn);
+		return body;
+	}
+
+	private static void checkTrajectory(DynamicObject object, FloorLayout layout) throws GenerationException {
+		if (object.getOwnedTrajectory() == null) {
+			return;
+		}
+		double previous = Double.NEGATIVE_INFINITY;
+		for (ControlPoint point : object.getOwnedTrajectory().getOwnedControlPoints()) {
+			if (point.getFloor() == null || layout.cellOf(point.getFloor()).isEmpty()) {
+				throw new GenerationException("a control point of " + object.getName() + " is not on a floor of the room");
+			}
+			if (!(point.getTime() > previous)) {
+				throw new GenerationException("control point times of " + object.getName() + " must strictly increase");
+			}
+			previous = point.getTime();
+		}
+	}
+
+	private static MissionDescription mission(TestCase testCase, Environment env, ConcreteObject robot,
+			FloorLayout layout) throws GenerationException {
+		MissionDescription description = MissionFactory.eINSTANCE.createMissionDescription();
+		description.setEnvironment(env.getName());
+		if (robot != null) {
+			description.setRobot(robot.getName());
+			description.setStart(pose2D(robot.getPose().getX(), robot.getPose().getY(), robot.getPose().getYaw()));
+		}
+		Mission mission = testCase.getOwnedMission();
+		if (mission == null) {
+			return description;
+		}
+		description.setName(mission.getName());
+		int index = 0;
+		for (Task task : mission.getOwnedTasks()) {
+			if (!(task instanceof NavigationTask navigation)) {
+				throw new GenerationException("unsupported task: " + task.eClass().getName());
+			}
+			Floor floor = navigation.getGoal();
+			if (floor == null || layout.cellOf(floor).isEmpty()) {
+				throw new GenerationException("goal " + index + " of " + mission.getName() + " is not a floor of the room");
+			}
+			double[] centre = layout.centreOf(floor);
+			GeometricGoal goal = MissionFactory.eINSTANCE.createGeometricGoal();
+			goal.setIndex(index++);
+			goal.setFloor(floor.getName());
+			goal.setPose(pose2D(centre[0], centre[1], 0));
+			goal.setTolerance(mission.getGoalTolerance());
+			goal.setTimeout(navigation.isSetTimeout() ? navigation.getTimeout() : mission.getTaskTimeout());
+			description.getOwnedGoals().add(goal);
+		}
+		return description;
+	}
+
+	private static Pose2D pose2D(double x, double y, double yaw) {
+		Pose2D pose = MissionFactory.eINSTANCE.createPose2D();
+		pose.setX(x);
+		pose.setY(y);
+		pose.setYaw(yaw);
+		return pose;
+	}
+}

@@ -1,0 +1,142 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.generator;
+
+import org.eclipse.emf.ecore.resource.impl.ResourceSetImpl;
+import org.rei.catalogue.Catalogue;
+import org.rei.catalogue.util.Catalogues;
+import org.rei.context.ContextFactory;
+import org.rei.context.ControlPoint;
+import org.rei.context.Environment;
+import org.rei.context.Floor;
+import org.rei.context.Human;
+import org.rei.context.Mission;
+import org.rei.context.NavigationTask;
+import org.rei.context.Robot;
+import org.rei.context.StaticObject;
+import org.rei.context.TestCase;
+import org.rei.context.Trajectory;
+import org.rei.context.Wall;
+
+/** Test cases built as the DSL would build them: explicit floor graph, walls all around, types partly implicit. */
+final class TestCases {
+
+	private static final ContextFactory F = ContextFactory.eINSTANCE;
+	static final Catalogue CATALOGUE = Catalogues.loadDefault(new ResourceSetImpl());
+
+	private TestCases() {
+	}
+
+	/** Floors F_x_y, each declaring its right and top neighbours, and one wall W_x_y_side per open side. */
+	static Floor[][] room(Environment env, int columns, int rows) {
+		Floor[][] g = new Floor[columns][rows];
+		for (int x = 0; x < columns; x++) {
+			for (int y = 0; y < rows; y++) {
+				Floor floor = F.createFloor();
+				floor.setName("F_" + x + "_" + y);
+				env.getOwnedBlocks().add(floor);
+				g[x][y] = floor;
+			}
+		}
+		for (int x = 0; x < columns; x++) {
+			for (int y = 0; y < rows; y++) {
+				Floor f = g[x][y];
+				f.setRight(x + 1 < columns ? g[x + 1][y] : wall(env, f, "right"));
+				f.setTop(y + 1 < rows ? g[x][y + 1] : wall(env, f, "top"));
+				if (x == 0) {
+					f.setLeft(wall(env, f, "left"));
+				}
+				if (y == 0) {
+					f.setBottom(wall(env, f, "bottom"));
+				}
+			}
+		}
+		return g;
+	}
+
+	private static Wall wall(Environment env, Floor floor, String side) {
+		Wall wall = F.createWall();
+		wall.setName("W" + floor.getName().substring(1) + "_" + side);
+		env.getOwnedBlocks().add(wall);
+		return wall;
+	}
+
+	/**
+	 * 3 x 2 floors walled around, a table turned by 90 degrees on F_1_0, a human looping F_0_1 - F_2_1 - F_2_0, the
+	 * robot on F_0_0 and goals F_2_1 (timeout 60) and F_0_0.
+	 */
+	static TestCase small() {
+		TestCase testCase = F.createTestCase();
+		testCase.setName("SmallRoom");
+		Environment env = F.createEnvironment();
+		env.setName("Lab");
+		testCase.setOwnedEnvironment(env);
+		Floor[][] g = room(env, 3, 2);
+
+		StaticObject table = F.createStaticObject();
+		table.setName("table1");
+		table.setType(Catalogues.find(CATALOGUE, "Table").orElseThrow());
+		table.setFloor(g[1][0]);
+		table.setYaw(90);
+		env.getOwnedObjects().add(table);
+
+		Human human = F.createHuman();
+		human.setName("h1");
+		human.setFloor(g[0][1]);
+		Trajectory trajectory = F.createTrajectory();
+		trajectory.setLoop(true);
+		trajectory.getOwnedControlPoints().add(point(g[0][1], 0));
+		trajectory.getOwnedControlPoints().add(point(g[2][1], 10));
+		trajectory.getOwnedControlPoints().add(point(g[2][0], 15.5));
+		human.setOwnedTrajectory(trajectory);
+		env.getOwnedObjects().add(human);
+
+		Robot robot = F.createRobot();
+		robot.setName("tb3");
+		robot.setType(Catalogues.find(CATALOGUE, "Waffle").orElseThrow());
+		robot.setFloor(g[0][0]);
+		env.setOwnedRobot(robot);
+
+		Mission mission = F.createMission();
+		mission.setName("Deliver");
+		NavigationTask there = F.createNavigationTask();
+		there.setGoal(g[2][1]);
+		there.setTimeout(60);
+		NavigationTask back = F.createNavigationTask();
+		back.setGoal(g[0][0]);
+		mission.getOwnedTasks().add(there);
+		mission.getOwnedTasks().add(back);
+		testCase.setOwnedMission(mission);
+		return testCase;
+	}
+
+	/** columns x rows floors walled around with the robot in the corner and one goal in the far corner. */
+	static TestCase grid(int columns, int rows) {
+		TestCase testCase = F.createTestCase();
+		testCase.setName("Grid");
+		Environment env = F.createEnvironment();
+		env.setName("Hall");
+		testCase.setOwnedEnvironment(env);
+		Floor[][] g = room(env, columns, rows);
+		Robot robot = F.createRobot();
+		robot.setName("tb3");
+		robot.setFloor(g[0][0]);
+		env.setOwnedRobot(robot);
+		Mission mission = F.createMission();
+		mission.setName("Cross");
+		NavigationTask task = F.createNavigationTask();
+		task.setGoal(g[columns - 1][rows - 1]);
+		mission.getOwnedTasks().add(task);
+		testCase.setOwnedMission(mission);
+		return testCase;
+	}
+
+	private static ControlPoint point(Floor floor, double time) {
+		ControlPoint point = F.createControlPoint();
+		point.setFloor(floor);
+		point.setTime(time);
+		return point;
+	}
+}
