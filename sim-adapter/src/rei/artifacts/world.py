@@ -1,0 +1,252 @@
+# SPDX-License-Identifier: EPL-2.0
+"""Reader for ``world.json`` (``rei-world/1``): the typed description of every body, floor and the robot.
+
+``world.sdf`` is what the physics engine loads; ``world.json`` is what everything else reasons about (categories,
+footprints, floors, the robot's drive and lidar), so it is read into frozen values once and passed around.
+"""
+
+from __future__ import annotations
+
+import enum
+from dataclasses import dataclass
+from pathlib import Path
+from typing import TypeVar
+
+from rei.artifacts._fields import Fields, load_json
+
+WORLD_FORMAT = "rei-world/1"
+
+E = TypeVar("E", bound=enum.StrEnum)
+
+
+class Category(enum.StrEnum):
+    """What an object is, which decides how the simulator treats it (fixed, animated, ignored for contacts)."""
+
+    FLOOR = "FLOOR"
+    WALL = "WALL"
+    STATIC = "STATIC"
+    DYNAMIC = "DYNAMIC"
+    HUMAN = "HUMAN"
+
+    @property
+    def fixed(self) -> bool:
+        """Fixed bodies have mass 0 in the simulator."""
+        return self in (Category.FLOOR, Category.WALL, Category.STATIC)
+
+    @property
+    def moving(self) -> bool:
+        return self in (Category.DYNAMIC, Category.HUMAN)
+
+
+class Shape(enum.StrEnum):
+    BOX = "BOX"
+    CYLINDER = "CYLINDER"
+    MESH = "MESH"
+
+
+Vec3 = tuple[float, float, float]
+Pose = tuple[float, float, float, float]
+Colour = tuple[float, float, float, float]
+
+
+@dataclass(frozen=True, slots=True)
+class FloorSpec:
+    """One floor tile and its neighbours (a floor or wall name, or None for an open side)."""
+
+    name: str
+    center: tuple[float, float]
+    cell: tuple[int, int]
+    top: str | None
+    right: str | None
+    bottom: str | None
+    left: str | None
+
+
+@dataclass(frozen=True, slots=True)
+class ObjectSpec:
+    """One body of the world; ``pose`` is its centre ``(x, y, z, yaw)``, ``size`` its full extent."""
+
+    name: str
+    category: Category
+    type: str
+    shape: Shape
+    size: Vec3
+    pose: Pose
+    mass: float
+    inertia: Vec3
+    colour: Colour
+    floor: str | None
+
+
+@dataclass(frozen=True, slots=True)
+class DriveSpec:
+    wheel_radius: float
+    wheel_separation: float
+    max_linear_velocity: float
+    max_angular_velocity: float
+
+
+@dataclass(frozen=True, slots=True)
+class LidarSpec:
+    beams: int
+    range_min: float
+    range_max: float
+    rate: float
+    mount_height: float
+
+
+@dataclass(frozen=True, slots=True)
+class RobotSpec:
+    """The robot is built by the simulator from these parameters; its ``pose`` is on the ground (z = 0)."""
+
+    name: str
+    type: str
+    shape: Shape
+    size: Vec3
+    mass: float
+    pose: Pose
+    floor: str | None
+    drive: DriveSpec
+    lidar: LidarSpec
+
+
+@dataclass(frozen=True, slots=True)
+class WorldSpec:
+    path: Path
+    testcase: str
+    environment: str
+    floor_size: float
+    bounds: tuple[float, float, float, float]
+    floors: tuple[FloorSpec, ...]
+    objects: tuple[ObjectSpec, ...]
+    robot: RobotSpec
+
+    def object(self, name: str) -> ObjectSpec:
+        for obj in self.objects:
+            if obj.name == name:
+                return obj
+        raise KeyError(name)
+
+
+def read_world(path: Path | str) -> WorldSpec:
+    """Read and validate ``world.json``; raises :class:`~rei.artifacts.errors.ArtifactError`."""
+    path = Path(path)
+    root = load_json(path, WORLD_FORMAT)
+    bounds = root.vector("bounds", 4)
+    if bounds[2] <= bounds[0] or bounds[3] <= bounds[1]:
+        raise root.error(f"must be [xmin, ymin, xmax, ymax] with max > min, got {list(bounds)}", "bounds")
+    floors = tuple(_floor(f) for f in root.items("floors"))
+    objects = tuple(_object(o) for o in root.items("objects"))
+    _unique(root, "objects", [o.name for o in objects])
+    _unique(root, "floors", [f.name for f in floors])
+    robot = _robot(root.child("robot"))
+    if robot.name in {o.name for o in objects}:
+        raise root.error(f"robot name {robot.name!r} is also an object name", "robot.name")
+    return WorldSpec(
+        path=path,
+        testcase=root.text("testcase"),
+        environment=root.text("environment"),
+        floor_size=root.number("floorSize", positive=True),
+        bounds=(bounds[0], bounds[1], bounds[2], bounds[3]),
+        floors=floors,
+        objects=objects,
+        robot=robot,
+    )
+
+
+def _unique(root: Fields, key: str, names: list[str]) -> None:
+    seen: set[str] = set()
+    for name in names:
+        if name in seen:
+            raise root.error(f"name {name!r} is used twice", key)
+        seen.add(name)
+
+
+def _enum(fields: Fields, key: str, kind: type[E]) -> E:
+    value = fields.text(key)
+    try:
+        return kind(value)
+    except ValueError:
+        allowed = ", ".join(m.value for m in kind)
+        raise fields.error(f"unknown value {value!r}, expected one of {allowed}", key) from None
+
+
+def _floor(f: Fields) -> FloorSpec:
+    center = f.vector("center", 2)
+    cell = f.value.get("cell") if isinstance(f.value, dict) else None
+    if not (isinstance(cell, list) and len(cell) == 2 and all(type(c) is int for c in cell)):
+        raise f.error("expected a list of 2 integers", "cell")
+    return FloorSpec(
+        name=f.text("name"),
+        center=(center[0], center[1]),
+        cell=(cell[0], cell[1]),
+        top=f.optional_text("top"),
+        right=f.optional_text("right"),
+        bottom=f.optional_text("bottom"),
+        left=f.optional_text("left"),
+    )
+
+
+def _object(o: Fields) -> ObjectSpec:
+    category = _enum(o, "category", Category)
+    mass = o.number("mass", non_negative=True)
+    if category.fixed and mass != 0.0:
+        raise o.error(f"a {category.value} object must have mass 0, got {mass}", "mass")
+    if not category.fixed and mass <= 0.0:
+        raise o.error(f"a {category.value} object must have mass > 0, got {mass}", "mass")
+    size = o.vector("size", 3)
+    if min(size) <= 0:
+        raise o.error(f"all sizes must be > 0, got {list(size)}", "size")
+    pose = o.vector("pose", 4)
+    inertia = o.vector("inertia", 3, non_negative=True)
+    colour = o.vector("colour", 4)
+    return ObjectSpec(
+        name=o.text("name"),
+        category=category,
+        type=o.text("type"),
+        shape=_enum(o, "shape", Shape),
+        size=(size[0], size[1], size[2]),
+        pose=(pose[0], pose[1], pose[2], pose[3]),
+        mass=mass,
+        inertia=(inertia[0], inertia[1], inertia[2]),
+        colour=(colour[0], colour[1], colour[2], colour[3]),
+        floor=o.optional_text("floor"),
+    )
+
+
+def _robot(r: Fields) -> RobotSpec:
+    size = r.vector("size", 3)
+    if min(size) <= 0:
+        raise r.error(f"all sizes must be > 0, got {list(size)}", "size")
+    pose = r.vector("pose", 4)
+    d = r.child("drive")
+    lidar = r.child("lidar")
+    beams = lidar.integer("beams")
+    if beams <= 0:
+        raise lidar.error(f"must be > 0, got {beams}", "beams")
+    range_min = lidar.number("rangeMin", non_negative=True)
+    range_max = lidar.number("rangeMax", positive=True)
+    if range_max <= range_min:
+        raise lidar.error(f"must be > rangeMin ({range_min}), got {range_max}", "rangeMax")
+    return RobotSpec(
+        name=r.text("name"),
+        type=r.text("type"),
+        shape=_enum(r, "shape", Shape),
+        size=(size[0], size[1], size[2]),
+        mass=r.number("mass", positive=True),
+        pose=(pose[0], pose[1], pose[2], pose[3]),
+        floor=r.optional_text("floor"),
+        drive=DriveSpec(
+            wheel_radius=d.number("wheelRadius", positive=True),
+            wheel_separation=d.number("wheelSeparation", positive=True),
+            max_linear_velocity=d.number("maxLinearVelocity", positive=True),
+            max_angular_velocity=d.number("maxAngularVelocity", positive=True),
+        ),
+        lidar=LidarSpec(
+            beams=beams,
+            range_min=range_min,
+            range_max=range_max,
+            rate=lidar.number("rate", positive=True),
+            mount_height=lidar.number("mountHeight", non_negative=True),
+        ),
+    )

@@ -1,0 +1,124 @@
+# SPDX-License-Identifier: EPL-2.0
+"""Builds the robot's URDF from world.json's ``robot`` and loads it into pybullet.
+
+The robot is not part of world.sdf: its dimensions come from the test case, its structure (two driven wheels on
+the footprint's centre line, two frictionless casters) from the template ``robots/diffdrive.urdf``.
+"""
+
+from __future__ import annotations
+
+import tempfile
+from dataclasses import dataclass
+from importlib import resources
+from pathlib import Path
+from string import Template
+
+import pybullet as p
+
+from rei.artifacts.world import RobotSpec
+
+GROUND_CLEARANCE = 0.01
+WHEEL_WIDTH = 0.018
+CASTER_RADIUS = 0.012
+FRONT_CASTER_LIFT = 0.003
+ROBOT_COLLISION_GROUP = 0x8000
+"""The robot's links are in this collision group alone, so the lidar's rays can leave them out."""
+
+
+@dataclass(frozen=True, slots=True)
+class RobotBody:
+    """Handles of a loaded robot: its body id and the indices of what the simulator drives and reads."""
+
+    body: int
+    left_wheel: int
+    right_wheel: int
+    casters: tuple[int, int]
+    links: tuple[int, ...]
+
+
+def render_urdf(spec: RobotSpec) -> str:
+    """The URDF text for ``spec``; masses are split so the whole robot weighs ``spec.mass``."""
+    sx, sy, sz = spec.size
+    r = spec.drive.wheel_radius
+    if sz <= GROUND_CLEARANCE + 0.01:
+        raise ValueError(
+            f"robot height {sz} m is too small for a chassis above {GROUND_CLEARANCE} m clearance"
+        )
+    wheel_mass = min(0.1, 0.1 * spec.mass)
+    caster_mass = min(0.01, 0.01 * spec.mass)
+    footprint_mass = min(0.05, 0.05 * spec.mass)
+    chassis_mass = spec.mass - 2 * wheel_mass - 2 * caster_mass - footprint_mass
+    chassis_h = sz - GROUND_CLEARANCE
+    values = {
+        "name": spec.name,
+        "footprint_mass": footprint_mass,
+        "chassis_mass": chassis_mass,
+        "com_x": -0.05 * sx,
+        "chassis_z": GROUND_CLEARANCE + chassis_h / 2,
+        "chassis_h": chassis_h,
+        "chassis_ixx": chassis_mass * (sy**2 + chassis_h**2) / 12,
+        "chassis_iyy": chassis_mass * (sx**2 + chassis_h**2) / 12,
+        "chassis_izz": chassis_mass * (sx**2 + sy**2) / 12,
+        "size_x": sx,
+        "size_y": sy,
+        "wheel_mass": wheel_mass,
+        "wheel_r": r,
+        "wheel_w": WHEEL_WIDTH,
+        "wheel_ixx": wheel_mass * (3 * r**2 + WHEEL_WIDTH**2) / 12,
+        "wheel_iyy": wheel_mass * r**2 / 2,
+        "half_track": spec.drive.wheel_separation / 2,
+        "caster_mass": caster_mass,
+        "caster_r": CASTER_RADIUS,
+        "caster_x": sx / 2 - CASTER_RADIUS - 0.02,
+        "caster_front_z": CASTER_RADIUS + FRONT_CASTER_LIFT,
+    }
+    template = resources.files("rei.sim").joinpath("robots/diffdrive.urdf").read_text(encoding="utf-8")
+    return Template(template).substitute(
+        {k: v if isinstance(v, str) else repr(float(v)) for k, v in values.items()}
+    )
+
+
+def load_robot(client: int, spec: RobotSpec, wheel_friction: float = 1.0) -> RobotBody:
+    """Load the robot standing at ``spec.pose`` and set up friction and its collision group."""
+    with tempfile.TemporaryDirectory(prefix="rei-robot-") as folder:
+        urdf = Path(folder) / f"{spec.name}.urdf"
+        urdf.write_text(render_urdf(spec), encoding="utf-8")
+        x, y, _, yaw = spec.pose
+        body = p.loadURDF(
+            str(urdf),
+            basePosition=[x, y, 0.0],
+            baseOrientation=p.getQuaternionFromEuler([0.0, 0.0, yaw]),
+            # A true cylinder: the default convex-hull wheel rolls on its collision margin, ~3 % too far per turn.
+            flags=p.URDF_USE_IMPLICIT_CYLINDER,
+            physicsClientId=client,
+        )
+    joints = {
+        p.getJointInfo(body, j, physicsClientId=client)[1].decode(): j
+        for j in range(p.getNumJoints(body, physicsClientId=client))
+    }
+    left, right = joints["wheel_left_joint"], joints["wheel_right_joint"]
+    casters = (joints["caster_rear_joint"], joints["caster_front_joint"])
+    links = (-1, *sorted(joints.values()))
+    for link in links:
+        p.setCollisionFilterGroupMask(body, link, ROBOT_COLLISION_GROUP, 0xFFFF, physicsClientId=client)
+    for wheel in (left, right):
+        p.changeDynamics(body, wheel, lateralFriction=wheel_friction, physicsClientId=client)
+        # Without this the velocity motor would fight a default joint damping; the wheels spin freely.
+        p.changeDynamics(
+            body, wheel, jointDamping=0.0, linearDamping=0.0, angularDamping=0.0, physicsClientId=client
+        )
+    for caster in casters:
+        p.changeDynamics(
+            body,
+            caster,
+            lateralFriction=0.0,
+            spinningFriction=0.0,
+            rollingFriction=0.0,
+            physicsClientId=client,
+        )
+    return RobotBody(body=body, left_wheel=left, right_wheel=right, casters=casters, links=links)
+
+
+def wheel_torque_for(spec: RobotSpec, max_acceleration: float) -> float:
+    """Motor torque per wheel that accelerates the robot at ``max_acceleration`` (m/s^2) on flat ground."""
+    return spec.mass * max_acceleration * spec.drive.wheel_radius / 2.0

@@ -1,0 +1,286 @@
+# SPDX-License-Identifier: EPL-2.0
+"""One headless pybullet run of a generated test case: world, robot, lidar, odometry, animator, faults.
+
+Time is counted in physics steps (``t = steps / physics_rate``), never read from a clock, and every random draw
+comes from generators seeded from ``seed``: the same case, seed, options and command sequence give the same
+state sequence. The lidar and the animator run at their own rates, on the physics steps where they fall due.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from types import TracebackType
+from typing import Self
+
+import numpy as np
+import pybullet as p
+
+from rei.artifacts.case import Case, read_case
+from rei.artifacts.world import Category
+from rei.geometry import Pose2D, Twist2D
+from rei.sim.animator import AnimatedBody, Animator, DriveMode
+from rei.sim.contacts import ContactSensor
+from rei.sim.drive import DiffDrive
+from rei.sim.faults import LaserFault, LaserFaultInjector, parse_fault
+from rei.sim.lidar import Lidar
+from rei.sim.odometry import WheelOdometry
+from rei.sim.robot_model import load_robot, wheel_torque_for
+from rei.sim.spline import Trajectory
+from rei.sim.state import ObjectState, RobotState, SimState
+from rei.sim.world_loader import GRAVITY, load_world
+from rei.sut.api import LaserScan, Observation, StaticMap
+
+MAX_ACCELERATION = 2.5
+"""m/s^2 the wheel motors can give the robot: sets their torque limit (a TurtleBot3 manages about this)."""
+
+
+class Simulation:
+    """A running simulation; use as a context manager or call :meth:`close`."""
+
+    def __init__(
+        self,
+        case: Path | str | Case,
+        *,
+        seed: int = 0,
+        physics_rate: float = 240.0,
+        humans: bool = True,
+        lidar_rate: float | None = None,
+        fault: LaserFault | str | None = None,
+        odom_noise: float = 0.0,
+        animator_rate: float = 60.0,
+        animation_mode: DriveMode | str = DriveMode.VELOCITY,
+    ) -> None:
+        """Load ``case`` (a folder of the five generated files, or an already read :class:`Case`).
+
+        ``humans=False`` removes the HUMAN bodies (a static run of the same room); DYNAMIC objects stay.
+        ``lidar_rate`` defaults to world.json's lidar rate. ``fault`` is a :class:`LaserFault` or a spec string
+        (``laser:1%``). ``odom_noise`` is in m^0.5 (see rei.sim.odometry).
+        """
+        self.case = case if isinstance(case, Case) else read_case(case)
+        robot_spec = self.case.world.robot
+        lidar_rate = robot_spec.lidar.rate if lidar_rate is None else lidar_rate
+        for label, value in (
+            ("physics_rate", physics_rate),
+            ("lidar_rate", lidar_rate),
+            ("animator_rate", animator_rate),
+        ):
+            if not (math.isfinite(value) and value > 0):
+                raise ValueError(f"{label} must be a positive number of Hz, got {value}")
+        if odom_noise < 0:
+            raise ValueError(f"odom_noise must be >= 0, got {odom_noise}")
+        try:
+            mode = DriveMode(animation_mode)
+        except ValueError:
+            modes = ", ".join(m.value for m in DriveMode)
+            raise ValueError(f"animation_mode must be one of {modes}, got {animation_mode!r}") from None
+        self.physics_rate = float(physics_rate)
+        self.dt = 1.0 / self.physics_rate
+        self.lidar_rate = float(lidar_rate)
+        self.animator_rate = float(animator_rate)
+        self.fault = parse_fault(fault) if isinstance(fault, str) else fault
+        self._steps = 0
+        self._next_animation = 0
+        self._animations = 0
+        self._next_scan = 0
+        self._scans = 0
+        self._scan: LaserScan | None = None
+        self._laser_min = math.inf
+        self._client = p.connect(p.DIRECT)
+        self._closed = False
+        try:
+            self._build(np.random.SeedSequence(seed), humans, odom_noise, mode)
+        except BaseException:
+            self.close()
+            raise
+        self._update_due()
+
+    def _build(self, seeds: np.random.SeedSequence, humans: bool, odom_noise: float, mode: DriveMode) -> None:
+        """Load the world and the robot into the fresh client and wire up sensors and animator."""
+        client = self._client
+        world = self.case.world
+        robot_spec = world.robot
+        fault_seed, odom_seed = seeds.spawn(2)
+        p.setPhysicsEngineParameter(
+            fixedTimeStep=self.dt, numSubSteps=0, deterministicOverlappingPairs=1, physicsClientId=client
+        )
+        self.world = load_world(client, self.case.sdf_path, world)
+        removed = {o.name for o in world.objects if o.category is Category.HUMAN and not humans}
+        for name in sorted(removed):
+            p.removeBody(self.world.body_of[name], physicsClientId=client)
+        self._robot = load_robot(client, robot_spec)
+        body = self._robot.body
+        self._drive = DiffDrive(
+            client,
+            body,
+            self._robot.left_wheel,
+            self._robot.right_wheel,
+            robot_spec.drive,
+            wheel_torque_for(robot_spec, MAX_ACCELERATION),
+        )
+        self._wheels = [self._robot.left_wheel, self._robot.right_wheel]
+        (la, _, _, _), (ra, _, _, _) = p.getJointStates(body, self._wheels, physicsClientId=client)
+        self._odometry = WheelOdometry(
+            robot_spec.drive.wheel_radius,
+            robot_spec.drive.wheel_separation,
+            Pose2D(robot_spec.pose[0], robot_spec.pose[1], robot_spec.pose[3]),
+            la,
+            ra,
+            noise=odom_noise,
+            rng=np.random.default_rng(odom_seed) if odom_noise > 0 else None,
+        )
+        self._lidar = Lidar(client, body, robot_spec.lidar)
+        lidar = robot_spec.lidar
+        self._fault = (
+            LaserFaultInjector(
+                self.fault, np.random.default_rng(fault_seed), lidar.range_min, lidar.range_max
+            )
+            if self.fault is not None
+            else None
+        )
+        floors = frozenset(self.world.body_of[o.name] for o in world.objects if o.category is Category.FLOOR)
+        self._contacts = ContactSensor(client, body, floors)
+        self._moving = [
+            (o.name, o.category.value, self.world.body_of[o.name])
+            for o in world.objects
+            if o.category.moving and o.name not in removed
+        ]
+        animated = [
+            AnimatedBody(
+                name=a.name,
+                body=self.world.body_of[a.name],
+                mass=world.object(a.name).mass,
+                trajectory=Trajectory([q.t for q in a.points], [(q.x, q.y) for q in a.points], a.loop),
+            )
+            for a in self.case.animation.objects
+            if a.name not in removed
+        ]
+        self._animator = Animator(client, animated, mode, self.dt, floors, GRAVITY)
+        self._animator.place(0.0)
+        # Bodies loaded but never stepped keep stale broadphase bounds: rays would miss them in the first scan.
+        p.performCollisionDetection(physicsClientId=client)
+
+    # --- time -------------------------------------------------------------------------------------------------
+    @property
+    def t(self) -> float:
+        """Simulation time in seconds since the start."""
+        return self._steps * self.dt
+
+    @property
+    def steps(self) -> int:
+        return self._steps
+
+    def step(self, cmd: Twist2D) -> None:
+        """Advance one physics step with the velocity command ``cmd`` (clamped to the robot's limits)."""
+        self._drive.command(cmd)
+        client = self._client
+        p.stepSimulation(physicsClientId=client)
+        self._steps += 1
+        (la, lr, _, _), (ra, rr, _, _) = p.getJointStates(
+            self._robot.body, self._wheels, physicsClientId=client
+        )
+        self._odometry.update(la, ra, lr, rr)
+        self._contacts.update()
+        self._update_due()
+
+    def _update_due(self) -> None:
+        """Run the lidar and the animator if they fall due on the current step (their schedules are integer)."""
+        n = self._steps
+        if n >= self._next_scan:
+            self._take_scan()
+            self._scans += 1
+            self._next_scan = math.ceil(self._scans * self.physics_rate / self.lidar_rate - 1e-9)
+        if n >= self._next_animation:
+            self._animations += 1
+            self._next_animation = max(
+                n + 1, math.ceil(self._animations * self.physics_rate / self.animator_rate - 1e-9)
+            )
+            self._animator.update(self.t, self._next_animation * self.dt)
+
+    def _take_scan(self) -> None:
+        ranges = self._lidar.scan()
+        if self._fault is not None:
+            ranges = self._fault.apply(ranges)
+        ranges.flags.writeable = False
+        spec = self._lidar.spec
+        self._scan = LaserScan(
+            t=self.t,
+            angle_min=0.0,
+            angle_increment=self._lidar.angle_increment,
+            range_min=spec.range_min,
+            range_max=spec.range_max,
+            ranges=ranges,
+        )
+        self._laser_min = float(ranges.min())
+
+    # --- what the controller sees -----------------------------------------------------------------------------
+    def observation(self) -> Observation:
+        """Odometry and the latest scan: what a real robot's controller would get."""
+        return Observation(
+            t=self.t, odom=self._odometry.pose, odom_twist=self._odometry.twist, scan=self._scan
+        )
+
+    def static_map(self) -> StaticMap:
+        """Walls and STATIC objects as footprint rectangles, the floors' bounds and the robot's footprint."""
+        world = self.case.world
+        obstacles = tuple(
+            (o.pose[0], o.pose[1], o.pose[3], o.size[0], o.size[1])
+            for o in world.objects
+            if o.category in (Category.WALL, Category.STATIC)
+        )
+        return StaticMap(
+            bounds=world.bounds, obstacles=obstacles, robot_size=(world.robot.size[0], world.robot.size[1])
+        )
+
+    # --- ground truth -----------------------------------------------------------------------------------------
+    def state(self) -> SimState:
+        """The true state now (for the data collector and the monitor)."""
+        robot_name = self.case.world.robot.name
+        objects = tuple(
+            ObjectState(name=name, category=category, pose=self._pose(body), twist=self._twist(body))
+            for name, category, body in self._moving
+        )
+        name_of = self.world.name_of
+        contacts = tuple(sorted((robot_name, name_of[b]) for b in self._contacts.touching if b in name_of))
+        scan = self._scan
+        robot = RobotState(
+            name=robot_name,
+            pose=self._pose(self._robot.body),
+            twist=self._twist(self._robot.body),
+            odom=self._odometry.pose,
+            laser_min=self._laser_min,
+            laser_ranges=scan.ranges if scan is not None else None,
+        )
+        return SimState(t=self.t, robot=robot, objects=objects, contacts=contacts)
+
+    def _pose(self, body: int) -> tuple[float, float, float, float]:
+        (x, y, z), (qx, qy, qz, qw) = p.getBasePositionAndOrientation(body, physicsClientId=self._client)
+        return (x, y, z, math.atan2(2.0 * (qw * qz + qx * qy), 1.0 - 2.0 * (qy * qy + qz * qz)))
+
+    def _twist(self, body: int) -> tuple[float, float, float]:
+        (vx, vy, _), (_, _, wz) = p.getBaseVelocity(body, physicsClientId=self._client)
+        return (vx, vy, wz)
+
+    @property
+    def robot_body(self) -> int:
+        """The robot's pybullet body id (for tests and tools that need the raw engine)."""
+        return self._robot.body
+
+    @property
+    def client(self) -> int:
+        """The pybullet physics client id of this simulation."""
+        return self._client
+
+    # --- lifetime ---------------------------------------------------------------------------------------------
+    def close(self) -> None:
+        if not self._closed:
+            self._closed = True
+            p.disconnect(self._client)
+
+    def __enter__(self) -> Self:
+        return self
+
+    def __exit__(
+        self, exc_type: type[BaseException] | None, exc: BaseException | None, tb: TracebackType | None
+    ) -> None:
+        self.close()
