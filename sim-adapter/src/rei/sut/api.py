@@ -99,3 +99,9 @@ class Controller(ABC):
     @abstractmethod
     def status(self) -> NavStatus:
         """Current state of the navigation action."""
+
+    @property
+    def status_text(self) -> str:
+        """Why the controller is in its status (e.g. why it aborted); the mission executor copies it into the
+        TASK_FAIL reason. Optional: the default says nothing."""
+        return ""

@@ -1,0 +1,165 @@
+# SPDX-License-Identifier: EPL-2.0
+"""The reference navigation stack driving the kinematic fake: reaching goals, keeping clear, giving up."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from rei.geometry import Pose2D, Twist2D
+from rei.sut.api import NavGoal, NavStatus
+from rei.sut.nav import NavConfig, NavController
+
+from .kinematic import Disc, KinematicWorld, drive, rect_room, room, shuttle
+
+TABLE = (3.0, 2.0, 0.0, 1.2, 0.8)
+# Two arms of two floors width joined by a one-floor doorway at x in [4, 5], y = 2.
+L_ROOM = room([(i, j) for i in range(5) for j in range(2)] + [(i, j) for i in (3, 4) for j in (2, 3, 4)],
+              inner_walls=[((3, 1), (3, 2))])
+
+
+def reached(run, goal: Pose2D, tolerance: float = 0.25) -> bool:
+    return run.status is NavStatus.SUCCEEDED and run.poses[-1].distance_to(goal) <= tolerance
+
+
+@pytest.mark.parametrize(
+    ("static_map", "start", "goal"),
+    [
+        pytest.param(rect_room(6, 4), Pose2D(0.5, 0.5, 0.0), Pose2D(5.5, 3.5), id="empty-room"),
+        pytest.param(rect_room(6, 4, [TABLE]), Pose2D(1.0, 2.0, 0.0), Pose2D(5.0, 2.0), id="around-table"),
+        pytest.param(L_ROOM, Pose2D(0.5, 0.5, 0.0), Pose2D(3.5, 4.5), id="l-room-doorway"),
+        pytest.param(L_ROOM, Pose2D(3.5, 4.5, -1.0), Pose2D(0.5, 1.5), id="l-room-back"),
+    ],
+)
+def test_reaches_goal_keeping_clear_of_static_obstacles(static_map, start, goal):
+    world = KinematicWorld(static_map, start)
+    run = drive(NavController(), world, goal)
+    assert reached(run, goal), run
+    assert run.min_static_clearance >= 0.02
+    straight = start.distance_to(goal)
+    assert run.t < 3.0 * straight / 0.26 + 10.0  # no dawdling: within 3x the straight-line time
+
+
+def test_path_goes_around_the_table_and_keeps_its_distance():
+    static_map = rect_room(6, 4, [TABLE])
+    nav = NavController()
+    run = drive(nav, KinematicWorld(static_map, Pose2D(1.0, 2.0, 0.0)), Pose2D(5.0, 2.0))
+    assert run.status is NavStatus.SUCCEEDED
+    beside_table = [p for p in run.poses if 2.4 <= p.x <= 3.6]
+    assert beside_table
+    assert all(abs(p.y - 2.0) > 0.4 + nav.config.circumscribed_radius for p in beside_table)
+
+
+def test_avoids_a_walking_human_seen_only_by_the_laser():
+    # The human paces across the robot's straight line to the goal; it is in no map.
+    human = Disc(0.25, shuttle((3.0, 0.5), (3.0, 3.5), 0.4))
+    world = KinematicWorld(rect_room(6, 4), Pose2D(0.5, 2.0, 0.0), discs=[human])
+    run = drive(NavController(), world, Pose2D(5.5, 2.0))
+    assert reached(run, Pose2D(5.5, 2.0))
+    assert run.min_disc_clearance > 0.02
+    assert run.min_static_clearance >= 0.02
+
+
+def test_waits_or_swerves_for_a_human_walking_towards_it():
+    human = Disc(0.25, shuttle((5.0, 2.1), (1.0, 2.1), 0.3, t0=2.0))
+    world = KinematicWorld(rect_room(6, 4), Pose2D(0.5, 2.0, 0.0), discs=[human])
+    run = drive(NavController(), world, Pose2D(5.5, 2.0))
+    assert reached(run, Pose2D(5.5, 2.0))
+    assert run.min_disc_clearance > 0.0
+
+
+def test_replans_around_an_obstacle_missing_from_the_map():
+    # A crate (not in the static map) blocks the gap above the table; the way below is free.
+    crate = (3.0, 3.2, 0.0, 0.6, 1.6)
+    world = KinematicWorld(rect_room(6, 4, [(3.0, 2.0, 0.0, 0.6, 1.2)]), Pose2D(1.0, 2.9, 0.0), hidden=[crate])
+    nav = NavController()
+    run = drive(nav, world, Pose2D(5.0, 2.9))
+    assert reached(run, Pose2D(5.0, 2.9)), run
+    assert nav.replans >= 1
+    assert run.min_static_clearance >= 0.02
+
+
+def test_aborts_at_once_when_the_goal_is_walled_in():
+    walls = [(4.5, 3.0, 0.0, 1.1, 0.1), (4.5, 2.0, 0.0, 1.1, 0.1), (4.0, 2.5, 0.0, 0.1, 1.1), (5.0, 2.5, 0.0, 0.1, 1.1)]
+    world = KinematicWorld(rect_room(6, 4, walls), Pose2D(0.5, 0.5, 0.0))
+    run = drive(NavController(), world, Pose2D(4.5, 2.5))
+    assert run.status is NavStatus.ABORTED
+    assert run.t <= 0.5
+    assert "no path" in run.text
+
+
+def test_aborts_at_once_when_the_goal_is_inside_furniture():
+    world = KinematicWorld(rect_room(6, 4, [TABLE]), Pose2D(0.5, 0.5, 0.0))
+    run = drive(NavController(), world, Pose2D(3.0, 2.0))
+    assert run.status is NavStatus.ABORTED
+    assert run.t <= 0.5
+    assert "blocked" in run.text
+
+
+def test_gives_up_when_a_hidden_obstacle_blocks_the_only_doorway():
+    """Thesis 7.4.4: the controller cancels the task when the robot only oscillates instead of blocking forever."""
+    crate = (4.5, 2.0, 0.0, 1.0, 0.4)
+    config = NavConfig(oscillation_timeout=15.0, no_progress_timeout=25.0)
+    world = KinematicWorld(L_ROOM, Pose2D(0.5, 0.5, 0.0), hidden=[crate])
+    run = drive(NavController(config=config), world, Pose2D(3.5, 4.5), max_time=200.0)
+    assert run.status is NavStatus.ABORTED
+    assert "oscillating" in run.text or "no progress" in run.text
+    assert run.t < 60.0
+    assert run.min_static_clearance >= 0.02
+
+
+def test_sequence_of_goals_and_cancel():
+    static_map = rect_room(4, 3)
+    world = KinematicWorld(static_map, Pose2D(0.5, 0.5, 0.0))
+    nav = NavController()
+    nav.reset(static_map, world.pose)
+    assert nav.status is NavStatus.IDLE
+    assert nav.step(world.observation()) == Twist2D()
+    for index, goal in enumerate([Pose2D(3.5, 2.5), Pose2D(0.7, 2.3)]):
+        nav.set_goal(NavGoal(index, goal, 0.2))
+        assert nav.status is NavStatus.ACTIVE
+        while nav.status is NavStatus.ACTIVE and world.t < 60.0:
+            world.apply(nav.step(world.observation()))
+        assert nav.status is NavStatus.SUCCEEDED
+        assert world.pose.distance_to(goal) <= 0.2
+    nav.set_goal(NavGoal(2, Pose2D(3.5, 0.5), 0.2))
+    world.apply(nav.step(world.observation()))
+    nav.cancel()
+    assert nav.status is NavStatus.CANCELLED
+    assert nav.step(world.observation()) == Twist2D()
+
+
+def test_goal_reaching_ignores_the_goal_heading():
+    world = KinematicWorld(rect_room(3, 3), Pose2D(0.5, 1.5, 0.0))
+    run = drive(NavController(), world, Pose2D(2.5, 1.5, math.pi))
+    assert run.status is NavStatus.SUCCEEDED
+    assert abs(run.poses[-1].yaw) < 1.0  # it did not turn around to face the goal's yaw
+
+
+def test_respects_the_robot_limits_from_the_constructor():
+    world = KinematicWorld(rect_room(6, 2), Pose2D(0.5, 1.0, 0.0), max_linear=10.0, max_angular=10.0)
+    nav = NavController(max_linear=0.15, max_angular=0.8)
+    nav.reset(world.static_map, world.pose)
+    nav.set_goal(NavGoal(0, Pose2D(5.5, 1.0), 0.25))
+    commands = []
+    while nav.status is NavStatus.ACTIVE and world.t < 80.0:
+        cmd = nav.step(world.observation())
+        commands.append(cmd)
+        world.apply(cmd)
+    assert nav.status is NavStatus.SUCCEEDED
+    assert max(abs(c.v) for c in commands) <= 0.15 + 1e-9
+    assert max(abs(c.w) for c in commands) <= 0.8 + 1e-9
+    assert max(c.v for c in commands) > 0.14
+
+
+def test_config_parse_reports_unknown_and_bad_values():
+    assert NavConfig.parse("max_linear=0.2, v_samples=4,use_static_clearance=false") == NavConfig(
+        max_linear=0.2, v_samples=4, use_static_clearance=False
+    )
+    with pytest.raises(ValueError, match="speed=1"):
+        NavConfig.parse("speed=1")
+    with pytest.raises(ValueError, match="max_linear"):
+        NavConfig.parse("max_linear=fast")
+    with pytest.raises(ValueError, match="must be > 0"):
+        NavConfig(resolution=0.0)
