@@ -17,7 +17,8 @@ ARTIFACTS = ("world.sdf", "world.json", "mission.xml", "animation.json", "monito
 
 def run_maven(project: Path) -> subprocess.CompletedProcess[str]:
     return subprocess.run(
-        ["mvn", "-B", "-s", str(REPO / ".mvn" / "settings.xml"), "generate-test-resources"],
+        ["mvn", "-B", "-Dstyle.color=never", "-s", str(REPO / ".mvn" / "settings.xml"), "generate-test-resources"],
+        check=False,
         cwd=project,
         capture_output=True,
         text=True,

@@ -1,0 +1,59 @@
+# SPDX-License-Identifier: EPL-2.0
+"""The `rei` console script: one argparse parser, one module per subcommand.
+
+Each subcommand lives in `rei.cli.<name>` and exposes `register(subparsers)`, which adds its parser and sets
+`handler` (a function `Namespace -> int`) as a default. Adding a command is one module plus one entry in
+`COMMANDS`; no other command is touched. Modules are imported here only for their `register`; anything heavy
+(pybullet, the router) is imported inside the handler so `rei --help` stays fast.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+from collections.abc import Sequence
+
+from rei import __version__
+from rei.cli.errors import EXIT_TOOLCHAIN, CommandError
+from rei.toolchain import ToolchainError
+
+#: Subcommand modules under `rei.cli`, in the order `rei --help` lists them.
+COMMANDS: tuple[str, ...] = ("validate", "generate")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The full parser with every registered subcommand."""
+    parser = argparse.ArgumentParser(
+        prog="rei",
+        description="REI - Robotic Event Interceptor: generate, simulate, monitor and judge robot test cases.",
+    )
+    parser.add_argument("--version", action="version", version=f"rei {__version__}")
+    subparsers = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
+    for name in COMMANDS:
+        importlib.import_module(f"rei.cli.{name}").register(subparsers)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Entry point of the console script; returns the process exit code.
+
+    User errors (a `CommandError`, a `ToolchainError`) become one `rei: error: ...` line on stderr and a
+    non-zero exit code; anything else is a bug and keeps its traceback.
+    """
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    try:
+        return int(args.handler(args))
+    except CommandError as error:
+        print(f"rei: error: {error}", file=sys.stderr)
+        return error.exit_code
+    except ToolchainError as error:
+        print(f"rei: error: {error}", file=sys.stderr)
+        return EXIT_TOOLCHAIN
+    except KeyboardInterrupt:
+        print("rei: interrupted", file=sys.stderr)
+        return 130
+
+
+__all__ = ["COMMANDS", "CommandError", "build_parser", "main"]

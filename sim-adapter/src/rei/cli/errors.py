@@ -1,0 +1,23 @@
+# SPDX-License-Identifier: EPL-2.0
+"""Exit codes and the error type every subcommand raises for a mistake of the user, not of REI.
+
+The codes follow the Java CLI's so a script sees the same meaning whichever side failed.
+"""
+
+from __future__ import annotations
+
+EXIT_OK = 0
+#: The input was read but is wrong (validation or layout errors, a failed check).
+EXIT_INVALID = 1
+#: Bad arguments, or a file that cannot be read or written (argparse uses 2 as well).
+EXIT_USAGE = 2
+#: The environment cannot run REI: no Java, an old Java, jars not built.
+EXIT_TOOLCHAIN = 3
+
+
+class CommandError(Exception):
+    """A user error: printed as one line without a traceback, then the process exits with `exit_code`."""
+
+    def __init__(self, message: str, exit_code: int = EXIT_USAGE) -> None:
+        super().__init__(message)
+        self.exit_code = exit_code

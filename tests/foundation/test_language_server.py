@@ -1,0 +1,196 @@
+# SPDX-License-Identifier: EPL-2.0
+"""The language server as an editor drives it over stdio: diagnostics, completion, clean shutdown.
+
+The small LSP client lives here, not in a conftest, because test modules must not import conftest modules
+(pytest may hold several under the one name). Every wait is bounded; a server that does not stop on `exit` is
+killed, so a hung JVM never outlives the test.
+"""
+
+from __future__ import annotations
+
+import json
+import queue
+import subprocess
+import threading
+import time
+from collections.abc import Callable, Iterator
+from pathlib import Path
+from typing import IO, Any
+
+import pytest
+
+from rei import toolchain
+
+Message = dict[str, Any]
+
+#: JVM start plus Xtext's injector on a busy 2-core machine.
+START_TIMEOUT_S = 120.0
+REPLY_TIMEOUT_S = 60.0
+
+
+class LspClient:
+    """JSON-RPC over the server's stdin/stdout with Content-Length framing; a reader thread queues every
+    incoming message and another drains stderr so a chatty server never blocks on a full pipe."""
+
+    def __init__(self, command: list[str], cwd: Path) -> None:
+        self.process = subprocess.Popen(
+            command, cwd=cwd, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE
+        )
+        self.messages: queue.Queue[Message | None] = queue.Queue()
+        self.stderr_lines: list[str] = []
+        self._next_id = 0
+        assert self.process.stdout is not None and self.process.stderr is not None
+        threading.Thread(target=self._read, args=(self.process.stdout,), daemon=True).start()
+        threading.Thread(target=self._drain, args=(self.process.stderr,), daemon=True).start()
+
+    def _read(self, stream: IO[bytes]) -> None:
+        try:
+            while True:
+                headers: dict[str, str] = {}
+                while True:
+                    line = stream.readline()
+                    if not line:
+                        return
+                    text = line.decode("ascii").strip()
+                    if not text:
+                        break
+                    key, _, value = text.partition(":")
+                    headers[key.strip().lower()] = value.strip()
+                body = stream.read(int(headers["content-length"]))
+                self.messages.put(json.loads(body))
+        finally:
+            self.messages.put(None)  # end of stream
+
+    def _drain(self, stream: IO[bytes]) -> None:
+        for line in stream:
+            self.stderr_lines.append(line.decode("utf-8", "replace").rstrip())
+
+    def _send(self, message: Message) -> None:
+        assert self.process.stdin is not None
+        body = json.dumps({"jsonrpc": "2.0", **message}).encode("utf-8")
+        self.process.stdin.write(b"Content-Length: %d\r\n\r\n" % len(body) + body)
+        self.process.stdin.flush()
+
+    def notify(self, method: str, params: Any) -> None:
+        self._send({"method": method, "params": params})
+
+    def request(self, method: str, params: Any, timeout: float = REPLY_TIMEOUT_S) -> Any:
+        """Send a request and return its result; a JSON-RPC error or no answer in time fails the test."""
+        self._next_id += 1
+        request_id = self._next_id
+        self._send({"id": request_id, "method": method, "params": params})
+        reply = self.wait_for(lambda m: m.get("id") == request_id and "method" not in m, timeout, method)
+        if "error" in reply:
+            pytest.fail(f"{method} failed: {reply['error']}")
+        return reply.get("result")
+
+    def wait_for(self, predicate: Callable[[Message], bool], timeout: float, what: str) -> Message:
+        """The first incoming message matching `predicate`; others are dropped."""
+        deadline = time.monotonic() + timeout
+        while (left := deadline - time.monotonic()) > 0:
+            try:
+                message = self.messages.get(timeout=left)
+            except queue.Empty:
+                break
+            if message is None:
+                pytest.fail(
+                    f"language server closed its output while waiting for {what}; {self.stderr_tail()}"
+                )
+            if message.get("method") in {"workspace/configuration", "client/registerCapability"}:
+                self._send({"id": message["id"], "result": None})  # requests from the server need an answer
+            if predicate(message):
+                return message
+        pytest.fail(f"no {what} within {timeout} s; {self.stderr_tail()}")
+
+    def stderr_tail(self) -> str:
+        return "server stderr:\n" + "\n".join(self.stderr_lines[-30:])
+
+    def stop(self, timeout: float = 30.0) -> int:
+        """shutdown + exit as an editor does; the exit code, or a test failure if the server must be killed."""
+        self.request("shutdown", None, timeout)
+        self.notify("exit", None)
+        try:
+            return self.process.wait(timeout)
+        except subprocess.TimeoutExpired:
+            self.kill()
+            pytest.fail(f"language server still running {timeout} s after exit; {self.stderr_tail()}")
+
+    def kill(self) -> None:
+        if self.process.poll() is None:
+            self.process.kill()
+            self.process.wait(10)
+
+
+@pytest.fixture
+def language_server(language_server_jar: Path, java: toolchain.Java, tmp_path: Path) -> Iterator[LspClient]:
+    """A started (not yet initialized) language server with a workspace folder in `tmp_path`; killed after
+    the test whatever happened."""
+    client = LspClient(toolchain.jar_command(language_server_jar, [], java), tmp_path)
+    try:
+        yield client
+    finally:
+        client.kill()
+        for stream in (client.process.stdin, client.process.stdout, client.process.stderr):
+            if stream is not None:
+                stream.close()
+
+
+BROKEN_LINE = 3  # 1-based: the object stands on a floor the 3 x 2 grid does not have
+TEXT = """\
+testcase Editing {
+  room Lab size 3 x 2 {
+    object table1 : Table on F_7_7
+    robot tb3 : Waffle on F_0_0
+  }
+  mission Go { goto F_2_1 goto F_0_1 }
+}
+"""
+FLOORS = {f"F_{x}_{y}" for x in range(3) for y in range(2)}
+
+
+def labels(result: Any) -> list[str]:
+    items = result["items"] if isinstance(result, dict) else result
+    return [item["label"] for item in items]
+
+
+def test_diagnostics_completion_and_clean_exit(language_server: LspClient, tmp_path: Path) -> None:
+    path = tmp_path / "editing.rei"
+    path.write_text(TEXT, encoding="utf-8")
+    uri = path.as_uri()
+
+    result = language_server.request(
+        "initialize",
+        {"processId": None, "rootUri": tmp_path.as_uri(), "capabilities": {}},
+        timeout=START_TIMEOUT_S,
+    )
+    assert "completionProvider" in result["capabilities"]
+    language_server.notify("initialized", {})
+    language_server.notify(
+        "textDocument/didOpen",
+        {"textDocument": {"uri": uri, "languageId": "rei", "version": 1, "text": TEXT}},
+    )
+
+    published = language_server.wait_for(
+        lambda m: (
+            m.get("method") == "textDocument/publishDiagnostics"
+            and m["params"]["uri"].endswith("/editing.rei")
+            and m["params"]["diagnostics"]
+        ),
+        START_TIMEOUT_S,
+        "diagnostics for editing.rei",
+    )
+    errors = [d for d in published["params"]["diagnostics"] if d.get("severity") == 1]
+    assert [d["range"]["start"]["line"] for d in errors] == [BROKEN_LINE - 1], errors
+    assert "F_7_7" in errors[0]["message"]
+
+    line = TEXT.splitlines()[BROKEN_LINE - 1]
+    after_on = line.index(" on ") + len(" on ")
+    completion = language_server.request(
+        "textDocument/completion",
+        {"textDocument": {"uri": uri}, "position": {"line": BROKEN_LINE - 1, "character": after_on}},
+    )
+    offered = {label.rsplit(".", 1)[-1] for label in labels(completion)}
+    assert offered >= FLOORS, f"floors missing from completion: {sorted(FLOORS - offered)}"
+    assert "table1" not in offered and "tb3" not in offered, "only floors stand after 'on'"
+
+    assert language_server.stop() == 0

@@ -1,0 +1,89 @@
+# SPDX-License-Identifier: EPL-2.0
+"""`rei validate` / `rei generate` as a user runs them: exit codes and `PATH:LINE:COL: severity: message` lines."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+VALID = """\
+testcase Ok {
+  room Lab size 3 x 2 {
+    object table1 : Table on F_1_1
+    robot tb3 : Waffle on F_0_0
+  }
+  mission Go { goto F_2_1 goto F_0_1 }
+}
+"""
+
+# Line 3 names a floor the 3 x 2 grid does not have.
+UNKNOWN_FLOOR = VALID.replace("on F_1_1", "on F_9_9")
+
+# Lines 3 and 4 declare the same name.
+DUPLICATE_NAME = VALID.replace("    robot tb3", "    object table1 : Table on F_2_0\n    robot tb3")
+
+
+def diagnostics(stderr: str, path: Path, severity: str = "error") -> list[tuple[int, int, str]]:
+    """(line, column, message) of every diagnostic line about `path`; the path may be printed as given or
+    relative, so it is matched by its file name."""
+    pattern = re.compile(rf"^(?:.*/)?{re.escape(path.name)}:(\d+):(\d+): {severity}: (.*)$", re.MULTILINE)
+    return [(int(line), int(column), message) for line, column, message in pattern.findall(stderr)]
+
+
+def test_valid_file_exits_0_without_errors(
+    run_cli: Callable[..., Any], write_rei: Callable[..., Path]
+) -> None:
+    path = write_rei("ok.rei", VALID)
+    result = run_cli("validate", path)
+    assert result.returncode == 0, result.stderr
+    assert diagnostics(result.stderr, path) == []
+
+
+def test_unknown_floor_exits_1_with_a_located_error(
+    run_cli: Callable[..., Any], write_rei: Callable[..., Path]
+) -> None:
+    path = write_rei("broken.rei", UNKNOWN_FLOOR)
+    result = run_cli("validate", path)
+    assert result.returncode == 1, result.stderr
+    found = diagnostics(result.stderr, path)
+    assert found, f"no '{path.name}:LINE:COL: error:' line in:\n{result.stderr}"
+    line, column, message = found[0]
+    assert line == 3 and column >= 1, found
+    assert "F_9_9" in message
+
+
+def test_duplicate_names_are_errors(run_cli: Callable[..., Any], write_rei: Callable[..., Path]) -> None:
+    path = write_rei("duplicate.rei", DUPLICATE_NAME)
+    result = run_cli("validate", path)
+    assert result.returncode == 1, result.stderr
+    assert {line for line, _, _ in diagnostics(result.stderr, path)} & {3, 4}, result.stderr
+
+
+def test_valid_and_broken_files_together_exit_1_naming_only_the_broken_one(
+    run_cli: Callable[..., Any], write_rei: Callable[..., Path]
+) -> None:
+    good, bad = write_rei("good.rei", VALID), write_rei("bad.rei", UNKNOWN_FLOOR)
+    result = run_cli("validate", good, bad)
+    assert result.returncode == 1, result.stderr
+    assert diagnostics(result.stderr, bad) and not diagnostics(result.stderr, good)
+
+
+def test_missing_file_exits_2(run_cli: Callable[..., Any], tmp_path: Path) -> None:
+    missing = tmp_path / "nowhere.rei"
+    result = run_cli("validate", missing)
+    assert result.returncode == 2, result.stderr
+    assert "nowhere.rei" in result.stderr
+    assert "Exception" not in result.stderr and "Traceback" not in result.stderr
+
+
+def test_generate_of_a_broken_file_exits_1_and_writes_nothing(
+    run_cli: Callable[..., Any], write_rei: Callable[..., Path], tmp_path: Path
+) -> None:
+    out = tmp_path / "out"
+    path = write_rei("broken.rei", UNKNOWN_FLOOR)
+    result = run_cli("generate", path, "-o", out)
+    assert result.returncode == 1, result.stderr
+    assert diagnostics(result.stderr, path)
+    assert not (out / "world.json").exists()
