@@ -68,9 +68,15 @@ def test_wrong_vector_length(room_copy: Path, edit_json: Edit) -> None:
 
 
 def test_unknown_category(room_copy: Path, edit_json: Edit) -> None:
+    edit_json(room_copy / "world.json", lambda d: d["objects"][17].update(category="ROBOTIC"))
+    message = _error(lambda: read_world(room_copy / "world.json"))
+    assert "objects[17].category: unknown value 'ROBOTIC'" in message and "HUMAN" in message
+
+
+def test_robot_among_the_objects(room_copy: Path, edit_json: Edit) -> None:
     edit_json(room_copy / "world.json", lambda d: d["objects"][17].update(category="ROBOT"))
     message = _error(lambda: read_world(room_copy / "world.json"))
-    assert "objects[17].category: unknown value 'ROBOT'" in message and "HUMAN" in message
+    assert 'objects[17].category: the robot belongs in "robot", not in objects' in message
 
 
 def test_fixed_object_with_mass(room_copy: Path, edit_json: Edit) -> None:

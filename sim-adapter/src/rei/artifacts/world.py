@@ -27,6 +27,7 @@ class Category(enum.StrEnum):
     STATIC = "STATIC"
     DYNAMIC = "DYNAMIC"
     HUMAN = "HUMAN"
+    ROBOT = "ROBOT"  # catalogue types only: the robot itself is world.json's "robot", never one of its objects
 
     @property
     def fixed(self) -> bool:
@@ -189,6 +190,8 @@ def _floor(f: Fields) -> FloorSpec:
 
 def _object(o: Fields) -> ObjectSpec:
     category = _enum(o, "category", Category)
+    if category is Category.ROBOT:
+        raise o.error("the robot belongs in \"robot\", not in objects", "category")
     mass = o.number("mass", non_negative=True)
     if category.fixed and mass != 0.0:
         raise o.error(f"a {category.value} object must have mass 0, got {mass}", "mass")

@@ -4,6 +4,6 @@
 The mission itself is read by ``rei.artifacts.mission``.
 """
 
-from rei.mission.executor import MissionEvent, MissionEventKind, MissionExecutor, TaskResult
+from rei.mission.executor import MissionEvent, MissionEventKind, MissionExecutor, TaskResult, mission_info
 
-__all__ = ["MissionEvent", "MissionEventKind", "MissionExecutor", "TaskResult"]
+__all__ = ["MissionEvent", "MissionEventKind", "MissionExecutor", "TaskResult", "mission_info"]

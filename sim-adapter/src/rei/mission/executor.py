@@ -103,23 +103,6 @@ class MissionExecutor:
             self.controller.cancel()
             self._finish(t, f"timeout: the goal was not reached within {goal.timeout:g} s")
 
-    def mission_info(self) -> dict[str, Any]:
-        """Mission description for the ``mission_info`` RPC (thesis 6.1.4): plain JSON-able values."""
-        m = self.mission
-        return {
-            "name": m.name,
-            "testcase": m.testcase,
-            "environment": m.environment,
-            "robot": m.robot,
-            "frame": m.frame,
-            "start": {"floor": m.start_floor, "x": m.start.x, "y": m.start.y, "yaw": m.start.yaw},
-            "goals": [
-                {"index": g.index, "floor": g.floor, "x": g.pose.x, "y": g.pose.y, "yaw": g.pose.yaw,
-                 "tolerance": g.tolerance, "timeout": g.timeout}
-                for g in m.goals
-            ],
-        }
-
     # -- internals -----------------------------------------------------------------------------------------
 
     def _next(self, t: float, index: int) -> None:
@@ -151,3 +134,21 @@ class MissionExecutor:
 
 def _with_detail(message: str, detail: str) -> str:
     return f"{message}: {detail}" if detail else message
+
+
+def mission_info(mission: MissionSpec) -> dict[str, Any]:
+    """Mission description for the ``mission_info`` RPC (thesis 6.1.4): plain JSON-able values."""
+    return {
+        "name": mission.name,
+        "testcase": mission.testcase,
+        "environment": mission.environment,
+        "robot": mission.robot,
+        "frame": mission.frame,
+        "start": {"floor": mission.start_floor, "x": mission.start.x, "y": mission.start.y,
+                  "yaw": mission.start.yaw},
+        "goals": [
+            {"index": g.index, "floor": g.floor, "x": g.pose.x, "y": g.pose.y, "yaw": g.pose.yaw,
+             "tolerance": g.tolerance, "timeout": g.timeout}
+            for g in mission.goals
+        ],
+    }

@@ -24,6 +24,7 @@ from rei.sim.contacts import ContactSensor
 from rei.sim.drive import DiffDrive
 from rei.sim.faults import LaserFault, LaserFaultInjector, parse_fault
 from rei.sim.lidar import Lidar
+from rei.sim.native_output import quiet_native_output
 from rei.sim.odometry import WheelOdometry
 from rei.sim.robot_model import load_robot, wheel_torque_for
 from rei.sim.spline import Trajectory
@@ -86,7 +87,8 @@ class Simulation:
         self._scans = 0
         self._scan: LaserScan | None = None
         self._laser_min = math.inf
-        self._client = p.connect(p.DIRECT)
+        with quiet_native_output():
+            self._client = p.connect(p.DIRECT)
         self._closed = False
         try:
             self._build(np.random.SeedSequence(seed), humans, odom_noise, mode)

@@ -17,6 +17,7 @@ import pybullet as p
 
 from rei.artifacts.errors import ArtifactError
 from rei.artifacts.world import ObjectSpec, WorldSpec
+from rei.sim.native_output import quiet_native_output
 
 GRAVITY = 9.81
 
@@ -38,7 +39,8 @@ def load_world(client: int, sdf_path: Path | str, world: WorldSpec) -> LoadedWor
         raise ArtifactError(sdf_path, "file is missing")
     p.setGravity(0.0, 0.0, -GRAVITY, physicsClientId=client)
     try:
-        ids = p.loadSDF(str(sdf_path), physicsClientId=client)
+        with quiet_native_output():
+            ids = p.loadSDF(str(sdf_path), physicsClientId=client)
     except p.error as exc:
         raise ArtifactError(sdf_path, f"pybullet could not load it: {exc}") from None
     names = [p.getBodyInfo(b, physicsClientId=client)[1].decode("utf-8") for b in ids]
