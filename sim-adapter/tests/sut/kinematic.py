@@ -111,7 +111,12 @@ def shuttle(a: tuple[float, float], b: tuple[float, float], speed: float, t0: fl
 
 @dataclass
 class KinematicWorld:
-    """Unicycle robot with perfect odometry, stepped one control period at a time."""
+    """Unicycle robot, stepped one control period at a time.
+
+    Odometry is perfect unless ``odom_turn_scale`` is not 1: then the odometry sees only that fraction of every
+    turn, the heading drift of a real diff-drive whose wheels scrub when it turns (the simulated Waffle's
+    odometry sees about 0.978 of a turn on the spot).
+    """
 
     static_map: StaticMap
     pose: Pose2D
@@ -123,10 +128,12 @@ class KinematicWorld:
     range_max: float = 3.5
     max_linear: float = 0.26
     max_angular: float = 1.82
+    odom_turn_scale: float = 1.0
     t: float = 0.0
     twist: Twist2D = field(default_factory=Twist2D)
 
     def __post_init__(self) -> None:
+        self.odom = self.pose
         self.rects: list[Rect] = list(self.static_map.obstacles) + list(self.hidden)
         self.angles = -math.pi + 2 * math.pi / self.beams * np.arange(self.beams)
 
@@ -135,22 +142,13 @@ class KinematicWorld:
 
     def observation(self) -> Observation:
         scan = LaserScan(self.t, -math.pi, 2 * math.pi / self.beams, 0.12, self.range_max, self.scan())
-        return Observation(self.t, self.pose, self.twist, scan)
+        return Observation(self.t, self.odom, self.twist, scan)
 
     def apply(self, cmd: Twist2D) -> None:
         v = min(max(cmd.v, -self.max_linear), self.max_linear)
         w = min(max(cmd.w, -self.max_angular), self.max_angular)
-        x, y, yaw = self.pose.x, self.pose.y, self.pose.yaw
-        steps = max(1, round(self.control_period / self.physics_dt))
-        dt = self.control_period / steps
-        for _ in range(steps):
-            if abs(w) < 1e-9:
-                x, y = x + v * dt * math.cos(yaw), y + v * dt * math.sin(yaw)
-            else:
-                x += v / w * (math.sin(yaw + w * dt) - math.sin(yaw))
-                y -= v / w * (math.cos(yaw + w * dt) - math.cos(yaw))
-                yaw += w * dt
-        self.pose = Pose2D(x, y, math.atan2(math.sin(yaw), math.cos(yaw)))
+        self.pose = _integrate(self.pose, v, w, self.control_period, self.physics_dt)
+        self.odom = _integrate(self.odom, v, w * self.odom_turn_scale, self.control_period, self.physics_dt)
         self.twist = Twist2D(v, w)
         self.t = round(self.t + self.control_period, 9)
 
@@ -198,6 +196,20 @@ class KinematicWorld:
             d = float(point_rect_distance(np.array([[cx, cy]]), robot)[0]) - disc.radius
             best = min(best, d)
         return best
+
+
+def _integrate(pose: Pose2D, v: float, w: float, period: float, physics_dt: float) -> Pose2D:
+    x, y, yaw = pose.x, pose.y, pose.yaw
+    steps = max(1, round(period / physics_dt))
+    dt = period / steps
+    for _ in range(steps):
+        if abs(w) < 1e-9:
+            x, y = x + v * dt * math.cos(yaw), y + v * dt * math.sin(yaw)
+        else:
+            x += v / w * (math.sin(yaw + w * dt) - math.sin(yaw))
+            y -= v / w * (math.cos(yaw + w * dt) - math.cos(yaw))
+            yaw += w * dt
+    return Pose2D(x, y, math.atan2(math.sin(yaw), math.cos(yaw)))
 
 
 @dataclass

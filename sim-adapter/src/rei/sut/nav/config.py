@@ -49,6 +49,11 @@ class NavConfig:
     turn_reaction_time: float = 0.3
     use_static_clearance: bool = True
 
+    # Localization: correct the odometry's drift by matching scans to the static map; laser points farther than
+    # the gate from the map's outlines are not matched (people, unmapped objects).
+    localize: bool = True
+    match_gate: float = 0.2
+
     # Goal: reached when the odometry is this close to the goal (never more than 30 % of the mission tolerance).
     xy_goal_tolerance: float = 0.10
 

@@ -4,6 +4,8 @@
 It plays the role of the thesis's navigation stack (2.1.1: path planning plus path execution): A* on the static
 map when a goal arrives, a DWA local planner that avoids what the laser sees (humans included), replanning with
 the sensed obstacles when blocked, a back-up recovery, and cancellation when the robot only oscillates (7.4.4).
+Everything works in the map frame: the wheel odometry is corrected by matching each scan to the static map
+(``localizer``), since odometry alone drifts decimetres in a room-sized mission.
 It is meant as a meaningful baseline for the monitor, not as the last word in navigation.
 """
 
@@ -20,6 +22,7 @@ from rei.sut.nav.config import NavConfig
 from rei.sut.nav.global_planner import Path, PlanningError, plan
 from rei.sut.nav.grid import CostGrid
 from rei.sut.nav.local_planner import DynamicWindow
+from rei.sut.nav.localizer import Localizer
 from rei.sut.nav.progress import ProgressMonitor
 from rei.sut.nav.tracker import DynamicTracker
 
@@ -45,6 +48,8 @@ class NavController(Controller):
             footprint_x=footprint[0], footprint_y=footprint[1],
         )
         self._grid: CostGrid | None = None
+        self._localizer: Localizer | None = None
+        self._scan_t: float | None = None
         self._dwa = DynamicWindow(self.config, None)
         self._monitor = ProgressMonitor(self.config)
         self._status = NavStatus.IDLE
@@ -61,6 +66,7 @@ class NavController(Controller):
         self._scan_world = np.zeros((0, 2))
         self._tracker = DynamicTracker()
         self._trig: tuple[tuple[int, float, float], np.ndarray, np.ndarray] | None = None
+        self._pose: Pose2D | None = None
         self.replans = 0
         self.recoveries = 0
 
@@ -75,12 +81,19 @@ class NavController(Controller):
         return self._text
 
     @property
+    def pose(self) -> Pose2D | None:
+        """Where the controller believes the robot is (odometry corrected by localization), after a step."""
+        return self._pose
+
+    @property
     def path(self) -> np.ndarray | None:
         """The current global plan as ``(N, 2)`` world points (for visualisation and tests)."""
         return None if self._path is None else self._path.points
 
     def reset(self, static_map: StaticMap, start: Pose2D) -> None:
         self._grid = CostGrid(static_map, self.config)
+        self._localizer = Localizer(self._grid, self.config.match_gate) if self.config.localize else None
+        self._scan_t, self._pose = None, None
         self._dwa = DynamicWindow(self.config, self._grid)
         self._status, self._text = NavStatus.IDLE, ""
         self._goal, self._path = None, None
@@ -105,13 +118,19 @@ class NavController(Controller):
         t = observation.t
         dt = 0.1 if self._last_t is None else min(max(t - self._last_t, 0.02), 0.5)
         self._last_t = t
-        pose = observation.odom
-        if observation.scan is not None:
-            self._scan_world = self._scan_points(observation.scan, pose)
+        pose = observation.odom if self._localizer is None else self._localizer.pose(observation.odom)
+        scan = observation.scan
+        if scan is not None and scan.t != self._scan_t:
+            self._scan_t = scan.t
+            local = self._scan_local(scan)
+            if self._localizer is not None:
+                pose = self._localizer.update(observation.odom, local)
+            self._scan_world = self._to_world(pose, local)
             if self._grid is not None and len(self._scan_world):
                 pts = self._scan_world
                 unexplained = self._grid.distance_at(pts[:, 0], pts[:, 1]) > 2.0 * self._grid.resolution
-                self._tracker.update(observation.scan.t, pts[unexplained])
+                self._tracker.update(scan.t, pts[unexplained])
+        self._pose = pose
         if self._status is not NavStatus.ACTIVE or self._goal is None:
             return self._send(0.0, 0.0)
         if self._grid is None:
@@ -272,8 +291,8 @@ class NavController(Controller):
         self._last_cmd = Twist2D(v, w)
         return self._last_cmd
 
-    def _scan_points(self, scan: LaserScan, pose: Pose2D) -> np.ndarray:
-        """World-frame points of a scan (the lidar sits at the base's centre), kept until the next scan."""
+    def _scan_local(self, scan: LaserScan) -> np.ndarray:
+        """Robot-frame points of a scan's valid beams (the lidar sits at the base's centre)."""
         ranges = np.asarray(scan.ranges, dtype=float)
         key = (len(ranges), scan.angle_min, scan.angle_increment)
         if self._trig is None or self._trig[0] != key:
@@ -282,7 +301,11 @@ class NavController(Controller):
         _, cos, sin = self._trig
         ok = np.isfinite(ranges) & (ranges >= scan.range_min) & (ranges <= scan.range_max)
         r = ranges[ok]
-        local = np.column_stack((r * cos[ok], r * sin[ok]))
+        return np.column_stack((r * cos[ok], r * sin[ok]))
+
+    @staticmethod
+    def _to_world(pose: Pose2D, local: np.ndarray) -> np.ndarray:
+        """World-frame points of a scan taken at ``pose``, kept until the next scan."""
         c, s = math.cos(pose.yaw), math.sin(pose.yaw)
         return np.column_stack((pose.x + c * local[:, 0] - s * local[:, 1], pose.y + s * local[:, 0] + c * local[:, 1]))
 

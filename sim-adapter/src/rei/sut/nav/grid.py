@@ -23,6 +23,8 @@ class CostGrid:
 
     ``distance`` is the distance (capped) from a cell centre to the nearest obstacle or to the outside of the
     floors; ``cost`` is the per-cell planning cost (``inf`` where the robot's centre may not be planned).
+    ``surface`` is the signed distance (capped, negative inside) to the obstacles' outlines alone, what a laser
+    sees: the localizer matches scans against it.
     """
 
     def __init__(self, static_map: StaticMap, config: NavConfig) -> None:
@@ -40,13 +42,21 @@ class CostGrid:
         # Distance to the outside of the floors' bounds (0 outside).
         inside = np.minimum.outer(np.minimum(ys - ymin, ymax - ys), np.minimum(xs - xmin, xmax - xs))
         dist = np.clip(inside, 0.0, self.cap)
+        surface = np.full_like(dist, self.cap)
         for obstacle in static_map.obstacles:
-            self._stamp_rectangle(dist, xs, ys, obstacle)
+            self._stamp_rectangle(dist, surface, xs, ys, obstacle)
         self.distance = dist.astype(np.float32)
+        self.surface = np.maximum(surface, -self.cap)
+        self._surface_flat = self.surface.ravel()
         self.cost = self.cost_from_distance(self.distance)
 
     def _stamp_rectangle(
-        self, dist: np.ndarray, xs: np.ndarray, ys: np.ndarray, obstacle: tuple[float, float, float, float, float]
+        self,
+        dist: np.ndarray,
+        surface: np.ndarray,
+        xs: np.ndarray,
+        ys: np.ndarray,
+        obstacle: tuple[float, float, float, float, float],
     ) -> None:
         cx, cy, yaw, sx, sy = obstacle
         reach = 0.5 * math.hypot(sx, sy) + self.cap
@@ -63,6 +73,10 @@ class CostGrid:
         ly = np.abs(-s * dx + c * dy) - 0.5 * sy
         d = np.hypot(np.maximum(lx, 0.0), np.maximum(ly, 0.0))
         np.minimum(dist[j0:j1, i0:i1], d, out=dist[j0:j1, i0:i1])
+        # Signed: inside, minus the depth. The minimum over overlapping rectangles never crosses zero inside
+        # their union, so only outlines the laser can see are zero.
+        signed = d + np.minimum(np.maximum(lx, ly), 0.0)
+        np.minimum(surface[j0:j1, i0:i1], signed, out=surface[j0:j1, i0:i1])
 
     def cost_from_distance(self, distance: np.ndarray) -> np.ndarray:
         """Cell cost: 1 in the open, rising quadratically to ``1 + cost_scale`` at the inflation radius, ``inf``
@@ -99,6 +113,27 @@ class CostGrid:
         top = d[j, i] * (1.0 - ax) + d[j, i + 1] * ax
         bottom = d[j + 1, i] * (1.0 - ax) + d[j + 1, i + 1] * ax
         return np.where(ok, top * (1.0 - ay) + bottom * ay, 0.0)
+
+    def surface_at(self, x: np.ndarray, y: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Signed outline distance at world points and its gradient ``(d, dd/dx, dd/dy)``, bilinear between
+        cell centres; ``nan`` off the grid."""
+        fx = (x - self.origin[0]) * (1.0 / self.resolution) - 0.5
+        fy = (y - self.origin[1]) * (1.0 / self.resolution) - 0.5
+        i = fx.astype(np.intp)  # truncation: off-grid points on the low side are caught by ``ok`` below
+        j = fy.astype(np.intp)
+        ok = (fx >= 0.0) & (i < self.width - 1) & (fy >= 0.0) & (j < self.height - 1)
+        k = np.where(ok, j * self.width + i, 0)
+        ax, ay = fx - i, fy - j
+        f = self._surface_flat
+        d00, d10 = f.take(k), f.take(k + 1)
+        d01, d11 = f.take(k + self.width), f.take(k + self.width + 1)
+        bottom = d00 + (d10 - d00) * ax
+        top = d01 + (d11 - d01) * ax
+        d = bottom + (top - bottom) * ay
+        d[~ok] = np.nan
+        gx = ((d10 - d00) + ((d11 - d01) - (d10 - d00)) * ay) * (1.0 / self.resolution)
+        gy = (top - bottom) * (1.0 / self.resolution)
+        return d, gx, gy
 
     def with_points(self, px: np.ndarray, py: np.ndarray) -> np.ndarray:
         """The cost grid with extra obstacle points (sensed, not in the static map) inflated into it."""
