@@ -1,0 +1,320 @@
+# SPDX-License-Identifier: EPL-2.0
+"""Starting and stopping a private Crossbar.io router for one run (or one test session).
+
+Why a private router per run: runs are independent, ports are chosen free on loopback, and nothing outlives the
+run. Crossbar lives in its own venv (``scripts/setup-router.sh`` -> ``<repo>/.venv-router``) because its ~140
+pinned dependencies must not leak into the simulation's environment: it is a tool REI starts, not a library it
+imports.
+
+The router listens on loopback only unless the caller explicitly allows otherwise. Every transport uses the
+``nodelaytcp:`` endpoint of :mod:`rei.wamp.crossbar_nodelay` by default, which switches Nagle's algorithm off on
+the router's side of each connection (Crossbar 26.10.1 + autobahn 26.10.2 never do; see that module).
+"""
+
+from __future__ import annotations
+
+import ipaddress
+import json
+import os
+import shutil
+import signal
+import socket
+import subprocess
+import tempfile
+import time
+from collections.abc import Sequence
+from pathlib import Path
+from types import TracebackType
+from typing import Self
+
+from rei.wamp.crossbar_config import Role, Transport, TransportKind, anonymous_role, node_config
+
+#: Environment variable naming the crossbar executable; wins over the repository's .venv-router.
+CROSSBAR_ENV = "REI_CROSSBAR"
+REALM = "rei"
+_PLUGIN_SOURCE = Path(__file__).with_name("crossbar_nodelay.py")
+_BIND_RETRIES = 3
+
+
+class RouterError(RuntimeError):
+    """The router could not be found, started or stopped; the message says why (with the log tail)."""
+
+
+def find_crossbar(explicit: str | os.PathLike[str] | None = None) -> Path:
+    """The crossbar executable: ``explicit``, else ``$REI_CROSSBAR``, else ``<repo>/.venv-router/bin/crossbar``."""
+    if explicit is not None:
+        candidates = [("argument", Path(explicit))]
+    elif os.environ.get(CROSSBAR_ENV):
+        candidates = [(f"${CROSSBAR_ENV}", Path(os.environ[CROSSBAR_ENV]))]
+    else:
+        roots = [*Path(__file__).resolve().parents, *Path.cwd().resolve().parents, Path.cwd().resolve()]
+        candidates = [("repository", root / ".venv-router" / "bin" / "crossbar") for root in roots]
+    for _, path in candidates:
+        if path.is_file() and os.access(path, os.X_OK):
+            return path
+    where = ", ".join(f"{origin}: {path}" for origin, path in candidates[:3])
+    raise RouterError(
+        f"crossbar executable not found ({where}); run scripts/setup-router.sh or set {CROSSBAR_ENV}"
+    )
+
+
+def _is_loopback(host: str) -> bool:
+    try:
+        return ipaddress.ip_address(host).is_loopback
+    except ValueError:
+        return host == "localhost"
+
+
+def _free_ports(host: str, count: int) -> list[int]:
+    """Ports the OS considers free now (held open together so they differ). A race remains: see start()."""
+    sockets = []
+    try:
+        for _ in range(count):
+            s = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+            s.bind((host, 0))
+            sockets.append(s)
+        return [s.getsockname()[1] for s in sockets]
+    finally:
+        for s in sockets:
+            s.close()
+
+
+def _accepts(host: str, port: int) -> bool:
+    try:
+        with socket.create_connection((host, port), timeout=0.2):
+            return True
+    except OSError:
+        return False
+
+
+class Router:
+    """A Crossbar router process serving realm ``rei`` with msgpack on free loopback ports.
+
+    Use as a context manager (``with Router() as router: ... router.ws_url``) or call start()/stop().
+    ``run_dir`` receives the generated configuration, the plug-in and ``crossbar.log``; without it a temporary
+    folder is used and removed on stop().
+    """
+
+    def __init__(
+        self,
+        *,
+        crossbar: str | os.PathLike[str] | None = None,
+        run_dir: str | os.PathLike[str] | None = None,
+        realm: str = REALM,
+        host: str = "127.0.0.1",
+        kinds: Sequence[TransportKind] = ("websocket", "rawsocket"),
+        nodelay: bool = True,
+        roles: Sequence[Role] | None = None,
+        allow_remote: bool = False,
+        startup_timeout: float = 30.0,
+        stop_timeout: float = 10.0,
+    ) -> None:
+        if not allow_remote and not _is_loopback(host):
+            raise ValueError(f"router host {host!r} is not loopback; pass allow_remote=True to expose it")
+        if not kinds or len(set(kinds)) != len(kinds):
+            raise ValueError(f"transport kinds must be distinct and non-empty: {kinds!r}")
+        self._crossbar_arg = crossbar
+        self._run_dir_arg = Path(run_dir) if run_dir is not None else None
+        self.realm = realm
+        self.host = host
+        self._kinds = tuple(kinds)
+        self.nodelay = nodelay
+        self._roles = tuple(roles) if roles is not None else (anonymous_role(),)
+        self._startup_timeout = startup_timeout
+        self._stop_timeout = stop_timeout
+        self._process: subprocess.Popen[bytes] | None = None
+        self._transports: dict[TransportKind, Transport] = {}
+        self._run_dir: Path | None = None
+        self._temporary = False
+
+    # -- public API ------------------------------------------------------------------------------------------
+
+    @property
+    def pid(self) -> int | None:
+        return self._process.pid if self._process is not None else None
+
+    @property
+    def run_dir(self) -> Path:
+        if self._run_dir is None:
+            raise RouterError("router not started")
+        return self._run_dir
+
+    @property
+    def log_path(self) -> Path:
+        return self.run_dir / "crossbar.log"
+
+    def url(self, kind: TransportKind) -> str:
+        """Client URL of a transport: ``ws://127.0.0.1:P/ws`` or ``rs://127.0.0.1:P``."""
+        if kind not in self._transports:
+            raise RouterError(f"router has no {kind} transport (started: {sorted(self._transports)})")
+        return self._transports[kind].url()
+
+    @property
+    def ws_url(self) -> str:
+        return self.url("websocket")
+
+    @property
+    def rs_url(self) -> str:
+        return self.url("rawsocket")
+
+    def start(self) -> Router:
+        """Start the router and return once every transport accepts connections (or raise RouterError)."""
+        if self._process is not None:
+            raise RouterError("router already started")
+        executable = find_crossbar(self._crossbar_arg)
+        if self._run_dir_arg is not None:
+            self._run_dir = self._run_dir_arg
+            self._run_dir.mkdir(parents=True, exist_ok=True)
+        else:
+            self._run_dir = Path(tempfile.mkdtemp(prefix="rei-router-"))
+            self._temporary = True
+        self._install_plugin()
+        last_error: RouterError | None = None
+        for _ in range(_BIND_RETRIES):
+            try:
+                self._launch(executable)
+                self._wait_ready()
+                return self
+            except RouterError as error:
+                last_error = error
+                bind_race = "already in use" in self.log_tail(200)
+                self._terminate()
+                if not bind_race:
+                    break
+        self._cleanup_dir()
+        assert last_error is not None
+        raise last_error
+
+    def stop(self) -> None:
+        """SIGTERM the router's process group, SIGKILL it after ``stop_timeout``; never leaves a process."""
+        self._terminate()
+        self._cleanup_dir()
+
+    def log_tail(self, lines: int = 40) -> str:
+        """The last lines of the router's log (empty when there is none yet)."""
+        if self._run_dir is None or not self.log_path.exists():
+            return ""
+        text = self.log_path.read_text(errors="replace").splitlines()
+        return "\n".join(text[-lines:])
+
+    def __enter__(self) -> Self:
+        return self.start()
+
+    def __exit__(
+        self, exc_type: type[BaseException] | None, exc: BaseException | None, tb: TracebackType | None
+    ) -> None:
+        self.stop()
+
+    # -- internals -------------------------------------------------------------------------------------------
+
+    def _install_plugin(self) -> None:
+        # Twisted finds endpoint parsers in every <sys.path entry>/twisted/plugins/ folder without __init__.py.
+        plugins = self.run_dir / "plugins" / "twisted" / "plugins"
+        plugins.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(_PLUGIN_SOURCE, plugins / _PLUGIN_SOURCE.name)
+
+    def _launch(self, executable: Path) -> None:
+        ports = _free_ports(self.host, len(self._kinds))
+        self._transports = {
+            kind: Transport(kind, port, interface=self.host, nodelay=self.nodelay)
+            for kind, port in zip(self._kinds, ports, strict=True)
+        }
+        cbdir = self.run_dir / ".crossbar"
+        cbdir.mkdir(exist_ok=True)
+        config = node_config(self.realm, self._roles, list(self._transports.values()))
+        (cbdir / "config.json").write_text(json.dumps(config, indent=2))
+        env = dict(os.environ)
+        env["PYTHONPATH"] = str(self.run_dir / "plugins")
+        env.pop("PYTHONHOME", None)
+        command = [
+            str(executable),
+            "start",
+            "--cbdir",
+            str(cbdir),
+            "--color",
+            "false",
+            "--logformat",
+            "standard",
+            "--loglevel",
+            "info",
+        ]
+        with open(self.log_path, "ab") as log:
+            try:
+                # Own session = own process group: stop() signals the node controller and its worker together.
+                self._process = subprocess.Popen(
+                    command,
+                    cwd=self.run_dir,
+                    env=env,
+                    stdin=subprocess.DEVNULL,
+                    stdout=log,
+                    stderr=subprocess.STDOUT,
+                    start_new_session=True,
+                )
+            except OSError as error:
+                raise RouterError(f"cannot start {executable}: {error}") from error
+
+    def _wait_ready(self) -> None:
+        assert self._process is not None
+        deadline = time.monotonic() + self._startup_timeout
+        pending = {t.port for t in self._transports.values()}
+        while pending:
+            code = self._process.poll()
+            if code is not None:
+                raise RouterError(
+                    f"crossbar exited with code {code} during start-up; log tail ({self.log_path}):\n"
+                    + self.log_tail()
+                )
+            if time.monotonic() > deadline:
+                raise RouterError(
+                    f"crossbar did not accept connections on {sorted(pending)} within "
+                    f"{self._startup_timeout:.0f} s; log tail ({self.log_path}):\n" + self.log_tail()
+                )
+            pending = {port for port in pending if not _accepts(self.host, port)}
+            if pending:
+                time.sleep(0.05)
+
+    def _terminate(self) -> None:
+        process, self._process = self._process, None
+        if process is None:
+            return
+        pgid = process.pid  # start_new_session: the group id is the leader's pid
+        _signal_group(pgid, signal.SIGTERM)
+        try:
+            process.wait(timeout=self._stop_timeout)
+        except subprocess.TimeoutExpired:
+            _signal_group(pgid, signal.SIGKILL)
+            process.wait(timeout=self._stop_timeout)
+        # The worker may outlive the controller by a moment; whatever remains in the group is killed.
+        deadline = time.monotonic() + self._stop_timeout
+        killed = False
+        while _group_alive(pgid):
+            if time.monotonic() > deadline:
+                if killed:
+                    raise RouterError(f"router process group {pgid} still alive after SIGKILL")
+                _signal_group(pgid, signal.SIGKILL)
+                killed = True
+                deadline = time.monotonic() + self._stop_timeout
+            time.sleep(0.05)
+
+    def _cleanup_dir(self) -> None:
+        if self._temporary and self._run_dir is not None:
+            shutil.rmtree(self._run_dir, ignore_errors=True)
+            self._run_dir = None
+            self._temporary = False
+
+
+def _signal_group(pgid: int, sig: signal.Signals) -> None:
+    try:
+        os.killpg(pgid, sig)
+    except ProcessLookupError:
+        pass
+
+
+def _group_alive(pgid: int) -> bool:
+    try:
+        os.killpg(pgid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    return True
