@@ -106,9 +106,14 @@ rei_java_outdated() {
 
 rei_build_java() {
     rei_check_mvn
-    rei_say "building Java parts (first run takes a few minutes)..."
-    (cd "$REI_ROOT" && mvn -B -q -s .mvn/settings.xml install -DskipTests) \
-        || rei_die "the Java build failed; run 'mvn -B -s .mvn/settings.xml install -DskipTests' to see the full log"
+    local log="$REI_ROOT/target/rei-bootstrap/java-build.log"
+    mkdir -p "$(dirname "$log")"
+    rei_say "building Java parts (first run takes a few minutes; log in ${log#"$REI_ROOT"/})..."
+    # The code generators log at INFO whatever -q says: keep the log, show its end only on failure.
+    if ! (cd "$REI_ROOT" && mvn -B -q -Dstyle.color=never -s .mvn/settings.xml install -DskipTests) >"$log" 2>&1; then
+        tail -n 40 "$log" >&2
+        rei_die "the Java build failed; the whole log is in $log"
+    fi
     rei_java_stamp
 }
 

@@ -1,0 +1,142 @@
+# SPDX-License-Identifier: EPL-2.0
+"""`rei sim CASE -o OUT`: run a test case's mission once in pybullet and keep the streams it published.
+
+CASE is a ``.rei`` file (generated into ``OUT/case`` first) or a folder of generated artifacts. The state and
+mission streams go through a real Crossbar router started on a free loopback port (or one given with
+``--router``), and are recorded under ``OUT/streams/``. Exit 0: every task succeeded; 1: a task failed;
+2: bad arguments or files.
+"""
+
+from __future__ import annotations
+
+import argparse
+import secrets
+import sys
+from pathlib import Path
+from typing import Any
+
+from rei.cli._java import run_java_cli
+from rei.cli.errors import EXIT_INVALID, EXIT_OK, EXIT_USAGE, CommandError
+
+
+def register(subparsers: argparse._SubParsersAction[Any]) -> None:
+    """Add the `sim` subcommand."""
+    parser = subparsers.add_parser(
+        "sim",
+        help="run a test case's mission once in the simulator and record the published streams",
+        description=__doc__.split("\n\n", 1)[1] if __doc__ else None,
+    )
+    parser.add_argument("case", metavar="CASE", help="a .rei test case or a folder generated from one")
+    parser.add_argument("-o", "--output", required=True, metavar="OUT", help="output folder")
+    parser.add_argument("--controller", default="nav", metavar="SPEC",
+                        help="controller under test: nav, nav:key=value,..., script:FILE or a plug-in (default nav)")
+    parser.add_argument("--seed", type=int, default=0, help="seed of every random choice (default 0)")
+    parser.add_argument("--no-humans", action="store_true", help="leave the humans out of the world")
+    parser.add_argument("--fault", metavar="SPEC", help="inject a fault, e.g. laser:1%%, laser:10%% or "
+                        "laser:rate=0.01,gain=0.5,width=3")
+    parser.add_argument("--realtime", action="store_true", help="pace the simulation at wall-clock speed")
+    parser.add_argument("--state-rate", type=float, default=20.0, metavar="HZ",
+                        help="state messages per simulated second (default 20)")
+    parser.add_argument("--laser", choices=("min", "full", "none"), default="min",
+                        help="laser data in state messages: the minimum only (default), every range, or none")
+    router = parser.add_mutually_exclusive_group()
+    router.add_argument("--router", metavar="URL", help="publish through this router (ws:// or rs://) instead "
+                        "of starting one")
+    router.add_argument("--no-router", action="store_true", help="record the streams without publishing them")
+    parser.set_defaults(handler=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    # Heavy imports here, so `rei --help` stays fast.
+    from rei.artifacts import ArtifactError
+    from rei.run import MissionRunOptions, run_mission
+    from rei.sim.faults import parse_fault
+    from rei.sut.registry import UnknownControllerError, create_controller
+    from rei.wamp.codec import LaserMode
+    from rei.wamp.collector import CollectorConfig
+
+    out = Path(args.output)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        raise CommandError(f"cannot create {out}: {error.strerror}") from None
+    try:
+        if args.fault:
+            parse_fault(args.fault)
+        create_controller(args.controller)  # checked before anything starts
+        options = MissionRunOptions(
+            controller=args.controller, seed=args.seed, humans=not args.no_humans, fault=args.fault,
+            realtime=args.realtime,
+            collector=CollectorConfig(rate_hz=args.state_rate, laser=LaserMode(args.laser)))
+    except (ValueError, UnknownControllerError) as error:
+        raise CommandError(str(error)) from None
+    case_dir = _case_folder(Path(args.case), out)
+    run_id = secrets.token_hex(6)
+    try:
+        with _publisher(args, out) as client:
+            result = run_mission(case_dir, out, options, run_id=run_id, client=client, progress=_progress)
+    except ArtifactError as error:
+        raise CommandError(str(error)) from None
+    _clear_progress()
+    for task in result.tasks:
+        verdict = "ok  " if task.succeeded else "FAIL"
+        print(f"task {task.index}: {verdict} {task.ended - task.started:7.1f} s" + (f"  {task.reason}" if task.reason else ""))
+    if result.cut_off:
+        print(f"the run was cut off after {result.sim_time:.1f} s of simulated time")
+    print(f"mission {'succeeded' if result.succeeded else 'failed'}: {result.sim_time:.1f} s simulated in "
+          f"{result.wall_time:.1f} s ({result.real_time_factor:.0f}x real time); run {run_id}")
+    print(f"streams: {out / 'streams'} ({result.state_messages} state, {result.mission_messages} mission messages)")
+    return EXIT_OK if result.succeeded else EXIT_INVALID
+
+
+def _case_folder(case: Path, out: Path) -> Path:
+    if case.is_dir():
+        return case
+    if case.suffix != ".rei" or not case.is_file():
+        raise CommandError(f"{case}: expected a .rei file or a folder generated from one", EXIT_USAGE)
+    generated = out / "case"
+    code = run_java_cli(["generate", str(case), "-o", str(generated), "--quiet"])
+    if code != EXIT_OK:
+        raise CommandError(f"{case} could not be generated (see above)", code)
+    return generated
+
+
+class _publisher:
+    """The WAMP client the run publishes through: on a router started here, a given one, or none."""
+
+    def __init__(self, args: argparse.Namespace, out: Path) -> None:
+        self._args = args
+        self._out = out
+        self._router: Any = None
+        self._client: Any = None
+
+    def __enter__(self) -> Any:
+        from rei.wamp.client import WampClient
+        from rei.wamp.router import Router
+
+        if self._args.no_router:
+            return None
+        url = self._args.router
+        if url is None:
+            self._router = Router(run_dir=self._out / "router").start()
+            url = self._router.rs_url
+        self._client = WampClient(url).start()
+        return self._client
+
+    def __exit__(self, *exc: object) -> None:
+        try:
+            if self._client is not None:
+                self._client.close()
+        finally:
+            if self._router is not None:
+                self._router.stop()
+
+
+def _progress(sim_time: float, done: int, total: int) -> None:
+    if sys.stderr.isatty():
+        print(f"\rsim {sim_time:7.1f} s  tasks {done}/{total}", end="", file=sys.stderr, flush=True)
+
+
+def _clear_progress() -> None:
+    if sys.stderr.isatty():
+        print("\r" + " " * 40 + "\r", end="", file=sys.stderr, flush=True)

@@ -1,0 +1,57 @@
+# SPDX-License-Identifier: EPL-2.0
+"""`rei sim` as a user runs it: real processes, the router started by the tool, the recorded streams."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from rei.wamp.recording import read_recording
+
+
+def test_runs_an_example_through_a_router_it_starts_and_stops(run_cli, repo_root: Path, tmp_path: Path) -> None:
+    out = tmp_path / "out"
+    result = run_cli("sim", repo_root / "examples" / "simple_navigation.rei", "-o", out, "--no-humans", "--seed", "3")
+    assert result.returncode == 0, result.stderr
+    assert "mission succeeded" in result.stdout
+    states = read_recording(out / "streams" / "state.msgpack")
+    assert [m["seq"] for m in states] == list(range(len(states)))
+    summary = json.loads((out / "sim.json").read_text())
+    assert summary["succeeded"] and summary["options"]["seed"] == 3
+    # 20 state messages per simulated second, whatever the wall-clock speed
+    assert abs(len(states) - 20 * summary["sim_time"]) <= 2
+    assert (out / "router" / "crossbar.log").is_file()  # a router really ran for this run ...
+    assert processes_mentioning(out / "router") == []  # ... and nothing of it is left
+
+
+def processes_mentioning(path: Path) -> list[str]:
+    """Command lines of live processes that name `path` (the router runs with its run folder as --cbdir)."""
+    found = []
+    for cmdline in Path("/proc").glob("[0-9]*/cmdline"):
+        try:
+            text = cmdline.read_bytes().replace(b"\0", b" ").decode(errors="replace")
+        except OSError:
+            continue
+        if str(path) in text:
+            found.append(text)
+    return found
+
+
+def test_a_failing_mission_exits_one_with_the_reason(run_cli, repo_root: Path, tmp_path: Path) -> None:
+    script = tmp_path / "spin.txt"
+    script.write_text("3.0 0.0 1.0\n")
+    result = run_cli("sim", repo_root / "examples" / "simple_navigation.rei", "-o", tmp_path / "out",
+                     "--controller", f"script:{script}", "--no-router")
+    assert result.returncode == 1, result.stderr
+    assert "FAIL" in result.stdout and "false success" in result.stdout
+
+
+def test_bad_arguments_exit_two_before_anything_runs(run_cli, repo_root: Path, tmp_path: Path) -> None:
+    example = repo_root / "examples" / "simple_navigation.rei"
+    unknown = run_cli("sim", example, "-o", tmp_path / "a", "--controller", "teleport")
+    assert unknown.returncode == 2
+    assert "teleport" in unknown.stderr and "nav" in unknown.stderr
+    fault = run_cli("sim", example, "-o", tmp_path / "b", "--fault", "laser:rate=lots")
+    assert fault.returncode == 2 and "laser:rate=lots" in fault.stderr
+    missing = run_cli("sim", tmp_path / "nope.rei", "-o", tmp_path / "c")
+    assert missing.returncode == 2 and "nope.rei" in missing.stderr
