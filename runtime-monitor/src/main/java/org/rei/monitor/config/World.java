@@ -1,0 +1,34 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.monitor.config;
+
+import java.util.List;
+
+/** world.json ({@code rei-world/1}, docs/artifacts.md): the parts the monitor needs. */
+public record World(String testcase, String environment, double floorSize, List<FloorCell> floors,
+		List<WorldObject> objects, WorldRobot robot) {
+
+	/** A floor with its grid cell and its neighbours' names (a floor, a wall or null) TOP, RIGHT, BOTTOM, LEFT. */
+	public record FloorCell(String name, int i, int j, String top, String right, String bottom, String left) {
+	}
+
+	/** A body of the world: {@code size} is {@code [x, y, z]}, {@code pose} {@code [x, y, z, yaw]}. */
+	public record WorldObject(String name, String category, String type, String shape, double[] size, double[] pose,
+			String floor) {
+
+		public boolean isObstacle() {
+			return !"FLOOR".equals(category);
+		}
+
+		public boolean moves() {
+			return "HUMAN".equals(category) || "DYNAMIC".equals(category);
+		}
+	}
+
+	/** The robot: footprint {@code size}, start pose, lidar range limits. */
+	public record WorldRobot(String name, String type, String shape, double[] size, double[] pose, String floor,
+			double lidarRangeMin, double lidarRangeMax) {
+	}
+}

@@ -1,0 +1,224 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.monitor.engine;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.Iterator;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
+
+import org.kie.api.definition.KiePackage;
+import org.kie.api.definition.rule.Query;
+import org.kie.api.event.rule.AfterMatchFiredEvent;
+import org.kie.api.event.rule.AgendaEventListener;
+import org.kie.api.event.rule.DefaultAgendaEventListener;
+import org.kie.api.runtime.KieSession;
+import org.kie.api.runtime.rule.FactHandle;
+import org.kie.api.runtime.rule.LiveQuery;
+import org.kie.api.runtime.rule.Row;
+import org.kie.api.runtime.rule.Variable;
+import org.kie.api.runtime.rule.ViewChangedEventListener;
+import org.kie.api.time.SessionPseudoClock;
+import org.rei.monitor.signals.SignalSink;
+
+/**
+ * The incremental part of the monitor: keeps the facts (thresholds, robot, one proximity per nearby obstacle,
+ * laser) in the Drools session, turns the appearing and disappearing matches of every query into
+ * {@link QueryEvent}s at the simulation time of the step (live queries), and lets the transition rules turn
+ * those into signals. The pseudo clock follows simulation time.
+ *
+ * <p>Every query of the loaded files is watched; by convention each declares
+ * {@code (String subject, String target, double range)}.
+ */
+public final class MonitorEngine implements AutoCloseable {
+
+	private final KieSession session;
+	private final SessionPseudoClock clock;
+	private final RobotFact robot;
+	private final FactHandle robotHandle;
+	private LaserReading laser;
+	private FactHandle laserHandle;
+	private final Map<String, Slot> proximities = new HashMap<>();
+	private final List<LiveQuery> liveQueries = new ArrayList<>();
+	private final List<QueryEvent> pending = new ArrayList<>();
+	private final List<QueryEvent> queryEventLog;
+	private double now;
+	private long step;
+
+	private static final class Slot {
+		final Proximity fact;
+		FactHandle handle;
+		long seen;
+
+		Slot(Proximity fact) {
+			this.fact = fact;
+		}
+	}
+
+	/**
+	 * @param queryEventLog receives every query event in order (tests, debugging), or null
+	 */
+	public MonitorEngine(KieSession session, Thresholds thresholds, String robotName, SignalSink signals,
+			List<QueryEvent> queryEventLog) {
+		this.session = session;
+		this.clock = session.getSessionClock();
+		this.queryEventLog = queryEventLog;
+		session.setGlobal("signals", signals);
+		session.insert(thresholds);
+		robot = new RobotFact(robotName);
+		robotHandle = session.insert(robot);
+		for (KiePackage pkg : session.getKieBase().getKiePackages()) {
+			for (Query q : pkg.getQueries()) {
+				watch(q.getName());
+			}
+		}
+		session.fireAllRules();
+		pending.clear(); // matches present before the first message are the initial state, not events
+	}
+
+	private void watch(String query) {
+		ViewChangedEventListener listener = new ViewChangedEventListener() {
+			@Override
+			public void rowInserted(Row row) {
+				pending.add(event(query, QueryEvent.Kind.FOUND, row));
+			}
+
+			@Override
+			public void rowDeleted(Row row) {
+				pending.add(event(query, QueryEvent.Kind.LOST, row));
+			}
+
+			@Override
+			public void rowUpdated(Row row) {
+				// the same match with new values (a distance changed): not an event
+			}
+		};
+		try {
+			liveQueries.add(session.openLiveQuery(query, new Object[] { Variable.v, Variable.v, Variable.v }, listener));
+		} catch (RuntimeException e) {
+			throw new IllegalArgumentException("query " + query
+					+ " must declare (String subject, String target, double range): " + e.getMessage(), e);
+		}
+	}
+
+	private QueryEvent event(String query, QueryEvent.Kind kind, Row row) {
+		Object range = row.get("range");
+		return new QueryEvent(query, kind, (String) row.get("subject"), (String) row.get("target"),
+				range instanceof Number n ? n.doubleValue() : Double.NaN, now);
+	}
+
+	/** Starts a state step at simulation time {@code t} (seconds); the pseudo clock never runs backwards. */
+	public void beginStep(double t) {
+		now = t;
+		step++;
+		advanceClock(t);
+	}
+
+	private void advanceClock(double t) {
+		long target = Math.round(t * 1000);
+		long delta = target - clock.getCurrentTime();
+		if (delta > 0) {
+			clock.advanceTime(delta, TimeUnit.MILLISECONDS);
+		}
+	}
+
+	/** Reports the footprint distance to one nearby obstacle in this step. */
+	public void proximity(String object, String category, double distance, boolean contact) {
+		Slot slot = proximities.get(object);
+		if (slot == null) {
+			slot = new Slot(new Proximity(robot.getName(), object, category, distance, contact));
+			slot.handle = session.insert(slot.fact);
+			proximities.put(object, slot);
+		} else if (slot.fact.set(distance, contact)) {
+			session.update(slot.handle, slot.fact);
+		}
+		slot.seen = step;
+	}
+
+	/** Reports the laser's distance (see {@link LaserReading}); NaN when this step has no laser data. */
+	public void laser(double distance) {
+		if (Double.isNaN(distance)) {
+			return;
+		}
+		if (laser == null) {
+			laser = new LaserReading(robot.getName(), "laser", distance);
+			laserHandle = session.insert(laser);
+		} else if (laser.set(distance)) {
+			session.update(laserHandle, laser);
+		}
+	}
+
+	/** Ends the step: obstacles not reported are no longer near; queries and transition rules run. */
+	public void endStep(String nearestObject, double nearestDistance) {
+		for (Iterator<Slot> it = proximities.values().iterator(); it.hasNext();) {
+			Slot slot = it.next();
+			if (slot.seen != step) {
+				session.delete(slot.handle);
+				it.remove();
+			}
+		}
+		if (robot.set(nearestObject, nearestDistance)) {
+			session.update(robotHandle, robot);
+		}
+		fire();
+	}
+
+	/** A mission event at simulation time {@code t}. */
+	public void mission(MissionEvent event) {
+		now = Math.max(now, event.getT());
+		advanceClock(event.getT());
+		session.insert(event);
+		fire();
+	}
+
+	// live-query callbacks arrive inside fireAllRules; the events they produce are inserted afterwards
+	private void fire() {
+		session.fireAllRules();
+		while (!pending.isEmpty()) {
+			List<QueryEvent> batch = new ArrayList<>(pending);
+			pending.clear();
+			for (QueryEvent e : batch) {
+				if (queryEventLog != null) {
+					queryEventLog.add(e);
+				}
+				session.insert(e);
+			}
+			session.fireAllRules();
+		}
+	}
+
+	/** Names of the rules that fired, for tests that assert them (STYLE: assert fired rules by name). */
+	public void addAgendaListener(AgendaEventListener listener) {
+		session.addEventListener(listener);
+	}
+
+	/** A listener that records the name of every fired rule. */
+	public static AgendaEventListener firedRuleRecorder(List<String> into) {
+		return new DefaultAgendaEventListener() {
+			@Override
+			public void afterMatchFired(AfterMatchFiredEvent event) {
+				into.add(event.getMatch().getRule().getName());
+			}
+		};
+	}
+
+	public long factCount() {
+		return session.getFactCount();
+	}
+
+	public int nearbyCount() {
+		return proximities.size();
+	}
+
+	@Override
+	public void close() {
+		for (LiveQuery q : liveQueries) {
+			q.close();
+		}
+		session.dispose();
+	}
+}

@@ -1,0 +1,58 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.monitor.engine;
+
+import java.nio.charset.StandardCharsets;
+import java.util.List;
+import java.util.stream.Collectors;
+
+import org.kie.api.KieServices;
+import org.kie.api.builder.Message;
+import org.kie.api.builder.Results;
+import org.kie.api.conf.EventProcessingOption;
+import org.kie.api.io.Resource;
+import org.kie.api.io.ResourceType;
+import org.kie.api.runtime.KieSession;
+import org.kie.api.runtime.KieSessionConfiguration;
+import org.kie.api.runtime.conf.ClockTypeOption;
+import org.kie.internal.utils.KieHelper;
+
+/**
+ * Builds the monitor's Drools session from .drl text: STREAM mode (events, temporal operators) with a pseudo clock
+ * that the monitor drives with simulation time, never the wall clock. A build error in any file fails loudly with
+ * the file and line.
+ */
+public final class SessionFactory {
+
+	private SessionFactory() {
+	}
+
+	public static KieSession build(List<DrlSources.Source> sources) {
+		KieServices ks = KieServices.Factory.get();
+		KieHelper helper = new KieHelper();
+		for (DrlSources.Source s : sources) {
+			Resource r = ks.getResources().newByteArrayResource(s.text().getBytes(StandardCharsets.UTF_8));
+			r.setSourcePath(sourcePath(s.path()));
+			helper.addResource(r, ResourceType.DRL);
+		}
+		Results results = helper.verify();
+		if (results.hasMessages(Message.Level.ERROR)) {
+			throw new IllegalArgumentException("rule files do not build:\n" + results.getMessages(Message.Level.ERROR)
+					.stream().map(m -> "  " + m.getPath() + ":" + m.getLine() + ": " + m.getText().strip())
+					.collect(Collectors.joining("\n")));
+		}
+		KieSessionConfiguration conf = ks.newKieSessionConfiguration();
+		conf.setOption(ClockTypeOption.PSEUDO);
+		return helper.build(EventProcessingOption.STREAM).newKieSession(conf, null);
+	}
+
+	// KieHelper files resources under src/main/resources; a folder named like the DRL package keeps Drools quiet,
+	// the source folder and file name in the file name keep messages readable ("rei/queries_geometry.drl:12")
+	private static String sourcePath(String path) {
+		String[] parts = path.replace('\\', '/').split("/");
+		String tail = parts.length > 1 ? parts[parts.length - 2] + "_" + parts[parts.length - 1] : parts[0];
+		return "src/main/resources/rei/" + tail;
+	}
+}

@@ -1,0 +1,15 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.monitor.signals;
+
+/** A message of {@code rei.run.<id>.signal}: {@code seq} counts from 0 without gaps. */
+public record Signal(long seq, double t, String signal, String subject, String object, double distance) {
+
+	/** One line per signal, the format of {@code --replay} output and of test expectations. */
+	public String line() {
+		return String.format(java.util.Locale.ROOT, "%d %.3f %s %s %s %.4f", seq, t, signal, subject, object,
+				distance);
+	}
+}

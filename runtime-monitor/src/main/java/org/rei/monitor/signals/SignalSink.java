@@ -1,0 +1,16 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.monitor.signals;
+
+/** Where rules send signals (the DRL global {@code signals}). */
+public interface SignalSink {
+
+	/** Emits {@code signal} about the observation that raised it. */
+	default void emit(String signal, Observation o) {
+		emit(signal, o.getT(), o.getSubject(), o.getTarget(), o.getRange());
+	}
+
+	void emit(String signal, double t, String subject, String object, double distance);
+}

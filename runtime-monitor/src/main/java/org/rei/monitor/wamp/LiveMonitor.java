@@ -1,0 +1,197 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.monitor.wamp;
+
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
+import java.util.function.Function;
+
+import org.msgpack.jackson.dataformat.MessagePackFactory;
+import org.rei.monitor.config.CaseReader;
+import org.rei.monitor.pipeline.Monitor;
+import org.rei.monitor.signals.Signal;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+
+import ws.wamp.jawampa.PubSubData;
+import ws.wamp.jawampa.WampClient;
+import ws.wamp.jawampa.WampClientBuilder;
+import ws.wamp.jawampa.WampSerialization;
+import ws.wamp.jawampa.transport.netty.NettyWampClientConnectorProvider;
+
+/**
+ * Live mode: joins realm {@code rei} over WebSocket with msgpack (jawampa on netty; netty enables TCP_NODELAY on
+ * its sockets by default), reads the configuration (from {@code --case} or the {@code config} RPC), subscribes to
+ * the state and mission topics, publishes signals and serves the {@code snapshot} RPC. Events are re-encoded to
+ * the payload's msgpack bytes and handed to one pipeline thread, so live and replay run the same code.
+ */
+public final class LiveMonitor implements AutoCloseable {
+
+	private static final ObjectMapper MSGPACK = new ObjectMapper(new MessagePackFactory());
+
+	private final WampClient client;
+	private final ExecutorService pipeline = Executors.newSingleThreadExecutor(r -> {
+		Thread t = new Thread(r, "rei-monitor-pipeline");
+		t.setDaemon(true);
+		return t;
+	});
+	private final CountDownLatch ended = new CountDownLatch(1);
+	private final Consumer<String> log;
+	private volatile Monitor monitor;
+	private OutputStream stateRecording;
+	private OutputStream missionRecording;
+
+	public LiveMonitor(String router, String realm, Consumer<String> log) throws Exception {
+		this.log = log;
+		client = new WampClientBuilder().withConnectorProvider(new NettyWampClientConnectorProvider()).withUri(router)
+				.withRealm(realm).withSerializations(new WampSerialization[] { WampSerialization.MessagePack })
+				.withInfiniteReconnects().withReconnectInterval(1, TimeUnit.SECONDS).build();
+	}
+
+	/**
+	 * Connects and starts monitoring run {@code runId}.
+	 *
+	 * @param caseFromConfig   builds the case from the config RPC's result when no case folder was given
+	 * @param monitorFactory   builds the monitor once the case is known
+	 * @param recordDir        where received streams are recorded (for replay comparisons), or null
+	 */
+	public void start(String runId, CaseReader.Case givenCase, Function<CaseReader.Case, Monitor> monitorFactory,
+			Path recordDir, Consumer<Signal> onSignal, long timeoutMillis) throws Exception {
+		CountDownLatch connected = new CountDownLatch(1);
+		client.statusChanged().subscribe(s -> {
+			if (s instanceof WampClient.ConnectedState) {
+				connected.countDown();
+			}
+		}, e -> log.accept("WAMP status error: " + e));
+		client.open();
+		if (!connected.await(timeoutMillis, TimeUnit.MILLISECONDS)) {
+			throw new IOException("could not join the realm within " + timeoutMillis + " ms");
+		}
+		CaseReader.Case c = givenCase;
+		String configUri = "rei.run." + runId + ".config";
+		if (c == null) {
+			JsonNode result = client.call(configUri, new Object[0]).toBlocking().single().arguments().get(0);
+			c = new CaseReader.Case(CaseReader.world(result.get("world")), CaseReader.monitor(result.get("monitor")));
+		}
+		Monitor m = monitorFactory.apply(c);
+		monitor = m;
+		String stateTopic = c.monitor().topic("state", runId);
+		String missionTopic = c.monitor().topic("mission", runId);
+		String signalTopic = c.monitor().topic("signal", runId);
+		String snapshotUri = c.monitor().topic("snapshot", runId);
+		if (recordDir != null) {
+			Files.createDirectories(recordDir);
+			stateRecording = Files.newOutputStream(recordDir.resolve("state.msgpack"));
+			missionRecording = Files.newOutputStream(recordDir.resolve("mission.msgpack"));
+		}
+		m.signals().addListener(s -> {
+			Map<String, Object> payload = new LinkedHashMap<>();
+			payload.put("seq", s.seq());
+			payload.put("t", s.t());
+			payload.put("signal", s.signal());
+			payload.put("subject", s.subject());
+			payload.put("object", s.object());
+			payload.put("distance", s.distance());
+			client.publish(signalTopic, payload).subscribe(id -> {
+			}, e -> log.accept("publishing a signal failed: " + e));
+			onSignal.accept(s);
+		});
+		client.registerProcedure(snapshotUri).subscribe(request -> pipeline.execute(() -> {
+			try {
+				request.reply(m.snapshot());
+			} catch (RuntimeException e) {
+				try {
+					request.replyError("rei.error.snapshot", e.toString());
+				} catch (ws.wamp.jawampa.ApplicationError ignored) {
+					// replyError rethrows the error it sent; nothing more to do
+				}
+			}
+		}), e -> log.accept("snapshot registration failed: " + e));
+		client.makeSubscription(stateTopic).subscribe(ev -> accept(ev, true),
+				e -> log.accept("state subscription failed: " + e));
+		client.makeSubscription(missionTopic).subscribe(ev -> accept(ev, false),
+				e -> log.accept("mission subscription failed: " + e));
+		log.accept("monitoring " + stateTopic + " and " + missionTopic + ", signals on " + signalTopic);
+	}
+
+	private void accept(PubSubData event, boolean state) {
+		byte[] bytes;
+		try {
+			bytes = event.arguments() == null || event.arguments().size() == 0 ? new byte[] { (byte) 0xc0 }
+					: MSGPACK.writeValueAsBytes(event.arguments().get(0));
+		} catch (IOException e) {
+			bytes = new byte[] { (byte) 0xc0 };
+		}
+		byte[] data = bytes;
+		pipeline.execute(() -> {
+			try {
+				if (state) {
+					record(stateRecording, data);
+					monitor.onStateBytes(data, 0, data.length);
+				} else {
+					record(missionRecording, data);
+					long before = monitor.missionsProcessed();
+					monitor.onMissionBytes(data, 0, data.length);
+					if (monitor.missionsProcessed() > before && monitor.model().model().getOwnedMissionState().isEnded()) {
+						ended.countDown();
+					}
+				}
+			} catch (RuntimeException e) {
+				monitor.guard().problem("failed-message", e.toString());
+			}
+		});
+	}
+
+	private static void record(OutputStream out, byte[] data) {
+		if (out != null) {
+			try {
+				out.write(data);
+				out.flush();
+			} catch (IOException e) {
+				// a recording is a debugging aid: losing it must not stop monitoring
+			}
+		}
+	}
+
+	/** Waits for the mission's END event (or the timeout); true if it came. */
+	public boolean awaitEnd(long millis) throws InterruptedException {
+		return ended.await(millis, TimeUnit.MILLISECONDS);
+	}
+
+	/** Runs {@code task} on the pipeline thread and waits for it (e.g. the snapshot on exit). */
+	public void onPipeline(Runnable task) throws Exception {
+		pipeline.submit(task).get();
+	}
+
+	public Monitor monitor() {
+		return monitor;
+	}
+
+	@Override
+	public void close() throws Exception {
+		try {
+			pipeline.submit(() -> {
+			}).get(10, TimeUnit.SECONDS); // drain what arrived
+		} finally {
+			pipeline.shutdown();
+			client.close().toBlocking().lastOrDefault(null);
+			for (OutputStream out : new OutputStream[] { stateRecording, missionRecording }) {
+				if (out != null) {
+					out.close();
+				}
+			}
+		}
+	}
+}

@@ -1,0 +1,162 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.monitor.pipeline;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.DoubleUnaryOperator;
+
+import org.junit.jupiter.api.Test;
+import org.rei.monitor.signals.Signal;
+import org.rei.monitor.wire.StateMessage;
+
+/** Scripted traces yield exactly the expected transitions, each within one sample of the exact crossing time. */
+class ScriptedTraceTest {
+
+	private static final double CLOSE = 0.25;
+	private static final double COLLISION = 0.01;
+
+	private static TestRuns run(List<StateMessage> trace) {
+		TestRuns run = new TestRuns();
+		for (StateMessage m : trace) {
+			run.monitor.onState(m);
+		}
+		return run;
+	}
+
+	/** Times at which the state (FAR 0, CLOSE 1, COLLISION 2) of gap(t) changes, on a 0.1 ms grid. */
+	private static List<double[]> crossings(DoubleUnaryOperator gap, double end) {
+		List<double[]> out = new ArrayList<>();
+		int state = state(gap.applyAsDouble(0));
+		for (double t = 0; t <= end; t += 1e-4) {
+			int s = state(gap.applyAsDouble(t));
+			if (s != state) {
+				out.add(new double[] { t, state, s });
+				state = s;
+			}
+		}
+		return out;
+	}
+
+	private static int state(double d) {
+		return d < COLLISION ? 2 : d < CLOSE ? 1 : 0;
+	}
+
+	private static void assertWithinOneSample(double exact, Signal s) {
+		assertTrue(s.t() >= exact - 1e-3 && s.t() < exact + Traces.DT + 1e-3,
+				s + " should come within one sample after " + exact);
+	}
+
+	@Test
+	void robotDrivingIntoAWallAndBackPassesEveryGeometricState() {
+		try (TestRuns run = run(Traces.wallApproach())) {
+			List<Signal> geom = run.of("SIG_GEOM_");
+			assertEquals(List.of("SIG_GEOM_FAR_TRANSIT_CLOSE", "SIG_GEOM_CLOSE_TRANSIT_COLLISION",
+					"SIG_GEOM_COLLISION_TRANSIT_CLOSE", "SIG_GEOM_CLOSE_TRANSIT_FAR"), run.names("SIG_GEOM_"));
+			// hand-computed: gap = 1.8595 - 0.2 t going in, 0.15 (t - 10) coming back
+			double[] expected = { 8.05, 9.25, 10.10, 11.70 };
+			double[] distance = { 0.2495, 0.0095, 0.015, 0.255 };
+			for (int i = 0; i < 4; i++) {
+				assertEquals(expected[i], geom.get(i).t(), 1e-9, geom.get(i).toString());
+				assertEquals(distance[i], geom.get(i).distance(), 1e-9, geom.get(i).toString());
+				assertEquals("tb3", geom.get(i).subject());
+				assertEquals("wall_east", geom.get(i).object());
+			}
+			List<double[]> exact = crossings(Traces::wallGap, 14);
+			assertEquals(4, exact.size());
+			for (int i = 0; i < 4; i++) {
+				assertWithinOneSample(exact.get(i)[0], geom.get(i));
+			}
+		}
+	}
+
+	@Test
+	void laserSeesTheWallAtTheSameTimesAsTheGeometry() {
+		try (TestRuns run = run(Traces.wallApproach())) {
+			assertEquals(List.of("SIG_LASER_FAR_TRANSIT_CLOSE", "SIG_LASER_CLOSE_TRANSIT_COLLISION",
+					"SIG_LASER_COLLISION_TRANSIT_CLOSE", "SIG_LASER_CLOSE_TRANSIT_FAR"), run.names("SIG_LASER_"));
+			List<Double> times = run.of("SIG_LASER_").stream().map(Signal::t).toList();
+			assertEquals(List.of(8.05, 9.25, 10.10, 11.70), times.stream().map(t -> Math.round(t * 100) / 100.0).toList());
+			assertTrue(run.of("SIG_LASER_").stream().allMatch(s -> s.object().equals("laser")));
+			assertEquals(8, run.signals.size(), run.signals.toString());
+		}
+	}
+
+	@Test
+	void transitionsFireByRuleNameOncePerChange() {
+		try (TestRuns run = run(Traces.wallApproach())) {
+			assertEquals(List.of("Robot goes from far to close", "Robot goes from close to collision",
+					"Robot goes from collision to close", "Robot goes from close to far"),
+					run.firedRules.stream().filter(r -> r.startsWith("Robot")).toList());
+			assertEquals(List.of("Laser starts sensing closeness", "Laser goes from closeness to collision",
+					"Laser goes from collision to closeness", "Laser stops sensing closeness"),
+					run.firedRules.stream().filter(r -> r.startsWith("Laser")).toList());
+		}
+	}
+
+	@Test
+	void circleAroundATableIsCloseAtItsShortSidesOnly() {
+		double end = 2 * Math.PI * 0.95 / 0.2;
+		DoubleUnaryOperator gap = t -> Traces.rectangles(Traces.circlePose(t), 0.1405, 0.153,
+				new double[] { 1.5, 2.5, 0 }, 0.6, 0.4);
+		try (TestRuns run = run(Traces.circleAroundTable())) {
+			assertEquals(List.of("SIG_GEOM_FAR_TRANSIT_CLOSE", "SIG_GEOM_CLOSE_TRANSIT_FAR",
+					"SIG_GEOM_FAR_TRANSIT_CLOSE", "SIG_GEOM_CLOSE_TRANSIT_FAR"), run.names("SIG_GEOM_"));
+			List<double[]> exact = crossings(gap, end);
+			assertEquals(4, exact.size());
+			List<Signal> geom = run.of("SIG_GEOM_");
+			for (int i = 0; i < 4; i++) {
+				assertWithinOneSample(exact.get(i)[0], geom.get(i));
+				assertEquals("table1", geom.get(i).object());
+				assertEquals(gap.applyAsDouble(geom.get(i).t()), geom.get(i).distance(), 1e-9);
+			}
+			assertEquals(List.of(), run.names("SIG_LASER_"), "no laser data in this trace");
+		}
+	}
+
+	@Test
+	void humanCrossingThePathIsApproachedHitAndLeft() {
+		DoubleUnaryOperator gap = t -> {
+			double[] r = Traces.crossingRobot(t);
+			double[] h = Traces.crossingHuman(t);
+			return Math.max(0, Traces.pointToRectangle(h[0], h[1], r[0], r[1], r[2], 0.1405, 0.153) - 0.25);
+		};
+		try (TestRuns run = run(Traces.humanCrossing())) {
+			assertEquals(List.of("SIG_GEOM_FAR_TRANSIT_CLOSE", "SIG_GEOM_CLOSE_TRANSIT_COLLISION",
+					"SIG_GEOM_COLLISION_TRANSIT_CLOSE", "SIG_GEOM_CLOSE_TRANSIT_FAR"), run.names("SIG_GEOM_"));
+			List<double[]> exact = crossings(gap, 6);
+			assertEquals(4, exact.size());
+			List<Signal> geom = run.of("SIG_GEOM_");
+			for (int i = 0; i < 4; i++) {
+				assertWithinOneSample(exact.get(i)[0], geom.get(i));
+				assertEquals("h1", geom.get(i).object());
+			}
+			// the per-object queries saw the same: closeness found and lost twice around one collision (events of
+			// different queries at the same time come in no defined order, so each query is checked on its own)
+			assertEquals(List.of("FOUND", "LOST", "FOUND", "LOST"), kinds(run, "closeToObject"));
+			assertEquals(List.of("FOUND", "LOST"), kinds(run, "collisionWithObject"));
+			double collisionFound = run.queryEvents.stream().filter(e -> e.getQuery().equals("collisionWithObject"))
+					.findFirst().orElseThrow().getT();
+			assertEquals(geom.get(1).t(), collisionFound, 0);
+		}
+	}
+
+	private static List<String> kinds(TestRuns run, String query) {
+		return run.queryEvents.stream().filter(e -> "h1".equals(e.getTarget()) && e.getQuery().equals(query))
+				.map(e -> e.getKind().name()).toList();
+	}
+
+	@Test
+	void signalsAreNumberedWithoutGaps() {
+		try (TestRuns run = run(Traces.wallApproach())) {
+			for (int i = 0; i < run.signals.size(); i++) {
+				assertEquals(i, run.signals.get(i).seq());
+			}
+		}
+	}
+}
