@@ -67,4 +67,5 @@ def test_contact_with_a_wall_is_reported(sim: Simulation) -> None:
     assert state.contacts == (("tb3", "W_0_0_left"),)
     assert state.robot.pose[0] == pytest.approx(0.05 + 0.281 / 2, abs=0.02)
     _drive(sim, Twist2D(0.2, 0.0), 1.0)
+    sim.state()  # reports what was touched since the last snapshot: the wall, at the start of this second
     assert sim.state().contacts == ()

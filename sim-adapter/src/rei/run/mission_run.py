@@ -17,7 +17,7 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
 from rei.artifacts import read_case
-from rei.geometry import Pose2D, Twist2D
+from rei.geometry import Twist2D
 from rei.mission import MissionEvent, MissionExecutor, TaskResult, mission_info
 from rei.sim.simulation import Simulation
 from rei.sut.registry import create_controller
@@ -100,8 +100,7 @@ def run_mission(
         next_progress = 0.0
         while not executor.done and sim.t < time_limit:
             if sim.steps % control_every == 0:
-                x, y, _, yaw = sim.state().robot.pose
-                executor.tick(sim.t, Pose2D(x, y, yaw))
+                executor.tick(sim.t, sim.robot_pose())
                 command = controller.step(sim.observation())
             sim.step(command)
             if collector.due(sim.t):  # a snapshot costs; build it only when it will be sent

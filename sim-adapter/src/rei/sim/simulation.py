@@ -235,15 +235,23 @@ class Simulation:
         )
 
     # --- ground truth -----------------------------------------------------------------------------------------
+    def robot_pose(self) -> Pose2D:
+        """The robot's true planar pose (for judging goals; cheaper than a whole :meth:`state`)."""
+        x, y, _, yaw = self._pose(self._robot.body)
+        return Pose2D(x, y, yaw)
+
     def state(self) -> SimState:
-        """The true state now (for the data collector and the monitor)."""
+        """The true state now, for the data collector: each call is one sample of the published stream.
+
+        ``contacts`` holds every body the robot touched at any physics step since the previous call.
+        """
         robot_name = self.case.world.robot.name
         objects = tuple(
             ObjectState(name=name, category=category, pose=self._pose(body), twist=self._twist(body))
             for name, category, body in self._moving
         )
         name_of = self.world.name_of
-        contacts = tuple(sorted((robot_name, name_of[b]) for b in self._contacts.touching if b in name_of))
+        contacts = tuple(sorted((robot_name, name_of[b]) for b in self._contacts.drain() if b in name_of))
         scan = self._scan
         robot = RobotState(
             name=robot_name,

@@ -63,7 +63,8 @@ class ObjectState:
 
 @dataclass(frozen=True, slots=True)
 class SimState:
-    """``contacts``: ``(robot_name, object_name)`` for every non-floor body the robot touches after the last step."""
+    """``contacts``: ``(robot_name, object_name)`` for every non-floor body the robot touched since the previous
+    snapshot."""
 
     t: float
     robot: RobotState
