@@ -39,6 +39,8 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
                         help="state messages per simulated second (default 20)")
     parser.add_argument("--laser", choices=("min", "full", "none"), default="min",
                         help="laser data in state messages: the minimum only (default), every range, or none")
+    parser.add_argument("--run-id", metavar="ID", help="identifier of the run in topic names (default: random); "
+                        "lets a monitor or evaluator subscribe before the run starts")
     router = parser.add_mutually_exclusive_group()
     router.add_argument("--router", metavar="URL", help="publish through this router (ws:// or rs://) instead "
                         "of starting one")
@@ -71,7 +73,9 @@ def run(args: argparse.Namespace) -> int:
     except (ValueError, UnknownControllerError) as error:
         raise CommandError(str(error)) from None
     case_dir = _case_folder(Path(args.case), out)
-    run_id = secrets.token_hex(6)
+    run_id = args.run_id or secrets.token_hex(6)
+    if not _valid_run_id(run_id):
+        raise CommandError(f"--run-id {run_id!r}: expected letters, digits, '_' or '-' (it becomes part of topic URIs)")
     try:
         with _publisher(args, out) as client:
             result = run_mission(case_dir, out, options, run_id=run_id, client=client, progress=_progress)
@@ -87,6 +91,10 @@ def run(args: argparse.Namespace) -> int:
           f"{result.wall_time:.1f} s ({result.real_time_factor:.0f}x real time); run {run_id}")
     print(f"streams: {out / 'streams'} ({result.state_messages} state, {result.mission_messages} mission messages)")
     return EXIT_OK if result.succeeded else EXIT_INVALID
+
+
+def _valid_run_id(run_id: str) -> bool:
+    return bool(run_id) and all(c.isascii() and (c.isalnum() or c in "_-") for c in run_id)
 
 
 def _case_folder(case: Path, out: Path) -> Path:
