@@ -22,6 +22,7 @@ REI_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 REI_JARS=(
     "generators/org.rei.cli/target/rei-cli.jar"
     "bundles/org.rei.dsl.ide/target/rei-language-server.jar"
+    "runtime-monitor/target/rei-monitor.jar"
 )
 # Folders whose sources go into the jars; target/ and generated folders inside them are ignored.
 REI_JAVA_SOURCES=(metamodels bundles generators queries cep runtime-monitor)

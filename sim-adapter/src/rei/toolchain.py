@@ -24,6 +24,7 @@ MIN_JAVA_VERSION = 17
 JARS: Mapping[str, str] = {
     "cli": "generators/org.rei.cli/target/rei-cli.jar",
     "language-server": "bundles/org.rei.dsl.ide/target/rei-language-server.jar",
+    "monitor": "runtime-monitor/target/rei-monitor.jar",
 }
 
 BUILD_HINT = "run ./rei once to build the Java parts"

@@ -15,8 +15,9 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from rei.cli._java import run_java_cli
-from rei.cli.errors import EXIT_INVALID, EXIT_OK, EXIT_USAGE, CommandError
+from rei.cli._case import case_folder, prepare_output, valid_run_id
+from rei.cli._mission_options import add_mission_options, check_mission_options
+from rei.cli.errors import EXIT_INVALID, EXIT_OK, CommandError
 
 
 def register(subparsers: argparse._SubParsersAction[Any]) -> None:
@@ -28,17 +29,10 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
     )
     parser.add_argument("case", metavar="CASE", help="a .rei test case or a folder generated from one")
     parser.add_argument("-o", "--output", required=True, metavar="OUT", help="output folder")
-    parser.add_argument("--controller", default="nav", metavar="SPEC",
-                        help="controller under test: nav, nav:key=value,..., script:FILE or a plug-in (default nav)")
-    parser.add_argument("--seed", type=int, default=0, help="seed of every random choice (default 0)")
-    parser.add_argument("--no-humans", action="store_true", help="leave the humans out of the world")
-    parser.add_argument("--fault", metavar="SPEC", help="inject a fault, e.g. laser:1%%, laser:10%% or "
-                        "laser:rate=0.01,gain=0.5,width=3")
-    parser.add_argument("--realtime", action="store_true", help="pace the simulation at wall-clock speed")
-    parser.add_argument("--state-rate", type=float, default=20.0, metavar="HZ",
-                        help="state messages per simulated second (default 20)")
-    parser.add_argument("--laser", choices=("min", "full", "none"), default="min",
-                        help="laser data in state messages: the minimum only (default), every range, or none")
+    add_mission_options(parser)
+    parser.add_argument("--progress", choices=("auto", "lines", "none"), default="auto",
+                        help="progress display: on a terminal (auto), one machine-readable line per simulated "
+                        "second on stdout (lines, for a supervising process), or none")
     parser.add_argument("--run-id", metavar="ID", help="identifier of the run in topic names (default: random); "
                         "lets a monitor or evaluator subscribe before the run starts")
     router = parser.add_mutually_exclusive_group()
@@ -52,33 +46,27 @@ def run(args: argparse.Namespace) -> int:
     # Heavy imports here, so `rei --help` stays fast.
     from rei.artifacts import ArtifactError
     from rei.run import MissionRunOptions, run_mission
-    from rei.sim.faults import parse_fault
-    from rei.sut.registry import UnknownControllerError, create_controller
     from rei.wamp.codec import LaserMode
     from rei.wamp.collector import CollectorConfig
 
+    check_mission_options(args)
     out = Path(args.output)
+    prepare_output(out)
     try:
-        out.mkdir(parents=True, exist_ok=True)
-    except OSError as error:
-        raise CommandError(f"cannot create {out}: {error.strerror}") from None
-    try:
-        if args.fault:
-            parse_fault(args.fault)
-        create_controller(args.controller)  # checked before anything starts
         options = MissionRunOptions(
             controller=args.controller, seed=args.seed, humans=not args.no_humans, fault=args.fault,
             realtime=args.realtime,
             collector=CollectorConfig(rate_hz=args.state_rate, laser=LaserMode(args.laser)))
-    except (ValueError, UnknownControllerError) as error:
+    except ValueError as error:
         raise CommandError(str(error)) from None
-    case_dir = _case_folder(Path(args.case), out)
+    case_dir = case_folder(Path(args.case), out)
     run_id = args.run_id or secrets.token_hex(6)
-    if not _valid_run_id(run_id):
+    if not valid_run_id(run_id):
         raise CommandError(f"--run-id {run_id!r}: expected letters, digits, '_' or '-' (it becomes part of topic URIs)")
     try:
         with _publisher(args, out) as client:
-            result = run_mission(case_dir, out, options, run_id=run_id, client=client, progress=_progress)
+            result = run_mission(case_dir, out, options, run_id=run_id, client=client,
+                                 progress=_PROGRESS[args.progress])
     except ArtifactError as error:
         raise CommandError(str(error)) from None
     _clear_progress()
@@ -91,22 +79,6 @@ def run(args: argparse.Namespace) -> int:
           f"{result.wall_time:.1f} s ({result.real_time_factor:.0f}x real time); run {run_id}")
     print(f"streams: {out / 'streams'} ({result.state_messages} state, {result.mission_messages} mission messages)")
     return EXIT_OK if result.succeeded else EXIT_INVALID
-
-
-def _valid_run_id(run_id: str) -> bool:
-    return bool(run_id) and all(c.isascii() and (c.isalnum() or c in "_-") for c in run_id)
-
-
-def _case_folder(case: Path, out: Path) -> Path:
-    if case.is_dir():
-        return case
-    if case.suffix != ".rei" or not case.is_file():
-        raise CommandError(f"{case}: expected a .rei file or a folder generated from one", EXIT_USAGE)
-    generated = out / "case"
-    code = run_java_cli(["generate", str(case), "-o", str(generated), "--quiet"])
-    if code != EXIT_OK:
-        raise CommandError(f"{case} could not be generated (see above)", code)
-    return generated
 
 
 class _publisher:
@@ -143,6 +115,13 @@ class _publisher:
 def _progress(sim_time: float, done: int, total: int) -> None:
     if sys.stderr.isatty():
         print(f"\rsim {sim_time:7.1f} s  tasks {done}/{total}", end="", file=sys.stderr, flush=True)
+
+
+def _progress_line(sim_time: float, done: int, total: int) -> None:
+    print(f"progress t={sim_time:.3f} done={done} total={total}", flush=True)
+
+
+_PROGRESS = {"auto": _progress, "lines": _progress_line, "none": None}
 
 
 def _clear_progress() -> None:

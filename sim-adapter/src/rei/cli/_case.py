@@ -1,0 +1,38 @@
+# SPDX-License-Identifier: EPL-2.0
+"""Where a command's case comes from: a generated folder as it is, or a .rei file generated into OUT/case."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from rei.cli._java import run_java_cli
+from rei.cli.errors import EXIT_OK, EXIT_USAGE, CommandError
+
+
+def prepare_output(out: Path) -> None:
+    """Create the output folder and make sure it is writable before anything starts."""
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+        probe = out / ".rei-write-check"
+        probe.write_bytes(b"")
+        probe.unlink()
+    except OSError as error:
+        raise CommandError(f"cannot write to {out}: {error.strerror or error}") from None
+
+
+def case_folder(case: Path, out: Path) -> Path:
+    """The folder of generated artifacts to run."""
+    if case.is_dir():
+        return case
+    if case.suffix != ".rei" or not case.is_file():
+        raise CommandError(f"{case}: expected a .rei file or a folder generated from one", EXIT_USAGE)
+    generated = out / "case"
+    code = run_java_cli(["generate", str(case), "-o", str(generated), "--quiet"])
+    if code != EXIT_OK:
+        raise CommandError(f"{case} could not be generated (see above)", code)
+    return generated
+
+
+def valid_run_id(run_id: str) -> bool:
+    """Run ids become part of topic URIs: letters, digits, '_' and '-' only."""
+    return bool(run_id) and all(c.isascii() and (c.isalnum() or c in "_-") for c in run_id)
