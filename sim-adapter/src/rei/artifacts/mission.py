@@ -8,6 +8,7 @@ import xml.etree.ElementTree as ET
 from dataclasses import dataclass
 from pathlib import Path
 
+from rei.artifacts._xml import read_root
 from rei.artifacts.errors import ArtifactError
 from rei.geometry import Pose2D
 
@@ -39,15 +40,7 @@ class MissionSpec:
 def read_mission(path: Path | str) -> MissionSpec:
     """Parse ``mission.xml``; goals come back in execution order (their ``index`` attributes 0, 1, 2, ...)."""
     path = Path(path)
-    if not path.is_file():
-        raise ArtifactError(path, "file is missing")
-    try:
-        root = ET.parse(path).getroot()
-    except ET.ParseError as exc:
-        line, column = exc.position
-        raise ArtifactError(path, f"not well-formed XML at line {line} column {column}") from None
-    if root.tag != "mission":
-        raise ArtifactError(path, f"root element must be <mission>, got <{root.tag}>")
+    root = read_root(path, "mission")
     start = root.find("start")
     if start is None:
         raise ArtifactError(path, "<start> is missing")

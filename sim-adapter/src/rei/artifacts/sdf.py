@@ -11,6 +11,7 @@ import xml.etree.ElementTree as ET
 from dataclasses import dataclass
 from pathlib import Path
 
+from rei.artifacts._xml import read_root
 from rei.artifacts.errors import ArtifactError
 
 
@@ -37,15 +38,7 @@ class SdfWorld:
 def read_sdf(path: Path | str) -> SdfWorld:
     """Parse ``world.sdf`` and check the subset of SDF 1.6 described in docs/artifacts.md."""
     path = Path(path)
-    if not path.is_file():
-        raise ArtifactError(path, "file is missing")
-    try:
-        root = ET.parse(path).getroot()
-    except ET.ParseError as exc:
-        line, column = exc.position
-        raise ArtifactError(path, f"not well-formed XML at line {line} column {column}") from None
-    if root.tag != "sdf":
-        raise ArtifactError(path, f"root element must be <sdf>, got <{root.tag}>")
+    root = read_root(path, "sdf")
     world = root.find("world")
     holder = world if world is not None else root
     models = tuple(_model(path, i, m) for i, m in enumerate(holder.findall("model")))

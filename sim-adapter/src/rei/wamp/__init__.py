@@ -6,7 +6,7 @@ because the client bridge runs an asyncio loop in a background thread.
 """
 
 from rei.wamp.client import WampClient, WampError
-from rei.wamp.codec import LaserMode, MissionEvent, encode_mission_event, encode_state
+from rei.wamp.codec import LaserMode, MissionEventKind, encode_mission_event, encode_state
 from rei.wamp.collector import CollectorConfig, DataCollector, MissionPublisher
 from rei.wamp.recording import RecordingWriter, iter_recording, read_recording, stream_path
 from rei.wamp.router import Router, RouterError, find_crossbar
@@ -16,7 +16,7 @@ __all__ = [
     "CollectorConfig",
     "DataCollector",
     "LaserMode",
-    "MissionEvent",
+    "MissionEventKind",
     "MissionPublisher",
     "RecordingWriter",
     "Router",

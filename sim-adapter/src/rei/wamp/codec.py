@@ -20,6 +20,8 @@ from typing import Any, Protocol
 import msgpack
 import numpy as np
 
+from rei.mission.executor import MissionEventKind
+
 
 class Pose2DLike(Protocol):
     """A planar pose (``rei.geometry.Pose2D`` fits)."""
@@ -94,16 +96,6 @@ class LaserMode(enum.Enum):
     FULL = "full"
     MIN = "min"
     NONE = "none"
-
-
-class MissionEvent(enum.Enum):
-    """Events of the mission topic, in the order a mission emits them."""
-
-    BEGIN = "BEGIN"
-    TASK_START = "TASK_START"
-    TASK_SUCCESS = "TASK_SUCCESS"
-    TASK_FAIL = "TASK_FAIL"
-    END = "END"
 
 
 #: Categories of world.json objects repeated in full frames (they never move; floors are not obstacles).
@@ -192,7 +184,7 @@ def encode_state(
 def encode_mission_event(
     seq: int,
     t: float,
-    event: MissionEvent | str,
+    event: MissionEventKind | str,
     task_index: int = -1,
     goal: Pose2DLike | Sequence[float] | None = None,
     reason: str | None = None,
@@ -201,13 +193,13 @@ def encode_mission_event(
 
     Task events need a ``task_index`` >= 0 and a goal ``[x, y, yaw]``; TASK_FAIL needs a ``reason``.
     """
-    kind = MissionEvent(event)
-    per_task = kind in (MissionEvent.TASK_START, MissionEvent.TASK_SUCCESS, MissionEvent.TASK_FAIL)
+    kind = MissionEventKind(event)
+    per_task = kind in (MissionEventKind.TASK_START, MissionEventKind.TASK_SUCCESS, MissionEventKind.TASK_FAIL)
     if per_task and (task_index < 0 or goal is None):
         raise ValueError(f"{kind.value} needs a task_index >= 0 and a goal")
     if not per_task and (task_index != -1 or goal is not None):
         raise ValueError(f"{kind.value} concerns no task: task_index must be -1 and goal None")
-    if kind is MissionEvent.TASK_FAIL and not reason:
+    if kind is MissionEventKind.TASK_FAIL and not reason:
         raise ValueError("TASK_FAIL needs a reason")
     if not math.isfinite(float(t)):
         raise ValueError(f"mission event time must be finite, got {t}")

@@ -26,7 +26,7 @@ from typing import Any, Self
 from rei.wamp.client import WampClient
 from rei.wamp.codec import (
     LaserMode,
-    MissionEvent,
+    MissionEventKind,
     Pose2DLike,
     SimStateLike,
     encode_mission_event,
@@ -216,7 +216,7 @@ class MissionPublisher:
     def publish(
         self,
         t: float,
-        event: MissionEvent | str,
+        event: MissionEventKind | str,
         task_index: int = -1,
         goal: Pose2DLike | Sequence[float] | None = None,
         reason: str | None = None,
