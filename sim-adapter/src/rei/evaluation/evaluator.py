@@ -1,0 +1,270 @@
+# SPDX-License-Identifier: EPL-2.0
+"""The evaluator (thesis 5.2, 6.1.5): scores each signal, logs it, and judges the mission at its end.
+
+Feeding and reading happen on different threads: the WAMP client calls ``on_signal`` / ``on_mission`` on its
+loop thread while the main thread reads ``total`` / ``utility_over_time`` for a progress display and finally
+calls ``finish``. Every public method takes one lock; a handler does O(1) work plus one CSV row (written and
+flushed), so it never holds the loop up. Properties return copies, never live containers. After ``finish``
+further signals are counted (``late_signals``) and otherwise ignored: the summary is final.
+
+Bad input never raises from a handler (it would be lost in the WAMP client's log): a malformed signal, a
+repeated or skipped ``seq`` is recorded as a stream problem, which turns the verdicts into errors.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import threading
+from collections import Counter
+from collections.abc import Mapping
+from pathlib import Path
+from typing import Any
+
+from rei.evaluation.context import CaseContext, VerdictSettings
+from rei.evaluation.junit import write_junit
+from rei.evaluation.log import EventLog, format_number
+from rei.evaluation.mission_info import MissionInfo, MissionInfoError
+from rei.evaluation.outcome import Evidence
+from rei.evaluation.signals import (
+    SIG_MISSION_END,
+    SIG_MISSION_TASK_FAIL,
+    SIG_MISSION_TASK_START,
+    SIG_MISSION_TASK_SUCCESS,
+    Signal,
+    SignalError,
+)
+from rei.evaluation.summary import Summary, TaskRecord
+from rei.evaluation.trace import Trace
+from rei.evaluation.utilities import UtilityTable, default_utilities
+from rei.evaluation.verdicts import judge
+
+EVENTS_FILE = "events.csv"
+SUMMARY_FILE = "summary.json"
+VERDICTS_FILE = "verdicts.xml"
+#: Stream problems kept as evidence (all are counted); a broken stream must not grow memory without bound.
+_MAX_PROBLEMS = 100
+RUN_STATUSES = ("COMPLETED", "ERROR")
+
+
+class Evaluator:
+    """Evaluation of one run into ``out_dir`` (events.csv at once; summary.json and verdicts.xml at finish).
+
+    ``mission_info``: the mission_info RPC's result (None: set later by ``set_mission_info``, e.g. by
+    ``rei.evaluation.attach``); ``monitor_config`` / ``world``: the run's monitor.json and world.json content.
+    """
+
+    def __init__(self, out_dir: str | os.PathLike[str], *, utilities: Mapping[str, float] | None = None,
+                 mission_info: Mapping[str, Any] | MissionInfo | None = None,
+                 monitor_config: Mapping[str, Any] | None = None, world: Mapping[str, Any] | None = None,
+                 settings: VerdictSettings | None = None) -> None:
+        self.out_dir = Path(out_dir)
+        self.out_dir.mkdir(parents=True, exist_ok=True)
+        if utilities is None:
+            utilities = default_utilities()
+        if not isinstance(utilities, UtilityTable):
+            utilities = UtilityTable(utilities, "given")
+        self.utilities = utilities
+        self._mission: MissionInfo | None = None
+        if mission_info is not None:  # parsed first: a bad one raises before any file is opened
+            self._mission = (mission_info if isinstance(mission_info, MissionInfo)
+                             else MissionInfo.from_message(mission_info))
+        self.monitor_config = monitor_config
+        self.world = world
+        self.settings = settings or VerdictSettings()
+        self._lock = threading.Lock()
+        self._ended = threading.Event()
+        self._log = EventLog(self.out_dir / EVENTS_FILE)
+        self._signals: list[Signal] = []
+        self._total = 0.0
+        self._over_time: list[tuple[float, float]] = []
+        self._counts: Counter[str] = Counter()
+        self._unknown: Counter[str] = Counter()
+        self._next_seq = 0
+        self._stream_problems: list[Evidence] = []
+        self._problem_count = 0
+        self._notes: list[Evidence] = []
+        self._task_reasons: dict[int, str] = {}
+        self._task_goals: dict[int, tuple[float, float]] = {}
+        self._late = 0
+        self._summary: Summary | None = None
+
+    # -- feeding (any thread) ------------------------------------------------------------------------------
+
+    def on_signal(self, message: Mapping[str, Any]) -> None:
+        """One message of ``rei.run.<id>.signal``: scored, logged (flushed) and kept for the verdicts."""
+        with self._lock:
+            if self._summary is not None:
+                self._late += 1
+                return
+            try:
+                signal = Signal.from_message(message)
+            except SignalError as error:
+                self._problem(Evidence(f"malformed signal skipped: {error}"))
+                return
+            if signal.seq < self._next_seq:
+                self._problem(Evidence(f"signal seq {signal.seq} after {self._next_seq - 1}: repeated or out "
+                                       f"of order, skipped", signal.t, signal.signal, signal.object))
+                return
+            if signal.seq > self._next_seq:
+                self._problem(Evidence(f"lost {signal.seq - self._next_seq} signal(s) (seq {self._next_seq} "
+                                       f"to {signal.seq - 1})", signal.t, signal.signal, signal.object))
+            self._next_seq = signal.seq + 1
+            if signal.signal not in self.utilities:
+                self._unknown[signal.signal] += 1
+            utility = self.utilities.utility(signal.signal)
+            self._total += utility
+            self._over_time.append((signal.t, self._total))
+            self._counts[signal.signal] += 1
+            self._signals.append(signal)
+            self._log.write(signal.t, signal.signal, utility, self._total, signal.subject, signal.object)
+            if signal.signal == SIG_MISSION_END:
+                self._ended.set()
+
+    def on_mission(self, message: Mapping[str, Any]) -> None:
+        """One message of ``rei.run.<id>.mission``: only the TASK_FAIL reasons and goal positions are used
+        (the signals are the primary input; they carry no reasons)."""
+        with self._lock:
+            if self._summary is not None or not isinstance(message, Mapping):
+                return
+            event, index = message.get("event"), message.get("task_index")
+            if not isinstance(index, int) or isinstance(index, bool) or index < 0:
+                return
+            reason, goal = message.get("reason"), message.get("goal")
+            if event == "TASK_FAIL" and isinstance(reason, str):
+                self._task_reasons[index] = reason
+            if event == "TASK_START" and isinstance(goal, list | tuple) and len(goal) >= 2 and all(
+                    isinstance(v, int | float) and not isinstance(v, bool) and math.isfinite(v)
+                    for v in goal[:2]):
+                self._task_goals[index] = (float(goal[0]), float(goal[1]))
+
+    def set_mission_info(self, message: Mapping[str, Any] | MissionInfo) -> None:
+        """Mission information that arrived after construction; an unreadable one is noted, not raised."""
+        with self._lock:
+            try:
+                self._mission = (message if isinstance(message, MissionInfo)
+                                 else MissionInfo.from_message(message))
+            except MissionInfoError as error:
+                self._notes.append(Evidence(f"mission_info ignored: {error}"))
+
+    # -- reading (any thread) ------------------------------------------------------------------------------
+
+    @property
+    def total(self) -> float:
+        with self._lock:
+            return self._total
+
+    @property
+    def utility_over_time(self) -> list[tuple[float, float]]:
+        """``(t, total)`` after each signal, in arrival order (a copy)."""
+        with self._lock:
+            return list(self._over_time)
+
+    @property
+    def counts(self) -> dict[str, int]:
+        with self._lock:
+            return dict(self._counts)
+
+    @property
+    def has_mission_info(self) -> bool:
+        with self._lock:
+            return self._mission is not None
+
+    @property
+    def finished(self) -> bool:
+        with self._lock:
+            return self._summary is not None
+
+    @property
+    def ended(self) -> bool:
+        """SIG_MISSION_END has been received."""
+        return self._ended.is_set()
+
+    def wait_for_end(self, timeout: float | None = None) -> bool:
+        """Block until SIG_MISSION_END arrives (True) or ``timeout`` seconds pass (False)."""
+        return self._ended.wait(timeout)
+
+    # -- the end -------------------------------------------------------------------------------------------
+
+    def finish(self, *, status: str, reason: str | None, sim_duration: float | None, wall_time: float | None,
+               run_id: str) -> Summary:
+        """Judge the run and write summary.json and verdicts.xml; closes events.csv. Idempotent: a second
+        call returns the first summary.
+
+        ``status``: COMPLETED (the pipeline ran to its end) or ERROR (``reason`` says why; verdicts that
+        would pass become errors). ``sim_duration``: simulated seconds (the end of observation).
+        """
+        if status not in RUN_STATUSES:
+            raise ValueError(f"status must be one of {RUN_STATUSES}, got {status!r}")
+        with self._lock:
+            if self._summary is not None:
+                return self._summary
+            signals = tuple(self._signals)
+            last = signals[-1].t if signals else 0.0
+            duration = _finite(sim_duration)
+            problems = list(self._stream_problems)
+            if self._problem_count > len(problems):
+                problems.append(Evidence(f"{self._problem_count - len(problems)} more stream problem(s)"))
+            trace = Trace(signals, max(duration or 0.0, last), status == "COMPLETED", reason,
+                          dict(self._task_reasons), dict(self._task_goals), tuple(problems))
+            context = CaseContext.from_configs(self._mission, self.monitor_config, self.world, self.settings)
+            verdicts = judge(trace, context)
+            testcase = (self._mission.testcase if self._mission and self._mission.testcase
+                        else _text((self.monitor_config or {}).get("testcase")))
+            mission = self._mission.name if self._mission else None
+            summary = Summary(
+                mission=mission, testcase=testcase, run_id=run_id, status=status, error=reason,
+                sim_duration=duration if duration is not None else last, wall_time=_finite(wall_time) or 0.0,
+                total_utility=self._total, signals=len(signals), counts=dict(self._counts),
+                unknown_signals=dict(self._unknown),
+                goals=len(self._mission.goals) if self._mission else None,
+                tasks=_tasks(signals, self._task_reasons), verdicts=verdicts,
+                problems=(*problems, *self._notes), utility_source=self.utilities.source,
+                files={"events": EVENTS_FILE, "verdicts": VERDICTS_FILE},
+            )
+            self._log.close()
+            properties = {"run_id": run_id, "testcase": testcase or "", "mission": mission or "",
+                          "status": status, "total_utility": format_number(self._total),
+                          "sim_duration": f"{summary.sim_duration:.3f}"}
+            suite = f"{testcase or 'rei'}.{mission or 'mission'}"
+            write_junit(self.out_dir / VERDICTS_FILE, verdicts, suite=suite, time=summary.wall_time,
+                        properties=properties)
+            summary.write(self.out_dir / SUMMARY_FILE)
+            self._summary = summary
+            return summary
+
+    @property
+    def late_signals(self) -> int:
+        with self._lock:
+            return self._late
+
+    def _problem(self, evidence: Evidence) -> None:
+        self._problem_count += 1
+        if len(self._stream_problems) < _MAX_PROBLEMS:
+            self._stream_problems.append(evidence)
+
+
+def _tasks(signals: tuple[Signal, ...], reasons: Mapping[int, str]) -> tuple[TaskRecord, ...]:
+    """One record per started task, in start order, with its final state (RUNNING when it has none)."""
+    records: dict[int, list[Any]] = {}
+    for s in signals:
+        index = s.task_index
+        if index is None:
+            continue
+        if s.signal == SIG_MISSION_TASK_START and index not in records:
+            records[index] = [index, "RUNNING", s.t, None, None]
+        elif s.signal in (SIG_MISSION_TASK_SUCCESS, SIG_MISSION_TASK_FAIL) and index in records:
+            record = records[index]
+            if record[1] == "RUNNING":
+                record[1] = s.signal.removeprefix("SIG_MISSION_TASK_")
+                record[3] = s.t
+                record[4] = reasons.get(index) if s.signal == SIG_MISSION_TASK_FAIL else None
+    return tuple(TaskRecord(*r) for r in records.values())
+
+
+def _finite(value: float | None) -> float | None:
+    return float(value) if value is not None and math.isfinite(value) else None
+
+
+def _text(value: Any) -> str | None:
+    return value if isinstance(value, str) else None

@@ -1,0 +1,113 @@
+# SPDX-License-Identifier: EPL-2.0
+"""The signals the monitor publishes (docs/monitor.md) and one received signal, checked once at the door.
+
+Why a parsed type: the evaluator's thread is fed by the WAMP client, and a bad message must be counted and
+skipped there, never raise deep inside a verdict at the end of a two-hour run.
+"""
+
+from __future__ import annotations
+
+import enum
+import math
+import re
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Any
+
+SIG_MISSION_BEGIN = "SIG_MISSION_BEGIN"
+SIG_MISSION_END = "SIG_MISSION_END"
+SIG_MISSION_TASK_START = "SIG_MISSION_TASK_START"
+SIG_MISSION_TASK_SUCCESS = "SIG_MISSION_TASK_SUCCESS"
+SIG_MISSION_TASK_FAIL = "SIG_MISSION_TASK_FAIL"
+SIG_MONITOR_DATA_GAP = "SIG_MONITOR_DATA_GAP"
+
+MISSION_SIGNALS = (SIG_MISSION_BEGIN, SIG_MISSION_END, SIG_MISSION_TASK_START, SIG_MISSION_TASK_FAIL,
+                   SIG_MISSION_TASK_SUCCESS)
+
+
+class Source(enum.StrEnum):
+    """What measured a zone: the footprint geometry (ground truth) or the robot's laser."""
+
+    GEOM = "GEOM"
+    LASER = "LASER"
+
+
+class Zone(enum.IntEnum):
+    """Geometric states of thesis Fig. 21, ordered by depth: FAR < CLOSE < COLLISION."""
+
+    FAR = 0
+    CLOSE = 1
+    COLLISION = 2
+
+
+#: The transitions the monitor emits (Table 2): FAR<->CLOSE<->COLLISION, for geometry and laser.
+_STEPS = ((Zone.FAR, Zone.CLOSE), (Zone.CLOSE, Zone.FAR), (Zone.CLOSE, Zone.COLLISION),
+          (Zone.COLLISION, Zone.CLOSE))
+TRANSITION_SIGNALS = tuple(
+    f"SIG_{source}_{a.name}_TRANSIT_{b.name}" for source in Source for a, b in _STEPS
+)
+KNOWN_SIGNALS: frozenset[str] = frozenset((*MISSION_SIGNALS, *TRANSITION_SIGNALS, SIG_MONITOR_DATA_GAP))
+
+_TRANSITION = re.compile(r"SIG_(GEOM|LASER)_(FAR|CLOSE|COLLISION)_TRANSIT_(FAR|CLOSE|COLLISION)")
+_TASK_OBJECT = re.compile(r"task_(\d+)")
+
+
+@dataclass(frozen=True, slots=True)
+class Transition:
+    source: Source
+    before: Zone
+    after: Zone
+
+
+def transition(signal: str) -> Transition | None:
+    """The zone change a ``SIG_<GEOM|LASER>_<A>_TRANSIT_<B>`` signal stands for; None for other signals."""
+    match = _TRANSITION.fullmatch(signal)
+    if match is None:
+        return None
+    return Transition(Source(match[1]), Zone[match[2]], Zone[match[3]])
+
+
+class SignalError(ValueError):
+    """A signal message that does not have the documented shape; the message says which field."""
+
+
+@dataclass(frozen=True, slots=True)
+class Signal:
+    """One message of ``rei.run.<id>.signal``: ``{seq, t, signal, subject, object, distance}``."""
+
+    seq: int
+    t: float
+    signal: str
+    subject: str
+    object: str
+    distance: float
+
+    @classmethod
+    def from_message(cls, message: Mapping[str, Any]) -> Signal:
+        if not isinstance(message, Mapping):
+            raise SignalError(f"a signal must be a map, got {type(message).__name__}")
+        seq = message.get("seq")
+        if not isinstance(seq, int) or isinstance(seq, bool) or seq < 0:
+            raise SignalError(f"signal field 'seq' must be an integer >= 0, got {seq!r}")
+        t = _real(message, "t")
+        if not math.isfinite(t):
+            raise SignalError(f"signal field 't' must be finite, got {t!r}")
+        distance = _real(message, "distance")
+        texts = [message.get(key) for key in ("signal", "subject", "object")]
+        for key, value in zip(("signal", "subject", "object"), texts, strict=True):
+            if not isinstance(value, str) or not value:
+                raise SignalError(f"signal field {key!r} must be a non-empty string, got {value!r}")
+        return cls(seq, t, texts[0], texts[1], texts[2], distance)  # type: ignore[arg-type]
+
+    @property
+    def task_index(self) -> int | None:
+        """The task of a ``SIG_MISSION_TASK_*`` signal (object ``task_<i>``), else None."""
+        match = _TASK_OBJECT.fullmatch(self.object)
+        return int(match[1]) if match else None
+
+
+def _real(message: Mapping[str, Any], key: str) -> float:
+    value = message.get(key)
+    if isinstance(value, bool) or not isinstance(value, int | float) or math.isnan(value):
+        raise SignalError(f"signal field {key!r} must be a number, got {value!r}")
+    return float(value)
