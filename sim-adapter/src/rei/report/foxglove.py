@@ -1,0 +1,116 @@
+# SPDX-License-Identifier: EPL-2.0
+"""Foxglove message builders: REI's world, state and signal data as `foxglove.*` JSON messages.
+
+Why the Foxglove schemas: Foxglove Studio's 3D, Log and plot panels understand them without any plug-in, so a run
+opens as a scene that can be scrubbed in time. The schema files (`schemas/*.json`) hold the published field
+names (github.com/foxglove/schemas, `schemas/jsonschema`), trimmed to the fields REI writes; Studio selects the
+renderer by schema name, the JSON schema documents the message for other tools.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from importlib import resources
+from typing import Any
+
+WORLD_FRAME = "world"
+ROBOT_FRAME = "base_link"
+
+#: foxglove.LogLevel values.
+INFO, WARNING, ERROR = 2, 3, 4
+
+SCHEMA_NAMES = ("SceneUpdate", "LaserScan", "Log", "FrameTransform")
+
+
+def schema_bytes(name: str) -> bytes:
+    """The JSON schema of `foxglove.<name>` shipped with the package."""
+    return resources.files("rei.report").joinpath("schemas", f"{name}.json").read_bytes()
+
+
+def nanoseconds(t: float) -> int:
+    """Simulation seconds as integer nanoseconds (MCAP log times); negative or invalid times become 0."""
+    return max(0, round(t * 1e9)) if math.isfinite(t) else 0
+
+
+def timestamp(t: float) -> dict[str, int]:
+    ns = nanoseconds(t)
+    return {"sec": ns // 1_000_000_000, "nsec": ns % 1_000_000_000}
+
+
+def vector(x: float, y: float, z: float) -> dict[str, float]:
+    return {"x": x, "y": y, "z": z}
+
+
+def yaw_quaternion(yaw: float) -> dict[str, float]:
+    return {"x": 0.0, "y": 0.0, "z": math.sin(yaw / 2), "w": math.cos(yaw / 2)}
+
+
+def pose(x: float, y: float, z: float, yaw: float = 0.0) -> dict[str, Any]:
+    return {"position": vector(x, y, z), "orientation": yaw_quaternion(yaw)}
+
+
+def colour(rgba: object, default: Sequence[float] = (0.6, 0.6, 0.6, 1.0), alpha: float | None = None
+           ) -> dict[str, float]:
+    values = list(rgba) if isinstance(rgba, list | tuple) and len(rgba) >= 3 else list(default)
+    if len(values) < 4:
+        values.append(1.0)
+    r, g, b, a = (float(v) for v in values[:4])
+    return {"r": r, "g": g, "b": b, "a": a if alpha is None else alpha}
+
+
+def entity(t: float, entity_id: str, **primitives: list[dict[str, Any]]) -> dict[str, Any]:
+    """A SceneEntity in the world frame that stays until replaced (lifetime 0)."""
+    return {"timestamp": timestamp(t), "frame_id": WORLD_FRAME, "id": entity_id,
+            "lifetime": {"sec": 0, "nsec": 0}, "frame_locked": False, "metadata": [], **primitives}
+
+
+def body_entity(t: float, name: str, shape: str, size: Sequence[float], centre: Sequence[float],
+                yaw: float, rgba: object, alpha: float | None = None) -> dict[str, Any]:
+    """A box or cylinder body (world.json conventions: `size` = [x, y, z], `centre` = body centre)."""
+    primitive = {"pose": pose(centre[0], centre[1], centre[2], yaw),
+                 "size": vector(float(size[0]), float(size[1]), float(size[2])),
+                 "color": colour(rgba, alpha=alpha)}
+    if shape == "CYLINDER":
+        primitive.update(bottom_scale=1.0, top_scale=1.0)
+        return entity(t, name, cylinders=[primitive])
+    return entity(t, name, cubes=[primitive])
+
+
+def line_entity(t: float, entity_id: str, points: Sequence[tuple[float, float]], rgba: Sequence[float],
+                z: float = 0.02, thickness: float = 0.03) -> dict[str, Any]:
+    line = {"type": 0, "pose": pose(0.0, 0.0, 0.0), "thickness": thickness, "scale_invariant": False,
+            "points": [vector(x, y, z) for x, y in points], "color": colour(rgba), "indices": []}
+    return entity(t, entity_id, lines=[line])
+
+
+def text_entity(t: float, entity_id: str, text: str, x: float, y: float, z: float) -> dict[str, Any]:
+    label = {"pose": pose(x, y, z), "billboard": True, "font_size": 14.0, "scale_invariant": True,
+             "color": colour((0.1, 0.1, 0.1, 1.0)), "text": text}
+    return entity(t, entity_id, texts=[label])
+
+
+def scene_update(entities: list[dict[str, Any]]) -> dict[str, Any]:
+    return {"deletions": [], "entities": entities}
+
+
+def frame_transform(t: float, x: float, y: float, yaw: float) -> dict[str, Any]:
+    return {"timestamp": timestamp(t), "parent_frame_id": WORLD_FRAME, "child_frame_id": ROBOT_FRAME,
+            "translation": vector(x, y, 0.0), "rotation": yaw_quaternion(yaw)}
+
+
+def laser_scan(t: float, ranges: Sequence[float], mount_height: float) -> dict[str, Any]:
+    """A full 360-degree scan in the robot frame: beam i at `i * 2 pi / beams` (rei.sim.lidar).
+
+    JSON has no infinity, so a beam that hit nothing is written as 0 (Foxglove then draws it at the sensor,
+    inside the robot) instead of making the whole message invalid JSON.
+    """
+    beams = len(ranges)
+    increment = 2 * math.pi / beams if beams else 0.0
+    clean = [float(r) if isinstance(r, int | float) and math.isfinite(r) else 0.0 for r in ranges]
+    return {"timestamp": timestamp(t), "frame_id": ROBOT_FRAME, "pose": pose(0.0, 0.0, mount_height),
+            "start_angle": 0.0, "end_angle": (beams - 1) * increment, "ranges": clean, "intensities": []}
+
+
+def log(t: float, level: int, name: str, message: str) -> dict[str, Any]:
+    return {"timestamp": timestamp(t), "level": level, "message": message, "name": name, "file": "", "line": 0}
