@@ -71,6 +71,10 @@ public final class MonitorEngine implements AutoCloseable {
 		session.insert(thresholds);
 		robot = new RobotFact(robotName);
 		robotHandle = session.insert(robot);
+		// The laser starts like the geometry, sensing nothing close: a first reading in CLOSE or COLLISION is a
+		// transition (and the signals of both state machines then start from the same FAR).
+		laser = new LaserReading(robotName, "laser", Double.POSITIVE_INFINITY);
+		laserHandle = session.insert(laser);
 		for (KiePackage pkg : session.getKieBase().getKiePackages()) {
 			for (Query q : pkg.getQueries()) {
 				watch(q.getName());
@@ -144,10 +148,7 @@ public final class MonitorEngine implements AutoCloseable {
 		if (Double.isNaN(distance)) {
 			return;
 		}
-		if (laser == null) {
-			laser = new LaserReading(robot.getName(), "laser", distance);
-			laserHandle = session.insert(laser);
-		} else if (laser.set(distance)) {
+		if (laser.set(distance)) {
 			session.update(laserHandle, laser);
 		}
 	}
