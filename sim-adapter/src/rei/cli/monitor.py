@@ -1,0 +1,37 @@
+# SPDX-License-Identifier: EPL-2.0
+"""`rei monitor --replay OUT`: feed a run's recorded state and mission streams through the monitor again.
+
+Prints one line per signal (``seq t signal subject object distance``), the same signals the live run produced;
+for re-checking a run with other rules or after a monitor change, without a simulator or a router.
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+from typing import Any
+
+from rei import toolchain
+from rei.cli.errors import EXIT_USAGE, CommandError
+
+
+def register(subparsers: argparse._SubParsersAction[Any]) -> None:
+    """Add the `monitor` subcommand."""
+    parser = subparsers.add_parser("monitor", help="replay a run's recorded streams through the monitor",
+                                   description=__doc__.split("\n\n", 1)[1] if __doc__ else None)
+    parser.add_argument("--replay", required=True, metavar="OUT", type=Path,
+                        help="a run folder (with streams/ and case/) or a state.msgpack recording")
+    parser.add_argument("--case", metavar="DIR", type=Path, help="generated case folder (default: OUT/case)")
+    parser.set_defaults(handler=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    replay: Path = args.replay
+    case = args.case or (replay / "case" if replay.is_dir() else None)
+    if not replay.exists():
+        raise CommandError(f"{replay}: no such run folder or recording", EXIT_USAGE)
+    if case is None or not (case / "world.json").is_file():
+        raise CommandError(f"no generated case found (expected {case or 'OUT/case'}/world.json); give --case DIR")
+    java = toolchain.find_java()
+    return toolchain.run_jar(toolchain.find_jar("monitor"), ["--replay", str(replay), "--case", str(case)],
+                             java=java)
