@@ -1,0 +1,17 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.vepl;
+
+import org.eclipse.xtext.conversion.IValueConverterService;
+import org.rei.vepl.conversion.VeplValueConverters;
+
+/** Bindings of the VEPL runtime beyond the generated defaults. */
+public class VeplRuntimeModule extends AbstractVeplRuntimeModule {
+
+	@Override
+	public Class<? extends IValueConverterService> bindIValueConverterService() {
+		return VeplValueConverters.class;
+	}
+}

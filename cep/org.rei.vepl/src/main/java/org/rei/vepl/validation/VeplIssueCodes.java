@@ -1,0 +1,21 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.vepl.validation;
+
+/** Codes of the issues the validator reports; tests and quick fixes key on these, not on message text. */
+public interface VeplIssueCodes {
+	String PREFIX = "org.rei.vepl.";
+
+	String DUPLICATE_NAME = PREFIX + "duplicateName";
+	String UNKNOWN_QUERY = PREFIX + "unknownQuery";
+	String UNKNOWN_MISSION_EVENT = PREFIX + "unknownMissionEvent";
+	String CONTRADICTORY_WINDOW = PREFIX + "contradictoryWindow";
+	String NEGATION_OPERAND = PREFIX + "negationOperand";
+	String NEGATION_PLACE = PREFIX + "negationPlace";
+	String UNBOUNDED_NEGATION = PREFIX + "unboundedNegation";
+	String EMPTY_MATCH = PREFIX + "emptyMatch";
+	String CYCLIC_EVENT = PREFIX + "cyclicEvent";
+	String SECOND_RULE = PREFIX + "secondRule";
+}

@@ -1,0 +1,186 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.vepl.validation;
+
+import java.util.ArrayDeque;
+import java.util.Deque;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.util.EcoreUtil;
+import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
+import org.eclipse.xtext.validation.Check;
+import org.rei.vepl.compiler.Alternatives;
+import org.rei.vepl.vepl.AtomicEvent;
+import org.rei.vepl.vepl.Bounded;
+import org.rei.vepl.vepl.ComplexEvent;
+import org.rei.vepl.vepl.Element;
+import org.rei.vepl.vepl.Event;
+import org.rei.vepl.vepl.EventRef;
+import org.rei.vepl.vepl.Expression;
+import org.rei.vepl.vepl.FollowedBy;
+import org.rei.vepl.vepl.Multiplicity;
+import org.rei.vepl.vepl.Not;
+import org.rei.vepl.vepl.PatternFile;
+import org.rei.vepl.vepl.QueryEvent;
+import org.rei.vepl.vepl.Rule;
+import org.rei.vepl.vepl.Signal;
+import org.rei.vepl.vepl.VeplPackage.Literals;
+import org.rei.vepl.vepl.Window;
+
+/** The rules a pattern file must follow before it is compiled; one check per rule, codes in {@link VeplIssueCodes}. */
+public class VeplValidator extends AbstractVeplValidator {
+
+	/** The events of the mission topic (docs/protocol.md). */
+	public static final List<String> MISSION_EVENTS = List.of("BEGIN", "TASK_START", "TASK_SUCCESS", "TASK_FAIL",
+			"END");
+
+	@Check
+	public void checkUniqueNames(PatternFile file) {
+		Map<String, EObject> events = new HashMap<>();
+		Map<String, EObject> signals = new HashMap<>();
+		Map<String, EObject> rules = new HashMap<>();
+		for (Element e : file.getElements()) {
+			Map<String, EObject> seen = e instanceof Event ? events : e instanceof Signal ? signals : rules;
+			String name = e.getName();
+			EObject first = name == null ? null : seen.putIfAbsent(name, e);
+			if (first != null) {
+				error("Duplicate name '" + name + "': it is already used on line " + line(first), e, Literals.ELEMENT__NAME,
+						VeplIssueCodes.DUPLICATE_NAME);
+			}
+		}
+	}
+
+	@Check
+	public void checkQueryIsKnown(QueryEvent e) {
+		Set<String> known = KnownQueries.of(e.eResource());
+		if (known != null && e.getQuery() != null && !known.contains(e.getQuery())) {
+			error("Unknown query '" + e.getQuery() + "': the loaded queries are " + String.join(", ", known), e,
+					Literals.QUERY_EVENT__QUERY, VeplIssueCodes.UNKNOWN_QUERY);
+		}
+	}
+
+	@Check
+	public void checkMissionEventIsKnown(AtomicEvent e) {
+		if (e.getMission() != null && !MISSION_EVENTS.contains(e.getMission())) {
+			error("Unknown mission event '" + e.getMission() + "': one of " + String.join(", ", MISSION_EVENTS), e,
+					Literals.ATOMIC_EVENT__MISSION, VeplIssueCodes.UNKNOWN_MISSION_EVENT);
+		}
+	}
+
+	@Check
+	public void checkWindowFitsEnclosingWindow(Window w) {
+		Window outer = enclosingWindow(w.eContainer().eContainer());
+		if (outer != null && outer.getMillis() < w.getMillis()) {
+			error("Contradictory windows: [" + w.getMillis() + "] lies inside [" + outer.getMillis()
+					+ "], so its events can never be further apart than " + outer.getMillis() + " ms", w,
+					Literals.WINDOW__MILLIS, VeplIssueCodes.CONTRADICTORY_WINDOW);
+		}
+	}
+
+	@Check
+	public void checkNegationOperandIsOneEvent(Not n) {
+		if (!(n.getOperand() instanceof EventRef r) || r.getEvent() instanceof ComplexEvent) {
+			error("NOT applies to one query or atomic event", n, Literals.NOT__OPERAND, VeplIssueCodes.NEGATION_OPERAND);
+		}
+	}
+
+	@Check
+	public void checkNegationIsInSequence(Not n) {
+		if (!(n.eContainer() instanceof FollowedBy)
+				|| Alternatives.items(chain(n)).stream().allMatch(i -> i instanceof Not)) {
+			error("NOT needs a positive event before or after it in a followed-by (->) sequence", n, null,
+					VeplIssueCodes.NEGATION_PLACE);
+		}
+	}
+
+	@Check
+	public void checkOpenNegationHasWindow(Not n) {
+		if (!(n.eContainer() instanceof FollowedBy)) {
+			return;
+		}
+		List<Expression> items = Alternatives.items(chain(n));
+		boolean open = items.get(0) == n || items.get(items.size() - 1) == n;
+		if (open && enclosingWindow(n) == null) {
+			error("NOT at the start or end of a sequence needs a window, e.g. (a -> NOT b)[1000]: without one it "
+					+ "could never be decided", n, null, VeplIssueCodes.UNBOUNDED_NEGATION);
+		}
+	}
+
+	@Check
+	public void checkMultiplicityCanMatch(Multiplicity m) {
+		Bounded b = (Bounded) m.eContainer();
+		if (!m.isAtLeastOnce() && !m.isAnyNumber() && m.getCount() == 0) {
+			error("{0} matches nothing", m, Literals.MULTIPLICITY__COUNT, VeplIssueCodes.EMPTY_MATCH);
+		} else if (m.isAnyNumber() && (!(b.eContainer() instanceof FollowedBy) || Alternatives.items(chain(b)).stream()
+				.allMatch(i -> i instanceof Not || i instanceof Bounded x && x.getMultiplicity() != null
+						&& x.getMultiplicity().isAnyNumber()))) {
+			error("{*} also matches no event at all: use it beside other events in a followed-by (->) sequence", m,
+					Literals.MULTIPLICITY__ANY_NUMBER, VeplIssueCodes.EMPTY_MATCH);
+		}
+	}
+
+	@Check
+	public void checkNotCyclic(ComplexEvent c) {
+		Deque<ComplexEvent> todo = new ArrayDeque<>();
+		Set<ComplexEvent> seen = new HashSet<>();
+		todo.add(c);
+		while (!todo.isEmpty()) {
+			for (var it = EcoreUtil.<EObject>getAllContents(todo.pop(), true); it.hasNext();) {
+				if (it.next() instanceof EventRef r && r.getEvent() instanceof ComplexEvent d && !d.eIsProxy()) {
+					if (d == c) {
+						error("Complex event '" + c.getName() + "' refers to itself", c, Literals.ELEMENT__NAME,
+								VeplIssueCodes.CYCLIC_EVENT);
+						return;
+					}
+					if (seen.add(d)) {
+						todo.add(d);
+					}
+				}
+			}
+		}
+	}
+
+	@Check
+	public void checkOneRulePerEvent(Rule r) {
+		PatternFile file = (PatternFile) r.eContainer();
+		for (Element e : file.getElements()) {
+			if (e == r) {
+				return;
+			}
+			if (e instanceof Rule other && other.getEvent() == r.getEvent() && !r.getEvent().eIsProxy()) {
+				error("Event '" + r.getEvent().getName() + "' already has the rule on line " + line(other)
+						+ ": list every signal there (one match, one rule)", r, Literals.RULE__EVENT,
+						VeplIssueCodes.SECOND_RULE);
+			}
+		}
+	}
+
+	/** The top of the followed-by chain that {@code e} is an operand of. */
+	private static Expression chain(EObject e) {
+		EObject top = e;
+		while (top.eContainer() instanceof FollowedBy f) {
+			top = f;
+		}
+		return (Expression) top;
+	}
+
+	private static Window enclosingWindow(EObject from) {
+		for (EObject o = from; o != null && !(o instanceof ComplexEvent); o = o.eContainer()) {
+			if (o instanceof Bounded b && b.getWindow() != null) {
+				return b.getWindow();
+			}
+		}
+		return null;
+	}
+
+	private static int line(EObject o) {
+		return NodeModelUtils.getNode(o).getStartLine();
+	}
+}
