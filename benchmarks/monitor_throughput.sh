@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: EPL-2.0
 # Throughput and latency of the runtime monitor's whole pipeline (decode, EMF update, footprint geometry, Drools
 # queries, transition rules, signals) on one core, without a router: a synthetic stream replayed at full speed.
-# 20 Hz state messages, 50 moving humans, a full frame listing every static obstacle each simulated second.
+# 20 Hz state messages, 50 moving humans, a full frame listing every static obstacle each simulated second (the
+# monitor steps over the static entries whose bytes equal the last applied ones: see docs/monitor.md "Full frames").
 # Usage: benchmarks/monitor_throughput.sh [CORE]     (builds runtime-monitor/target/rei-monitor.jar if missing)
 # Targets (issue 4): >= 10,000 updates/s and p99 < 1 ms at 100 objects; >= 2,000 updates/s at 10,000 objects.
 # Wall-clock latency includes preemption by other processes on the same core; the CPU line is the pipeline
@@ -18,7 +19,7 @@ echo "== rei-monitor throughput on core $CORE of $(nproc) (load before: $(cut -d
 status=0
 run() { # objects states warmup
   taskset -c "$CORE" java -XX:+UseParallelGC -Xms1g -Xmx3g -cp "$JAR" org.rei.monitor.cli.Bench "$1" "$2" "$3" \
-    2>/dev/null | grep -E "^(RESULT|CPU)"
+    2>/dev/null | grep -E "^(RESULT|CPU|signals)"
 }
 check() { # line min_rate max_p99_us
   local rate p99

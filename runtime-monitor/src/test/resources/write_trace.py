@@ -16,7 +16,7 @@ import sys
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from rei.wamp.codec import LaserMode, MissionEvent, encode_mission_event, encode_state, static_objects
+from rei.wamp.codec import LaserMode, encode_mission_event, encode_state, static_objects
 from rei.wamp.recording import RecordingWriter, stream_path
 
 HALF_X = 0.281 / 2
@@ -54,8 +54,8 @@ def main(case_dir: Path, out_dir: Path) -> None:
     statics = static_objects(world)
     with RecordingWriter(stream_path(out_dir, "state")) as states, \
             RecordingWriter(stream_path(out_dir, "mission")) as missions:
-        missions.write(encode_mission_event(0, 0.0, MissionEvent.BEGIN))
-        missions.write(encode_mission_event(1, 0.0, MissionEvent.TASK_START, 0, (5.8, 1.0, 0.0)))
+        missions.write(encode_mission_event(0, 0.0, "BEGIN"))
+        missions.write(encode_mission_event(1, 0.0, "TASK_START", 0, (5.8, 1.0, 0.0)))
         for k in range(281):
             t = k * DT
             x, vx = robot_x(t)
@@ -64,8 +64,8 @@ def main(case_dir: Path, out_dir: Path) -> None:
             full = statics if k % 20 == 0 else None  # a full frame every simulated second
             states.write(encode_state(State(t, robot, [], contacts), k, laser=LaserMode.MIN,
                                       nav_state="ACTIVE", full_frame_objects=full))
-        missions.write(encode_mission_event(2, 10.0, MissionEvent.TASK_FAIL, 0, (5.8, 1.0, 0.0), reason="aborted"))
-        missions.write(encode_mission_event(3, 14.0, MissionEvent.END))
+        missions.write(encode_mission_event(2, 10.0, "TASK_FAIL", 0, (5.8, 1.0, 0.0), reason="aborted"))
+        missions.write(encode_mission_event(3, 14.0, "END"))
 
 
 if __name__ == "__main__":

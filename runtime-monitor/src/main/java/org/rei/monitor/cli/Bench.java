@@ -82,8 +82,9 @@ public final class Bench {
 			Arrays.sort(cpuMeasured);
 			System.out.printf("CPU    objects=%d updates_per_cpu_s=%.0f cpu_p50_us=%.1f cpu_p99_us=%.1f%n", objects,
 					cpuMeasured.length / cpuSeconds, pct(cpuMeasured, 0.50), pct(cpuMeasured, 0.99));
-			System.out.printf("signals=%d nearby_facts_at_end=%d facts=%d problems=%s%n", signals.count(),
-					m.engine().nearbyCount(), m.engine().factCount(), m.guard().problems());
+			System.out.printf("signals=%d nearby_facts_at_end=%d facts=%d static_entries_skipped=%d problems=%s%n",
+					signals.count(), m.engine().nearbyCount(), m.engine().factCount(), m.staticEntriesSkipped(),
+					m.guard().problems());
 		}
 	}
 

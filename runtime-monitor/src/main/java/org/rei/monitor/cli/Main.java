@@ -12,10 +12,12 @@ import java.util.List;
 
 import org.rei.monitor.config.CaseReader;
 import org.rei.monitor.engine.DrlSources;
+import org.rei.monitor.engine.PatternRules;
 import org.rei.monitor.model.Snapshots;
 import org.rei.monitor.pipeline.Monitor;
 import org.rei.monitor.replay.Recording;
 import org.rei.monitor.replay.Replayer;
+import org.rei.monitor.signals.SignalFile;
 import org.rei.monitor.signals.SignalPublisher;
 import org.rei.monitor.wamp.LiveMonitor;
 
@@ -33,10 +35,14 @@ public final class Main {
 			  --mission FILE       replay: the mission stream (default: mission.msgpack beside the state stream)
 			  --realm NAME         WAMP realm (default rei)
 			  --queries DIR        .drl queries (default: the copies of queries/ in the jar)
-			  --rules DIR          .drl transition rules (default: the copies of cep/drl/ in the jar)
+			  --patterns DIR       .vepl patterns compiled at start, added to the default patterns (cep/patterns/)
+			  --no-default-patterns  only the patterns of --patterns DIR
+			  --rules DIR          hand-written .drl transition rules instead of any VEPL patterns
 			  --snapshot-out FILE  write the runtime model as XMI on exit (live default: runtime-<run>.xmi)
 			  --record DIR         live: record the received streams (state.msgpack, mission.msgpack)
+			  --signals-out FILE   write every signal as a JSON line (exact numbers, for comparisons)
 			  --until-end          live: stop after the mission's END event
+			  --linger SECONDS     live, with --until-end: keep serving the snapshot RPC this long after END
 			  --timeout SECONDS    live: stop after this long (default: run until interrupted)
 			  --quiet              do not print signals
 			""";
@@ -65,10 +71,13 @@ public final class Main {
 		}
 	}
 
-	static List<DrlSources.Source> rules(Options o) throws java.io.IOException {
-		List<DrlSources.Source> rules = new ArrayList<>(
-				o.queries != null ? DrlSources.folder(o.queries) : DrlSources.packaged(DrlSources.QUERIES));
-		rules.addAll(o.rules != null ? DrlSources.folder(o.rules) : DrlSources.packaged(DrlSources.RULES));
+	static List<DrlSources.Source> rules(Options o) throws Exception {
+		List<DrlSources.Source> queries = o.queries != null ? DrlSources.folder(o.queries)
+				: DrlSources.packaged(DrlSources.QUERIES);
+		List<DrlSources.Source> rules = new ArrayList<>(queries);
+		// VEPL patterns are compiled here, at start: a user's folder needs no rebuild of the monitor
+		rules.addAll(o.rules != null ? DrlSources.folder(o.rules)
+				: PatternRules.compile(PatternRules.select(!o.noDefaultPatterns, o.patterns), queries));
 		return rules;
 	}
 
@@ -89,7 +98,11 @@ public final class Main {
 		if (!o.quiet) {
 			signals.addListener(s -> out.println(s.line()));
 		}
-		try (Monitor m = new Monitor(o.run, c.world(), c.monitor(), rules(o), signals, err::println, null)) {
+		try (SignalFile file = o.signalsOut != null ? new SignalFile(o.signalsOut) : null;
+				Monitor m = new Monitor(o.run, c.world(), c.monitor(), rules(o), signals, err::println, null)) {
+			if (file != null) {
+				signals.addListener(file);
+			}
 			Recording missions = Files.exists(mission) ? Recording.read(mission) : null;
 			long start = System.nanoTime();
 			long[] latency = Replayer.replay(m, Recording.read(state), missions);
@@ -108,15 +121,19 @@ public final class Main {
 		CaseReader.Case given = o.caseDir != null ? CaseReader.readFolder(o.caseDir) : null;
 		List<DrlSources.Source> rules = rules(o);
 		Path snapshotOut = o.snapshotOut != null ? o.snapshotOut : Path.of("runtime-" + o.run + ".xmi");
-		try (LiveMonitor live = new LiveMonitor(o.router, o.realm, err::println)) {
+		try (SignalFile file = o.signalsOut != null ? new SignalFile(o.signalsOut) : null;
+				LiveMonitor live = new LiveMonitor(o.router, o.realm, err::println)) {
 			live.start(o.run, given,
 					c -> new Monitor(o.run, c.world(), c.monitor(), rules, new SignalPublisher(), err::println, null),
 					o.record, s -> {
+						if (file != null) {
+							file.accept(s);
+						}
 						if (!o.quiet) {
 							out.println(s.line());
 							out.flush();
 						}
-					}, 30_000);
+					}, o.timeoutSeconds > 0 ? (long) (o.timeoutSeconds * 1000) : 30_000);
 			Thread hook = new Thread(() -> { // interrupted (Ctrl-C, SIGTERM): still leave the model behind
 				try {
 					live.onPipeline(() -> save(live.monitor(), snapshotOut, err));
@@ -127,7 +144,11 @@ public final class Main {
 			Runtime.getRuntime().addShutdownHook(hook);
 			long timeout = o.timeoutSeconds > 0 ? (long) (o.timeoutSeconds * 1000) : Long.MAX_VALUE;
 			if (o.untilEnd) {
-				live.awaitEnd(timeout);
+				if (!live.awaitEnd(timeout)) {
+					err.println("rei-monitor: no END event within " + o.timeoutSeconds + " s");
+				} else if (o.lingerSeconds > 0) {
+					Thread.sleep((long) (o.lingerSeconds * 1000)); // the final model stays available over WAMP
+				}
 			} else {
 				Thread.sleep(timeout);
 			}
@@ -160,11 +181,15 @@ public final class Main {
 		Path caseDir;
 		Path queries;
 		Path rules;
+		Path patterns;
+		boolean noDefaultPatterns;
 		Path snapshotOut;
 		Path record;
+		Path signalsOut;
 		boolean untilEnd;
 		boolean quiet;
 		double timeoutSeconds;
+		double lingerSeconds;
 
 		static Options parse(String[] args) {
 			Options o = new Options();
@@ -174,8 +199,9 @@ public final class Main {
 				switch (a) {
 				case "--until-end" -> o.untilEnd = true;
 				case "--quiet" -> o.quiet = true;
-				case "--router", "--run", "--realm", "--replay", "--mission", "--case", "--queries", "--rules",
-						"--snapshot-out", "--record", "--timeout" -> {
+				case "--no-default-patterns" -> o.noDefaultPatterns = true;
+				case "--router", "--run", "--realm", "--replay", "--mission", "--case", "--queries", "--rules", "--patterns",
+						"--snapshot-out", "--record", "--signals-out", "--timeout", "--linger" -> {
 					if (i + 1 >= args.length) {
 						throw new IllegalArgumentException(a + " needs a value");
 					}
@@ -192,9 +218,12 @@ public final class Main {
 					case "--case" -> o.caseDir = Path.of(v);
 					case "--queries" -> o.queries = Path.of(v);
 					case "--rules" -> o.rules = Path.of(v);
+					case "--patterns" -> o.patterns = Path.of(v);
 					case "--snapshot-out" -> o.snapshotOut = Path.of(v);
 					case "--record" -> o.record = Path.of(v);
-					default -> o.timeoutSeconds = Double.parseDouble(v);
+					case "--signals-out" -> o.signalsOut = Path.of(v);
+					case "--linger" -> o.lingerSeconds = seconds(a, v, true);
+					default -> o.timeoutSeconds = seconds(a, v, false);
 					}
 				}
 				default -> throw new IllegalArgumentException("unknown argument " + a);
@@ -212,7 +241,39 @@ public final class Main {
 			if (o.replay != null && o.caseDir == null) {
 				throw new IllegalArgumentException("replay needs --case DIR (world.json, monitor.json)");
 			}
+			if (o.replay != null) {
+				String liveOnly = o.record != null ? "--record" : o.untilEnd ? "--until-end"
+						: o.timeoutSeconds > 0 ? "--timeout" : o.lingerSeconds > 0 ? "--linger" : null;
+				if (liveOnly != null) {
+					throw new IllegalArgumentException(liveOnly + " applies to live mode (--router) only");
+				}
+			} else if (o.mission != null) {
+				throw new IllegalArgumentException("--mission applies to replay only (live: the mission topic)");
+			}
+			if (o.rules != null && (o.patterns != null || o.noDefaultPatterns)) {
+				throw new IllegalArgumentException("--rules replaces the VEPL patterns: not with --patterns");
+			}
+			if (o.noDefaultPatterns && o.patterns == null) {
+				throw new IllegalArgumentException("--no-default-patterns needs --patterns DIR");
+			}
+			if (o.lingerSeconds > 0 && !o.untilEnd) {
+				throw new IllegalArgumentException("--linger needs --until-end");
+			}
 			return o;
+		}
+
+		private static double seconds(String option, String value, boolean zeroAllowed) {
+			double v;
+			try {
+				v = Double.parseDouble(value);
+			} catch (NumberFormatException e) {
+				v = Double.NaN;
+			}
+			if (!Double.isFinite(v) || v < 0 || v == 0 && !zeroAllowed) {
+				throw new IllegalArgumentException(option + " needs a number of seconds " + (zeroAllowed ? ">= 0" : "> 0")
+						+ ", got " + value);
+			}
+			return v;
 		}
 	}
 }

@@ -23,13 +23,14 @@ import java.util.stream.Stream;
 
 /**
  * The .drl files the session is built from: every {@code *.drl} of a folder given on the command line, or the
- * copies of {@code queries/} and {@code cep/drl/} packaged in the jar. Sorted by name, so builds are repeatable.
+ * copies of {@code queries/} and the rules compiled from {@code cep/patterns/} packaged in the jar. Sorted by name,
+ * so builds are repeatable.
  */
 public final class DrlSources {
 
 	/** Classpath folder of the packaged queries (a copy of the repository's {@code queries/}). */
 	public static final String QUERIES = "/org/rei/monitor/queries";
-	/** Classpath folder of the packaged transition rules (a copy of {@code cep/drl/}). */
+	/** Classpath folder of the transition rules the build compiled from {@code cep/patterns/} (see PatternRules). */
 	public static final String RULES = "/org/rei/monitor/rules";
 
 	/** One rule file: where it came from (for error messages) and its text. */

@@ -29,6 +29,7 @@ import org.rei.monitor.wire.MalformedMessageException;
 import org.rei.monitor.wire.MissionMessage;
 import org.rei.monitor.wire.ObjectState;
 import org.rei.monitor.wire.StateMessage;
+import org.rei.monitor.wire.StaticEntryCache;
 import org.rei.monitor.wire.WireDecoder;
 
 /**
@@ -55,6 +56,7 @@ public final class Monitor implements AutoCloseable {
 	private final InputGuard.Sequence stateSeq = new InputGuard.Sequence();
 	private final InputGuard.Sequence missionSeq = new InputGuard.Sequence();
 	private final Set<String> touching = new HashSet<>();
+	private final StaticEntryCache statics;
 	private long states;
 	private long missions;
 	private Footprint robotFootprint;
@@ -73,6 +75,8 @@ public final class Monitor implements AutoCloseable {
 		this.signals = signals;
 		this.guard = new InputGuard(log);
 		this.model = RuntimeModelUpdater.create(runId, world, spec);
+		this.statics = new StaticEntryCache(
+				world.objects().stream().filter(o -> o.isObstacle() && !o.moves()).map(World.WorldObject::name).toList());
 		for (World.WorldObject o : world.objects()) {
 			if (!o.isObstacle()) {
 				continue;
@@ -98,14 +102,24 @@ public final class Monitor implements AutoCloseable {
 
 	/** One state message as it came off the wire. Never throws for bad input. */
 	public void onStateBytes(byte[] data, int offset, int length) {
-		StateMessage m;
+		StateMessage m = decodeState(data, offset, length);
+		if (m != null) {
+			onState(m);
+		}
+	}
+
+	/**
+	 * Decodes a state message for {@link #onState}, skipping the full frame's static obstacles whose entries are
+	 * byte-identical to the last ones applied (they cannot change anything); null, counted, for bad input. Apply
+	 * the result before decoding the next message.
+	 */
+	public StateMessage decodeState(byte[] data, int offset, int length) {
 		try {
-			m = WireDecoder.decodeState(data, offset, length);
+			return WireDecoder.decodeState(data, offset, length, statics);
 		} catch (MalformedMessageException e) {
 			guard.problem(e.kind(), e.getMessage());
-			return;
+			return null;
 		}
-		onState(m);
 	}
 
 	/** One mission message as it came off the wire. Never throws for bad input. */
@@ -131,8 +145,10 @@ public final class Monitor implements AutoCloseable {
 		}
 		try {
 			step(m);
+			statics.applied(m);
 			states++;
 		} catch (RuntimeException e) {
+			statics.failed(m);
 			guard.problem("failed-state", e.toString());
 		}
 	}
@@ -262,6 +278,11 @@ public final class Monitor implements AutoCloseable {
 
 	public long missionsProcessed() {
 		return missions;
+	}
+
+	/** Full-frame entries of unchanged static obstacles skipped without decoding. */
+	public long staticEntriesSkipped() {
+		return statics.skipped();
 	}
 
 	@Override

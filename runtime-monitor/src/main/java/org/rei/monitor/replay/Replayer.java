@@ -15,8 +15,11 @@ import org.rei.monitor.wire.WireDecoder;
 
 /**
  * Feeds recorded state and mission streams through the monitor at full speed, without a router: the streams are
- * merged by simulation time, a mission event going before a state message of the same time. Returns per-state
- * latencies (nanoseconds, decode to signals) for the benchmark.
+ * merged by simulation time in the order the sim-adapter publishes them, so a replay sees what a live monitor saw.
+ * A mission event goes after the state message of the same time: the simulation loop publishes the state of a
+ * step when the step ends and the mission executor's events of time t at the start of the next step, decided from
+ * the pose at t (the state just sent). Returns per-state latencies (nanoseconds, decode to signals) for the
+ * benchmark.
  */
 public final class Replayer {
 
@@ -41,15 +44,12 @@ public final class Replayer {
 		long[] latency = new long[states.size()];
 		for (int i = 0; i < states.size(); i++) {
 			long start = System.nanoTime();
-			StateMessage m;
-			try {
-				m = WireDecoder.decodeState(states.data(), states.offset(i), states.length(i));
-			} catch (MalformedMessageException e) {
-				monitor.guard().problem(e.kind(), e.getMessage());
+			StateMessage m = monitor.decodeState(states.data(), states.offset(i), states.length(i));
+			if (m == null) { // counted by the monitor
 				latency[i] = System.nanoTime() - start;
 				continue;
 			}
-			while (next < pending.size() && pending.get(next).t() <= m.t()) {
+			while (next < pending.size() && pending.get(next).t() < m.t()) {
 				monitor.onMission(pending.get(next++));
 			}
 			monitor.onState(m);

@@ -25,6 +25,7 @@ import org.rei.monitor.signals.Signal;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 
+import ws.wamp.jawampa.ApplicationError;
 import ws.wamp.jawampa.PubSubData;
 import ws.wamp.jawampa.WampClient;
 import ws.wamp.jawampa.WampClientBuilder;
@@ -66,6 +67,8 @@ public final class LiveMonitor implements AutoCloseable {
 	 * @param caseFromConfig   builds the case from the config RPC's result when no case folder was given
 	 * @param monitorFactory   builds the monitor once the case is known
 	 * @param recordDir        where received streams are recorded (for replay comparisons), or null
+	 * @param timeoutMillis    how long joining the realm and (without a case) waiting for the run's config RPC
+	 *                         may take
 	 */
 	public void start(String runId, CaseReader.Case givenCase, Function<CaseReader.Case, Monitor> monitorFactory,
 			Path recordDir, Consumer<Signal> onSignal, long timeoutMillis) throws Exception {
@@ -82,7 +85,7 @@ public final class LiveMonitor implements AutoCloseable {
 		CaseReader.Case c = givenCase;
 		String configUri = "rei.run." + runId + ".config";
 		if (c == null) {
-			JsonNode result = client.call(configUri, new Object[0]).toBlocking().single().arguments().get(0);
+			JsonNode result = config(configUri, System.nanoTime() + timeoutMillis * 1_000_000);
 			c = new CaseReader.Case(CaseReader.world(result.get("world")), CaseReader.monitor(result.get("monitor")));
 		}
 		Monitor m = monitorFactory.apply(c);
@@ -108,22 +111,49 @@ public final class LiveMonitor implements AutoCloseable {
 			}, e -> log.accept("publishing a signal failed: " + e));
 			onSignal.accept(s);
 		});
+		client.makeSubscription(stateTopic).subscribe(ev -> accept(ev, true),
+				e -> log.accept("state subscription failed: " + e));
+		client.makeSubscription(missionTopic).subscribe(ev -> accept(ev, false),
+				e -> log.accept("mission subscription failed: " + e));
+		// registered after the subscriptions: WAMP messages of one session are handled in order, so a client whose
+		// snapshot call succeeds knows the monitor's subscriptions are in place (tests start the run after that)
 		client.registerProcedure(snapshotUri).subscribe(request -> pipeline.execute(() -> {
 			try {
 				request.reply(m.snapshot());
 			} catch (RuntimeException e) {
 				try {
 					request.replyError("rei.error.snapshot", e.toString());
-				} catch (ws.wamp.jawampa.ApplicationError ignored) {
+				} catch (ApplicationError ignored) {
 					// replyError rethrows the error it sent; nothing more to do
 				}
 			}
 		}), e -> log.accept("snapshot registration failed: " + e));
-		client.makeSubscription(stateTopic).subscribe(ev -> accept(ev, true),
-				e -> log.accept("state subscription failed: " + e));
-		client.makeSubscription(missionTopic).subscribe(ev -> accept(ev, false),
-				e -> log.accept("mission subscription failed: " + e));
 		log.accept("monitoring " + stateTopic + " and " + missionTopic + ", signals on " + signalTopic);
+	}
+
+	/**
+	 * The run's configuration from its collector; a monitor started before the run waits for the collector to
+	 * register the RPC (until the deadline, in {@link System#nanoTime()}).
+	 */
+	private JsonNode config(String uri, long deadline) throws Exception {
+		boolean logged = false;
+		while (true) {
+			try {
+				return client.call(uri, new Object[0]).toBlocking().single().arguments().get(0);
+			} catch (RuntimeException e) {
+				// toBlocking() wraps the checked ApplicationError in a RuntimeException
+				boolean absent = e.getCause() instanceof ApplicationError a
+						&& ApplicationError.NO_SUCH_PROCEDURE.equals(a.uri());
+				if (!absent || System.nanoTime() - deadline > 0) {
+					throw e;
+				}
+				if (!logged) {
+					log.accept("waiting for the run's configuration (" + uri + ")");
+					logged = true;
+				}
+				Thread.sleep(100);
+			}
+		}
 	}
 
 	private void accept(PubSubData event, boolean state) {

@@ -22,6 +22,9 @@ import org.msgpack.value.ValueType;
  */
 public final class WireDecoder {
 
+	// array headers come from the wire: a few bytes may claim billions of elements, so never allocate by them
+	private static final int CAPACITY = 1024;
+	private static final int MAX_REALS = 1 << 16;
 	private static final Set<String> EVENTS = Set.of("BEGIN", "TASK_START", "TASK_SUCCESS", "TASK_FAIL", "END");
 
 	private WireDecoder() {
@@ -32,10 +35,34 @@ public final class WireDecoder {
 	}
 
 	public static StateMessage decodeState(byte[] data, int offset, int length) throws MalformedMessageException {
+		return decodeState(data, offset, length, null);
+	}
+
+	/**
+	 * Decodes a state message; with a {@link StaticEntryCache}, {@code objects} entries that repeat the kept bytes
+	 * of an unchanged static obstacle are skipped without decoding and left out of the message's object list.
+	 * Hand the result to the owner of the cache ({@code StaticEntryCache.applied}) before decoding the next one.
+	 */
+	public static StateMessage decodeState(byte[] data, int offset, int length, StaticEntryCache cache)
+			throws MalformedMessageException {
+		if (cache != null) {
+			cache.begin(data);
+		}
 		try (MessageUnpacker in = MessagePack.newDefaultUnpacker(data, offset, length)) {
-			return state(in);
+			StateMessage m = state(in, new Frame(data, offset, offset + length, cache));
+			if (cache != null) {
+				cache.end(m);
+			}
+			return m;
 		} catch (IOException | RuntimeException e) {
 			throw new MalformedMessageException("undecodable-state", String.valueOf(e.getMessage()), e);
+		}
+	}
+
+	/** Where the unpacker reads: absolute positions in {@code data} for the static-entry cache. */
+	private record Frame(byte[] data, int offset, int limit, StaticEntryCache cache) {
+		int position(MessageUnpacker in) {
+			return offset + (int) in.getTotalReadBytes();
 		}
 	}
 
@@ -51,7 +78,7 @@ public final class WireDecoder {
 		}
 	}
 
-	private static StateMessage state(MessageUnpacker in) throws IOException, MalformedMessageException {
+	private static StateMessage state(MessageUnpacker in, Frame frame) throws IOException, MalformedMessageException {
 		int n = mapHeader(in, "state");
 		long seq = -1;
 		double t = Double.NaN;
@@ -65,7 +92,7 @@ public final class WireDecoder {
 			case "seq" -> seq = integer(in, "seq");
 			case "t" -> t = real(in, "t");
 			case "full" -> full = in.getNextFormat() == MessageFormat.NIL ? nilFalse(in) : in.unpackBoolean();
-			case "objects" -> objects = objects(in);
+			case "objects" -> objects = objects(in, frame);
 			case "robot" -> robot = robot(in);
 			case "contacts" -> contacts = contacts(in);
 			default -> in.skipValue();
@@ -83,34 +110,60 @@ public final class WireDecoder {
 		return false;
 	}
 
-	private static List<ObjectState> objects(MessageUnpacker in) throws IOException, MalformedMessageException {
+	private static List<ObjectState> objects(MessageUnpacker in, Frame frame)
+			throws IOException, MalformedMessageException {
 		int n = arrayHeader(in, "objects");
-		List<ObjectState> out = new ArrayList<>(n);
+		StaticEntryCache cache = frame.cache();
+		List<ObjectState> out = new ArrayList<>(Math.min(n, cache != null ? 64 : CAPACITY));
 		double[] pose = new double[4];
 		double[] twist = new double[3];
-		for (int i = 0; i < n; i++) {
-			int m = mapHeader(in, "object");
-			String name = null;
-			String type = null;
-			boolean hasPose = false;
-			twist[0] = twist[1] = twist[2] = 0;
-			for (int k = 0; k < m; k++) {
-				String key = in.unpackString();
-				switch (key) {
-				case "name" -> name = string(in, "object name");
-				case "type" -> type = string(in, "object type");
-				case "pose" -> {
-					reals(in, pose, "object pose");
-					hasPose = true;
+		int i = 0;
+		while (i < n) {
+			if (cache != null) {
+				// a run of entries equal to the kept bytes of unchanged statics: step over them in one go
+				int pos = frame.position(in);
+				int run = 0;
+				for (int len; i < n && (len = cache.unchanged(i, frame.data(), pos + run, frame.limit())) > 0; i++) {
+					run += len;
 				}
-				case "twist" -> reals(in, twist, "object twist");
-				default -> in.skipValue();
+				if (run > 0) {
+					in.readPayloadAsReference(run);
+					continue;
 				}
 			}
-			require(name != null && hasPose, "missing-field", "object without name or pose");
-			out.add(new ObjectState(name, type, pose[0], pose[1], pose[2], pose[3], twist[0], twist[1], twist[2]));
+			int start = cache != null ? frame.position(in) : 0;
+			ObjectState o = object(in, pose, twist);
+			if (cache != null) {
+				cache.decoded(i, start, frame.position(in) - start, o.name());
+			}
+			out.add(o);
+			i++;
 		}
 		return out;
+	}
+
+	private static ObjectState object(MessageUnpacker in, double[] pose, double[] twist)
+			throws IOException, MalformedMessageException {
+		int m = mapHeader(in, "object");
+		String name = null;
+		String type = null;
+		boolean hasPose = false;
+		twist[0] = twist[1] = twist[2] = 0;
+		for (int k = 0; k < m; k++) {
+			String key = in.unpackString();
+			switch (key) {
+			case "name" -> name = string(in, "object name");
+			case "type" -> type = string(in, "object type");
+			case "pose" -> {
+				reals(in, pose, "object pose");
+				hasPose = true;
+			}
+			case "twist" -> reals(in, twist, "object twist");
+			default -> in.skipValue();
+			}
+		}
+		require(name != null && hasPose, "missing-field", "object without name or pose");
+		return new ObjectState(name, type, pose[0], pose[1], pose[2], pose[3], twist[0], twist[1], twist[2]);
 	}
 
 	private static RobotState robot(MessageUnpacker in) throws IOException, MalformedMessageException {
@@ -166,7 +219,7 @@ public final class WireDecoder {
 			return null;
 		}
 		int n = arrayHeader(in, "contacts");
-		List<String[]> out = new ArrayList<>(n);
+		List<String[]> out = new ArrayList<>(Math.min(n, CAPACITY));
 		for (int i = 0; i < n; i++) {
 			int m = arrayHeader(in, "contact");
 			require(m == 2, "bad-field", "a contact is a pair of names, got " + m + " elements");
@@ -253,6 +306,7 @@ public final class WireDecoder {
 			return null;
 		}
 		int n = arrayHeader(in, what);
+		require(n <= MAX_REALS, "bad-field", what + " with " + n + " numbers");
 		double[] out = new double[n];
 		for (int i = 0; i < n; i++) {
 			out[i] = real(in, what);

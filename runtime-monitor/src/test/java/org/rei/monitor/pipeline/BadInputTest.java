@@ -58,6 +58,24 @@ class BadInputTest {
 	}
 
 	@Test
+	void arrayLengthsClaimedByAFewBytesAllocateNothing() {
+		try (TestRuns run = new TestRuns()) {
+			// "objects": array32 of 2^31 - 1 entries, then the message ends
+			byte[] objects = { (byte) 0x82, (byte) 0xa3, 's', 'e', 'q', 0, (byte) 0xa7, 'o', 'b', 'j', 'e', 'c', 't',
+					's', (byte) 0xdd, 0x7f, (byte) 0xff, (byte) 0xff, (byte) 0xff };
+			// "robot": {"laser_ranges": array32 of 2^31 - 1 numbers}
+			byte[] ranges = { (byte) 0x81, (byte) 0xa5, 'r', 'o', 'b', 'o', 't', (byte) 0x81, (byte) 0xac, 'l', 'a', 's',
+					'e', 'r', '_', 'r', 'a', 'n', 'g', 'e', 's', (byte) 0xdd, 0x7f, (byte) 0xff, (byte) 0xff, (byte) 0xff };
+			run.monitor.onStateBytes(objects, 0, objects.length);
+			run.monitor.onStateBytes(ranges, 0, ranges.length);
+			// the first ends where the first object should start ("empty"), the second is refused by its length
+			assertEquals(Map.of("empty", 1L, "bad-field", 1L), run.monitor.guard().problems());
+			Traces.wallApproach().forEach(run.monitor::onState);
+			assertEquals(281, run.monitor.statesProcessed());
+		}
+	}
+
+	@Test
 	void oldRepeatedAndBackwardMessagesAreSkipped() {
 		try (TestRuns run = new TestRuns()) {
 			List<StateMessage> trace = Traces.wallApproach();
