@@ -30,6 +30,8 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
     parser.add_argument("--utilities", metavar="YAML", type=Path,
                         help="utility per signal, overriding the defaults of thesis Table 3")
     parser.add_argument("--run-id", metavar="ID", help="identifier of the run in topic names (default: random)")
+    parser.add_argument("--view", action="store_true",
+                        help="watch the run live in the browser: serves a page on 127.0.0.1 and prints its URL")
     parser.set_defaults(handler=run)
 
 
@@ -57,7 +59,7 @@ def run(args: argparse.Namespace) -> int:
                   f"utility {progress.utility:+.0f}   ", end="", file=sys.stderr, flush=True)
 
     options = PipelineOptions(sim_args=tuple(mission_argv(args)), utilities=args.utilities,
-                              humans=not args.no_humans, laser=args.laser != "none")
+                              humans=not args.no_humans, laser=args.laser != "none", view=args.view)
     result = run_pipeline(case_dir, out, options,
                           run_id=run_id, on_progress=show)
     if sys.stderr.isatty():

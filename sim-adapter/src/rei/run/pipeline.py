@@ -20,7 +20,7 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from rei import toolchain
 from rei.run.processes import ManagedProcess
@@ -28,6 +28,9 @@ from rei.wamp.client import WampClient
 from rei.wamp.recording import RecordingWriter, stream_path
 from rei.wamp.router import Router
 from rei.wamp.topics import Topics
+
+if TYPE_CHECKING:
+    from rei.view import ViewServer
 
 #: Seconds the monitor may take to start (JVM, Drools rule compilation) before the run is an error.
 MONITOR_START_TIMEOUT = 60.0
@@ -43,6 +46,7 @@ class PipelineOptions:
     utilities: Path | None = None
     humans: bool = True  # without humans the human-trajectory requirement does not apply
     laser: bool = True  # without laser data the laser requirements do not apply
+    view: bool = False  # serve the live view (rei.view) while the run lasts
 
 
 @dataclass(frozen=True, slots=True)
@@ -86,9 +90,10 @@ def run_pipeline(case_dir: Path, out: Path, options: PipelineOptions, *, run_id:
     started = time.perf_counter()
     progress = {"t": 0.0, "done": 0, "total": 0}
     previous_term = signal.signal(signal.SIGTERM, _raise_interrupted)
-    router = monitor = sim = client = signals = None
+    router = monitor = sim = client = signals = viewer = None
     try:
         router = Router(run_dir=out / "router").start()
+        viewer = _start_view(router, run_id, case_dir, options) if options.view else None
         client = WampClient(router.rs_url).start()
         signals = RecordingWriter(stream_path(out, "signal"))
         attach(client, run_id, evaluator, also=signals.write)
@@ -97,6 +102,8 @@ def run_pipeline(case_dir: Path, out: Path, options: PipelineOptions, *, run_id:
             "--router", router.ws_url, "--run", run_id, "--case", str(case_dir), "--until-end", "--quiet",
             "--snapshot-out", str(out / "runtime.xmi")], out / "monitor.log")
         _await_monitor(client, topics, monitor)
+        if viewer is not None:
+            _await_viewer(viewer)
         sim = ManagedProcess("simulation", [
             sys.executable, "-m", "rei.cli", "sim", str(case_dir), "-o", str(out), "--router", router.rs_url,
             "--run-id", run_id, "--progress", "lines", *options.sim_args],
@@ -127,7 +134,7 @@ def run_pipeline(case_dir: Path, out: Path, options: PipelineOptions, *, run_id:
             if process is not None:
                 process.stop()
         for closing in (client.close if client else None, signals.close if signals else None,
-                        router.stop if router else None):
+                        router.stop if router else None, viewer.stop if viewer else None):
             if closing is not None:
                 try:
                     closing()
@@ -152,6 +159,25 @@ def _await_monitor(client: WampClient, topics: Topics, monitor: ManagedProcess) 
         except Exception:  # noqa: BLE001 - not registered yet
             time.sleep(0.25)
     raise _Interrupted(f"the monitor did not start within {MONITOR_START_TIMEOUT:.0f} s")
+
+
+def _start_view(router: Router, run_id: str, case_dir: Path, options: PipelineOptions) -> ViewServer:
+    """The live view's server (`--view`), started before the monitor so the page can connect meanwhile."""
+    from rei.view import ViewServer, view_config
+
+    viewer = ViewServer(view_config(router.ws_url, run_id, case_dir, utilities=options.utilities)).start()
+    print(f"view:   {viewer.url}", flush=True)
+    return viewer
+
+
+def _await_viewer(viewer: ViewServer) -> None:
+    """Until a page is subscribed (so it sees the run from its first message), at most VIEWER_WAIT s."""
+    from rei.view import VIEWER_WAIT
+
+    if not viewer.wait_for_viewer(0.0):
+        print(f"view:   waiting up to {VIEWER_WAIT:.0f} s for the page to connect...", flush=True)
+        if not viewer.wait_for_viewer(VIEWER_WAIT):
+            print("view:   no page connected; running anyway", flush=True)
 
 
 def _parse_progress(line: str, progress: dict[str, float]) -> None:

@@ -1,0 +1,43 @@
+# SPDX-License-Identifier: EPL-2.0
+"""Fixtures of the live view's browser tests: Debian's chromium driven by Playwright, a router, a view server.
+
+Playwright's own browser downloads are never used (`executable_path` points at the system's chromium, which
+scripts/setup-browser.sh installs). These tests never skip: a missing browser fails with the set-up hint.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+from collections.abc import Iterator
+
+import pytest
+from playwright.sync_api import Browser, sync_playwright
+
+from rei.wamp import Router
+
+
+def chromium_path() -> str:
+    for candidate in (os.environ.get("REI_CHROMIUM"), "chromium", "chromium-browser", "google-chrome"):
+        found = shutil.which(candidate) if candidate else None
+        if found:
+            return found
+    pytest.fail("no headless browser: run scripts/setup-browser.sh (apt-get install chromium) or set REI_CHROMIUM",
+                pytrace=False)
+
+
+@pytest.fixture(scope="session")
+def browser() -> Iterator[Browser]:
+    with sync_playwright() as playwright:
+        launched = playwright.chromium.launch(executable_path=chromium_path(),
+                                              args=["--no-sandbox", "--disable-dev-shm-usage"])
+        try:
+            yield launched
+        finally:
+            launched.close()
+
+
+@pytest.fixture(scope="module")
+def router() -> Iterator[Router]:
+    with Router() as running:
+        yield running

@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: EPL-2.0
+// World metres to canvas pixels (x right, y up in the world; y down on the canvas), and footprints.
+import type { World, WorldObject } from "./config";
+
+export type Bounds = readonly [number, number, number, number];
+
+export class Transform {
+  constructor(
+    /** Pixels per metre. */
+    readonly scale: number,
+    /** Canvas pixel of world x = 0 and of world y = 0. */
+    readonly ox: number,
+    readonly oy: number,
+  ) {}
+
+  static fit(bounds: Bounds, width: number, height: number, pad = 24): Transform {
+    const [xmin, ymin, xmax, ymax] = bounds;
+    const w = Math.max(xmax - xmin, 1e-6);
+    const h = Math.max(ymax - ymin, 1e-6);
+    const scale = Math.max(1e-6, Math.min((width - 2 * pad) / w, (height - 2 * pad) / h));
+    const ox = (width - w * scale) / 2 - xmin * scale;
+    const oy = (height + h * scale) / 2 + ymin * scale;
+    return new Transform(scale, ox, oy);
+  }
+
+  x(x: number): number {
+    return this.ox + x * this.scale;
+  }
+
+  y(y: number): number {
+    return this.oy - y * this.scale;
+  }
+
+  /** Canvas pixel back to world metres. */
+  toWorld(px: number, py: number): [number, number] {
+    return [(px - this.ox) / this.scale, (this.oy - py) / this.scale];
+  }
+}
+
+/** The four corners of a box of size (sx, sy) centred at (x, y), turned by yaw. */
+export function boxCorners(x: number, y: number, sx: number, sy: number, yaw: number): [number, number][] {
+  const c = Math.cos(yaw);
+  const s = Math.sin(yaw);
+  const hx = sx / 2;
+  const hy = sy / 2;
+  return [[-hx, -hy], [hx, -hy], [hx, hy], [-hx, hy]].map(
+    ([dx = 0, dy = 0]) => [x + dx * c - dy * s, y + dx * s + dy * c] as [number, number]);
+}
+
+/** Whether world point (px, py) lies on the body's footprint (a turned box, or a disc for a cylinder). */
+export function contains(body: WorldObject, px: number, py: number): boolean {
+  const [x = 0, y = 0, , yaw = 0] = body.pose;
+  const [sx = 0, sy = 0] = body.size;
+  const dx = px - x;
+  const dy = py - y;
+  if (body.shape === "CYLINDER") return Math.hypot(dx, dy) <= sx / 2;
+  const c = Math.cos(-yaw);
+  const s = Math.sin(-yaw);
+  const lx = dx * c - dy * s;
+  const ly = dx * s + dy * c;
+  return Math.abs(lx) <= sx / 2 && Math.abs(ly) <= sy / 2;
+}
+
+/** The area to show: the room's bounds and every body, with a margin. */
+export function worldBounds(world: World | null): Bounds {
+  const box = [Infinity, Infinity, -Infinity, -Infinity];
+  const grow = (x: number, y: number): void => {
+    box[0] = Math.min(box[0] ?? x, x);
+    box[1] = Math.min(box[1] ?? y, y);
+    box[2] = Math.max(box[2] ?? x, x);
+    box[3] = Math.max(box[3] ?? y, y);
+  };
+  if (world !== null) {
+    const [bx0, by0, bx1, by1] = world.bounds;
+    if (bx0 !== undefined && by0 !== undefined && bx1 !== undefined && by1 !== undefined) {
+      grow(bx0, by0);
+      grow(bx1, by1);
+    }
+    for (const body of world.objects) {
+      const [x = 0, y = 0, , yaw = 0] = body.pose;
+      const [sx = 0, sy = 0] = body.size;
+      for (const [cx, cy] of boxCorners(x, y, sx, sy, yaw)) grow(cx, cy);
+    }
+  }
+  const [xmin = 0, ymin = 0, xmax = 1, ymax = 1] = box;
+  if (!Number.isFinite(xmin)) return [-0.3, -0.3, 1.3, 1.3];
+  const margin = 0.3;
+  return [xmin - margin, ymin - margin, xmax + margin, ymax + margin];
+}
