@@ -1,0 +1,69 @@
+# SPDX-License-Identifier: EPL-2.0
+"""A campaign of the thesis's size (7.4): 14 small-room runs, 8 medium-room runs with a human, 1 large room.
+
+Runs examples/campaigns/thesis.yaml cold (fresh output folder: every case generated, every run executed) with
+`rei campaign --workers N` and reports the wall time, runs per hour, the campaign's CPU seconds and its share of
+the machine's cores, how busy the machine was overall (other processes included) and the load average, and
+where the runs' time went (simulation, monitor replay, evaluation). Target: all 23 runs in under 2 minutes on
+2 cores.
+
+    .venv/bin/python benchmarks/campaign.py [--workers 2] [--spec examples/campaigns/thesis.yaml] [--keep DIR]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--workers", type=int, default=os.cpu_count() or 1)
+    parser.add_argument("--spec", type=Path, default=REPO / "examples" / "campaigns" / "thesis.yaml")
+    parser.add_argument("--keep", type=Path, help="output folder to keep (default: a temporary one)")
+    args = parser.parse_args()
+
+    out = args.keep or Path(tempfile.mkdtemp(prefix="rei-campaign-bench-"))
+    shutil.rmtree(out, ignore_errors=True)
+    load_before = os.getloadavg()
+    started = time.perf_counter()
+    done = subprocess.run([sys.executable, "-m", "rei.cli", "campaign", str(args.spec), "-o", str(out),
+                           "--workers", str(args.workers)], capture_output=True, text=True, check=False)
+    wall = time.perf_counter() - started
+    if not (out / "campaign.json").is_file():
+        print(done.stdout, done.stderr, sep="\n")
+        return 2
+    campaign = json.loads((out / "campaign.json").read_text(encoding="utf-8"))
+    metrics = campaign["metrics"]
+    usage, runs, prepare = metrics["campaign"], metrics["runs"], metrics["prepare"]
+    finished = campaign["finished"]
+    print(f"campaign {campaign['name']}: {finished}/{campaign['planned']} runs, {campaign['errors']} in ERROR, "
+          f"{args.workers} workers on {usage['cores']} cores")
+    print(f"wall time       {wall:7.1f} s   (target < 120 s: {'met' if wall < 120 and finished == 23 else 'MISSED'})")
+    print(f"runs per hour   {3600 * finished / wall:7.0f}")
+    print(f"campaign CPU    {usage['cpu']:7.1f} s   = {100 * usage['cpu_utilisation']:.0f} % of {usage['cores']} cores "
+          "over the wall time")
+    print(f"machine busy    {100 * usage['machine_utilisation']:7.0f} %   (all processes; load average "
+          f"{load_before[0]:.1f} before, {usage['load_average_1min']:.1f} after)")
+    print(f"case generation {prepare['cpu']:7.1f} s CPU for {prepare['generated']} cases ({prepare['wall']:.1f} s wall)")
+    for name, t in runs["phases"].items():
+        print(f"  {name:<13} {t['cpu']:7.1f} s CPU  {t['wall']:7.1f} s wall (summed over runs)")
+    overhead = runs["cpu"] - sum(t["cpu"] for t in runs["phases"].values())
+    print(f"  {'worker start':<13} {overhead:7.1f} s CPU  (Python start, imports, files)")
+    print(f"report: {out / 'report.html'}")
+    if args.keep is None:
+        shutil.rmtree(out, ignore_errors=True)
+    return 0 if done.returncode in (0, 1) else done.returncode
+
+
+if __name__ == "__main__":
+    sys.exit(main())

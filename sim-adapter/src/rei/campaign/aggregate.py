@@ -1,0 +1,146 @@
+# SPDX-License-Identifier: EPL-2.0
+"""The campaign's tables, as thesis 7.4-7.5 presents them.
+
+* Execution summary per room, with a total per group (Tables 5, 7): executions, mean/median execution
+  (simulated) time, mean/median/max/min utility - over the COMPLETED runs; ERROR runs are counted apart,
+  because a crashed run has no utility to average.
+* Signal counts per room (Tables 6, 8) and per variant, e.g. per fault level (Tables 9, 10).
+* Verdict pass rates per requirement: pass / (pass + fail + error); not-applicable verdicts are left out.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import statistics
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+
+from rei.campaign.results import RunResult
+
+SUMMARY_COLUMNS = ("group", "room", "variant", "executions", "errors", "mean_time", "median_time",
+                   "mean_utility", "median_utility", "max_utility", "min_utility", "missions_succeeded",
+                   "verdict_pass_rate")
+TOTAL = "Total"
+ALL = "*"
+
+
+@dataclass(frozen=True, slots=True)
+class Row:
+    """One line of an execution summary: ``room`` is a room, or ``Total``; ``variant`` a variant or ``*``."""
+
+    group: str
+    room: str
+    variant: str
+    executions: int
+    errors: int
+    mean_time: float | None
+    median_time: float | None
+    mean_utility: float | None
+    median_utility: float | None
+    max_utility: float | None
+    min_utility: float | None
+    missions_succeeded: int
+    verdict_pass_rate: float | None
+
+    def values(self) -> tuple[object, ...]:
+        return tuple(getattr(self, c) for c in SUMMARY_COLUMNS)
+
+
+def summarize(group: str, room: str, variant: str, runs: Sequence[RunResult]) -> Row:
+    done = [r for r in runs if r.status == "COMPLETED"]
+    times = [r.sim_duration for r in done if r.sim_duration is not None]
+    utilities = [r.total_utility for r in done if r.total_utility is not None]
+    return Row(group, room, variant, len(done), len(runs) - len(done), _mean(times), _median(times),
+               _mean(utilities), _median(utilities), max(utilities, default=None), min(utilities, default=None),
+               sum(bool(r.mission_succeeded) for r in done), pass_rate(runs))
+
+
+def pass_rate(runs: Iterable[RunResult], requirement: str | None = None) -> float | None:
+    judged = [s for r in runs for req, s in r.verdicts.items()
+              if (requirement is None or req == requirement) and s in ("pass", "fail", "error")]
+    return sum(s == "pass" for s in judged) / len(judged) if judged else None
+
+
+def summary_rows(results: Sequence[RunResult]) -> list[Row]:
+    """Per group: one row per room, the group's total, then one row per variant (all rooms)."""
+    rows = []
+    for group in _ordered(r.group for r in results):
+        runs = [r for r in results if r.group == group]
+        for room in _ordered(r.case for r in runs):
+            rows.append(summarize(group, room, ALL, [r for r in runs if r.case == room]))
+        rows.append(summarize(group, TOTAL, ALL, runs))
+        variants = _ordered(r.variant for r in runs)
+        if len(variants) > 1:
+            for variant in variants:
+                rows.append(summarize(group, ALL, variant, [r for r in runs if r.variant == variant]))
+    return rows
+
+
+def signal_table(runs: Sequence[RunResult], by: str) -> tuple[list[str], list[tuple[str, list[int]]]]:
+    """(column names, [(signal, counts per column)]) with columns the rooms (``by="case"``) or variants."""
+    from rei.report.colours import signal_sort_key
+
+    columns = _ordered(getattr(r, by) for r in runs)
+    signals = sorted({s for r in runs for s in r.counts}, key=signal_sort_key)
+    table = [(s, [sum(r.counts.get(s, 0) for r in runs if getattr(r, by) == c) for c in columns]) for s in signals]
+    return columns, table
+
+
+def verdict_table(runs: Sequence[RunResult]) -> list[tuple[str, dict[str, int], float | None]]:
+    """(requirement, counts per status, pass rate) for every requirement judged in ``runs``."""
+    requirements = _ordered(req for r in runs for req in r.verdicts)
+    out = []
+    for req in requirements:
+        counts: dict[str, int] = {}
+        for r in runs:
+            status = r.verdicts.get(req)
+            if status is not None:
+                counts[status] = counts.get(status, 0) + 1
+        out.append((req, counts, pass_rate(runs, req)))
+    return out
+
+
+def summary_csv(results: Sequence[RunResult]) -> str:
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(SUMMARY_COLUMNS)
+    for row in summary_rows(results):
+        writer.writerow(_cell(v) for v in row.values())
+    return buffer.getvalue()
+
+
+RUN_COLUMNS = ("key", "group", "case", "variant", "repetition", "seed", "humans", "fault", "status", "error",
+               "sim_duration", "total_utility", "mission_succeeded", "tasks_started", "tasks_succeeded",
+               "tasks_failed", "wall_time", "cpu_time", "host")
+
+
+def runs_csv(results: Sequence[RunResult]) -> str:
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow((*RUN_COLUMNS, "verdicts_passed", "verdicts_failed"))
+    for r in results:
+        passed = sum(s == "pass" for s in r.verdicts.values())
+        failed = sum(s == "fail" for s in r.verdicts.values())
+        writer.writerow((*(_cell(getattr(r, c)) for c in RUN_COLUMNS), passed, failed))
+    return buffer.getvalue()
+
+
+def _cell(value: object) -> object:
+    if value is None:
+        return ""
+    if isinstance(value, float):
+        return f"{value:.4g}" if abs(value) < 1e4 else f"{value:.0f}"
+    return value
+
+
+def _mean(values: Sequence[float]) -> float | None:
+    return statistics.fmean(values) if values else None
+
+
+def _median(values: Sequence[float]) -> float | None:
+    return statistics.median(values) if values else None
+
+
+def _ordered(items: Iterable[str]) -> list[str]:
+    return list(dict.fromkeys(items))

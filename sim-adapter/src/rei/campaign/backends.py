@@ -1,0 +1,104 @@
+# SPDX-License-Identifier: EPL-2.0
+"""Where runs execute: worker processes on this machine (default) or tasks on a Ray cluster (``--ray``).
+
+Both run the same ``supervise`` (a worker process per run, with its timeout) and hand each ``Outcome`` back to
+the caller's thread as it arrives, so results are written and printed in one place, in completion order.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Callable, Sequence
+from concurrent.futures import FIRST_COMPLETED, Future, ThreadPoolExecutor, wait
+from typing import Any
+
+from rei.campaign.plan import RunTask
+from rei.campaign.supervise import Outcome, supervise
+
+OnOutcome = Callable[[RunTask, Outcome], None]
+
+
+class LocalBackend:
+    """``workers`` runs at a time, each in its own process, supervised by one thread each.
+
+    ``command`` (for tests) replaces the worker command line of every run.
+    """
+
+    name = "local"
+
+    def __init__(self, workers: int, command: Callable[[RunTask], Sequence[str]] | None = None) -> None:
+        if workers < 1:
+            raise ValueError(f"workers must be >= 1, got {workers}")
+        self.workers = workers
+        self._command = command
+
+    def run(self, tasks: Sequence[RunTask], on_outcome: OnOutcome, stop: threading.Event) -> None:
+        with ThreadPoolExecutor(self.workers, thread_name_prefix="rei-campaign") as pool:
+            pending: dict[Future[Outcome], RunTask] = {
+                pool.submit(supervise, task, stop, self._command(task) if self._command else None): task
+                for task in tasks}
+            try:
+                while pending:
+                    done, _ = wait(pending, timeout=0.5, return_when=FIRST_COMPLETED)
+                    for future in done:
+                        on_outcome(pending.pop(future), future.result())
+            except BaseException:
+                stop.set()  # running workers are stopped by their supervisors, queued ones never start
+                for future in pending:
+                    future.cancel()
+                raise
+
+    def close(self) -> None:
+        pass
+
+
+class RayBackend:
+    """Runs as Ray tasks of one CPU each. ``address``: a cluster's (``ray start --head`` prints it), or
+    ``local`` for a Ray instance started here with ``workers`` CPUs and stopped at the end.
+
+    The run folders must be on a file system every node sees at the same path (the workers read the case and
+    write the run there); the case folders are prepared on this machine first.
+    """
+
+    name = "ray"
+
+    def __init__(self, address: str, workers: int | None = None) -> None:
+        import ray
+
+        self._ray = ray
+        local = address == "local"
+        self._started_here = local
+        init: dict[str, Any] = {"include_dashboard": False, "log_to_driver": False, "logging_level": "WARNING"}
+        if local:
+            ray.init(num_cpus=workers or 1, **init)
+        else:
+            ray.init(address=address, **init)
+        self.workers = int(ray.cluster_resources().get("CPU", 1))
+        self._remote = ray.remote(num_cpus=1, max_retries=0)(_ray_supervise)
+
+    def run(self, tasks: Sequence[RunTask], on_outcome: OnOutcome, stop: threading.Event) -> None:
+        ray = self._ray
+        refs = {self._remote.remote(task.to_dict()): task for task in tasks}
+        try:
+            while refs:
+                ready, _ = ray.wait(list(refs), num_returns=1, timeout=0.5)
+                for ref in ready:
+                    task = refs.pop(ref)
+                    try:
+                        outcome = Outcome(**ray.get(ref))
+                    except Exception as error:  # noqa: BLE001 - the task itself died (its node, its worker)
+                        outcome = Outcome(task.key, None, False, False, 0.0, 0.0,
+                                          f"ray task failed: {type(error).__name__}: {error}", "?")
+                    on_outcome(task, outcome)
+        except BaseException:
+            stop.set()
+            for ref in refs:
+                ray.cancel(ref)  # not forced: KeyboardInterrupt in the task, whose supervisor stops the worker
+            raise
+
+    def close(self) -> None:
+        self._ray.shutdown()
+
+
+def _ray_supervise(task: dict[str, Any]) -> dict[str, Any]:
+    return supervise(RunTask.from_dict(task)).to_dict()

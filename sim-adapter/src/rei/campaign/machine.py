@@ -1,0 +1,52 @@
+# SPDX-License-Identifier: EPL-2.0
+"""How busy this machine was during a campaign: our CPU seconds versus all cores' capacity, and everyone's.
+
+Why both: on a shared machine a campaign's wall time depends on the other processes too; the benchmark has to
+say how much of the machine the campaign used and how much was taken by others.
+"""
+
+from __future__ import annotations
+
+import os
+import resource
+import time
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True, slots=True)
+class Sample:
+    wall: float
+    own_cpu: float  # this process and its reaped children, seconds
+    busy: float  # all processes of the machine, CPU seconds (from /proc/stat), or nan
+    total: float  # capacity seconds (all cores) over the same counter, or nan
+
+    @classmethod
+    def now(cls) -> Sample:
+        me, children = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
+        busy, total = _proc_stat()
+        return cls(time.perf_counter(), me.ru_utime + me.ru_stime + children.ru_utime + children.ru_stime,
+                   busy, total)
+
+
+def usage(start: Sample, end: Sample) -> dict[str, float]:
+    """Wall seconds, our CPU seconds, our share of all cores, the machine's busy share, cores, load average."""
+    cores = os.cpu_count() or 1
+    wall = max(end.wall - start.wall, 1e-9)
+    own = end.own_cpu - start.own_cpu
+    span = end.total - start.total
+    machine = (end.busy - start.busy) / span if span > 0 else float("nan")
+    return {"wall": round(wall, 3), "cpu": round(own, 3), "cores": cores,
+            "cpu_utilisation": round(own / (wall * cores), 4), "machine_utilisation": round(machine, 4),
+            "load_average_1min": round(os.getloadavg()[0], 2)}
+
+
+def _proc_stat() -> tuple[float, float]:
+    try:
+        with open("/proc/stat", encoding="ascii") as f:
+            fields = [float(x) for x in f.readline().split()[1:]]
+    except (OSError, ValueError):
+        return float("nan"), float("nan")
+    tick = os.sysconf("SC_CLK_TCK")
+    idle = fields[3] + (fields[4] if len(fields) > 4 else 0.0)  # idle + iowait
+    total = sum(fields[:8])
+    return (total - idle) / tick, total / tick

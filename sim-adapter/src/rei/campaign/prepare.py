@@ -1,0 +1,51 @@
+# SPDX-License-Identifier: EPL-2.0
+"""Generate every test case of a campaign once, before its runs: ``OUT/cases/<case>/`` (world.json, ...).
+
+Generated rooms are first written to ``OUT/rooms/<case>.rei``. A case folder records the SHA-256 of the
+``.rei`` text it came from; on resume an unchanged case is not generated again (one JVM start less per case).
+"""
+
+from __future__ import annotations
+
+import hashlib
+from dataclasses import dataclass
+from pathlib import Path
+
+from rei.campaign.jvm import run_jar
+from rei.campaign.plan import CaseSource
+
+STAMP = ".source.sha256"
+
+
+@dataclass(frozen=True, slots=True)
+class Prepared:
+    key: str
+    error: str | None
+    cpu: float
+    generated: bool
+
+
+def prepare_case(source: CaseSource, out: Path) -> Prepared:
+    rei = source.rei_file(out)
+    if rei is None:  # an already generated folder
+        return Prepared(source.key, None, 0.0, False)
+    if source.text is not None:
+        rei.parent.mkdir(parents=True, exist_ok=True)
+        if not rei.is_file() or rei.read_text(encoding="utf-8") != source.text:
+            rei.write_text(source.text, encoding="utf-8")
+    try:
+        digest = hashlib.sha256(rei.read_bytes()).hexdigest()
+    except OSError as error:
+        return Prepared(source.key, f"cannot read {rei}: {error.strerror or error}", 0.0, False)
+    target = source.case_dir(out)
+    stamp = target / STAMP
+    if stamp.is_file() and stamp.read_text(encoding="utf-8").strip() == digest and (target / "world.json").is_file():
+        return Prepared(source.key, None, 0.0, False)
+    target.mkdir(parents=True, exist_ok=True)
+    stamp.unlink(missing_ok=True)
+    result = run_jar("cli", ["generate", str(rei), "-o", str(target), "--quiet"], target.parent / f"{source.key}.log")
+    if result.code != 0:
+        return Prepared(source.key, f"{rei} could not be generated (exit {result.code}): {result.log_tail}",
+                        result.cpu, True)
+    stamp.write_text(digest + "\n", encoding="utf-8")
+    return Prepared(source.key, None, result.cpu, True)

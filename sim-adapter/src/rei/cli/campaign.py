@@ -1,0 +1,71 @@
+# SPDX-License-Identifier: EPL-2.0
+"""`rei campaign SPEC.yaml -o OUT [--workers N | --ray ADDRESS]`: run many missions and summarize them.
+
+The spec lists test cases or room-generator settings, variants (humans on/off, faults such as laser:1%),
+repetitions and seeds (docs/campaigns.md). Runs go to worker processes on this machine (`--workers`, default:
+one per core) or to a Ray cluster (`--ray ADDRESS`, or `--ray local` for a Ray instance started here). A run
+that crashes or exceeds the spec's timeout is recorded as ERROR and the campaign goes on; an interrupted
+campaign resumes where it stopped when started again with the same OUT. Writes OUT/summary.csv (the thesis's
+Tables 5 and 7), OUT/runs.csv and OUT/report.html. Exit 0: every run completed; 1: some ended in ERROR;
+2: bad spec or arguments; 130: interrupted.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+from pathlib import Path
+from typing import Any
+
+from rei.cli.errors import EXIT_INVALID, EXIT_OK, CommandError
+
+
+def register(subparsers: argparse._SubParsersAction[Any]) -> None:
+    """Add the `campaign` subcommand."""
+    parser = subparsers.add_parser("campaign", help="run a campaign of missions in parallel and summarize it",
+                                   description=__doc__.split("\n\n", 1)[1] if __doc__ else None)
+    parser.add_argument("spec", type=Path, metavar="SPEC.yaml", help="campaign spec")
+    parser.add_argument("-o", "--output", required=True, type=Path, metavar="OUT", help="output folder")
+    parser.add_argument("--workers", type=int, metavar="N",
+                        help=f"runs at a time on this machine (default: the number of cores, {os.cpu_count()})")
+    parser.add_argument("--ray", metavar="ADDRESS", help="run on a Ray cluster (HOST:PORT, or 'local')")
+    parser.add_argument("--retry-errors", action="store_true", help="run again the runs that ended in ERROR")
+    parser.set_defaults(handler=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    from rei.campaign import LocalBackend, SpecError, load_spec, run_campaign
+
+    workers = args.workers or os.cpu_count() or 1
+    if workers < 1:
+        raise CommandError(f"--workers must be at least 1, got {workers}")
+    try:
+        spec = load_spec(args.spec)
+    except SpecError as error:
+        raise CommandError(str(error)) from None
+    if args.ray:
+        try:
+            from rei.campaign import RayBackend
+
+            backend: Any = RayBackend(args.ray, workers if args.ray == "local" else None)
+        except ImportError:
+            raise CommandError("--ray needs Ray: pip install 'rei[campaign-ray]'") from None
+        except Exception as error:  # noqa: BLE001 - any failure to reach the cluster is the user's to fix
+            raise CommandError(f"cannot connect to Ray at {args.ray}: {error}") from None
+    else:
+        backend = LocalBackend(workers)
+    try:
+        result = run_campaign(spec, args.output, backend, retry_errors=args.retry_errors, prepare_workers=workers)
+    except SpecError as error:
+        raise CommandError(str(error)) from None
+    finally:
+        backend.close()
+    usage = result.metrics.get("campaign", {})
+    print(f"{len(result.results)}/{result.planned} runs finished, {result.errors} in ERROR; {usage.get('wall', 0):.1f} s "
+          f"wall, {usage.get('cpu', 0):.0f} s CPU ({100 * usage.get('cpu_utilisation', 0):.0f} % of "
+          f"{usage.get('cores')} cores)")
+    print(f"summary: {args.output / 'summary.csv'}")
+    print(f"report:  {args.output / 'report.html'}")
+    if result.interrupted:
+        return 130
+    return EXIT_INVALID if result.errors or len(result.results) < result.planned else EXIT_OK

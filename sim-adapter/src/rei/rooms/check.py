@@ -1,0 +1,52 @@
+# SPDX-License-Identifier: EPL-2.0
+"""Is a generated room navigable by the reference navigation? Its global planner, on the room's static map.
+
+The generator's rules (``rei.rooms.generator``) are conservative floor-level reasoning; this check asks the
+planner the robot will actually use (``rei.sut.nav``, default parameters) for a path along every leg of the
+mission, start -> goal 1 -> goal 2 ..., in the static map the simulation will build from the same room: walls
+1.1 x 0.1 m centred on the room's edge (as the generator of world.json draws them) and the furniture's
+catalogue footprints. Humans are not in the static map, as for the robot.
+"""
+
+from __future__ import annotations
+
+import itertools
+
+from rei.rooms.model import FLOOR, Room, floor_centre
+from rei.sut.api import StaticMap
+from rei.sut.nav.config import NavConfig
+from rei.sut.nav.global_planner import PlanningError, plan
+from rei.sut.nav.grid import CostGrid
+
+WAFFLE = (0.281, 0.306)
+_WALL = (1.1 * FLOOR, 0.1)
+
+
+def static_map(room: Room) -> StaticMap:
+    """The room's walls and furniture as ``(x, y, yaw, size_x, size_y)`` rectangles."""
+    obstacles: list[tuple[float, float, float, float, float]] = []
+    w, h = room.width * FLOOR, room.height * FLOOR
+    for i in range(room.width):
+        x = (i + 0.5) * FLOOR
+        obstacles += [(x, 0.0, 0.0, *_WALL), (x, h, 0.0, *_WALL)]
+    for j in range(room.height):
+        y = (j + 0.5) * FLOOR
+        obstacles += [(0.0, y, 0.0, _WALL[1], _WALL[0]), (w, y, 0.0, _WALL[1], _WALL[0])]
+    for item in room.furniture:
+        hx, hy = item.half_extents()
+        obstacles.append((*floor_centre(item.cell), 0.0, 2 * hx, 2 * hy))
+    return StaticMap(bounds=(0.0, 0.0, w, h), obstacles=tuple(obstacles), robot_size=WAFFLE)
+
+
+def unplannable_legs(room: Room, config: NavConfig | None = None) -> list[str]:
+    """One message per leg the reference global planner finds no path for; empty when the room is navigable."""
+    config = config or NavConfig()
+    grid = CostGrid(static_map(room), config)
+    problems = []
+    points = [room.start, *(goal.cell for goal in room.goals)]
+    for leg, (a, b) in enumerate(itertools.pairwise(points)):
+        try:
+            plan(grid, grid.cost, floor_centre(a), floor_centre(b), goal_radius=0.1)
+        except PlanningError as error:
+            problems.append(f"leg {leg} {a} -> {b}: {error}")
+    return problems

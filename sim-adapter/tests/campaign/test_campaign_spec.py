@@ -1,0 +1,65 @@
+# SPDX-License-Identifier: EPL-2.0
+"""The campaign spec is checked at the door and expands into a stable list of runs."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from rei.campaign import SpecError, parse_spec, plan_campaign
+
+EXAMPLES = Path(__file__).resolve().parents[3] / "examples"
+
+
+def spec(**top: Any) -> dict[str, Any]:
+    data: dict[str, Any] = {"groups": [{"name": "small", "rooms": {"size": "small", "count": 2, "seed": 3}}]}
+    data.update(top)
+    return data
+
+
+def test_rooms_variants_and_repetitions_expand_in_a_stable_order(tmp_path: Path) -> None:
+    parsed = parse_spec(spec(seed=10, repetitions=2, variants=[{"name": "base"}, {"name": "f1", "fault": "laser:1%"}],
+                             groups=[{"name": "small", "rooms": {"size": "small", "count": 2, "seed": 3}},
+                                     {"name": "ex", "cases": ["simple_navigation.rei"], "repetitions": 1,
+                                      "variants": [{"name": "alone", "humans": False}]}]),
+                        base=EXAMPLES)
+    plan = plan_campaign(parsed, tmp_path)
+    assert [c.key for c in plan.cases] == ["small_dense_h0_s3_01", "small_dense_h0_s3_02", "simple_navigation"]
+    keys = [r.key for r in plan.runs]
+    assert keys[:4] == ["small__small_dense_h0_s3_01__base__r0", "small__small_dense_h0_s3_01__base__r1",
+                        "small__small_dense_h0_s3_01__f1__r0", "small__small_dense_h0_s3_01__f1__r1"]
+    assert len(keys) == 2 * 2 * 2 + 1 and len(set(keys)) == len(keys)
+    assert [r.seed for r in plan.runs[:2]] == [10, 11]
+    alone = plan.runs[-1]
+    assert (alone.humans, alone.fault, alone.case_dir) == (False, None, str(tmp_path.resolve() / "cases" / "simple_navigation"))
+    assert plan_campaign(parsed, tmp_path) == plan, "a resumed campaign must plan the same runs"
+
+
+@pytest.mark.parametrize(("data", "message"), [
+    (spec(mode="fast"), r"'mode' must be one of replay, pipeline"),
+    (spec(timeout=0), r"'timeout' must be positive"),
+    (spec(repetitions=True), r"'repetitions' must be an integer"),
+    (spec(extra=1), r"unknown key 'extra'"),
+    (spec(groups=[]), r"'groups' must be a non-empty list"),
+    (spec(groups=[{"name": "g"}]), r"groups\[0\]: give exactly one of 'cases'"),
+    (spec(groups=[{"name": "g", "cases": ["nope.rei"]}]), r"nope.rei is neither a .rei file"),
+    (spec(groups=[{"name": "g/x", "rooms": {"size": "small"}}]), r"'name' 'g/x': use letters"),
+    (spec(groups=[{"name": "g", "rooms": {"size": "tiny"}}]), r"groups\[0\]: rooms: size must be one of"),
+    (spec(variants=[{"name": "v", "fault": "laser:200%"}]), r"variants\[0\]: fault:"),
+    (spec(variants=[{"name": "v", "controller": "warp"}]), r"unknown controller 'warp'"),
+    (spec(variants=[{"name": "v"}, {"name": "v"}]), r"two variants have the same name"),
+])
+def test_mistakes_name_the_key(data: dict[str, Any], message: str) -> None:
+    with pytest.raises(SpecError, match=message):
+        parse_spec(data, base=EXAMPLES, where="c.yaml")
+
+
+def test_the_example_campaigns_are_valid(tmp_path: Path) -> None:
+    from rei.campaign import load_spec
+
+    thesis = plan_campaign(load_spec(EXAMPLES / "campaigns" / "thesis.yaml"), tmp_path)
+    groups = [r.group for r in thesis.runs]
+    assert (groups.count("small"), groups.count("medium"), groups.count("large")) == (14, 8, 1)
+    assert plan_campaign(load_spec(EXAMPLES / "campaigns" / "faults.yaml"), tmp_path).runs

@@ -1,0 +1,188 @@
+# SPDX-License-Identifier: EPL-2.0
+"""`rei campaign` end to end with the real simulation, monitor jar and evaluator: a crashing run is recorded
+and the campaign completes; an interrupted campaign resumes without redoing finished runs; Ray runs it too."""
+
+from __future__ import annotations
+
+import csv
+import json
+import os
+import signal
+import socket
+import subprocess
+import sys
+import time
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+REPO_ROOT = Path(__file__).resolve().parents[2]
+
+
+EXAMPLE = REPO_ROOT / "examples" / "simple_navigation.rei"
+
+
+def write_spec(tmp_path: Path, text: str) -> Path:
+    (tmp_path / "short.txt").write_text("1.0 0.1 0.0\n", encoding="utf-8")  # a controller that gives up at once
+    spec = tmp_path / "spec.yaml"
+    spec.write_text(text.replace("EXAMPLE", str(EXAMPLE)).replace("SHORT", str(tmp_path / "short.txt")),
+                    encoding="utf-8")
+    return spec
+
+
+def runs(out: Path) -> dict[str, dict[str, str]]:
+    with open(out / "runs.csv", newline="", encoding="utf-8") as f:
+        return {row["key"]: row for row in csv.DictReader(f)}
+
+
+def test_six_runs_one_crashes_and_the_campaign_still_completes(tmp_path: Path, run_cli: Any) -> None:
+    spec = write_spec(tmp_path, """
+name: six
+timeout: 240
+groups:
+  - name: small
+    rooms: {size: small, count: 1, seed: 4}
+    repetitions: 2
+    variants: [{name: base}, {name: fault10, fault: "laser:10%"}]
+  - name: example
+    cases: [EXAMPLE]
+    variants: [{name: nav}, {name: crash, controller: "script:does-not-exist.txt"}]
+""")
+    out = tmp_path / "out"
+    result = run_cli("campaign", spec, "-o", out, "--workers", "2", timeout=400)
+    assert result.returncode == 1, result.stdout + result.stderr  # 1: a run ended in ERROR
+    assert "6/6 runs finished, 1 in ERROR" in result.stdout
+    table = runs(out)
+    assert len(table) == 6
+    crashed = table["example__simple_navigation__crash__r0"]
+    assert crashed["status"] == "ERROR" and "crashed: the worker exited with 1" in crashed["error"]
+    assert "ScriptError" in crashed["error"]
+    completed = [row for key, row in table.items() if "crash" not in key]
+    assert all(row["status"] == "COMPLETED" for row in completed), completed
+    for key in table:
+        if "crash" in key:
+            continue
+        summary = json.loads((out / "runs" / key / "summary.json").read_text())
+        assert summary["counts"]["SIG_MISSION_BEGIN"] == 1 and summary["counts"]["SIG_MISSION_END"] == 1
+        assert {v["requirement"] for v in summary["verdicts"]} >= {"MISSION_SIMPLE", "MISSION_SEQUENCE"}
+        timing = json.loads((out / "runs" / key / "timing.json").read_text())
+        assert set(timing) == {"simulation", "monitor", "evaluation"}
+    # the same seed and room give the same signals: the two repetitions differ only by seed (0, 1)
+    assert table["small__small_dense_h0_s4_01__base__r0"]["seed"] == "0"
+    with open(out / "summary.csv", newline="", encoding="utf-8") as f:
+        rows = {(r["group"], r["room"], r["variant"]): r for r in csv.DictReader(f)}
+    assert rows[("small", "Total", "*")]["executions"] == "4"
+    assert rows[("example", "Total", "*")]["errors"] == "1"
+    assert rows[("small", "*", "fault10")]["executions"] == "2"
+    html = (out / "report.html").read_text(encoding="utf-8")
+    assert "6 of 6 runs finished, 1 in ERROR" in html and html.count('class="mission"') == 5
+    assert 'id="distribution"' in html and "ScriptError" in html
+
+
+def test_an_interrupted_campaign_resumes_without_redoing_finished_runs(tmp_path: Path, rei_script: Path) -> None:
+    spec = write_spec(tmp_path, """
+name: resume
+groups:
+  - name: example
+    cases: [EXAMPLE]
+    repetitions: 3
+    variants: [{name: short, controller: "script:SHORT"}]
+""")
+    out = tmp_path / "out"
+    argv = [str(rei_script), "campaign", str(spec), "-o", str(out), "--workers", "1"]
+    first = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                             env={**os.environ, "REI_HOME": str(REPO_ROOT)})
+    deadline = time.monotonic() + 180
+    while not list(out.glob("runs/*/result.json")):
+        assert first.poll() is None and time.monotonic() < deadline, "no run finished"
+        time.sleep(0.1)
+    first.send_signal(signal.SIGTERM)
+    output = first.communicate(timeout=60)[0]
+    assert first.returncode == 130, output
+    assert "campaign interrupted" in output
+    finished = {p.parent.name: p.stat().st_mtime_ns for p in out.glob("runs/*/result.json")}
+    assert 1 <= len(finished) < 3
+    second = subprocess.run(argv, capture_output=True, text=True, timeout=300, check=False,
+                            env={**os.environ, "REI_HOME": str(REPO_ROOT)})
+    assert second.returncode == 0, second.stdout + second.stderr
+    assert f"3 runs, {len(finished)} finished already, {3 - len(finished)} to run" in second.stdout
+    for key, mtime in finished.items():
+        assert (out / "runs" / key / "result.json").stat().st_mtime_ns == mtime, f"{key} was run again"
+    assert len(runs(out)) == 3 and all(r["status"] == "COMPLETED" for r in runs(out).values())
+
+
+@pytest.fixture
+def ray_head(tmp_path: Path) -> Iterator[str]:
+    """A Ray head on loopback with 2 CPUs, in its own process group, stopped (group-wide, by id) afterwards."""
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    ray = Path(sys.executable).parent / "ray"
+    log = open(tmp_path / "ray.log", "w")  # noqa: SIM115 - closed below
+    head = subprocess.Popen([str(ray), "start", "--head", "--block", f"--port={port}", "--node-ip-address=127.0.0.1",
+                             "--num-cpus=2", "--include-dashboard=false", "--disable-usage-stats",
+                             "--object-store-memory=100000000"], stdout=log, stderr=subprocess.STDOUT,
+                            start_new_session=True)
+    try:
+        yield f"127.0.0.1:{port}"
+    finally:
+        os.killpg(head.pid, signal.SIGTERM)
+        try:
+            head.wait(5)
+        except subprocess.TimeoutExpired:
+            pass
+        try:
+            os.killpg(head.pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+        head.wait()
+        log.close()
+
+
+def test_a_campaign_runs_on_a_local_ray_cluster(tmp_path: Path, ray_head: str, run_cli: Any) -> None:
+    spec = write_spec(tmp_path, """
+name: on-ray
+groups:
+  - name: example
+    cases: [EXAMPLE]
+    repetitions: 2
+    variants: [{name: short, controller: "script:SHORT"}, {name: crash, controller: "script:missing.txt"}]
+""")
+    out = tmp_path / "out"
+    result = None
+    for _ in range(30):  # the head takes a few seconds to accept clients
+        result = run_cli("campaign", spec, "-o", out, "--ray", ray_head, timeout=300)
+        if "cannot connect to Ray" not in result.stderr:
+            break
+        time.sleep(2)
+    assert result is not None and result.returncode == 1, result.stdout + result.stderr
+    assert "on 2 ray worker(s)" in result.stdout
+    table = runs(out)
+    assert sorted(r["status"] for r in table.values()) == ["COMPLETED", "COMPLETED", "ERROR", "ERROR"]
+    assert all(json.loads((out / "runs" / k / "summary.json").read_text())["counts"]["SIG_MISSION_END"] == 1
+               for k, r in table.items() if r["status"] == "COMPLETED")
+
+
+def test_the_replay_path_judges_a_run_as_rei_run_does(tmp_path: Path, run_cli: Any) -> None:
+    """The same scripted run through the campaign's replay path and through `rei run` (mode: pipeline)."""
+    summaries = {}
+    for mode in ("replay", "pipeline"):
+        spec = write_spec(tmp_path, f"""
+name: {mode}
+mode: {mode}
+groups:
+  - name: example
+    cases: [EXAMPLE]
+    variants: [{{name: short, controller: "script:SHORT"}}]
+""")
+        out = tmp_path / mode
+        result = run_cli("campaign", spec, "-o", out, "--workers", "1", timeout=300)
+        assert result.returncode == 0, result.stdout + result.stderr
+        summaries[mode] = json.loads((out / "runs" / "example__simple_navigation__short__r0" / "summary.json").read_text())
+    replay, pipeline = summaries["replay"], summaries["pipeline"]
+    assert replay["counts"] == pipeline["counts"] and replay["counts"]["SIG_MISSION_TASK_FAIL"] == 2
+    assert replay["total_utility"] == pipeline["total_utility"]
+    assert [(v["requirement"], v["status"]) for v in replay["verdicts"]] == [
+        (v["requirement"], v["status"]) for v in pipeline["verdicts"]]
