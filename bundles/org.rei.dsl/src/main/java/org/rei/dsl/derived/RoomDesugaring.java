@@ -25,10 +25,20 @@ public final class RoomDesugaring {
 	/** Map characters that are not floors; everything else that is not blank is a floor. */
 	static final char WALL_CHAR = '#';
 
+	/**
+	 * The most cells a size or a drawn map may span (200 x 200): beyond it nothing is derived and the validator
+	 * reports the room as too large, instead of allocating by a number from the text (size 100000 x 100000 would
+	 * need 10^10 cells).
+	 */
+	public static final long MAX_CELLS = 40_000;
+
 	private RoomDesugaring() {
 	}
 
 	public static List<BuildingBlock> blocksOf(Layout layout) {
+		if (tooLarge(layout)) {
+			return List.of();
+		}
 		if (layout instanceof GridLayout grid) {
 			return build(fullGrid(grid.getColumns(), grid.getRows()));
 		}
@@ -36,6 +46,19 @@ public final class RoomDesugaring {
 			return build(cellsOf(ascii.getMap()));
 		}
 		return List.of();
+	}
+
+	/** Whether the layout spans more than {@link #MAX_CELLS} cells (then it derives nothing). */
+	public static boolean tooLarge(Layout layout) {
+		if (layout instanceof GridLayout grid) {
+			return (long) grid.getColumns() * grid.getRows() > MAX_CELLS;
+		}
+		if (layout instanceof AsciiLayout ascii && ascii.getMap() != null) {
+			List<String> lines = ascii.getMap().lines().toList();
+			long width = lines.stream().mapToInt(String::length).max().orElse(0);
+			return width * lines.size() > MAX_CELLS;
+		}
+		return false;
 	}
 
 	public static String floorName(int x, int y) {

@@ -13,6 +13,7 @@ public interface ReiIssueCodes {
 	String MULTIPLE_ROBOTS = PREFIX + "multipleRobots";
 	String BLOCKS_WITH_LAYOUT = PREFIX + "blocksWithLayout";
 	String EMPTY_LAYOUT = PREFIX + "emptyLayout";
+	String ROOM_TOO_LARGE = PREFIX + "roomTooLarge";
 	String NON_POSITIVE = PREFIX + "nonPositive";
 	String TYPE_CATEGORY = PREFIX + "typeCategory";
 	String FLOOR_OCCUPIED = PREFIX + "floorOccupied";

@@ -17,6 +17,7 @@ import org.rei.context.GridLayout;
 import org.rei.context.layout.FloorLayout;
 import org.rei.context.layout.LayoutProblem;
 import org.rei.dsl.derived.DerivedMarker;
+import org.rei.dsl.derived.RoomDesugaring;
 
 /**
  * The room as a whole: a robot in it, a consistent floor graph that maps to coordinates (thesis 6.2.1), walls
@@ -57,11 +58,20 @@ public class RoomValidator extends ReiCheckBase {
 		if (grid.getColumns() < 1 || grid.getRows() < 1) {
 			error("A room needs at least 1 x 1 floors", grid, ContextPackage.Literals.GRID_LAYOUT__COLUMNS,
 					ReiIssueCodes.NON_POSITIVE);
+		} else if (RoomDesugaring.tooLarge(grid)) {
+			error("A room may have at most " + RoomDesugaring.MAX_CELLS + " floors, this one has "
+					+ (long) grid.getColumns() * grid.getRows(), grid, ContextPackage.Literals.GRID_LAYOUT__COLUMNS,
+					ReiIssueCodes.ROOM_TOO_LARGE);
 		}
 	}
 
 	@Check
 	public void checkMapHasFloors(AsciiLayout ascii) {
+		if (RoomDesugaring.tooLarge(ascii)) {
+			error("A map may span at most " + RoomDesugaring.MAX_CELLS + " cells (lines x longest line)", ascii,
+					ContextPackage.Literals.ASCII_LAYOUT__MAP, ReiIssueCodes.ROOM_TOO_LARGE);
+			return;
+		}
 		if (ascii.eContainer() instanceof Environment environment
 				&& environment.getOwnedBlocks().stream().noneMatch(DerivedMarker::isDerived)) {
 			error("The map draws no floor: expected lines of '.' (floor) and '#' (wall)", ascii,
