@@ -54,16 +54,16 @@ final class RuleWriter {
 			if (a.index > 0) {
 				c.add("subject == " + subject);
 				for (Atom b : alt.atoms.subList(0, a.index)) {
-					if (b.type.isMission() == a.type.isMission()) {
+					if (b.type.equals(a.type)) { // events of other types differ already by their alpha constraints
 						c.add("this != " + b.var());
 					}
 				}
 				c.addAll(bounds(alt, a, "timestamp", a));
 			}
 			line(a.var() + " : " + cls(a.type) + "( " + String.join(", ", c) + " )");
-		}
-		for (Atom a : alt.atoms) { // one 'not' per event: Drools hash-indexes 'event == $x', not a disjunction
-			line("not VeplUsed( scope == \"" + scope + "\", event == " + a.var() + " )");
+			// one 'not' per event (Drools hash-indexes 'event == $x', not a disjunction), right after its event: used
+			// events never reach the joins, and rules that start with the same event share the node
+			line(notUsed(a.type, a.var()));
 		}
 		if (immediate) {
 			contiguity(alt, subject);
@@ -75,7 +75,8 @@ final class RuleWriter {
 		}
 		out.append("then\n");
 		for (Atom a : alt.atoms) {
-			line("insert( new VeplUsed( \"" + scope + "\", " + a.var() + ", " + a.var() + ".getTimestamp() ) );");
+			line("insert( new VeplUsed( \"" + scope + "\", \"" + usedType(a.type) + "\", " + a.var() + ", " + a.var()
+					+ ".getTimestamp() ) );");
 		}
 		String observation = latest(alt);
 		boolean delayed = alt.absences.stream().anyMatch(x -> x.before.isEmpty());
@@ -92,6 +93,19 @@ final class RuleWriter {
 		out.append("end\n\n");
 	}
 
+	/**
+	 * 'not used in this scope'. VeplUsed carries its event's type (a function of the event) besides the scope: both
+	 * are hashed alpha constraints, so a VeplUsed reaches only the few 'not' nodes that check events of its type
+	 * instead of every one of the file's, which made VeplUsed the costliest fact of the session.
+	 */
+	private String notUsed(Type t, String var) {
+		return "not VeplUsed( scope == \"" + scope + "\", type == \"" + usedType(t) + "\", event == " + var + " )";
+	}
+
+	private static String usedType(Type t) {
+		return t.isMission() ? "mission " + t.mission() : t.query() + " " + t.kind();
+	}
+
 	private void line(String s) {
 		out.append("    ").append(s).append('\n');
 	}
@@ -106,12 +120,6 @@ final class RuleWriter {
 		}
 		return List.of("query == \"" + t.query() + "\"",
 				"kind == " + DrlTarget.simpleName(target.queryEvent()) + ".Kind." + t.kind());
-	}
-
-	private String typeCondition(Type t) {
-		return t.isMission() ? "event == \"" + t.mission() + "\""
-				: "( query == \"" + t.query() + "\" && kind == " + DrlTarget.simpleName(target.queryEvent()) + ".Kind."
-						+ t.kind() + " )";
 	}
 
 	/**
@@ -159,7 +167,11 @@ final class RuleWriter {
 		return offset == 0 ? ref : offset > 0 ? ref + " + " + offset : ref + " - " + (-offset);
 	}
 
-	/** immediate: nothing of the pattern's own (not tolerated) types strictly inside the match's span. */
+	/**
+	 * immediate: nothing of the pattern's own (not tolerated) types strictly inside the match's span. One 'not' per
+	 * type rather than one over a disjunction: the type constraints stay hashed, shared alpha nodes instead of an
+	 * expression every inserted event is evaluated against.
+	 */
 	private void contiguity(Alt alt, String subject) {
 		if (alt.atoms.size() < 2) {
 			return;
@@ -168,24 +180,18 @@ final class RuleWriter {
 		named.removeAll(alt.tolerated);
 		String min = extreme(alt, true);
 		String max = extreme(alt, false);
-		for (boolean mission : new boolean[] { false, true }) {
-			List<String> conds = named.stream().filter(t -> t.isMission() == mission).map(this::typeCondition)
-					.toList();
-			if (conds.isEmpty()) {
-				continue;
-			}
-			List<String> c = new ArrayList<>();
+		for (Type t : named) {
+			List<String> c = new ArrayList<>(typeConstraints(t));
 			c.add("subject == " + subject);
-			c.add(conds.size() == 1 ? conds.get(0) : "( " + String.join(" || ", conds) + " )");
 			c.add("timestamp > " + min);
 			c.add("timestamp < " + max);
 			for (Atom a : alt.atoms) {
-				if (a.type.isMission() == mission) {
+				// with two events each one is the span's min or max, which the strict bounds exclude
+				if (a.type.equals(t) && alt.atoms.size() > 2) {
 					c.add("this != " + a.var());
 				}
 			}
-			line("not " + DrlTarget.simpleName(mission ? target.missionEvent() : target.queryEvent()) + "( "
-					+ String.join(", ", c) + " )");
+			line("not " + cls(t) + "( " + String.join(", ", c) + " )");
 		}
 	}
 
@@ -195,20 +201,20 @@ final class RuleWriter {
 		c.add("subject == " + subject);
 		c.add("timestamp < " + first.var() + ".timestamp");
 		for (Atom a : alt.atoms.subList(1, alt.atoms.size())) {
-			if (a.type.isMission() == first.type.isMission()) {
+			if (a.type.equals(first.type)) {
 				c.add("this != " + a.var());
 			}
 		}
 		c.addAll(bounds(alt, first, "timestamp", null));
-		line("not ( $older : " + cls(first.type) + "( " + String.join(", ", c) + " ) and not VeplUsed( scope == \""
-				+ scope + "\", event == $older ) )");
+		line("not ( $older : " + cls(first.type) + "( " + String.join(", ", c) + " ) and " + notUsed(first.type, "$older")
+				+ " )");
 	}
 
 	private void absence(Alt alt, Absence x, String subject) {
 		List<String> c = new ArrayList<>(typeConstraints(x.type));
 		c.add("subject == " + subject);
 		for (Atom a : alt.atoms) {
-			if (a.type.isMission() == x.type.isMission()) {
+			if (a.type.equals(x.type)) {
 				c.add("this != " + a.var());
 			}
 		}

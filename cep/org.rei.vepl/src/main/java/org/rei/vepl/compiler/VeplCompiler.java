@@ -83,7 +83,7 @@ public final class VeplCompiler {
 					.append("ms )\nend\n\n");
 		}
 		b.append("declare VeplUsed\n    @role( event )\n    @timestamp( timestamp )\n    @expires( ").append(retention)
-				.append("ms )\n    scope : String\n    event : Object\n    timestamp : long\nend\n");
+				.append("ms )\n    scope : String\n    type : String\n    event : Object\n    timestamp : long\nend\n");
 		return b.toString();
 	}
 
