@@ -297,6 +297,9 @@ public final class WireDecoder {
 		require(n == into.length, "bad-field", what + " needs " + into.length + " numbers, got " + n);
 		for (int i = 0; i < n; i++) {
 			into[i] = real(in, what);
+			// poses, twists, odometry and goals are always finite (the protocol never sends NaN, +inf only in
+			// laser values): a NaN pose would become a footprint nothing can be measured against
+			require(Double.isFinite(into[i]), "bad-field", what + " with a non-finite number " + into[i]);
 		}
 	}
 
