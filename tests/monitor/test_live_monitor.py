@@ -27,6 +27,7 @@ from pathlib import Path
 from urllib.parse import urlparse
 
 import pytest
+from autobahn.wamp.exception import ApplicationError
 
 from rei import toolchain
 from rei.wamp.client import WampClient
@@ -154,22 +155,24 @@ def live_run(run_cli, repo_root: Path, monitor_jar: Path, java_exe: str, tmp_pat
         if payload.get("signal") == "SIG_MISSION_END":
             ended.set()
 
-    with Router(run_dir=base / "router") as router:
+    with Router(run_dir=base / "router", run_id=RUN_ID) as router:  # authenticated: one role per component
         stdout_path, stderr_path = base / "monitor.out", base / "monitor.err"
         with open(stdout_path, "w") as stdout, open(stderr_path, "w") as stderr:
             monitor = subprocess.Popen(
-                [java_exe, "-jar", str(monitor_jar), "--router", router.ws_url, "--run", RUN_ID, "--case", str(case),
+                [java_exe, "-jar", str(monitor_jar), "--router", router.ws_url,
+                 "--auth-file", str(router.auth_file("monitor")), "--run", RUN_ID, "--case", str(case),
                  "--until-end", "--linger", str(LINGER_S), "--timeout", str(JAVA_S), "--record", str(base / "received"),
                  "--signals-out", str(base / "live-signals.jsonl"), "--snapshot-out", str(base / "exit.xmi")],
                 stdout=stdout, stderr=stderr, stdin=subprocess.DEVNULL, start_new_session=True)
         try:
             _wait_for(lambda: "monitoring " in stderr_path.read_text(), START_S, "monitor start", monitor, stderr_path)
-            with WampClient(router.rs_url) as client:
+            with WampClient(router.rs_url, auth=router.credentials("evaluator")) as client:
                 client.subscribe(f"rei.run.{RUN_ID}.signal", on_signal)
                 snapshot = f"rei.run.{RUN_ID}.snapshot"
-                before = client.call(snapshot, timeout=30)
+                before = _call_when_registered(client, snapshot, START_S)
                 nodelay = _tcp_nodelay_towards(monitor.pid, urlparse(router.ws_url).port)
-                sim = run_cli("sim", case, "-o", out, "--router", router.rs_url, "--run-id", RUN_ID, "--seed", SEED)
+                sim = run_cli("sim", case, "-o", out, "--router", router.rs_url, "--auth-file",
+                              router.auth_file("simulation"), "--run-id", RUN_ID, "--seed", SEED)
                 assert sim.returncode == 0, sim.stdout + sim.stderr
                 _wait_for(ended.is_set, START_S, "SIG_MISSION_END over WAMP", monitor, stderr_path)
                 after = client.call(snapshot, timeout=30)  # the monitor lingers after END for this
@@ -270,3 +273,16 @@ def test_snapshots_served_over_wamp_reload_into_emf(live_run: LiveRun, java_run,
 
 def test_the_monitors_socket_to_the_router_has_tcp_nodelay(live_run: LiveRun) -> None:
     assert live_run.nodelay == [1], live_run.nodelay  # one WebSocket connection, Nagle off (netty's default)
+
+
+def _call_when_registered(client: WampClient, procedure: str, timeout: float) -> str:
+    """The monitor logs "monitoring" when it has asked for its subscriptions and registration; on a loaded
+    machine the router may not have processed the registration yet, so retry until it answers."""
+    deadline = time.monotonic() + timeout
+    while True:
+        try:
+            return client.call(procedure, timeout=30)
+        except ApplicationError as error:
+            if error.error != "wamp.error.no_such_procedure" or time.monotonic() > deadline:
+                raise
+            time.sleep(0.25)

@@ -39,5 +39,5 @@ def browser() -> Iterator[Browser]:
 
 @pytest.fixture(scope="module")
 def router() -> Iterator[Router]:
-    with Router() as running:
+    with Router(auth=False) as running:
         yield running

@@ -21,6 +21,7 @@ from playwright.sync_api import Browser
 from view_helpers import SHOTS, ViewPage
 
 from rei.wamp import Topics, WampClient, WampError, read_recording
+from rei.wamp.auth import Credentials
 
 RUN_ID = "viewlive"
 RUN_TIMEOUT_S = 300.0
@@ -80,7 +81,11 @@ def test_the_page_follows_a_real_run(cli_jar: Path, rei_script: Path, repo_root:
         # This process listens too, before the page says hello (the simulation starts only after it).
         topics = Topics(RUN_ID)
         states, signals = Arrivals(), Arrivals()
-        client = WampClient(config["router"]["url"]).start()
+        # the router authenticates: this process listens as the page does, with the viewer role it was given
+        auth = config["router"]["auth"]
+        assert auth["authid"] == "viewer" and auth["method"] == "wampcra"
+        client = WampClient(config["router"]["url"],
+                            auth=Credentials(auth["authid"], auth["secret"], auth["method"])).start()
         client.subscribe(topics.state, states)
         client.subscribe(topics.signal, signals)
         page = ViewPage(browser, url)
@@ -99,7 +104,12 @@ def test_the_page_follows_a_real_run(cli_jar: Path, rei_script: Path, repo_root:
             if state["condition"] == "ended":
                 break
             time.sleep(0.1)
+        # The mission topic's END can arrive before the monitor's last signals: give those a moment.
         final = page.state()
+        deadline = time.monotonic() + 10.0
+        while not any(s["signal"] == "SIG_MISSION_END" for s in final["signals"]) and time.monotonic() < deadline:
+            time.sleep(0.1)
+            final = page.state()
         page.page.screenshot(path=str(SHOTS / "live-run-end.png"))
         if not shot.exists():
             page.page.screenshot(path=str(shot))

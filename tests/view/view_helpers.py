@@ -31,9 +31,10 @@ class ViewPage:
     def state(self) -> dict[str, Any]:
         return self.page.evaluate("window.reiView.state")
 
-    def wait_for(self, condition: str) -> None:
-        """Until the JavaScript expression over `state` (window.reiView.state) is true."""
-        self.page.wait_for_function(f"(state => {condition})(window.reiView.state)")
+    def wait_for(self, condition: str, timeout_s: float = 120.0) -> None:
+        """Until the JavaScript expression over `state` (window.reiView.state) is true. Generous by default: on
+        a busy 2-core machine the monitor's JVM alone can take half a minute to start."""
+        self.page.wait_for_function(f"(state => {condition})(window.reiView.state)", timeout=timeout_s * 1000)
 
     def close(self) -> None:
         self.page.close()

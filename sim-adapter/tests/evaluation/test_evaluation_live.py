@@ -68,7 +68,7 @@ def test_attach_gives_up_on_mission_info_after_its_timeout(tmp_path: Path) -> No
 def router() -> Iterator[Router]:
     """A real Crossbar router (the set-up script installs it when missing; never skipped)."""
     subprocess.run([str(REPO / "scripts" / "setup-router.sh")], check=True, capture_output=True, timeout=900)
-    with Router(crossbar=REPO / ".venv-router" / "bin" / "crossbar") as running:
+    with Router(crossbar=REPO / ".venv-router" / "bin" / "crossbar", auth=False) as running:
         yield running
 
 

@@ -29,7 +29,7 @@ def crossbar() -> Path:
 @pytest.fixture(scope="session")
 def router(crossbar: Path) -> Iterator[Router]:
     """One router for the session (start-up costs ~2.5 s); tests use distinct run ids."""
-    with Router(crossbar=crossbar) as running:
+    with Router(crossbar=crossbar, auth=False) as running:
         yield running
 
 

@@ -75,7 +75,7 @@ def _accepts(url: str) -> bool:
 
 
 def test_router_serves_realm_on_loopback_and_stops_without_leftover_process(crossbar: Path, tmp_path: Path):
-    router = Router(crossbar=crossbar, run_dir=tmp_path / "router")
+    router = Router(crossbar=crossbar, run_dir=tmp_path / "router", auth=False)
     with router:
         pid = router.pid
         assert pid is not None
@@ -142,7 +142,7 @@ def test_router_side_sockets_get_tcp_nodelay_only_from_the_nodelay_endpoint(
 ):
     """nodelay=False shows the upstream bug the endpoint works around: Crossbar's own tcp endpoint leaves Nagle
     on for WebSocket (despite its tcp_nodelay option) and for RawSocket."""
-    other = None if nodelay else Router(crossbar=crossbar, nodelay=False).start()
+    other = None if nodelay else Router(crossbar=crossbar, nodelay=False, auth=False).start()
     running = router if other is None else other
     try:
         (worker,) = _children(running.pid or -1)

@@ -124,7 +124,7 @@ def test_config_and_mission_info_rpcs_answer(router: Router, tmp_path: Path, wor
 
 
 def test_a_lost_router_is_an_error_not_a_silent_drop(crossbar: Path, tmp_path: Path):
-    router = Router(crossbar=crossbar).start()
+    router = Router(crossbar=crossbar, auth=False).start()
     client = WampClient(router.rs_url, send_timeout=5.0).start()
     try:
         client.publish("rei.run.lost.state", {"seq": 0})

@@ -3,7 +3,9 @@
 
 CASE is a ``.rei`` file (generated into ``OUT/case`` first) or a folder of generated artifacts. The state and
 mission streams go through a real Crossbar router started on a free loopback port (or one given with
-``--router``), and are recorded under ``OUT/streams/``. Exit 0: every task succeeded; 1: a task failed;
+``--router``, with ``--auth-file`` holding the simulation role's credentials), and are recorded under
+``OUT/streams/``. The router started here authenticates every client (docs/security.md) and listens on loopback;
+``--bind ADDRESS --tls-cert FILE --tls-key FILE`` also exposes it on another interface, over TLS only. Exit 0: every task succeeded; 1: a task failed;
 2: bad arguments or files.
 """
 
@@ -39,6 +41,12 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
     router.add_argument("--router", metavar="URL", help="publish through this router (ws:// or rs://) instead "
                         "of starting one")
     router.add_argument("--no-router", action="store_true", help="record the streams without publishing them")
+    parser.add_argument("--auth-file", metavar="FILE", help="with --router: the simulation role's credentials "
+                        "(a 0600 JSON file written by REI's router, e.g. OUT/router/auth/simulation.json)")
+    parser.add_argument("--bind", metavar="ADDRESS", help="also expose the router started here on this "
+                        "interface (IP address); requires --tls-cert and --tls-key")
+    parser.add_argument("--tls-cert", metavar="FILE", help="with --bind: the TLS certificate (PEM)")
+    parser.add_argument("--tls-key", metavar="FILE", help="with --bind: the TLS private key (PEM)")
     parser.set_defaults(handler=run)
 
 
@@ -50,6 +58,7 @@ def run(args: argparse.Namespace) -> int:
     from rei.wamp.collector import CollectorConfig
 
     check_mission_options(args)
+    _check_router_options(args)
     out = Path(args.output)
     prepare_output(out)
     try:
@@ -64,7 +73,7 @@ def run(args: argparse.Namespace) -> int:
     if not valid_run_id(run_id):
         raise CommandError(f"--run-id {run_id!r}: expected letters, digits, '_' or '-' (it becomes part of topic URIs)")
     try:
-        with _publisher(args, out) as client:
+        with _publisher(args, out, run_id) as client:
             result = run_mission(case_dir, out, options, run_id=run_id, client=client,
                                  progress=_PROGRESS[args.progress])
     except ArtifactError as error:
@@ -81,16 +90,32 @@ def run(args: argparse.Namespace) -> int:
     return EXIT_OK if result.succeeded else EXIT_INVALID
 
 
+def _check_router_options(args: argparse.Namespace) -> None:
+    from rei.wamp.router import check_bind
+
+    if args.auth_file is not None and args.router is None:
+        raise CommandError("--auth-file applies with --router URL only (a router started here makes its own)")
+    if (args.router is not None or args.no_router) and (args.bind or args.tls_cert or args.tls_key):
+        raise CommandError("--bind/--tls-cert/--tls-key apply to the router `rei sim` starts (not with "
+                           "--router or --no-router)")
+    try:
+        check_bind(args.bind, args.tls_cert, args.tls_key)
+    except ValueError as error:
+        raise CommandError(str(error)) from None
+
+
 class _publisher:
     """The WAMP client the run publishes through: on a router started here, a given one, or none."""
 
-    def __init__(self, args: argparse.Namespace, out: Path) -> None:
+    def __init__(self, args: argparse.Namespace, out: Path, run_id: str) -> None:
         self._args = args
         self._out = out
+        self._run_id = run_id
         self._router: Any = None
         self._client: Any = None
 
     def __enter__(self) -> Any:
+        from rei.wamp.auth import load_credentials
         from rei.wamp.client import WampClient
         from rei.wamp.router import Router
 
@@ -98,9 +123,24 @@ class _publisher:
             return None
         url = self._args.router
         if url is None:
-            self._router = Router(run_dir=self._out / "router").start()
-            url = self._router.rs_url
-        self._client = WampClient(url).start()
+            self._router = Router(run_dir=self._out / "router", run_id=self._run_id, bind=self._args.bind,
+                                  tls_cert=self._args.tls_cert, tls_key=self._args.tls_key).start()
+            if self._router.exposed_url is not None:
+                print(f"router: {self._router.exposed_url} (TLS, authenticated)", flush=True)
+            url, auth = self._router.rs_url, self._router.credentials("simulation")
+        elif self._args.auth_file is not None:
+            try:
+                auth = load_credentials(self._args.auth_file)
+            except (OSError, ValueError, KeyError) as error:
+                raise CommandError(f"--auth-file: {error}") from None
+        else:
+            auth = None
+        try:
+            self._client = WampClient(url, auth=auth).start()
+        except BaseException:
+            if self._router is not None:
+                self._router.stop()
+            raise
         return self._client
 
     def __exit__(self, *exc: object) -> None:

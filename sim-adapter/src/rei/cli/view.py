@@ -30,6 +30,9 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
                              "without it the room and the tasks are not drawn")
     parser.add_argument("--utilities", type=Path, metavar="YAML", help="utility per signal (as for rei run)")
     parser.add_argument("--realm", default="rei", help="WAMP realm (default: rei)")
+    parser.add_argument("--auth-file", type=Path, metavar="FILE",
+                        help="viewer credentials for an authenticating router (OUT/router/auth/viewer.json); "
+                             "the page receives them in its /config.json, served on loopback (docs/security.md)")
     parser.add_argument("--port", type=int, default=0, help="HTTP port on 127.0.0.1 (default: a free one)")
     parser.set_defaults(handler=run)
 
@@ -41,8 +44,19 @@ def run(args: argparse.Namespace) -> int:
 
     if args.case is not None and not args.case.is_dir():
         raise CommandError(f"--case {args.case}: not a folder")
+    auth = None
+    if args.auth_file is not None:
+        from rei.view import RouterAuth
+        from rei.wamp.auth import load_credentials
+
+        try:
+            credentials = load_credentials(args.auth_file)
+        except (OSError, ValueError, KeyError) as error:
+            raise CommandError(f"--auth-file: {error}") from None
+        auth = RouterAuth(credentials.authid, credentials.secret, credentials.method)
     try:
-        config = view_config(args.router, args.run, args.case, realm=args.realm, utilities=args.utilities)
+        config = view_config(args.router, args.run, args.case, realm=args.realm, utilities=args.utilities,
+                             auth=auth)
         server = ViewServer(config, port=args.port).start()
     except (ValueError, ArtifactError, UtilityError, ViewServerError) as error:
         raise CommandError(str(error)) from None

@@ -47,6 +47,9 @@ class PipelineOptions:
     humans: bool = True  # without humans the human-trajectory requirement does not apply
     laser: bool = True  # without laser data the laser requirements do not apply
     view: bool = False  # serve the live view (rei.view) while the run lasts
+    bind: str | None = None  # also expose the router on this interface (TLS required; docs/security.md)
+    tls_cert: Path | None = None
+    tls_key: Path | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -92,21 +95,26 @@ def run_pipeline(case_dir: Path, out: Path, options: PipelineOptions, *, run_id:
     previous_term = signal.signal(signal.SIGTERM, _raise_interrupted)
     router = monitor = sim = client = signals = viewer = None
     try:
-        router = Router(run_dir=out / "router").start()
+        # authenticated: one role per component, secrets in OUT/router/auth/<role>.json (0600), docs/security.md
+        router = Router(run_dir=out / "router", run_id=run_id, bind=options.bind, tls_cert=options.tls_cert,
+                        tls_key=options.tls_key).start()
+        if router.exposed_url is not None:
+            print(f"router: {router.exposed_url} (TLS, authenticated)", flush=True)
         viewer = _start_view(router, run_id, case_dir, options) if options.view else None
-        client = WampClient(router.rs_url).start()
+        client = WampClient(router.rs_url, auth=router.credentials("evaluator")).start()
         signals = RecordingWriter(stream_path(out, "signal"))
         attach(client, run_id, evaluator, also=signals.write)
         monitor = ManagedProcess("monitor", [
             str(toolchain.find_java().executable), "-jar", str(toolchain.find_jar("monitor")),
-            "--router", router.ws_url, "--run", run_id, "--case", str(case_dir), "--until-end", "--quiet",
+            "--router", router.ws_url, "--auth-file", str(router.auth_file("monitor")),
+            "--run", run_id, "--case", str(case_dir), "--until-end", "--quiet",
             "--snapshot-out", str(out / "runtime.xmi")], out / "monitor.log")
         _await_monitor(client, topics, monitor)
         if viewer is not None:
             _await_viewer(viewer)
         sim = ManagedProcess("simulation", [
             sys.executable, "-m", "rei.cli", "sim", str(case_dir), "-o", str(out), "--router", router.rs_url,
-            "--run-id", run_id, "--progress", "lines", *options.sim_args],
+            "--auth-file", str(router.auth_file("simulation")), "--run-id", run_id, "--progress", "lines", *options.sim_args],
             out / "simulation.log", on_line=lambda line: _parse_progress(line, progress))
         while sim.poll() is None:
             # --until-end: a monitor that saw the mission's END may finish before the simulation has closed
@@ -163,9 +171,14 @@ def _await_monitor(client: WampClient, topics: Topics, monitor: ManagedProcess) 
 
 def _start_view(router: Router, run_id: str, case_dir: Path, options: PipelineOptions) -> ViewServer:
     """The live view's server (`--view`), started before the monitor so the page can connect meanwhile."""
-    from rei.view import ViewServer, view_config
+    from rei.view import RouterAuth, ViewServer, view_config
 
-    viewer = ViewServer(view_config(router.ws_url, run_id, case_dir, utilities=options.utilities)).start()
+    # The page runs in the browser, so the viewer role's secret is in /config.json (served on loopback only):
+    # anyone on this machine who can reach that port can subscribe - and nothing more (docs/security.md).
+    credentials = router.credentials("viewer")
+    auth = None if credentials is None else RouterAuth(credentials.authid, credentials.secret, credentials.method)
+    viewer = ViewServer(view_config(router.ws_url, run_id, case_dir, utilities=options.utilities,
+                                    auth=auth)).start()
     print(f"view:   {viewer.url}", flush=True)
     return viewer
 

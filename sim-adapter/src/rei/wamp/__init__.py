@@ -5,6 +5,7 @@ Wire protocol: docs/protocol.md. Importing this package selects asyncio for txai
 because the client bridge runs an asyncio loop in a background thread.
 """
 
+from rei.wamp.auth import Credentials, load_credentials
 from rei.wamp.client import WampClient, WampError
 from rei.wamp.codec import LaserMode, MissionEventKind, encode_mission_event, encode_state
 from rei.wamp.collector import CollectorConfig, DataCollector, MissionPublisher
@@ -14,6 +15,7 @@ from rei.wamp.topics import Topics
 
 __all__ = [
     "CollectorConfig",
+    "Credentials",
     "DataCollector",
     "LaserMode",
     "MissionEventKind",
@@ -28,6 +30,7 @@ __all__ = [
     "encode_state",
     "find_crossbar",
     "iter_recording",
+    "load_credentials",
     "read_recording",
     "stream_path",
 ]

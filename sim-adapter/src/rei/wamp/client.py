@@ -24,6 +24,7 @@ from __future__ import annotations
 import asyncio
 import collections
 import concurrent.futures
+import ssl
 import threading
 from collections.abc import Callable, Coroutine, Mapping
 from types import TracebackType
@@ -38,7 +39,9 @@ from autobahn.asyncio.rawsocket import WampRawSocketClientFactory
 from autobahn.asyncio.wamp import ApplicationSession
 from autobahn.asyncio.websocket import WampWebSocketClientFactory
 from autobahn.wamp.serializer import MsgPackSerializer
-from autobahn.wamp.types import CloseDetails, ComponentConfig, PublishOptions, SessionDetails
+from autobahn.wamp.types import Challenge, CloseDetails, ComponentConfig, PublishOptions, SessionDetails
+
+from rei.wamp.auth import Credentials
 
 T = TypeVar("T")
 
@@ -57,6 +60,19 @@ class _Session(ApplicationSession):
     """Reports join, leave and disconnect to the owning client."""
 
     client: WampClient
+
+    def onConnect(self) -> None:
+        auth = self.client.auth
+        if auth is None:
+            self.join(self.config.realm)
+        else:
+            self.join(self.config.realm, authmethods=[auth.method], authid=auth.authid)
+
+    def onChallenge(self, challenge: Challenge) -> str:
+        auth = self.client.auth
+        if auth is None:
+            raise ValueError(f"the router asks for {challenge.method} authentication; no credentials given")
+        return auth.answer(challenge.method, challenge.extra)
 
     async def onJoin(self, details: SessionDetails) -> None:
         self.client._on_join(self)
@@ -82,10 +98,14 @@ class WampClient:
         connect_timeout: float = 10.0,
         send_timeout: float = 30.0,
         name: str = "rei-wamp",
+        auth: Credentials | None = None,
+        ssl_context: ssl.SSLContext | None = None,
     ) -> None:
         parsed = urlparse(url)
-        if parsed.scheme not in ("ws", "rs") or not parsed.hostname or not parsed.port:
-            raise ValueError(f"WAMP URL must be ws://host:port/path or rs://host:port, got {url!r}")
+        if parsed.scheme not in ("ws", "rs", "wss", "rss") or not parsed.hostname or not parsed.port:
+            raise ValueError(f"WAMP URL must be ws[s]://host:port/path or rs[s]://host:port, got {url!r}")
+        if parsed.scheme in ("wss", "rss") and ssl_context is None:
+            ssl_context = ssl.create_default_context()
         if max_pending < 1:
             raise ValueError("max_pending must be >= 1")
         self.url = url
@@ -93,6 +113,8 @@ class WampClient:
         self._host = parsed.hostname
         self._port = parsed.port
         self._scheme = parsed.scheme
+        self.auth = auth
+        self._ssl = ssl_context if parsed.scheme in ("wss", "rss") else None
         self._connect_timeout = connect_timeout
         self._send_timeout = send_timeout
         self._name = name
@@ -176,6 +198,13 @@ class WampClient:
         if wake:
             self._loop.call_soon_threadsafe(self._wake_drain)
 
+    def publish_acknowledged(self, topic: str, payload: Mapping[str, Any], timeout: float = 10.0) -> None:
+        """Publish one event and wait for the router's answer; raises autobahn's ``ApplicationError`` (e.g.
+        ``wamp.error.not_authorized``) when the router refuses it. Not ordered with ``publish()``'s outbox."""
+        session = self._joined_session()
+        options = PublishOptions(acknowledge=True)
+        self._submit(_on_loop(lambda: session.publish(topic, payload, options=options))).result(timeout=timeout)
+
     def flush(self, timeout: float = 10.0) -> None:
         """Block until every queued message is written to the socket."""
         self._check()
@@ -240,7 +269,7 @@ class WampClient:
             return session
 
         factory: Any
-        if self._scheme == "rs":
+        if self._scheme in ("rs", "rss"):
             factory = WampRawSocketClientFactory(make_session, serializer=MsgPackSerializer())
         else:
             factory = WampWebSocketClientFactory(
@@ -251,7 +280,8 @@ class WampClient:
         self._left = asyncio.get_running_loop().create_future()
         self._wake = asyncio.Event()
         # asyncio sets TCP_NODELAY on every TCP connection it creates; the router side is rei.wamp.router's job.
-        transport, _ = await asyncio.get_running_loop().create_connection(factory, self._host, self._port)
+        transport, _ = await asyncio.get_running_loop().create_connection(
+            factory, self._host, self._port, ssl=self._ssl)
         self._transport = transport  # type: ignore[assignment]
         self._drain_task = asyncio.get_running_loop().create_task(self._drain())
 

@@ -1,11 +1,10 @@
 # SPDX-License-Identifier: EPL-2.0
 """Generation of the Crossbar node configuration REI's router runs with.
 
-Why a builder instead of a template file: the ports are chosen at run time, and the security model must be able
-to grow from "anonymous on loopback" to "one authenticated role per component" (collector, mission executor,
-monitor, evaluator; WAMP-CRA or ticket, anonymous off) without rewriting the rest. Roles, their permissions and
-each transport's ``auth`` block are therefore separate values; adding authentication means passing other roles and
-an ``auth`` mapping per transport, nothing else.
+Why a builder instead of a template file: the ports, the run id the permissions are scoped to and the secrets are
+chosen at run time. Roles, their permissions and each transport's ``auth`` block are separate values:
+``component_roles`` + ``wampcra_auth`` give one WAMP-CRA role per component with anonymous off (docs/security.md);
+``anonymous_role`` is the open loopback configuration of transport tests.
 """
 
 from __future__ import annotations
@@ -49,7 +48,7 @@ class Permission:
 
 @dataclass(frozen=True, slots=True)
 class Role:
-    """A WAMP authrole of the realm. Today only ``anonymous``; later one per component."""
+    """A WAMP authrole of the realm: ``anonymous`` (tests) or one per component (``component_roles``)."""
 
     name: str
     permissions: tuple[Permission, ...]
@@ -59,8 +58,52 @@ class Role:
 
 
 def anonymous_role() -> Role:
-    """Everything allowed under ``rei.`` - acceptable only because the router listens on loopback."""
+    """Everything allowed under ``rei.`` - only for tests and benchmarks on loopback (``Router(auth=False)``)."""
     return Role("anonymous", (Permission("rei.", "prefix"),))
+
+
+_NOTHING = {"call": False, "register": False, "publish": False, "subscribe": False}
+
+
+def _allow(run_id: str | None, name: str, *actions: str) -> Permission:
+    """``actions`` on the run's URI ``name`` only: ``rei.run.<run_id>.<name>`` exactly, or (no run id: a router
+    shared by several runs, as in tests) every run's ``name`` via the wildcard ``rei.run..<name>``."""
+    unknown = set(actions) - set(_NOTHING)
+    if unknown:
+        raise ValueError(f"unknown actions {sorted(unknown)}")
+    flags = {**_NOTHING, **{a: True for a in actions}}
+    if run_id is None:
+        return Permission(f"rei.run..{name}", "wildcard", **flags)
+    return Permission(f"rei.run.{run_id}.{name}", "exact", **flags)
+
+
+#: What each component may do (docs/security.md). Everything not listed is denied by the router.
+ROLE_GRANTS: dict[str, tuple[tuple[str, tuple[str, ...]], ...]] = {
+    "collector": (("state", ("publish",)), ("config", ("register",))),
+    "mission-executor": (("mission", ("publish",)), ("mission_info", ("register",))),
+    # The simulator hosts the collector and the mission executor in one session: WAMP orders events per
+    # publisher session only, and the monitor needs state and mission events in publication order.
+    "simulation": (("state", ("publish",)), ("config", ("register",)),
+                   ("mission", ("publish",)), ("mission_info", ("register",))),
+    "monitor": (("state", ("subscribe",)), ("mission", ("subscribe",)), ("signal", ("publish",)),
+                ("snapshot", ("register",)), ("config", ("call",))),
+    # read-only: subscriptions plus the read-only procedures (snapshot: readiness probe of `rei run`)
+    "evaluator": (("state", ("subscribe",)), ("mission", ("subscribe",)), ("signal", ("subscribe",)),
+                  ("snapshot", ("call",)), ("config", ("call",)), ("mission_info", ("call",))),
+    "viewer": (("state", ("subscribe",)), ("mission", ("subscribe",)), ("signal", ("subscribe",))),
+}
+
+
+def component_roles(run_id: str | None) -> tuple[Role, ...]:
+    """One role per component (``ROLE_GRANTS``), scoped to run ``run_id`` (or to every run when None)."""
+    return tuple(Role(name, tuple(_allow(run_id, uri, *actions) for uri, actions in grants))
+                 for name, grants in ROLE_GRANTS.items())
+
+
+def wampcra_auth(secrets: Mapping[str, str]) -> dict[str, Any]:
+    """A transport's ``auth`` block: WAMP-CRA only (no anonymous), authid = role name, static secrets."""
+    return {"wampcra": {"type": "static",
+                        "users": {authid: {"secret": secret, "role": authid} for authid, secret in secrets.items()}}}
 
 
 @dataclass(frozen=True, slots=True)
@@ -79,8 +122,14 @@ class Transport:
     serializers: tuple[Serializer, ...] = ("msgpack",)
     path: str = "ws"
     auth: Mapping[str, Any] | None = None
+    tls: tuple[str, str] | None = None  # (certificate file, key file), PEM
 
     def endpoint(self) -> dict[str, Any]:
+        if self.tls is not None:
+            # Crossbar's TLS needs its own tcp endpoint (the nodelaytcp plug-in speaks plain TCP only).
+            certificate, key = self.tls
+            return {"type": "tcp", "interface": self.interface, "port": self.port,
+                    "tls": {"certificate": certificate, "key": key}}
         if self.nodelay:
             return {
                 "type": "twisted",
@@ -105,9 +154,10 @@ class Transport:
 
     def url(self) -> str:
         """The URL a client uses: ``ws://host:port/ws`` or ``rs://host:port``."""
+        host = f"[{self.interface}]" if ":" in self.interface else self.interface
         if self.kind == "websocket":
-            return f"ws://{self.interface}:{self.port}/{self.path}"
-        return f"rs://{self.interface}:{self.port}"
+            return f"{'wss' if self.tls else 'ws'}://{host}:{self.port}/{self.path}"
+        return f"{'rss' if self.tls else 'rs'}://{host}:{self.port}"
 
 
 def node_config(realm: str, roles: Sequence[Role], transports: Sequence[Transport]) -> dict[str, Any]:

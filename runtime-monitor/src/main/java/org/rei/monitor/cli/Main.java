@@ -20,6 +20,7 @@ import org.rei.monitor.replay.Replayer;
 import org.rei.monitor.signals.SignalFile;
 import org.rei.monitor.signals.SignalPublisher;
 import org.rei.monitor.wamp.LiveMonitor;
+import org.rei.monitor.wamp.RouterCredentials;
 
 /**
  * {@code java -jar rei-monitor.jar}: live ({@code --router URL --run ID}) or replay ({@code --replay FILE|DIR}).
@@ -34,6 +35,8 @@ public final class Main {
 			  --case DIR           world.json + monitor.json (live: default is the run's config RPC)
 			  --mission FILE       replay: the mission stream (default: mission.msgpack beside the state stream)
 			  --realm NAME         WAMP realm (default rei)
+			  --auth-file FILE     live: the monitor role's credentials (0600 JSON written by the router;
+			                       required by REI's authenticating router, docs/security.md)
 			  --queries DIR        .drl queries (default: the copies of queries/ in the jar)
 			  --patterns DIR       .vepl patterns compiled at start, added to the default patterns (cep/patterns/)
 			  --no-default-patterns  only the patterns of --patterns DIR
@@ -122,7 +125,8 @@ public final class Main {
 		List<DrlSources.Source> rules = rules(o);
 		Path snapshotOut = o.snapshotOut != null ? o.snapshotOut : Path.of("runtime-" + o.run + ".xmi");
 		try (SignalFile file = o.signalsOut != null ? new SignalFile(o.signalsOut) : null;
-				LiveMonitor live = new LiveMonitor(o.router, o.realm, err::println)) {
+				LiveMonitor live = new LiveMonitor(o.router, o.realm,
+						o.authFile != null ? RouterCredentials.read(o.authFile) : null, err::println)) {
 			live.start(o.run, given,
 					c -> new Monitor(o.run, c.world(), c.monitor(), rules, new SignalPublisher(), err::println, null),
 					o.record, s -> {
@@ -176,6 +180,7 @@ public final class Main {
 		String router;
 		String run = "replay";
 		String realm = "rei";
+		Path authFile;
 		Path replay;
 		Path mission;
 		Path caseDir;
@@ -200,7 +205,7 @@ public final class Main {
 				case "--until-end" -> o.untilEnd = true;
 				case "--quiet" -> o.quiet = true;
 				case "--no-default-patterns" -> o.noDefaultPatterns = true;
-				case "--router", "--run", "--realm", "--replay", "--mission", "--case", "--queries", "--rules", "--patterns",
+				case "--router", "--run", "--realm", "--auth-file", "--replay", "--mission", "--case", "--queries", "--rules", "--patterns",
 						"--snapshot-out", "--record", "--signals-out", "--timeout", "--linger" -> {
 					if (i + 1 >= args.length) {
 						throw new IllegalArgumentException(a + " needs a value");
@@ -213,6 +218,7 @@ public final class Main {
 						runGiven = true;
 					}
 					case "--realm" -> o.realm = v;
+					case "--auth-file" -> o.authFile = Path.of(v);
 					case "--replay" -> o.replay = Path.of(v);
 					case "--mission" -> o.mission = Path.of(v);
 					case "--case" -> o.caseDir = Path.of(v);
@@ -243,7 +249,8 @@ public final class Main {
 			}
 			if (o.replay != null) {
 				String liveOnly = o.record != null ? "--record" : o.untilEnd ? "--until-end"
-						: o.timeoutSeconds > 0 ? "--timeout" : o.lingerSeconds > 0 ? "--linger" : null;
+						: o.timeoutSeconds > 0 ? "--timeout" : o.lingerSeconds > 0 ? "--linger"
+						: o.authFile != null ? "--auth-file" : null;
 				if (liveOnly != null) {
 					throw new IllegalArgumentException(liveOnly + " applies to live mode (--router) only");
 				}

@@ -55,10 +55,21 @@ public final class LiveMonitor implements AutoCloseable {
 	private OutputStream missionRecording;
 
 	public LiveMonitor(String router, String realm, Consumer<String> log) throws Exception {
+		this(router, realm, null, log);
+	}
+
+	/** @param credentials the monitor role's credentials (WAMP-CRA or ticket), or null to join anonymously */
+	public LiveMonitor(String router, String realm, RouterCredentials credentials, Consumer<String> log)
+			throws Exception {
 		this.log = log;
-		client = new WampClientBuilder().withConnectorProvider(new NettyWampClientConnectorProvider()).withUri(router)
-				.withRealm(realm).withSerializations(new WampSerialization[] { WampSerialization.MessagePack })
-				.withInfiniteReconnects().withReconnectInterval(1, TimeUnit.SECONDS).build();
+		WampClientBuilder builder = new WampClientBuilder()
+				.withConnectorProvider(new NettyWampClientConnectorProvider()).withUri(router).withRealm(realm)
+				.withSerializations(new WampSerialization[] { WampSerialization.MessagePack })
+				.withInfiniteReconnects().withReconnectInterval(1, TimeUnit.SECONDS);
+		if (credentials != null) {
+			builder.withAuthId(credentials.authid()).withAuthMethod(credentials.authentication());
+		}
+		client = builder.build();
 	}
 
 	/**
