@@ -3,14 +3,20 @@
 
 from __future__ import annotations
 
+import os
+import shutil
 from pathlib import Path
 
 from rei.cli._java import run_java_cli
 from rei.cli.errors import EXIT_OK, EXIT_USAGE, CommandError
 
+#: Free space a run needs at the least: its streams, logs and report take tens of MB; a disk that fills up
+#: mid-run would lose results, so refuse before anything starts. REI_MIN_FREE_MB overrides it.
+MIN_FREE_MB = 200
+
 
 def prepare_output(out: Path) -> None:
-    """Create the output folder and make sure it is writable before anything starts."""
+    """Create the output folder and make sure it is writable and has room before anything starts."""
     try:
         out.mkdir(parents=True, exist_ok=True)
         probe = out / ".rei-write-check"
@@ -18,6 +24,11 @@ def prepare_output(out: Path) -> None:
         probe.unlink()
     except OSError as error:
         raise CommandError(f"cannot write to {out}: {error.strerror or error}") from None
+    need = int(os.environ.get("REI_MIN_FREE_MB", MIN_FREE_MB))
+    free = shutil.disk_usage(out).free // (1024 * 1024)
+    if free < need:
+        raise CommandError(f"only {free} MB free on the disk of {out}; a run needs at least {need} MB "
+                           "(set REI_MIN_FREE_MB to change the limit)")
 
 
 def case_folder(case: Path, out: Path) -> Path:
