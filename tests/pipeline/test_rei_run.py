@@ -36,7 +36,8 @@ def processes_mentioning(path: Path) -> list[str]:
 
 def test_the_example_passes_and_its_signals_replay_identically(run_cli, repo_root: Path, tmp_path: Path) -> None:
     out = tmp_path / "out"
-    result = run_cli("run", repo_root / "examples" / "simple_navigation.rei", "-o", out, timeout=300)
+    # a relative output folder, as in the README's command: the router and children run elsewhere
+    result = run_cli("run", repo_root / "examples" / "simple_navigation.rei", "-o", "out", timeout=300, cwd=tmp_path)
     assert result.returncode == 0, result.stdout + result.stderr
     summary = json.loads((out / "summary.json").read_text())
     assert summary["status"] == "COMPLETED"

@@ -11,7 +11,8 @@ from rei.wamp.recording import read_recording
 
 def test_runs_an_example_through_a_router_it_starts_and_stops(run_cli, repo_root: Path, tmp_path: Path) -> None:
     out = tmp_path / "out"
-    result = run_cli("sim", repo_root / "examples" / "simple_navigation.rei", "-o", out, "--no-humans", "--seed", "3")
+    result = run_cli("sim", repo_root / "examples" / "simple_navigation.rei", "-o", "out", "--no-humans", "--seed", "3",
+                     cwd=tmp_path)  # relative, as a user types it
     assert result.returncode == 0, result.stderr
     assert "mission succeeded" in result.stdout
     states = read_recording(out / "streams" / "state.msgpack")

@@ -49,7 +49,7 @@ def run(args: argparse.Namespace) -> int:
     run_id = args.run_id or secrets.token_hex(6)
     if not valid_run_id(run_id):
         raise CommandError(f"--run-id {run_id!r}: expected letters, digits, '_' or '-'")
-    out = Path(args.output)
+    out = Path(args.output).resolve()  # children and the router run in other working directories
     prepare_output(out)
     case_dir = case_folder(Path(args.case), out)
 

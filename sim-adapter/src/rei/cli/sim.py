@@ -59,7 +59,7 @@ def run(args: argparse.Namespace) -> int:
 
     check_mission_options(args)
     _check_router_options(args)
-    out = Path(args.output)
+    out = Path(args.output).resolve()  # children and the router run in other working directories
     prepare_output(out)
     try:
         options = MissionRunOptions(

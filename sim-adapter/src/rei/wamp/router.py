@@ -139,7 +139,8 @@ class Router:
         if not kinds or len(set(kinds)) != len(kinds):
             raise ValueError(f"transport kinds must be distinct and non-empty: {kinds!r}")
         self._crossbar_arg = crossbar
-        self._run_dir_arg = Path(run_dir) if run_dir is not None else None
+        # absolute: crossbar runs with the run folder as its working directory, where a relative path breaks
+        self._run_dir_arg = Path(run_dir).resolve() if run_dir is not None else None
         self.realm = realm
         self.host = host
         self._kinds = tuple(kinds)
