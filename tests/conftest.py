@@ -131,3 +131,22 @@ def write_rei(tmp_path: Path) -> Callable[[str, str], Path]:
         return path
 
     return write
+
+
+def _processes_mentioning(path: Path) -> list[str]:
+    """Command lines of live processes that name `path` (children get their run folder on the command line)."""
+    found = []
+    for cmdline in Path("/proc").glob("[0-9]*/cmdline"):
+        try:
+            text = cmdline.read_bytes().replace(b"\0", b" ").decode(errors="replace")
+        except OSError:
+            continue
+        if str(path) in text:
+            found.append(text)
+    return found
+
+
+@pytest.fixture(scope="session")
+def processes_mentioning() -> Callable[[Path], list[str]]:
+    """`processes_mentioning(folder)`: what still runs for a run folder; a clean shutdown leaves nothing."""
+    return _processes_mentioning

@@ -22,19 +22,9 @@ def verdicts(out: Path) -> dict[str, dict]:
     return {v["requirement"]: v for v in json.loads((out / "summary.json").read_text())["verdicts"]}
 
 
-def processes_mentioning(path: Path) -> list[str]:
-    found = []
-    for cmdline in Path("/proc").glob("[0-9]*/cmdline"):
-        try:
-            text = cmdline.read_bytes().replace(b"\0", b" ").decode(errors="replace")
-        except OSError:
-            continue
-        if str(path) in text:
-            found.append(text)
-    return found
-
-
-def test_the_example_passes_and_its_signals_replay_identically(run_cli, repo_root: Path, tmp_path: Path) -> None:
+def test_the_example_passes_and_its_signals_replay_identically(
+    run_cli, processes_mentioning, repo_root: Path, tmp_path: Path
+) -> None:
     out = tmp_path / "out"
     # a relative output folder, as in the README's command: the router and children run elsewhere
     result = run_cli("run", repo_root / "examples" / "simple_navigation.rei", "-o", "out", timeout=300, cwd=tmp_path)
@@ -92,7 +82,7 @@ def test_a_noisy_laser_fails_the_laser_verdicts_but_not_the_geometric_ones(
 
 
 def test_killing_the_simulation_is_an_error_that_keeps_every_signal_and_leaves_no_process(
-    repo_root: Path, tmp_path: Path, rei_script: Path, cli_jar: Path
+    processes_mentioning, repo_root: Path, tmp_path: Path, rei_script: Path, cli_jar: Path
 ) -> None:
     out = tmp_path / "out"
     process = subprocess.Popen(

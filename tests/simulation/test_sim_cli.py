@@ -9,7 +9,9 @@ from pathlib import Path
 from rei.wamp.recording import read_recording
 
 
-def test_runs_an_example_through_a_router_it_starts_and_stops(run_cli, repo_root: Path, tmp_path: Path) -> None:
+def test_runs_an_example_through_a_router_it_starts_and_stops(
+    run_cli, processes_mentioning, repo_root: Path, tmp_path: Path
+) -> None:
     out = tmp_path / "out"
     result = run_cli("sim", repo_root / "examples" / "simple_navigation.rei", "-o", "out", "--no-humans", "--seed", "3",
                      cwd=tmp_path)  # relative, as a user types it
@@ -23,19 +25,6 @@ def test_runs_an_example_through_a_router_it_starts_and_stops(run_cli, repo_root
     assert abs(len(states) - 20 * summary["sim_time"]) <= 2
     assert (out / "router" / "crossbar.log").is_file()  # a router really ran for this run ...
     assert processes_mentioning(out / "router") == []  # ... and nothing of it is left
-
-
-def processes_mentioning(path: Path) -> list[str]:
-    """Command lines of live processes that name `path` (the router runs with its run folder as --cbdir)."""
-    found = []
-    for cmdline in Path("/proc").glob("[0-9]*/cmdline"):
-        try:
-            text = cmdline.read_bytes().replace(b"\0", b" ").decode(errors="replace")
-        except OSError:
-            continue
-        if str(path) in text:
-            found.append(text)
-    return found
 
 
 def test_a_failing_mission_exits_one_with_the_reason(run_cli, repo_root: Path, tmp_path: Path) -> None:
