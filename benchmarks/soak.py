@@ -3,7 +3,7 @@
 
 Runs the whole pipeline (router, monitor jar, simulation child, evaluator) N times from this process and compares,
 at the start and after every run: this process's open file descriptors, threads and resident memory, its live
-descendant processes, and the machine's listening TCP sockets on loopback. A leak shows as growth.
+descendant processes, and the listening TCP sockets held by the process tree. A leak shows as growth.
 
     .venv/bin/python benchmarks/soak.py [--runs 50] [--example simple_navigation] [--humans]
 """
@@ -49,20 +49,35 @@ def descendants() -> list[int]:
     return sorted(mine)
 
 
-def listening_loopback_ports() -> int:
+def socket_inodes(pids: list[int]) -> set[str]:
+    inodes = set()
+    for pid in pids:
+        try:
+            for fd in Path(f"/proc/{pid}/fd").iterdir():
+                target = os.readlink(fd)
+                if target.startswith("socket:["):
+                    inodes.add(target[8:-1])
+        except OSError:
+            continue
+    return inodes
+
+
+def listening_ports(pids: list[int]) -> int:
+    """Listening TCP sockets held by these processes (other jobs on the machine do not count)."""
+    inodes = socket_inodes(pids)
     count = 0
     for table in ("/proc/net/tcp", "/proc/net/tcp6"):
         for line in Path(table).read_text().splitlines()[1:]:
             fields = line.split()
-            local, state = fields[1], fields[3]
-            if state == "0A" and local.split(":")[0] in ("0100007F", "00000000000000000000000001000000"):
+            if fields[3] == "0A" and fields[9] in inodes:
                 count += 1
     return count
 
 
 def sample() -> dict[str, int]:
+    tree = [os.getpid(), *descendants()]
     return {"fds": open_fds(), "threads": status("Threads"), "rss_kb": status("VmRSS"),
-            "children": len(descendants()), "loopback_listeners": listening_loopback_ports()}
+            "children": len(tree) - 1, "listening_ports": listening_ports(tree)}
 
 
 def main() -> None:
@@ -99,7 +114,7 @@ def main() -> None:
           f"growth from after run 1 to the end: {growth}; {os.cpu_count()} cores, "
           f"load average {os.getloadavg()[0]:.1f}")
     leaked = end["children"] > start["children"] or end["fds"] > after_first["fds"] \
-        or end["loopback_listeners"] > start["loopback_listeners"]
+        or end["listening_ports"] > start["listening_ports"]
     print("LEAK" if leaked else "no leaked process, descriptor or listening port")
 
 
