@@ -33,6 +33,7 @@ from typing import Any
 import numpy as np
 
 from rei.geometry import Pose2D
+from rei.sim.state import ObjectState, RobotState, SimState
 from rei.wamp import LaserMode, Router, WampClient, encode_state
 from rei.wamp.codec import pack
 
@@ -47,38 +48,12 @@ def _uri(url: str, name: str) -> str:
 TARGET_P99_MS = 5.0
 
 
-@dataclass(frozen=True)
-class _Robot:
-    name: str
-    pose: tuple[float, float, float, float]
-    twist: tuple[float, float, float]
-    odom: Pose2D
-    laser_min: float
-    laser_ranges: np.ndarray | None
-
-
-@dataclass(frozen=True)
-class _Object:
-    name: str
-    category: str
-    pose: tuple[float, float, float, float]
-    twist: tuple[float, float, float]
-
-
-@dataclass(frozen=True)
-class _State:
-    t: float
-    robot: _Robot
-    objects: tuple[_Object, ...]
-    contacts: tuple[tuple[str, str], ...]
-
-
 def make_state(i: int, laser: LaserMode) -> dict[str, Any]:
     """A realistic state message: robot + 4 humans + 2 dynamic boxes, laser as requested."""
     t = i / 240.0
     ranges = np.full(360, np.inf)
     ranges[:90] = 1.0 + 0.5 * np.sin(np.arange(90) * 0.1 + t)
-    robot = _Robot(
+    robot = RobotState(
         "tb3",
         (1.0 + t * 0.1, 2.0, 0.0, 0.3),
         (0.2, 0.0, 0.1),
@@ -87,10 +62,10 @@ def make_state(i: int, laser: LaserMode) -> dict[str, Any]:
         ranges,
     )
     objects = tuple(
-        _Object(f"h{k}", "HUMAN" if k < 4 else "DYNAMIC", (k + math.sin(t), 3.0, 0.85, 0.0), (0.5, 0.0, 0.0))
+        ObjectState(f"h{k}", "HUMAN" if k < 4 else "DYNAMIC", (k + math.sin(t), 3.0, 0.85, 0.0), (0.5, 0.0, 0.0))
         for k in range(6)
     )
-    return encode_state(_State(t, robot, objects, ()), i, laser=laser, nav_state="ACTIVE")
+    return encode_state(SimState(t, robot, objects, ()), i, laser=laser, nav_state="ACTIVE")
 
 
 # -- subscriber process ------------------------------------------------------------------------------------------
