@@ -161,6 +161,7 @@ class Router:
         self._transports: dict[TransportKind, Transport] = {}
         self._run_dir: Path | None = None
         self._temporary = False
+        self.restarts = 0
 
     # -- public API ------------------------------------------------------------------------------------------
 
@@ -248,6 +249,30 @@ class Router:
         assert last_error is not None
         raise last_error
 
+    def poll(self) -> int | None:
+        """The router's exit code if it has died (or was never started), None while it runs."""
+        if self._process is None:
+            return -1
+        return self._process.poll()
+
+    def restart(self) -> Router:
+        """Start the router again on the same ports with the same configuration and secrets.
+
+        For a router that died mid-run: clients that reconnect (``WampClient(reconnect=...)``, the monitor)
+        find it at the URLs they already have. Whatever is left of the old process group is killed first.
+        """
+        if self._run_dir is None or not self._transports:
+            raise RouterError("router not started: nothing to restart")
+        self._terminate()
+        self._launch(find_crossbar(self._crossbar_arg), reuse_ports=True)
+        try:
+            self._wait_ready()
+        except RouterError:
+            self._terminate()
+            raise
+        self.restarts += 1
+        return self
+
     def stop(self) -> None:
         """SIGTERM the router's process group, SIGKILL it after ``stop_timeout``; never leaves a process."""
         self._terminate()
@@ -283,17 +308,19 @@ class Router:
         for role, secret in self._secrets.items():
             write_credentials(folder / f"{role}.json", Credentials(role, secret))
 
-    def _launch(self, executable: Path) -> None:
-        ports = _free_ports(self.host, len(self._kinds))
-        auth = wampcra_auth(self._secrets) if self.auth else None
-        self._transports = {
-            kind: Transport(kind, port, interface=self.host, nodelay=self.nodelay, auth=auth)
-            for kind, port in zip(self._kinds, ports, strict=True)
-        }
+    def _launch(self, executable: Path, *, reuse_ports: bool = False) -> None:
+        if not reuse_ports:
+            ports = _free_ports(self.host, len(self._kinds))
+            auth = wampcra_auth(self._secrets) if self.auth else None
+            self._transports = {
+                kind: Transport(kind, port, interface=self.host, nodelay=self.nodelay, auth=auth)
+                for kind, port in zip(self._kinds, ports, strict=True)
+            }
+            if self._bind is not None:
+                (port,) = _free_ports(self._bind, 1)
+                self._exposed = Transport("websocket", port, interface=self._bind, auth=auth, tls=self._tls)
         transports = list(self._transports.values())
-        if self._bind is not None:
-            (port,) = _free_ports(self._bind, 1)
-            self._exposed = Transport("websocket", port, interface=self._bind, auth=auth, tls=self._tls)
+        if self._exposed is not None:
             transports.append(self._exposed)
         cbdir = private_dir(self.run_dir / ".crossbar")
         config = node_config(self.realm, self._roles, transports)
