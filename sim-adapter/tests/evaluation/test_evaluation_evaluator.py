@@ -103,13 +103,13 @@ def test_malformed_repeated_and_lost_signals_are_stream_problems(tmp_path: Path)
     messages = nominal().messages
     evaluator.on_signal({"seq": 0, "t": "soon", "signal": "SIG_MISSION_BEGIN"})
     evaluator.on_signal(messages[0])
-    evaluator.on_signal(messages[0])  # repeated
+    evaluator.on_signal({**messages[0], "t": 0.5})  # repeated seq, other content
     for message in messages[3:]:  # seq 1 and 2 lost
         evaluator.on_signal(message)
     summary = evaluator.finish(status="COMPLETED", reason=None, sim_duration=20.0, wall_time=0.0, run_id="r")
     texts = [p.text for p in summary.problems]
     assert texts[0] == "malformed signal skipped: signal field 't' must be a number, got 'soon'"
-    assert texts[1] == "signal seq 0 after 0: repeated or out of order, skipped"
+    assert texts[1] == "signal seq 0 repeated with other content, skipped"
     assert texts[2] == "lost 2 signal(s) (seq 1 to 2)"
     assert summary.signals == len(messages) - 2
     assert summary.verdict("MISSION_SIMPLE").status == Status.ERROR
@@ -161,3 +161,21 @@ def test_wait_for_end_returns_when_mission_end_arrives(tmp_path: Path) -> None:
     assert evaluator.wait_for_end(timeout=10.0) is True
     timer.join()
     assert evaluator.ended
+
+
+def test_late_signals_fill_their_holes_and_identical_repeats_are_ignored(tmp_path: Path) -> None:
+    """A router restart: some signals arrive late (republished, or recovered from the monitor's file)."""
+    messages = nominal().messages
+    reference = replay(messages, _evaluator(tmp_path / "reference"))
+    evaluator = _evaluator(tmp_path / "restarted")
+    for message in (*messages[:2], *messages[4:]):  # seq 2 and 3 missed live
+        evaluator.on_signal(message)
+    evaluator.on_signal(messages[-1])  # republished after the reconnection: identical
+    assert evaluator.reconcile(messages) == 2
+    summary = evaluator.finish(status="COMPLETED", reason=None, sim_duration=None, wall_time=0.0, run_id="r")
+    assert [v.status for v in summary.verdicts] == [v.status for v in reference.verdicts]
+    assert summary.signals == reference.signals and summary.total_utility == reference.total_utility
+    assert (tmp_path / "restarted" / "events.csv").read_text() == (tmp_path / "reference" / "events.csv").read_text()
+    assert [p.text for p in summary.problems] == [
+        "2 signal(s) missed live were recovered from the monitor's signal file",
+        "1 identical repeated signal(s) ignored"]

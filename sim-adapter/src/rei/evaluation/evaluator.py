@@ -7,8 +7,13 @@ calls ``finish``. Every public method takes one lock; a handler does O(1) work p
 flushed), so it never holds the loop up. Properties return copies, never live containers. After ``finish``
 further signals are counted (``late_signals``) and otherwise ignored: the summary is final.
 
-Bad input never raises from a handler (it would be lost in the WAMP client's log): a malformed signal, a
-repeated or skipped ``seq`` is recorded as a stream problem, which turns the verdicts into errors.
+Bad input never raises from a handler (it would be lost in the WAMP client's log): a malformed signal or a
+``seq`` repeated with other content is recorded as a stream problem, which turns the verdicts into errors.
+
+Signals are kept by ``seq``, so a stream interrupted by a router restart can be completed afterwards: a signal
+that arrives late fills its hole (``reconcile`` feeds the monitor's own signal file), an identical repeat (a
+republish after a reconnection) is ignored, and only the holes still open at ``finish`` count as lost. When
+holes were filled, events.csv is rewritten in ``seq`` order at the end.
 """
 
 from __future__ import annotations
@@ -17,7 +22,7 @@ import math
 import os
 import threading
 from collections import Counter
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from pathlib import Path
 from typing import Any
 
@@ -75,7 +80,9 @@ class Evaluator:
         self._lock = threading.Lock()
         self._ended = threading.Event()
         self._log = EventLog(self.out_dir / EVENTS_FILE)
-        self._signals: list[Signal] = []
+        self._by_seq: dict[int, Signal] = {}
+        self._filled = 0  # signals that arrived after a later one (filled a hole)
+        self._repeats = 0  # identical repeats, ignored
         self._total = 0.0
         self._over_time: list[tuple[float, float]] = []
         self._counts: Counter[str] = Counter()
@@ -102,21 +109,24 @@ class Evaluator:
             except SignalError as error:
                 self._problem(Evidence(f"malformed signal skipped: {error}"))
                 return
-            if signal.seq < self._next_seq:
-                self._problem(Evidence(f"signal seq {signal.seq} after {self._next_seq - 1}: repeated or out "
-                                       f"of order, skipped", signal.t, signal.signal, signal.object))
+            known = self._by_seq.get(signal.seq)
+            if known is not None:
+                if known == signal:
+                    self._repeats += 1
+                else:
+                    self._problem(Evidence(f"signal seq {signal.seq} repeated with other content, skipped",
+                                           signal.t, signal.signal, signal.object))
                 return
-            if signal.seq > self._next_seq:
-                self._problem(Evidence(f"lost {signal.seq - self._next_seq} signal(s) (seq {self._next_seq} "
-                                       f"to {signal.seq - 1})", signal.t, signal.signal, signal.object))
-            self._next_seq = signal.seq + 1
+            if signal.seq < self._next_seq:
+                self._filled += 1
+            self._next_seq = max(self._next_seq, signal.seq + 1)
+            self._by_seq[signal.seq] = signal
             if signal.signal not in self.utilities:
                 self._unknown[signal.signal] += 1
             utility = self.utilities.utility(signal.signal)
             self._total += utility
             self._over_time.append((signal.t, self._total))
             self._counts[signal.signal] += 1
-            self._signals.append(signal)
             self._log.write(signal.t, signal.signal, utility, self._total, signal.subject, signal.object)
             if signal.signal == SIG_MISSION_END:
                 self._ended.set()
@@ -137,6 +147,34 @@ class Evaluator:
                     isinstance(v, int | float) and not isinstance(v, bool) and math.isfinite(v)
                     for v in goal[:2]):
                 self._task_goals[index] = (float(goal[0]), float(goal[1]))
+
+    def reconcile(self, messages: Iterable[Mapping[str, Any]]) -> int:
+        """Fill the holes of the received stream from another record of it (the monitor's ``--signals-out``
+        file); returns how many signals were missing. Signals already received are ignored when identical."""
+        with self._lock:
+            before = len(self._by_seq)
+        for message in messages:
+            if not self._has(message):
+                self.on_signal(message)
+        with self._lock:
+            recovered = len(self._by_seq) - before
+            if recovered:
+                self._notes.append(Evidence(f"{recovered} signal(s) missed live were recovered from the "
+                                            "monitor's signal file"))
+            return recovered
+
+    def _has(self, message: Mapping[str, Any]) -> bool:
+        try:
+            signal = Signal.from_message(message)
+        except SignalError:
+            return False
+        with self._lock:
+            return self._by_seq.get(signal.seq) == signal
+
+    def note(self, text: str, t: float | None = None) -> None:
+        """Something the summary should tell (a restarted router, a re-evaluation); not a problem."""
+        with self._lock:
+            self._notes.append(Evidence(text, t))
 
     def set_mission_info(self, message: Mapping[str, Any] | MissionInfo) -> None:
         """Mission information that arrived after construction; an unreadable one is noted, not raised."""
@@ -199,8 +237,13 @@ class Evaluator:
         with self._lock:
             if self._summary is not None:
                 return self._summary
-            signals = tuple(self._signals)
-            last = signals[-1].t if signals else 0.0
+            signals = tuple(self._by_seq[seq] for seq in sorted(self._by_seq))
+            self._note_holes(signals)
+            if self._filled:
+                self._rewrite_log(signals)
+            if self._repeats:
+                self._notes.append(Evidence(f"{self._repeats} identical repeated signal(s) ignored"))
+            last = max((s.t for s in signals), default=0.0)
             duration = _finite(sim_duration)
             problems = list(self._stream_problems)
             if self._problem_count > len(problems):
@@ -237,6 +280,26 @@ class Evaluator:
     def late_signals(self) -> int:
         with self._lock:
             return self._late
+
+    def _note_holes(self, signals: tuple[Signal, ...]) -> None:
+        """Holes in ``seq`` that nothing filled: lost signals, stream problems."""
+        expected = 0
+        for signal in signals:
+            if signal.seq > expected:
+                self._problem(Evidence(f"lost {signal.seq - expected} signal(s) (seq {expected} to "
+                                       f"{signal.seq - 1})", signal.t, signal.signal, signal.object))
+            expected = signal.seq + 1
+
+    def _rewrite_log(self, signals: tuple[Signal, ...]) -> None:
+        """events.csv in ``seq`` order (it was written in arrival order, with holes filled later)."""
+        self._log.close()
+        self._log = EventLog(self.out_dir / EVENTS_FILE)
+        total, self._over_time = 0.0, []
+        for signal in signals:
+            utility = self.utilities.utility(signal.signal)
+            total += utility
+            self._over_time.append((signal.t, total))
+            self._log.write(signal.t, signal.signal, utility, total, signal.subject, signal.object)
 
     def _problem(self, evidence: Evidence) -> None:
         self._problem_count += 1
