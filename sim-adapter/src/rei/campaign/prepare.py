@@ -11,7 +11,7 @@ import hashlib
 from dataclasses import dataclass
 from pathlib import Path
 
-from rei.campaign.jvm import run_jar
+from rei.run.jvm import run_jar
 from rei.campaign.plan import CaseSource
 
 STAMP = ".source.sha256"

@@ -20,7 +20,7 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any
 
-from rei.campaign.jvm import tail
+from rei.run.jvm import tail
 from rei.campaign.plan import RunTask
 
 WORKER_LOG = "worker.log"

@@ -8,8 +8,7 @@ Two paths, both with the real components:
 
 * ``replay`` (default, for throughput): the simulation runs in this process without a router
   (``rei.run.run_mission``, recording its state and mission streams), the real monitor jar replays the
-  recording (``--replay ... --signals-out``) and the evaluator scores the signals offline
-  (``rei.evaluation.replay``). Same simulation, same monitor rules, same evaluator as ``rei run``; what it leaves
+  recording and the evaluator scores the signals offline (``rei.run.reevaluate``). Same simulation, same monitor rules, same evaluator as ``rei run``; what it leaves
   out is the router, the live monitor's JVM start before the run and the waits for drains (~10 s a run).
 * ``pipeline``: ``rei run`` in this process (router, live monitor, simulation child, evaluator, report).
 
@@ -25,12 +24,10 @@ import time
 from pathlib import Path
 from typing import Any, Self
 
-from rei.campaign.jvm import run_jar
 from rei.campaign.plan import RunTask
 
 TASK_FILE = "task.json"
 TIMING_FILE = "timing.json"
-SIGNALS_FILE = "signals.jsonl"
 
 
 class _Phase:
@@ -57,41 +54,22 @@ def execute(task: RunTask) -> int:
 
 
 def _replay(task: RunTask, run_dir: Path) -> int:
-    from rei.artifacts import read_case
-    from rei.evaluation import Evaluator, VerdictSettings, replay
-    from rei.mission import mission_info
     from rei.run import MissionRunOptions, run_mission
-    from rei.wamp.recording import RecordingWriter, read_recording, stream_path
+    from rei.run.reevaluate import RunSettings, reevaluate
 
-    started = time.perf_counter()
-    case_dir = Path(task.case_dir)
     timing: dict[str, Any] = {}
     with _Phase(timing, "simulation"):
         options = MissionRunOptions(controller=task.controller, seed=task.seed, humans=task.humans,
                                     fault=task.fault)
-        result = run_mission(case_dir, run_dir, options, run_id=task.key)
-    signals_file = run_dir / SIGNALS_FILE
-    signals_file.unlink(missing_ok=True)
-    monitor = run_jar("monitor", ["--replay", str(run_dir), "--case", str(case_dir), "--signals-out",
-                                  str(signals_file), "--quiet"], run_dir / "monitor.log")
-    timing["monitor"] = {"wall": round(monitor.wall, 3), "cpu": round(monitor.cpu, 3)}
-    with _Phase(timing, "evaluation"):
-        status, reason = "COMPLETED", None
-        if monitor.code != 0:
-            status, reason = "ERROR", f"the monitor exited with {monitor.code}: {monitor.log_tail}"
-        signals = _read_signals(signals_file)
-        with RecordingWriter(stream_path(run_dir, "signal")) as recording:  # as `rei run` keeps it
-            for signal in signals:
-                recording.write(signal)
-        evaluator = Evaluator(run_dir, mission_info=mission_info(read_case(case_dir).mission),
-                              monitor_config=_json(case_dir / "monitor.json"), world=_json(case_dir / "world.json"),
-                              settings=VerdictSettings(humans=task.humans))
-        replay(signals, evaluator, missions=read_recording(stream_path(run_dir, "mission")), status=status,
-               reason=reason, sim_duration=result.sim_time, wall_time=time.perf_counter() - started,
-               run_id=task.key)
+        result = run_mission(Path(task.case_dir), run_dir, options, run_id=task.key)
+    with _Phase(timing, "evaluation"):  # this process's CPU only: the monitor's replay is a child JVM
+        judged = reevaluate(run_dir, Path(task.case_dir), settings=RunSettings(
+            humans=task.humans, run_id=task.key, sim_duration=result.sim_time))
+    timing["monitor"] = {"wall": round(judged.monitor.wall, 3), "cpu": round(judged.monitor.cpu, 3)}
+    timing["evaluation"]["wall"] = round(judged.evaluation_wall, 3)
     if task.report:
         with _Phase(timing, "report"):
-            _write_report(run_dir, case_dir)
+            _write_report(run_dir, Path(task.case_dir))
     _write_timing(run_dir, timing)
     return 0
 
@@ -110,12 +88,6 @@ def _pipeline(task: RunTask, run_dir: Path) -> int:
         code = main(argv)
     _write_timing(run_dir, timing)
     return 0 if code in (0, 1, 2) and (run_dir / "summary.json").is_file() else (code or 2)
-
-
-def _read_signals(path: Path) -> list[dict[str, Any]]:
-    if not path.is_file():
-        return []
-    return [json.loads(line) for line in path.read_text(encoding="utf-8").splitlines() if line.strip()]
 
 
 def _write_report(run_dir: Path, case_dir: Path) -> None:

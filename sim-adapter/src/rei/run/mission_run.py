@@ -137,7 +137,8 @@ def _json(path: Path) -> dict:
 def _write_summary(out_dir: Path, options: MissionRunOptions, result: MissionRunResult) -> None:
     summary = {
         "run_id": result.run_id,
-        "options": {k: v for k, v in asdict(options).items() if k != "collector"},
+        "options": {**{k: v for k, v in asdict(options).items() if k != "collector"},
+                    "laser": options.collector.laser.value},  # what the verdicts need to know (rei.run.reevaluate)
         "sim_time": result.sim_time,
         "wall_time": result.wall_time,
         "real_time_factor": result.real_time_factor,

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: EPL-2.0
-"""How a campaign starts the Java tools: once per test case (generation) and once per run (monitor replay).
+"""Short-lived runs of REI's jars: generation per test case, monitor replay per run (campaigns, re-evaluation).
 
 Why these flags: every JVM of a campaign is short-lived (2-5 s), so most of its CPU goes into starting up and
 into the optimising JIT compiler, whose work never pays back. Measured on the 2-core machine with a 665-state
