@@ -8,6 +8,7 @@ import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.EnumSet;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.concurrent.CountDownLatch;
@@ -24,9 +25,11 @@ import org.rei.monitor.signals.Signal;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ArrayNode;
 
 import ws.wamp.jawampa.ApplicationError;
 import ws.wamp.jawampa.PubSubData;
+import ws.wamp.jawampa.PublishFlags;
 import ws.wamp.jawampa.WampClient;
 import ws.wamp.jawampa.WampClientBuilder;
 import ws.wamp.jawampa.WampSerialization;
@@ -37,10 +40,19 @@ import ws.wamp.jawampa.transport.netty.NettyWampClientConnectorProvider;
  * its sockets by default), reads the configuration (from {@code --case} or the {@code config} RPC), subscribes to
  * the state and mission topics, publishes signals and serves the {@code snapshot} RPC. Events are re-encoded to
  * the payload's msgpack bytes and handed to one pipeline thread, so live and replay run the same code.
+ * <p>
+ * A restarted router is survived: jawampa reconnects (every second, forever) but forgets the session's
+ * subscriptions and registrations, so every new session gets them again; signals go through a {@link SignalOutbox}
+ * (acknowledged publications, sent again after a reconnection). Messages lost meanwhile show up as
+ * {@code SIG_MONITOR_DATA_GAP} at the first message after the reconnection (their seq jumps).
  */
 public final class LiveMonitor implements AutoCloseable {
 
 	private static final ObjectMapper MSGPACK = new ObjectMapper(new MessagePackFactory());
+	private static final ObjectMapper JSON = new ObjectMapper();
+	/** Bounds of close(): the router may be gone for good. */
+	private static final long CLOSE_OUTBOX_MILLIS = 5_000;
+	private static final long CLOSE_SESSION_SECONDS = 10;
 
 	private final WampClient client;
 	private final ExecutorService pipeline = Executors.newSingleThreadExecutor(r -> {
@@ -53,6 +65,19 @@ public final class LiveMonitor implements AutoCloseable {
 	private volatile Monitor monitor;
 	private OutputStream stateRecording;
 	private OutputStream missionRecording;
+
+	// the session bookkeeping below is shared by start() and jawampa's thread (status changes) under this lock
+	private final Object sessionLock = new Object();
+	private Routes routes;
+	private boolean connected;
+	private boolean closing;
+	private int connections;
+	/** The connection whose subscriptions were made last: events of older ones' subscribers are ignored. */
+	private volatile int routedConnection;
+
+	/** What every session needs: known once start() has read the case. */
+	private record Routes(String stateTopic, String missionTopic, String snapshotUri, SignalOutbox outbox) {
+	}
 
 	public LiveMonitor(String router, String realm, Consumer<String> log) throws Exception {
 		this(router, realm, null, log);
@@ -83,14 +108,17 @@ public final class LiveMonitor implements AutoCloseable {
 	 */
 	public void start(String runId, CaseReader.Case givenCase, Function<CaseReader.Case, Monitor> monitorFactory,
 			Path recordDir, Consumer<Signal> onSignal, long timeoutMillis) throws Exception {
-		CountDownLatch connected = new CountDownLatch(1);
+		CountDownLatch joined = new CountDownLatch(1);
 		client.statusChanged().subscribe(s -> {
 			if (s instanceof WampClient.ConnectedState) {
-				connected.countDown();
+				onConnected();
+				joined.countDown();
+			} else if (s instanceof WampClient.DisconnectedState d) {
+				onDisconnected(d);
 			}
 		}, e -> log.accept("WAMP status error: " + e));
 		client.open();
-		if (!connected.await(timeoutMillis, TimeUnit.MILLISECONDS)) {
+		if (!joined.await(timeoutMillis, TimeUnit.MILLISECONDS)) {
 			throw new IOException("could not join the realm within " + timeoutMillis + " ms");
 		}
 		CaseReader.Case c = givenCase;
@@ -110,27 +138,71 @@ public final class LiveMonitor implements AutoCloseable {
 			stateRecording = Files.newOutputStream(recordDir.resolve("state.msgpack"));
 			missionRecording = Files.newOutputStream(recordDir.resolve("mission.msgpack"));
 		}
+		SignalOutbox outbox = new SignalOutbox((s, done) -> publish(signalTopic, s, done));
 		m.signals().addListener(s -> {
-			Map<String, Object> payload = new LinkedHashMap<>();
-			payload.put("seq", s.seq());
-			payload.put("t", s.t());
-			payload.put("signal", s.signal());
-			payload.put("subject", s.subject());
-			payload.put("object", s.object());
-			payload.put("distance", s.distance());
-			client.publish(signalTopic, payload).subscribe(id -> {
-			}, e -> log.accept("publishing a signal failed: " + e));
+			outbox.offer(s);
 			onSignal.accept(s);
 		});
-		client.makeSubscription(stateTopic).subscribe(ev -> accept(ev, true),
-				e -> log.accept("state subscription failed: " + e));
-		client.makeSubscription(missionTopic).subscribe(ev -> accept(ev, false),
-				e -> log.accept("mission subscription failed: " + e));
+		synchronized (sessionLock) {
+			routes = new Routes(stateTopic, missionTopic, snapshotUri, outbox);
+			route();
+		}
+		log.accept("monitoring " + stateTopic + " and " + missionTopic + ", signals on " + signalTopic);
+	}
+
+	private void onConnected() {
+		synchronized (sessionLock) {
+			connected = true;
+			connections++;
+			route();
+		}
+	}
+
+	private void onDisconnected(WampClient.DisconnectedState d) {
+		synchronized (sessionLock) {
+			if (!connected) {
+				return; // the initial state, or a failed attempt
+			}
+			connected = false;
+			if (routes != null) {
+				routes.outbox().disconnected();
+			}
+			if (closing) {
+				return;
+			}
+		}
+		Throwable why = d.disconnectReason();
+		log.accept("router connection lost: " + (why != null ? why : "closed") + " - reconnecting");
+	}
+
+	/**
+	 * Subscribes, registers the snapshot RPC and flushes the outbox for the current connection, once per
+	 * connection (start() and jawampa's thread may both get here). Holds {@link #sessionLock}.
+	 */
+	private void route() {
+		Routes r = routes;
+		if (r == null || !connected || routedConnection == connections) {
+			return;
+		}
+		int connection = connections;
+		routedConnection = connection;
+		// a subscriber of an older connection can only receive this session's events if its subscription was
+		// requested while this session was being set up: then both get them, and only the newest may take them
+		client.makeSubscription(r.stateTopic()).subscribe(ev -> {
+			if (routedConnection == connection) {
+				accept(ev, true);
+			}
+		}, e -> log.accept("state subscription failed: " + e));
+		client.makeSubscription(r.missionTopic()).subscribe(ev -> {
+			if (routedConnection == connection) {
+				accept(ev, false);
+			}
+		}, e -> log.accept("mission subscription failed: " + e));
 		// registered after the subscriptions: WAMP messages of one session are handled in order, so a client whose
 		// snapshot call succeeds knows the monitor's subscriptions are in place (tests start the run after that)
-		client.registerProcedure(snapshotUri).subscribe(request -> pipeline.execute(() -> {
+		client.registerProcedure(r.snapshotUri()).subscribe(request -> pipeline.execute(() -> {
 			try {
-				request.reply(m.snapshot());
+				request.reply(monitor.snapshot());
 			} catch (RuntimeException e) {
 				try {
 					request.replyError("rei.error.snapshot", e.toString());
@@ -139,7 +211,48 @@ public final class LiveMonitor implements AutoCloseable {
 				}
 			}
 		}), e -> log.accept("snapshot registration failed: " + e));
-		log.accept("monitoring " + stateTopic + " and " + missionTopic + ", signals on " + signalTopic);
+		int again = r.outbox().connected();
+		if (connection > 1) {
+			log.accept("reconnected to the router (" + (connection - 1) + "): subscriptions restored"
+					+ (again > 0 ? ", " + again + " unacknowledged signal(s) published again" : ""));
+		}
+	}
+
+	/** Publishes one signal with an acknowledgement: without one a signal written into a dying connection is lost. */
+	private void publish(String topic, Signal s, Consumer<SignalOutbox.Outcome> done) {
+		Map<String, Object> payload = new LinkedHashMap<>();
+		payload.put("seq", s.seq());
+		payload.put("t", s.t());
+		payload.put("signal", s.signal());
+		payload.put("subject", s.subject());
+		payload.put("object", s.object());
+		payload.put("distance", s.distance());
+		ArrayNode arguments = JSON.createArrayNode().add(JSON.valueToTree(payload));
+		client.publish(topic, EnumSet.of(PublishFlags.RequireAcknowledge), arguments, null)
+				.subscribe(id -> done.accept(SignalOutbox.Outcome.ACKNOWLEDGED), e -> {
+					if (isConnectionLoss(e)) {
+						done.accept(SignalOutbox.Outcome.LOST);
+					} else {
+						log.accept("the router refused signal " + s.seq() + ": " + e);
+						done.accept(SignalOutbox.Outcome.REFUSED);
+					}
+				});
+	}
+
+	/** jawampa's errors for a request that met no session (as opposed to the router's answer). */
+	private static boolean isConnectionLoss(Throwable e) {
+		if (!(e instanceof ApplicationError a)) {
+			return true;
+		}
+		return ApplicationError.TRANSPORT_CLOSED.equals(a.uri()) || ApplicationError.NOT_CONNECTED.equals(a.uri())
+				|| ApplicationError.CLIENT_CLOSED.equals(a.uri());
+	}
+
+	/** How often the connection to the router was restored after a loss. */
+	public int reconnections() {
+		synchronized (sessionLock) {
+			return Math.max(0, connections - 1);
+		}
 	}
 
 	/**
@@ -153,9 +266,10 @@ public final class LiveMonitor implements AutoCloseable {
 				return client.call(uri, new Object[0]).toBlocking().single().arguments().get(0);
 			} catch (RuntimeException e) {
 				// toBlocking() wraps the checked ApplicationError in a RuntimeException
-				boolean absent = e.getCause() instanceof ApplicationError a
-						&& ApplicationError.NO_SUCH_PROCEDURE.equals(a.uri());
-				if (!absent || System.nanoTime() - deadline > 0) {
+				// absent: the collector has not registered it yet; a connection loss: jawampa is reconnecting
+				boolean retry = e.getCause() instanceof ApplicationError a
+						&& (ApplicationError.NO_SUCH_PROCEDURE.equals(a.uri()) || isConnectionLoss(a));
+				if (!retry || System.nanoTime() - deadline > 0) {
 					throw e;
 				}
 				if (!logged) {
@@ -227,7 +341,25 @@ public final class LiveMonitor implements AutoCloseable {
 			}).get(10, TimeUnit.SECONDS); // drain what arrived
 		} finally {
 			pipeline.shutdown();
-			client.close().toBlocking().lastOrDefault(null);
+			Routes r;
+			synchronized (sessionLock) {
+				r = routes;
+			}
+			try { // the last acknowledgements; bounded: the router may be gone for good
+				if (r != null && !r.outbox().awaitEmpty(CLOSE_OUTBOX_MILLIS)) {
+					log.accept(r.outbox().pending() + " signal(s) not acknowledged by the router when closing");
+				}
+			} catch (InterruptedException e) {
+				Thread.currentThread().interrupt();
+			}
+			synchronized (sessionLock) {
+				closing = true;
+			}
+			try {
+				client.close().timeout(CLOSE_SESSION_SECONDS, TimeUnit.SECONDS).toBlocking().lastOrDefault(null);
+			} catch (RuntimeException e) {
+				log.accept("leaving the router: " + e);
+			}
 			for (OutputStream out : new OutputStream[] { stateRecording, missionRecording }) {
 				if (out != null) {
 					out.close();
