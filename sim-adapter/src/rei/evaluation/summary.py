@@ -58,6 +58,16 @@ class Summary:
         return len(self.tasks)
 
     @property
+    def exit_code(self) -> int:
+        """0: every verdict passes (or does not apply); 1: a verdict fails; 2: the run ended in ERROR, or no verdict
+        fails but one is an error (nothing proven wrong, nothing vouched for: a CI job must not go green on it)."""
+        if self.status != "COMPLETED":
+            return 2
+        if any(v.status == Status.FAIL for v in self.verdicts):
+            return 1
+        return 2 if any(v.status == Status.ERROR for v in self.verdicts) else 0
+
+    @property
     def tasks_succeeded(self) -> int:
         return sum(t.outcome == "SUCCESS" for t in self.tasks)
 
