@@ -11,8 +11,8 @@ import hashlib
 from dataclasses import dataclass
 from pathlib import Path
 
-from rei.run.jvm import run_jar
 from rei.campaign.plan import CaseSource
+from rei.run.jvm import run_jar
 
 STAMP = ".source.sha256"
 

@@ -20,8 +20,8 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any
 
-from rei.run.jvm import tail
 from rei.campaign.plan import RunTask
+from rei.run.jvm import tail
 
 WORKER_LOG = "worker.log"
 #: Seconds a stopped worker gets for SIGTERM before SIGKILL.

@@ -16,6 +16,8 @@ from typing import Any
 
 from rei.cli._case import case_folder, prepare_output, valid_run_id
 from rei.cli._mission_options import add_mission_options, check_mission_options, mission_argv
+from rei.cli._outcome import print_verdicts, write_views
+from rei.cli._router_options import add_router_options, check_router_options
 from rei.cli.errors import CommandError
 
 
@@ -32,6 +34,7 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
     parser.add_argument("--run-id", metavar="ID", help="identifier of the run in topic names (default: random)")
     parser.add_argument("--view", action="store_true",
                         help="watch the run live in the browser: serves a page on 127.0.0.1 and prints its URL")
+    add_router_options(parser, "run")
     parser.set_defaults(handler=run)
 
 
@@ -39,6 +42,7 @@ def run(args: argparse.Namespace) -> int:
     from rei.run.pipeline import PipelineOptions, Progress, run_pipeline
 
     check_mission_options(args)
+    check_router_options(args)
     if args.utilities is not None:
         from rei.evaluation import UtilityError, load_utilities
 
@@ -59,27 +63,16 @@ def run(args: argparse.Namespace) -> int:
                   f"utility {progress.utility:+.0f}   ", end="", file=sys.stderr, flush=True)
 
     options = PipelineOptions(sim_args=tuple(mission_argv(args)), utilities=args.utilities,
-                              humans=not args.no_humans, laser=args.laser != "none", view=args.view)
+                              humans=not args.no_humans, laser=args.laser != "none", view=args.view,
+                              bind=args.bind, tls_cert=_path(args.tls_cert), tls_key=_path(args.tls_key))
     result = run_pipeline(case_dir, out, options,
                           run_id=run_id, on_progress=show)
     if sys.stderr.isatty():
         print(file=sys.stderr)
-    summary = result.summary
-    for verdict in summary.verdicts:
-        print(f"{verdict.status.upper():<15} {verdict.requirement}  {verdict.message}")
-    if result.status != "COMPLETED":
-        print(f"run {run_id} ended in ERROR: {result.reason}")
-    print(f"total utility {summary.total_utility:+g}")
-    _write_views(out)
+    print_verdicts(result.summary)
+    write_views(out)
     return result.exit_code
 
 
-def _write_views(out: Path) -> None:
-    """The report and the Foxglove recording; a failure here must not hide the verdicts above."""
-    from rei.report import write_mcap, write_report
-
-    try:
-        print(f"report: {write_report(out)}")
-        print(f"mcap:   {write_mcap(out)} (open in Foxglove Studio)")
-    except Exception as error:  # noqa: BLE001 - the run's results are already written
-        print(f"rei: no report: {type(error).__name__}: {error}", file=sys.stderr)
+def _path(value: str | None) -> Path | None:
+    return Path(value).resolve() if value is not None else None

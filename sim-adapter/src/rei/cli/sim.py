@@ -19,6 +19,7 @@ from typing import Any
 
 from rei.cli._case import case_folder, prepare_output, valid_run_id
 from rei.cli._mission_options import add_mission_options, check_mission_options
+from rei.cli._router_options import add_router_options, check_router_options
 from rei.cli.errors import EXIT_INVALID, EXIT_OK, CommandError
 
 
@@ -43,10 +44,10 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
     router.add_argument("--no-router", action="store_true", help="record the streams without publishing them")
     parser.add_argument("--auth-file", metavar="FILE", help="with --router: the simulation role's credentials "
                         "(a 0600 JSON file written by REI's router, e.g. OUT/router/auth/simulation.json)")
-    parser.add_argument("--bind", metavar="ADDRESS", help="also expose the router started here on this "
-                        "interface (IP address); requires --tls-cert and --tls-key")
-    parser.add_argument("--tls-cert", metavar="FILE", help="with --bind: the TLS certificate (PEM)")
-    parser.add_argument("--tls-key", metavar="FILE", help="with --bind: the TLS private key (PEM)")
+    parser.add_argument("--reconnect", type=float, default=0.0, metavar="SECONDS",
+                        help="with --router: if the connection is lost, keep trying this long to reach the "
+                        "restarted router (the simulation waits meanwhile; default 0: the run ends in error)")
+    add_router_options(parser, "sim")
     parser.set_defaults(handler=run)
 
 
@@ -91,17 +92,14 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _check_router_options(args: argparse.Namespace) -> None:
-    from rei.wamp.router import check_bind
-
+    if not args.reconnect >= 0:
+        raise CommandError(f"--reconnect must be a number of seconds >= 0, got {args.reconnect}")
     if args.auth_file is not None and args.router is None:
         raise CommandError("--auth-file applies with --router URL only (a router started here makes its own)")
     if (args.router is not None or args.no_router) and (args.bind or args.tls_cert or args.tls_key):
         raise CommandError("--bind/--tls-cert/--tls-key apply to the router `rei sim` starts (not with "
                            "--router or --no-router)")
-    try:
-        check_bind(args.bind, args.tls_cert, args.tls_key)
-    except ValueError as error:
-        raise CommandError(str(error)) from None
+    check_router_options(args)
 
 
 class _publisher:
@@ -136,7 +134,7 @@ class _publisher:
         else:
             auth = None
         try:
-            self._client = WampClient(url, auth=auth).start()
+            self._client = WampClient(url, auth=auth, reconnect=self._args.reconnect).start()
         except BaseException:
             if self._router is not None:
                 self._router.stop()

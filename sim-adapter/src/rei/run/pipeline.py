@@ -6,9 +6,19 @@
                       -> evaluator (here) scores them, writes events.csv, summary.json, verdicts.xml
 
 The monitor is started first and the simulation only once the monitor answers its snapshot procedure: the
-router has then processed its subscriptions, so the first state message is not lost. Whatever happens - a
-child dying, Ctrl-C, SIGTERM - every child is stopped, the evaluator writes what it has and the run is marked
-ERROR with the reason.
+router has then processed its subscriptions, so the first state message is not lost.
+
+Faults during the run (docs/security.md, "Faults mid-run"):
+
+- the router dies: it is restarted on the same ports with the same secrets and every component reconnects;
+  what was lost in flight shows as the monitor's SIG_MONITOR_DATA_GAP, which turns the verdicts that would pass
+  into errors. Signals the evaluator missed while reconnecting are recovered from the monitor's own signal
+  file (``OUT/signals.jsonl``) at the end.
+- the monitor dies: the simulation goes on (it records everything it publishes); at the end the recorded
+  streams are replayed through a fresh monitor (``rei.run.reevaluate``) - the same signals the live monitor
+  would have given - and the live event log is kept as ``events-live.csv``.
+- anything else (the simulation dying, Ctrl-C, SIGTERM): every child is stopped, the evaluator writes what it
+  has and the run is marked ERROR with the reason.
 """
 
 from __future__ import annotations
@@ -24,6 +34,14 @@ from typing import TYPE_CHECKING, Any
 
 from rei import toolchain
 from rei.run.processes import ManagedProcess
+from rei.run.reevaluate import (
+    LIVE_EVENTS_FILE,
+    SIGNALS_FILE,
+    ReevaluationError,
+    RunSettings,
+    read_signals,
+    reevaluate,
+)
 from rei.wamp.client import WampClient
 from rei.wamp.recording import RecordingWriter, stream_path
 from rei.wamp.router import Router
@@ -36,6 +54,10 @@ if TYPE_CHECKING:
 MONITOR_START_TIMEOUT = 60.0
 #: Seconds the monitor may take to finish after the simulation ended (it processes what is queued).
 MONITOR_DRAIN_TIMEOUT = 60.0
+#: Seconds a component keeps trying to reach a restarted router before its part of the run is lost.
+ROUTER_RECONNECT = 30.0
+#: Router deaths a run survives; one more and the run is an ERROR (a router that keeps dying is not a blip).
+MAX_ROUTER_RESTARTS = 3
 
 
 @dataclass(frozen=True, slots=True)
@@ -68,9 +90,7 @@ class PipelineResult:
 
     @property
     def exit_code(self) -> int:
-        if self.status != "COMPLETED":
-            return 2
-        return 1 if any(v.status == "fail" for v in self.summary.verdicts) else 0
+        return 2 if self.status != "COMPLETED" else self.summary.exit_code
 
 
 class _Interrupted(Exception):
@@ -94,6 +114,7 @@ def run_pipeline(case_dir: Path, out: Path, options: PipelineOptions, *, run_id:
     progress = {"t": 0.0, "done": 0, "total": 0}
     previous_term = signal.signal(signal.SIGTERM, _raise_interrupted)
     router = monitor = sim = client = signals = viewer = None
+    monitor_lost: str | None = None  # how the live monitor ended during the run, if it did
     try:
         # authenticated: one role per component, secrets in OUT/router/auth/<role>.json (0600), docs/security.md
         router = Router(run_dir=out / "router", run_id=run_id, bind=options.bind, tls_cert=options.tls_cert,
@@ -101,36 +122,47 @@ def run_pipeline(case_dir: Path, out: Path, options: PipelineOptions, *, run_id:
         if router.exposed_url is not None:
             print(f"router: {router.exposed_url} (TLS, authenticated)", flush=True)
         viewer = _start_view(router, run_id, case_dir, options) if options.view else None
-        client = WampClient(router.rs_url, auth=router.credentials("evaluator")).start()
+        client = WampClient(router.rs_url, auth=router.credentials("evaluator"), reconnect=ROUTER_RECONNECT).start()
         signals = RecordingWriter(stream_path(out, "signal"))
         attach(client, run_id, evaluator, also=signals.write)
         monitor = ManagedProcess("monitor", [
             str(toolchain.find_java().executable), "-jar", str(toolchain.find_jar("monitor")),
             "--router", router.ws_url, "--auth-file", str(router.auth_file("monitor")),
             "--run", run_id, "--case", str(case_dir), "--until-end", "--quiet",
-            "--snapshot-out", str(out / "runtime.xmi")], out / "monitor.log")
+            "--snapshot-out", str(out / "runtime.xmi"), "--signals-out", str(out / SIGNALS_FILE)],
+            out / "monitor.log")
         _await_monitor(client, topics, monitor)
         if viewer is not None:
             _await_viewer(viewer)
         sim = ManagedProcess("simulation", [
             sys.executable, "-m", "rei.cli", "sim", str(case_dir), "-o", str(out), "--router", router.rs_url,
-            "--auth-file", str(router.auth_file("simulation")), "--run-id", run_id, "--progress", "lines", *options.sim_args],
+            "--auth-file", str(router.auth_file("simulation")), "--run-id", run_id, "--progress", "lines",
+            "--reconnect", str(ROUTER_RECONNECT), *options.sim_args],
             out / "simulation.log", on_line=lambda line: _parse_progress(line, progress))
         while sim.poll() is None:
+            if router.poll() is not None:
+                _restart_router(router, evaluator, progress["t"])
             # --until-end: a monitor that saw the mission's END may finish before the simulation has closed
-            if monitor.poll() is not None and not (monitor.poll() == 0 and evaluator.ended):
-                raise _Interrupted(f"{monitor.describe_exit()} during the run: {monitor.log_tail(5)}")
+            if monitor_lost is None and monitor.poll() is not None and not (monitor.poll() == 0 and evaluator.ended):
+                monitor_lost = f"{monitor.describe_exit()} at about {progress['t']:.1f} s simulated"
+                print(f"rei: the live {monitor_lost}; the simulation goes on and the run will be judged from "
+                      "its recorded streams", flush=True)
             if on_progress is not None:
                 on_progress(Progress(progress["t"], progress["done"], progress["total"], evaluator.total))
             time.sleep(0.2)
         # 0 and 1 are a mission that succeeded or failed; anything else, or no summary, is a broken run
         if sim.poll() not in (0, 1) or not (out / "sim.json").is_file():
             raise _Interrupted(f"{sim.describe_exit()}: {sim.log_tail(5)}")
-        if monitor.wait(MONITOR_DRAIN_TIMEOUT) is None:
-            raise _Interrupted(f"the monitor did not finish within {MONITOR_DRAIN_TIMEOUT:.0f} s of the mission's end")
-        if monitor.poll() != 0:
-            raise _Interrupted(f"{monitor.describe_exit()}: {monitor.log_tail(5)}")
-        evaluator.wait_for_end(timeout=10.0)
+        if monitor_lost is None:
+            if monitor.wait(MONITOR_DRAIN_TIMEOUT) is None:
+                raise _Interrupted(f"the monitor did not finish within {MONITOR_DRAIN_TIMEOUT:.0f} s of the "
+                                   "mission's end")
+            if monitor.poll() != 0:
+                monitor_lost = f"{monitor.describe_exit()} after the mission: {monitor.log_tail(3)}"
+        if monitor_lost is None:
+            # in the usual case END arrives live at once; after a router restart it may be in the file only
+            evaluator.wait_for_end(timeout=2.0 if router.restarts else 10.0)
+            evaluator.reconcile(read_signals(out / SIGNALS_FILE))
     except _Interrupted as error:
         status, reason = "ERROR", error.reason
     except KeyboardInterrupt:
@@ -150,9 +182,53 @@ def run_pipeline(case_dir: Path, out: Path, options: PipelineOptions, *, run_id:
                     reason = reason or f"shutdown: {error}"
         signal.signal(signal.SIGTERM, previous_term)
     sim_summary = _json(out / "sim.json") if (out / "sim.json").is_file() else {}
-    summary = evaluator.finish(status=status, reason=reason, sim_duration=sim_summary.get("sim_time", progress["t"]),
+    sim_duration = sim_summary.get("sim_time", progress["t"])
+    if status == "COMPLETED" and monitor_lost is not None:
+        return _judge_from_recording(out, case_dir, options, evaluator, monitor_lost, run_id=run_id,
+                                     sim_duration=sim_duration, started=started)
+    summary = evaluator.finish(status=status, reason=reason, sim_duration=sim_duration,
                                wall_time=time.perf_counter() - started, run_id=run_id)
     return PipelineResult(status, reason, summary)
+
+
+def _restart_router(router: Router, evaluator: Any, sim_time: float) -> None:
+    """The router died mid-run: start it again where the components look for it (see the module docstring)."""
+    code = router.poll()
+    if router.restarts >= MAX_ROUTER_RESTARTS:
+        raise _Interrupted(f"the router exited with code {code} for the {router.restarts + 1}th time; not restarted "
+                           f"again: {router.log_tail(5)}")
+    print(f"rei: the router exited with code {code} at about {sim_time:.1f} s simulated; restarting it on the same ports",
+          flush=True)
+    try:
+        router.restart()
+    except Exception as error:
+        raise _Interrupted(f"the router exited with code {code} and could not be restarted: {error}") from error
+    evaluator.note(f"the router exited with code {code} and was restarted on the same ports; the components "
+                   "reconnected", sim_time)
+
+
+def _judge_from_recording(out: Path, case_dir: Path, options: PipelineOptions, evaluator: Any, monitor_lost: str,
+                          *, run_id: str, sim_duration: float, started: float) -> PipelineResult:
+    """The live monitor died but the simulation completed: judge the run by replaying what it recorded.
+
+    The live evaluator's results are written first (an ERROR naming the monitor), so a failing re-evaluation
+    still leaves a complete record; its event log is kept as events-live.csv.
+    """
+    reason = f"the live {monitor_lost}"
+    live = evaluator.finish(status="ERROR", reason=reason, sim_duration=sim_duration,
+                            wall_time=time.perf_counter() - started, run_id=run_id)
+    print("rei: judging the run from its recorded streams (monitor replay)", flush=True)
+    note = (f"{reason}; the signals were re-computed from the recorded streams by the monitor's replay "
+            f"(the live event log is {LIVE_EVENTS_FILE})")
+    try:
+        judged = reevaluate(out, case_dir, utilities=options.utilities, settings=RunSettings(
+            humans=options.humans, laser=options.laser, run_id=run_id, sim_duration=sim_duration), notes=(note,))
+    except (ReevaluationError, OSError) as error:
+        if not (out / "events.csv").exists():
+            (out / LIVE_EVENTS_FILE).replace(out / "events.csv")
+        return PipelineResult("ERROR", f"{reason}; re-evaluation failed: {error}", live)
+    summary = judged.summary
+    return PipelineResult(summary.status, summary.error, summary)
 
 
 def _await_monitor(client: WampClient, topics: Topics, monitor: ManagedProcess) -> None:

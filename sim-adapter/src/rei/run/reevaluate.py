@@ -4,7 +4,8 @@
 The simulation records every message before it publishes it, so its recording is complete even when the
 monitor died or the router lost messages. Feeding the recording through the monitor jar (``--replay``) gives
 the signals the live monitor would have given - the same code decides, and live == replay is tested - and a
-fresh evaluator turns them into events.csv, summary.json and verdicts.xml, replacing the live ones.
+fresh evaluator turns them into events.csv, summary.json and verdicts.xml, replacing the live ones. The live
+event log is kept as ``events-live.csv`` (the first time: a second re-evaluation does not overwrite it).
 
 Used by ``rei run`` when the monitor dies during a run, by ``rei evaluate OUT`` on any finished run, and by
 campaigns, whose runs are always judged this way.
@@ -24,6 +25,8 @@ from rei.wamp.recording import RecordingWriter, read_recording, stream_path
 
 #: The monitor's own record of the signals it emitted (``--signals-out``): one JSON object per line.
 SIGNALS_FILE = "signals.jsonl"
+#: Where the live event log goes when a re-evaluation writes events.csv anew.
+LIVE_EVENTS_FILE = "events-live.csv"
 #: Seconds a replay may take (a 10-minute mission replays in well under a minute).
 REPLAY_TIMEOUT = 600.0
 
@@ -108,6 +111,9 @@ def reevaluate(out: Path, case_dir: Path | None = None, *, utilities: Path | Non
     started = time.perf_counter()
     if monitor.code != 0 and status == "COMPLETED":
         status, reason = "ERROR", f"the monitor's replay exited with {monitor.code}: {monitor.log_tail}"
+    live_events = out / "events.csv"
+    if live_events.is_file() and not (out / LIVE_EVENTS_FILE).exists():
+        live_events.replace(out / LIVE_EVENTS_FILE)
     with RecordingWriter(stream_path(out, "signal")) as recording:  # the report and the mcap read this copy
         for signal in signals:
             recording.write(signal)
@@ -128,4 +134,4 @@ def _json(path: Path) -> Mapping[str, Any]:
     return json.loads(path.read_text(encoding="utf-8"))
 
 
-__all__ = ["SIGNALS_FILE", "Reevaluation", "ReevaluationError", "RunSettings", "read_signals", "reevaluate", "replay_monitor"]
+__all__ = ["LIVE_EVENTS_FILE", "SIGNALS_FILE", "Reevaluation", "ReevaluationError", "RunSettings", "read_signals", "reevaluate", "replay_monitor"]
