@@ -184,19 +184,40 @@ def test_binding_another_interface_without_tls_is_refused(address: str, tmp_path
         Router(bind=address, auth=False, tls_cert=__file__, tls_key=__file__)
     with pytest.raises(ValueError, match="not loopback"):
         Router(host=address)
-    result = subprocess.run(
-        [sys.executable, "-m", "rei.cli", "sim", str(tmp_path / "case"), "-o", str(tmp_path / "out"),
-         "--bind", address], check=False, capture_output=True, text=True, timeout=60)
-    assert result.returncode == 2, result
-    assert "requires TLS" in result.stderr and "--tls-cert" in result.stderr
-    assert not (tmp_path / "out").exists(), "refused before anything was written"
+    for command in ("sim", "run"):
+        result = subprocess.run(
+            [sys.executable, "-m", "rei.cli", command, str(tmp_path / "case"), "-o", str(tmp_path / "out"),
+             "--bind", address], check=False, capture_output=True, text=True, timeout=60)
+        assert result.returncode == 2, result
+        assert "requires TLS" in result.stderr and "--tls-cert" in result.stderr
+        assert not (tmp_path / "out").exists(), "refused before anything was written"
 
 
-def test_bind_with_tls_serves_authenticated_wss_only(tmp_path: Path):
-    cert, key = tmp_path / "cert.pem", tmp_path / "key.pem"
+def _self_signed(folder: Path) -> tuple[Path, Path]:
+    cert, key = folder / "cert.pem", folder / "key.pem"
     subprocess.run(["openssl", "req", "-x509", "-newkey", "rsa:2048", "-nodes", "-days", "1", "-subj", "/CN=rei-test",
                     "-addext", "subjectAltName=IP:127.0.0.1", "-keyout", str(key), "-out", str(cert)],
                    check=True, capture_output=True, timeout=60)
+    return cert, key
+
+
+def test_rei_run_with_bind_and_tls_exposes_the_router_over_wss_and_still_judges_the_run(
+        run_cli, repo_root: Path, tmp_path: Path):
+    cert, key = _self_signed(tmp_path)
+    result = run_cli("run", repo_root / "examples" / "simple_navigation.rei", "-o", tmp_path / "out", "--no-humans",
+                     "--bind", "0.0.0.0", "--tls-cert", cert, "--tls-key", key, timeout=300)
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "router: wss://0.0.0.0:" in result.stdout and "(TLS, authenticated)" in result.stdout
+    config = json.loads((tmp_path / "out" / "router" / ".crossbar" / "config.json").read_text())
+    endpoints = [t["endpoint"] for worker in config["workers"] for t in worker.get("transports", [])]
+    exposed = [e for e in endpoints if e.get("interface") == "0.0.0.0"]
+    assert len(exposed) == 1 and "tls" in exposed[0]
+    local = [e for e in endpoints if e not in exposed]  # the nodelay endpoints name their interface in a string
+    assert len(local) == 2 and all("interface=127.0.0.1" in e["server_string"] for e in local)
+
+
+def test_bind_with_tls_serves_authenticated_wss_only(tmp_path: Path):
+    cert, key = _self_signed(tmp_path)
     with Router(run_dir=tmp_path / "router", run_id=RUN_ID, bind="0.0.0.0", tls_cert=cert, tls_key=key) as router:
         assert router.exposed_url is not None and router.exposed_url.startswith("wss://0.0.0.0:")
         url = router.exposed_url.replace("0.0.0.0", "127.0.0.1")
