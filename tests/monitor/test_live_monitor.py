@@ -16,20 +16,17 @@ from __future__ import annotations
 import ctypes
 import json
 import os
-import signal
 import socket
 import subprocess
 import threading
-import time
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
 from urllib.parse import urlparse
 
 import pytest
-from autobahn.wamp.exception import ApplicationError
+from monitor_helpers import call_when_registered, kill_group, wait_for
 
-from rei import toolchain
 from rei.wamp.client import WampClient
 from rei.wamp.recording import read_recording
 from rei.wamp.router import Router
@@ -57,25 +54,6 @@ class LiveRun:
     snapshot_after: str
     nodelay: list[int]
     sim_stdout: str
-
-
-def _kill_group(process: subprocess.Popen) -> None:
-    if process.poll() is None:
-        try:
-            os.killpg(process.pid, signal.SIGKILL)
-        except ProcessLookupError:
-            pass
-        process.wait(timeout=10)
-
-
-def _wait_for(predicate, timeout: float, what: str, process: subprocess.Popen | None = None, log: Path | None = None):
-    deadline = time.monotonic() + timeout
-    while not predicate():
-        if process is not None and process.poll() is not None:
-            pytest.fail(f"{what}: the monitor exited with {process.returncode}: {log.read_text() if log else ''}")
-        if time.monotonic() > deadline:
-            pytest.fail(f"{what}: not within {timeout} s" + (f"; monitor stderr: {log.read_text()}" if log else ""))
-        time.sleep(0.05)
 
 
 def _tcp_nodelay_towards(pid: int, port: int) -> list[int]:
@@ -123,24 +101,6 @@ def run_bounded(request: pytest.FixtureRequest, repo_root: Path) -> Callable[...
 
 
 @pytest.fixture(scope="module")
-def monitor_jar(repo_root: Path) -> Path:
-    try:
-        return toolchain.find_jar("monitor", repo_root)
-    except toolchain.ToolchainError as error:
-        problem = str(error)
-    pytest.fail(problem, pytrace=False)
-
-
-@pytest.fixture(scope="module")
-def java_exe() -> str:
-    try:
-        return str(toolchain.find_java().executable)
-    except toolchain.ToolchainError as error:
-        problem = str(error)
-    pytest.fail(problem, pytrace=False)
-
-
-@pytest.fixture(scope="module")
 def live_run(run_cli, repo_root: Path, monitor_jar: Path, java_exe: str, tmp_path_factory) -> Iterator[LiveRun]:
     base = tmp_path_factory.mktemp("live-monitor")
     case = base / "case"
@@ -165,20 +125,20 @@ def live_run(run_cli, repo_root: Path, monitor_jar: Path, java_exe: str, tmp_pat
                  "--signals-out", str(base / "live-signals.jsonl"), "--snapshot-out", str(base / "exit.xmi")],
                 stdout=stdout, stderr=stderr, stdin=subprocess.DEVNULL, start_new_session=True)
         try:
-            _wait_for(lambda: "monitoring " in stderr_path.read_text(), START_S, "monitor start", monitor, stderr_path)
+            wait_for(lambda: "monitoring " in stderr_path.read_text(), START_S, "monitor start", monitor, stderr_path)
             with WampClient(router.rs_url, auth=router.credentials("evaluator")) as client:
                 client.subscribe(f"rei.run.{RUN_ID}.signal", on_signal)
                 snapshot = f"rei.run.{RUN_ID}.snapshot"
-                before = _call_when_registered(client, snapshot, START_S)
+                before = call_when_registered(client, snapshot, START_S)
                 nodelay = _tcp_nodelay_towards(monitor.pid, urlparse(router.ws_url).port)
                 sim = run_cli("sim", case, "-o", out, "--router", router.rs_url, "--auth-file",
                               router.auth_file("simulation"), "--run-id", RUN_ID, "--seed", SEED)
                 assert sim.returncode == 0, sim.stdout + sim.stderr
-                _wait_for(ended.is_set, START_S, "SIG_MISSION_END over WAMP", monitor, stderr_path)
+                wait_for(ended.is_set, START_S, "SIG_MISSION_END over WAMP", monitor, stderr_path)
                 after = client.call(snapshot, timeout=30)  # the monitor lingers after END for this
             code = monitor.wait(timeout=LINGER_S + START_S)
         finally:
-            _kill_group(monitor)
+            kill_group(monitor)
     yield LiveRun(case=case, out=base, live_signals=received, monitor_stdout=stdout_path.read_text(),
                   monitor_stderr=stderr_path.read_text(), monitor_exit=code, snapshot_before=before,
                   snapshot_after=after, nodelay=nodelay, sim_stdout=sim.stdout)
@@ -273,16 +233,3 @@ def test_snapshots_served_over_wamp_reload_into_emf(live_run: LiveRun, java_run,
 
 def test_the_monitors_socket_to_the_router_has_tcp_nodelay(live_run: LiveRun) -> None:
     assert live_run.nodelay == [1], live_run.nodelay  # one WebSocket connection, Nagle off (netty's default)
-
-
-def _call_when_registered(client: WampClient, procedure: str, timeout: float) -> str:
-    """The monitor logs "monitoring" when it has asked for its subscriptions and registration; on a loaded
-    machine the router may not have processed the registration yet, so retry until it answers."""
-    deadline = time.monotonic() + timeout
-    while True:
-        try:
-            return client.call(procedure, timeout=30)
-        except ApplicationError as error:
-            if error.error != "wamp.error.no_such_procedure" or time.monotonic() > deadline:
-                raise
-            time.sleep(0.25)

@@ -26,13 +26,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
-from test_live_monitor import (  # noqa: F401 - java_exe, monitor_jar: the live test's fixtures
-    _call_when_registered,
-    _kill_group,
-    _wait_for,
-    java_exe,
-    monitor_jar,
-)
+from monitor_helpers import call_when_registered, kill_group, wait_for
 
 from rei.wamp import Router, WampClient, WampError, read_recording, stream_path
 
@@ -96,7 +90,7 @@ def _leave(client: WampClient) -> None:
 
 
 @pytest.fixture(scope="module")
-def restart_run(repo_root: Path, monitor_jar: Path, java_exe: str, tmp_path_factory) -> Iterator[RestartRun]:  # noqa: F811
+def restart_run(repo_root: Path, monitor_jar: Path, java_exe: str, tmp_path_factory) -> Iterator[RestartRun]:
     base = tmp_path_factory.mktemp("monitor-reconnect")
     resources = repo_root / "runtime-monitor" / "src" / "test" / "resources"
     case = resources / "cases" / "room"
@@ -115,14 +109,14 @@ def restart_run(repo_root: Path, monitor_jar: Path, java_exe: str, tmp_path_fact
                  str(base / "received"), "--signals-out", str(signals_path), "--snapshot-out", str(base / "exit.xmi")],
                 stdout=stdout, stderr=stderr, stdin=subprocess.DEVNULL, start_new_session=True)
         try:
-            _wait_for(lambda: "monitoring " in stderr_path.read_text(), START_S, "monitor start", monitor, stderr_path)
+            wait_for(lambda: "monitoring " in stderr_path.read_text(), START_S, "monitor start", monitor, stderr_path)
             with contextlib.ExitStack() as clients:  # left after the crash, or on a failure before it
                 evaluator = WampClient(router.rs_url, auth=router.credentials("evaluator")).start()
                 clients.callback(_leave, evaluator)
                 simulation = WampClient(router.rs_url, auth=router.credentials("simulation")).start()
                 clients.callback(_leave, simulation)
                 evaluator.subscribe(topic["signal"], before.append)
-                _call_when_registered(evaluator, topic["snapshot"], START_S)
+                call_when_registered(evaluator, topic["snapshot"], START_S)
                 simulation.publish(topic["mission"], begin)
                 simulation.publish(topic["mission"], task_start)
                 for state in states[: LAST_BEFORE + 1]:
@@ -132,20 +126,20 @@ def restart_run(repo_root: Path, monitor_jar: Path, java_exe: str, tmp_path_fact
                 # its pipeline thread, after them), and the evaluator has every signal so far: the crash loses
                 # exactly the states that are never published
                 received = base / "received" / "state.msgpack"
-                _wait_for(lambda: _messages(received) == LAST_BEFORE + 1, START_S, "states before the crash",
+                wait_for(lambda: _messages(received) == LAST_BEFORE + 1, START_S, "states before the crash",
                           monitor, stderr_path)
                 evaluator.call(topic["snapshot"], timeout=30)
-                _wait_for(lambda: len(before) == len(_lines(signals_path)), START_S, "signals before the crash",
+                wait_for(lambda: len(before) == len(_lines(signals_path)), START_S, "signals before the crash",
                           monitor, stderr_path)
                 states_before = _messages(received)
                 _crash_and_restart(router)
-            _wait_for(lambda: "reconnected to the router (1)" in stderr_path.read_text(), START_S,
+            wait_for(lambda: "reconnected to the router (1)" in stderr_path.read_text(), START_S,
                       "the monitor's reconnection", monitor, stderr_path)
             alive = monitor.poll() is None
             with WampClient(router.rs_url, auth=router.credentials("evaluator")) as evaluator:
                 evaluator.subscribe(topic["signal"], after.append)
                 # answered: the monitor's subscriptions of the new session are in place (registered after them)
-                snapshot_after_restart = _call_when_registered(evaluator, topic["snapshot"], START_S)
+                snapshot_after_restart = call_when_registered(evaluator, topic["snapshot"], START_S)
                 with WampClient(router.rs_url, auth=router.credentials("simulation")) as simulation:
                     for state in states[RESUME:]:
                         simulation.publish(topic["state"], state)
@@ -153,12 +147,12 @@ def restart_run(repo_root: Path, monitor_jar: Path, java_exe: str, tmp_path_fact
                             simulation.publish(topic["mission"], task_fail)  # when the robot stops at the wall
                             task_fail = None
                     simulation.publish(topic["mission"], end)
-                _wait_for(lambda: any(s["signal"] == "SIG_MISSION_END" for s in after), START_S,
+                wait_for(lambda: any(s["signal"] == "SIG_MISSION_END" for s in after), START_S,
                           "SIG_MISSION_END from the restarted router", monitor, stderr_path)
                 snapshot_at_end = evaluator.call(topic["snapshot"], timeout=30)  # the monitor lingers after END
             code = monitor.wait(timeout=LINGER_S + START_S)
         finally:
-            _kill_group(monitor)
+            kill_group(monitor)
     yield RestartRun(out=base, written=_lines(signals_path), before=before, after=after, states_before=states_before,
                      alive_after_crash=alive, snapshot_after_restart=snapshot_after_restart,
                      snapshot_at_end=snapshot_at_end, monitor_stderr=stderr_path.read_text(), monitor_exit=code)
@@ -212,8 +206,8 @@ def test_every_signal_is_written_and_published(restart_run: RestartRun) -> None:
 
 def test_the_monitor_stops_on_time_when_the_router_is_gone_for_good(
     repo_root: Path,
-    monitor_jar: Path,  # noqa: F811
-    java_exe: str,  # noqa: F811
+    monitor_jar: Path,
+    java_exe: str,
     tmp_path: Path,
 ) -> None:
     case = repo_root / "runtime-monitor" / "src" / "test" / "resources" / "cases" / "room"
@@ -227,15 +221,15 @@ def test_the_monitor_stops_on_time_when_the_router_is_gone_for_good(
                  "--until-end", "--timeout", str(timeout_s), "--snapshot-out", str(tmp_path / "exit.xmi")],
                 stdout=subprocess.DEVNULL, stderr=stderr, stdin=subprocess.DEVNULL, start_new_session=True)
         try:
-            _wait_for(lambda: "monitoring " in stderr_path.read_text(), START_S, "monitor start", monitor, stderr_path)
+            wait_for(lambda: "monitoring " in stderr_path.read_text(), START_S, "monitor start", monitor, stderr_path)
             assert router.pid is not None
             os.killpg(router.pid, signal.SIGKILL)  # and never back: the monitor keeps trying until its timeout
-            _wait_for(lambda: "router connection lost: " in stderr_path.read_text(), START_S, "the loss", monitor,
+            wait_for(lambda: "router connection lost: " in stderr_path.read_text(), START_S, "the loss", monitor,
                       stderr_path)
             # the timeout counts from the start; closing without a router is bounded (seconds, not minutes)
             code = monitor.wait(timeout=timeout_s + START_S)
         finally:
-            _kill_group(monitor)
+            kill_group(monitor)
     text = stderr_path.read_text()
     assert code == 0, text
     assert "no END event within" in text and "reconnected" not in text, text
