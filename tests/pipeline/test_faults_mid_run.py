@@ -131,6 +131,7 @@ def test_a_router_restarted_mid_run_is_survived_and_the_lost_data_turns_verdicts
     logged = list(csv.DictReader((out / "events.csv").open()))
     assert [s["seq"] for s in emitted] == list(range(len(emitted))), context
     assert [r["signal"] for r in logged] == [s["signal"] for s in emitted], context
+    assert signals == emitted, context  # the copy the report reads, too
     assert processes_mentioning(out) == []
 
     # the simulation recorded every message: judged again from the recording, nothing is missing

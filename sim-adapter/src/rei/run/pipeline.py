@@ -115,6 +115,7 @@ def run_pipeline(case_dir: Path, out: Path, options: PipelineOptions, *, run_id:
     previous_term = signal.signal(signal.SIGTERM, _raise_interrupted)
     router = monitor = sim = client = signals = viewer = None
     monitor_lost: str | None = None  # how the live monitor ended during the run, if it did
+    emitted: list[Any] = []  # the monitor's own record of its signals, when some were missed live
     try:
         # authenticated: one role per component, secrets in OUT/router/auth/<role>.json (0600), docs/security.md
         router = Router(run_dir=out / "router", run_id=run_id, bind=options.bind, tls_cert=options.tls_cert,
@@ -162,7 +163,9 @@ def run_pipeline(case_dir: Path, out: Path, options: PipelineOptions, *, run_id:
         if monitor_lost is None:
             # in the usual case END arrives live at once; after a router restart it may be in the file only
             evaluator.wait_for_end(timeout=2.0 if router.restarts else 10.0)
-            evaluator.reconcile(read_signals(out / SIGNALS_FILE))
+            # after a reconnection the received stream may have holes or repeats: the monitor's record has neither
+            if evaluator.reconcile(monitor_record := read_signals(out / SIGNALS_FILE)) or router.restarts:
+                emitted = monitor_record
     except _Interrupted as error:
         status, reason = "ERROR", error.reason
     except KeyboardInterrupt:
@@ -181,6 +184,10 @@ def run_pipeline(case_dir: Path, out: Path, options: PipelineOptions, *, run_id:
                 except Exception as error:  # noqa: BLE001 - shutting down; note and go on
                     reason = reason or f"shutdown: {error}"
         signal.signal(signal.SIGTERM, previous_term)
+    if emitted:  # the report and run.mcap read this copy of the signals: make it whole
+        with RecordingWriter(stream_path(out, "signal")) as recording:
+            for message in emitted:
+                recording.write(message)
     sim_summary = _json(out / "sim.json") if (out / "sim.json").is_file() else {}
     sim_duration = sim_summary.get("sim_time", progress["t"])
     if status == "COMPLETED" and monitor_lost is not None:
