@@ -107,6 +107,10 @@ def test_messages_queued_during_the_outage_are_delivered_in_order(crossbar: Path
         sub.subscribe(topic, lambda payload: received.append(payload["seq"]))
         lost = threading.Event()
         pub.on_connection_lost(lost.set)
+        # The router drops events nobody is subscribed to: the queue waits until the subscriber is back.
+        held: list[int] = []
+        pub.hold_after_reconnect(lambda: (_wait(lambda: sub.reconnects == 1, what="subscriber back"),
+                                          held.append(len(received))))
         for seq in range(100):
             pub.publish(topic, {"seq": seq})
         pub.flush()
@@ -115,22 +119,14 @@ def test_messages_queued_during_the_outage_are_delivered_in_order(crossbar: Path
         assert lost.wait(10), "the publisher did not notice the loss"
         for seq in range(100, 400):
             pub.publish(topic, {"seq": seq})  # queued: there is no session to write them to
-        # Hold the publisher's loop thread (as an overloaded machine would) so the subscriber is back first:
-        # otherwise the publisher may drain the outbox before the router knows of any subscriber.
-        gate = threading.Event()
-        assert pub._loop is not None
-        pub._loop.call_soon_threadsafe(gate.wait, 30)
-        try:
-            router.restart()
-            _wait(lambda: sub.reconnects == 1, what="subscriber back")
-        finally:
-            gate.set()
+        router.restart()
         _wait(lambda: pub.reconnects == 1, what="publisher back")
         for seq in range(400, 500):
             pub.publish(topic, {"seq": seq})
         pub.flush()
         _wait(lambda: len(received) >= 500, timeout=10, what="all 500")
     assert received == list(range(500)), "nothing queued is dropped, the order is kept"
+    assert held == [100], "nothing was sent before the gate opened"
 
 
 def test_a_registered_procedure_answers_again_after_the_restart(crossbar: Path):

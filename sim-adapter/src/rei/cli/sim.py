@@ -14,13 +14,21 @@ from __future__ import annotations
 import argparse
 import secrets
 import sys
+import time
+from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from rei.cli._case import case_folder, prepare_output, valid_run_id
 from rei.cli._mission_options import add_mission_options, check_mission_options
 from rei.cli._router_options import add_router_options, check_router_options
 from rei.cli.errors import EXIT_INVALID, EXIT_OK, CommandError
+
+if TYPE_CHECKING:
+    from rei.wamp.client import WampClient
+
+#: Seconds a reconnected simulation waits for the monitor before sending its queue anyway (--wait-for-monitor).
+MONITOR_GATE_S = 10.0
 
 
 def register(subparsers: argparse._SubParsersAction[Any]) -> None:
@@ -47,6 +55,9 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
     parser.add_argument("--reconnect", type=float, default=0.0, metavar="SECONDS",
                         help="with --router: if the connection is lost, keep trying this long to reach the "
                         "restarted router (the simulation waits meanwhile; default 0: the run ends in error)")
+    parser.add_argument("--wait-for-monitor", action="store_true",
+                        help="with --reconnect: after a reconnection, send the queued messages only once the run's "
+                        f"monitor answers again (at most {MONITOR_GATE_S:g} s), so the router does not drop them")
     add_router_options(parser, "sim")
     parser.set_defaults(handler=run)
 
@@ -94,6 +105,8 @@ def run(args: argparse.Namespace) -> int:
 def _check_router_options(args: argparse.Namespace) -> None:
     if not args.reconnect >= 0:
         raise CommandError(f"--reconnect must be a number of seconds >= 0, got {args.reconnect}")
+    if args.wait_for_monitor and not args.reconnect:
+        raise CommandError("--wait-for-monitor applies with --reconnect SECONDS only")
     if args.auth_file is not None and args.router is None:
         raise CommandError("--auth-file applies with --router URL only (a router started here makes its own)")
     if (args.router is not None or args.no_router) and (args.bind or args.tls_cert or args.tls_key):
@@ -116,6 +129,7 @@ class _publisher:
         from rei.wamp.auth import load_credentials
         from rei.wamp.client import WampClient
         from rei.wamp.router import Router
+        from rei.wamp.topics import Topics
 
         if self._args.no_router:
             return None
@@ -135,6 +149,8 @@ class _publisher:
             auth = None
         try:
             self._client = WampClient(url, auth=auth, reconnect=self._args.reconnect).start()
+            if self._args.wait_for_monitor:
+                self._client.hold_after_reconnect(_monitor_gate(self._client, Topics(self._run_id).snapshot))
         except BaseException:
             if self._router is not None:
                 self._router.stop()
@@ -148,6 +164,24 @@ class _publisher:
         finally:
             if self._router is not None:
                 self._router.stop()
+
+
+def _monitor_gate(client: WampClient, snapshot: str) -> Callable[[], None]:
+    """Returns once the monitor's snapshot procedure answers (its new session's subscriptions are in place: it
+    registers after subscribing) or after MONITOR_GATE_S."""
+
+    def gate() -> None:
+        deadline = time.monotonic() + MONITOR_GATE_S
+        while time.monotonic() < deadline:
+            try:
+                client.call(snapshot, timeout=max(0.1, deadline - time.monotonic()))
+                return
+            except Exception:  # noqa: BLE001 - not registered again yet, or the call timed out: retry
+                time.sleep(0.1)
+        print(f"rei sim: the monitor did not answer within {MONITOR_GATE_S:g} s of the reconnection; sending on",
+              file=sys.stderr, flush=True)
+
+    return gate
 
 
 def _progress(sim_time: float, done: int, total: int) -> None:

@@ -22,7 +22,9 @@ backpressure), ``flush()``/``close()`` wait within their timeouts, and ``call()`
 ``subscribe()`` and ``publish_acknowledged()`` raise ``WampError`` at once: a caller that must retry does so from
 an ``on_reconnect`` callback. Messages already written to the dead socket are lost on the wire and not
 retransmitted; subscribers see the gap in ``seq``. When the window passes, the client fails as without
-reconnection.
+reconnection. The router drops an event nobody is subscribed to, so a publisher that is back before its subscribers
+would lose its whole queue: ``hold_after_reconnect(gate)`` keeps the queue until ``gate()`` returns (e.g. once
+the subscriber's procedure answers again).
 
 ``close()`` flushes: it waits until the outbox is empty, then leaves the realm and waits for the router's GOODBYE.
 The router handles a connection's messages in order, so its GOODBYE proves every earlier PUBLISH was dispatched.
@@ -193,6 +195,8 @@ class WampClient:
         self._reconnects = 0
         self._reconnect_callbacks: list[Callable[[], object]] = []
         self._lost_callbacks: list[Callable[[], object]] = []
+        self._resume_gates: list[Callable[[], object]] = []
+        self._held = False  # loop thread only: queued messages wait for the resume gates after a reconnection
         self._notifier: threading.Thread | None = None
         self._failure: str | None = None
         self._closing = False
@@ -264,6 +268,11 @@ class WampClient:
         """Run ``callback()`` after each reconnection, once subscriptions and registrations are restored, on a
         thread of its own (it may ``call()`` procedures)."""
         self._reconnect_callbacks.append(callback)
+
+    def hold_after_reconnect(self, gate: Callable[[], object]) -> None:
+        """After each reconnection, keep the queued messages until ``gate()`` returns (it runs on a thread of its
+        own and may ``call()`` procedures; it must bound its own wait). An exception counts as returning."""
+        self._resume_gates.append(gate)
 
     def on_connection_lost(self, callback: Callable[[], object]) -> None:
         """Run ``callback()`` when a connection is lost and reconnection starts, on a thread of its own."""
@@ -414,9 +423,12 @@ class WampClient:
             except Exception as error:  # noqa: BLE001 - whatever failed this attempt, the next one may succeed
                 last_error = str(error) or type(error).__name__
             else:
+                self._held = bool(self._resume_gates)
                 self._go_live(*live)
                 self._reconnects += 1
                 self._notify(self._reconnect_callbacks)
+                if self._held:
+                    self._pass_gates(loop)
                 return
             remaining = deadline - loop.time()
             if remaining <= 0:
@@ -445,6 +457,24 @@ class WampClient:
 
         self._notifier = threading.Thread(target=run, name=f"{self._name}-notify", daemon=True)
         self._notifier.start()
+
+    def _pass_gates(self, loop: asyncio.AbstractEventLoop) -> None:
+        """Run the resume gates off the loop thread, then let the drain task go on."""
+        gates = tuple(self._resume_gates)
+
+        def run() -> None:
+            for gate in gates:
+                try:
+                    gate()
+                except Exception:  # noqa: BLE001 - a failing gate must not keep the queue forever
+                    _log.exception("%s: resume gate %r failed", self._name, gate)
+            loop.call_soon_threadsafe(self._release_hold)
+
+        threading.Thread(target=run, name=f"{self._name}-resume", daemon=True).start()
+
+    def _release_hold(self) -> None:
+        self._held = False
+        self._wake_drain()
 
     def _release_waiters(self) -> None:
         # Unblock a producer waiting in publish(): it then sees the failure.
@@ -493,7 +523,7 @@ class WampClient:
             while transport.get_write_buffer_size() > LOW_WATER and not transport.is_closing():
                 await asyncio.sleep(0.0005)
         transport = self._transport
-        if self._failure is not None or transport is None or transport.is_closing():
+        if self._failure is not None or transport is None or transport.is_closing() or self._held:
             return None
         return self._session
 

@@ -83,8 +83,9 @@ ROLE_GRANTS: dict[str, tuple[tuple[str, tuple[str, ...]], ...]] = {
     "mission-executor": (("mission", ("publish",)), ("mission_info", ("register",))),
     # The simulator hosts the collector and the mission executor in one session: WAMP orders events per
     # publisher session only, and the monitor needs state and mission events in publication order.
+    # snapshot (read-only): after a router restart it holds its queue until the monitor answers again
     "simulation": (("state", ("publish",)), ("config", ("register",)),
-                   ("mission", ("publish",)), ("mission_info", ("register",))),
+                   ("mission", ("publish",)), ("mission_info", ("register",)), ("snapshot", ("call",))),
     "monitor": (("state", ("subscribe",)), ("mission", ("subscribe",)), ("signal", ("publish",)),
                 ("snapshot", ("register",)), ("config", ("call",))),
     # read-only: subscriptions plus the read-only procedures (snapshot: readiness probe of `rei run`)
