@@ -33,8 +33,13 @@ def _realtime_run(rei_script: Path, repo_root: Path, out: Path) -> Iterator[subp
         yield process
     finally:
         if process.poll() is None:
-            os.killpg(process.pid, signal.SIGKILL)
-            process.wait()
+            # SIGTERM first: `rei run` then stops its children, whose sessions a SIGKILL of its group would miss
+            os.killpg(process.pid, signal.SIGTERM)
+            try:
+                process.wait(timeout=60)
+            except subprocess.TimeoutExpired:
+                os.killpg(process.pid, signal.SIGKILL)
+                process.wait()
 
 
 def _await_rows(out: Path, rows: int) -> None:
