@@ -9,6 +9,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 
 import org.rei.monitor.config.CaseReader;
 import org.rei.monitor.engine.DrlSources;
@@ -19,18 +20,22 @@ import org.rei.monitor.replay.Recording;
 import org.rei.monitor.replay.Replayer;
 import org.rei.monitor.signals.SignalFile;
 import org.rei.monitor.signals.SignalPublisher;
+import org.rei.monitor.signals.UtilitiesFile;
 import org.rei.monitor.wamp.LiveMonitor;
 import org.rei.monitor.wamp.RouterCredentials;
+import org.rei.vepl.compiler.VeplLoader;
 
 /**
- * {@code java -jar rei-monitor.jar}: live ({@code --router URL --run ID}) or replay ({@code --replay FILE|DIR}).
- * Exit codes: 0 done, 1 runtime failure, 2 bad command line.
+ * {@code java -jar rei-monitor.jar}: live ({@code --router URL --run ID}) or replay ({@code --replay FILE|DIR}), or
+ * {@code --compile-only} to check a patterns folder before a run. Exit codes: 0 done, 1 runtime failure (also
+ * patterns that do not validate), 2 bad command line.
  */
 public final class Main {
 
 	static final String USAGE = """
 			usage: java -jar rei-monitor.jar --router ws://HOST:PORT/ws --run ID [options]   (live)
 			       java -jar rei-monitor.jar --replay STATE.msgpack|RUN_DIR --case DIR [options]   (replay)
+			       java -jar rei-monitor.jar --compile-only [--patterns DIR] [options]   (check the rules, exit)
 			options:
 			  --case DIR           world.json + monitor.json (live: default is the run's config RPC)
 			  --mission FILE       replay: the mission stream (default: mission.msgpack beside the state stream)
@@ -41,6 +46,9 @@ public final class Main {
 			  --patterns DIR       .vepl patterns compiled at start, added to the default patterns (cep/patterns/)
 			  --no-default-patterns  only the patterns of --patterns DIR
 			  --rules DIR          hand-written .drl transition rules instead of any VEPL patterns
+			  --utilities-out FILE write the utilities the patterns in use declare, as JSON {"SIG_X": -2.0, ...},
+			                       once the rules are compiled, before any message ({} with --rules)
+			  --compile-only       compile the queries and rules (and write --utilities-out), then exit
 			  --snapshot-out FILE  write the runtime model as XMI on exit (live default: runtime-<run>.xmi)
 			  --record DIR         live: record the received streams (state.msgpack, mission.msgpack)
 			  --signals-out FILE   write every signal as a JSON line (exact numbers, for comparisons)
@@ -67,21 +75,45 @@ public final class Main {
 			return 2;
 		}
 		try {
-			return o.replay != null ? replay(o, out, err) : live(o, out, err);
+			return o.compileOnly ? compileOnly(o, err) : o.replay != null ? replay(o, out, err) : live(o, out, err);
+		} catch (VeplLoader.VeplException e) { // the message lists file:line:column of every error
+			err.println("rei-monitor: " + e.getMessage());
+			return 1;
 		} catch (Exception e) {
 			err.println("rei-monitor: " + e);
 			return 1;
 		}
 	}
 
-	static List<DrlSources.Source> rules(Options o) throws Exception {
+	/** The session's DRL (queries, then transition rules) and the utilities the patterns declare. */
+	record Rules(List<DrlSources.Source> drl, Map<String, Double> utilities) {
+	}
+
+	/** Compiles the rules and writes {@code --utilities-out} at once, before any message is processed. */
+	static Rules rules(Options o) throws Exception {
 		List<DrlSources.Source> queries = o.queries != null ? DrlSources.folder(o.queries)
 				: DrlSources.packaged(DrlSources.QUERIES);
-		List<DrlSources.Source> rules = new ArrayList<>(queries);
-		// VEPL patterns are compiled here, at start: a user's folder needs no rebuild of the monitor
-		rules.addAll(o.rules != null ? DrlSources.folder(o.rules)
-				: PatternRules.compile(PatternRules.select(!o.noDefaultPatterns, o.patterns), queries));
-		return rules;
+		List<DrlSources.Source> drl = new ArrayList<>(queries);
+		Map<String, Double> utilities = Map.of(); // hand-written DRL declares none
+		if (o.rules != null) {
+			drl.addAll(DrlSources.folder(o.rules));
+		} else {
+			// VEPL patterns are compiled here, at start: a user's folder needs no rebuild of the monitor
+			PatternRules.Compiled patterns = PatternRules
+					.compileWithUtilities(PatternRules.select(!o.noDefaultPatterns, o.patterns), queries);
+			drl.addAll(patterns.drl());
+			utilities = patterns.utilities();
+		}
+		if (o.utilitiesOut != null) {
+			UtilitiesFile.write(o.utilitiesOut, utilities);
+		}
+		return new Rules(drl, utilities);
+	}
+
+	private static int compileOnly(Options o, PrintStream err) throws Exception {
+		Rules r = rules(o);
+		err.printf("compiled %d rule files, %d signals declared%n", r.drl().size(), r.utilities().size());
+		return 0;
 	}
 
 	private static int replay(Options o, PrintStream out, PrintStream err) throws Exception {
@@ -97,12 +129,13 @@ public final class Main {
 			mission = state.resolveSibling("mission.msgpack");
 		}
 		CaseReader.Case c = CaseReader.readFolder(o.caseDir);
+		List<DrlSources.Source> rules = rules(o).drl();
 		SignalPublisher signals = new SignalPublisher();
 		if (!o.quiet) {
 			signals.addListener(s -> out.println(s.line()));
 		}
 		try (SignalFile file = o.signalsOut != null ? new SignalFile(o.signalsOut) : null;
-				Monitor m = new Monitor(o.run, c.world(), c.monitor(), rules(o), signals, err::println, null)) {
+				Monitor m = new Monitor(o.run, c.world(), c.monitor(), rules, signals, err::println, null)) {
 			if (file != null) {
 				signals.addListener(file);
 			}
@@ -122,7 +155,7 @@ public final class Main {
 
 	private static int live(Options o, PrintStream out, PrintStream err) throws Exception {
 		CaseReader.Case given = o.caseDir != null ? CaseReader.readFolder(o.caseDir) : null;
-		List<DrlSources.Source> rules = rules(o);
+		List<DrlSources.Source> rules = rules(o).drl();
 		Path snapshotOut = o.snapshotOut != null ? o.snapshotOut : Path.of("runtime-" + o.run + ".xmi");
 		try (SignalFile file = o.signalsOut != null ? new SignalFile(o.signalsOut) : null;
 				LiveMonitor live = new LiveMonitor(o.router, o.realm,
@@ -191,6 +224,8 @@ public final class Main {
 		Path snapshotOut;
 		Path record;
 		Path signalsOut;
+		Path utilitiesOut;
+		boolean compileOnly;
 		boolean untilEnd;
 		boolean quiet;
 		double timeoutSeconds;
@@ -205,8 +240,9 @@ public final class Main {
 				case "--until-end" -> o.untilEnd = true;
 				case "--quiet" -> o.quiet = true;
 				case "--no-default-patterns" -> o.noDefaultPatterns = true;
+				case "--compile-only" -> o.compileOnly = true;
 				case "--router", "--run", "--realm", "--auth-file", "--replay", "--mission", "--case", "--queries", "--rules", "--patterns",
-						"--snapshot-out", "--record", "--signals-out", "--timeout", "--linger" -> {
+						"--snapshot-out", "--record", "--signals-out", "--utilities-out", "--timeout", "--linger" -> {
 					if (i + 1 >= args.length) {
 						throw new IllegalArgumentException(a + " needs a value");
 					}
@@ -228,6 +264,7 @@ public final class Main {
 					case "--snapshot-out" -> o.snapshotOut = Path.of(v);
 					case "--record" -> o.record = Path.of(v);
 					case "--signals-out" -> o.signalsOut = Path.of(v);
+					case "--utilities-out" -> o.utilitiesOut = Path.of(v);
 					case "--linger" -> o.lingerSeconds = seconds(a, v, true);
 					default -> o.timeoutSeconds = seconds(a, v, false);
 					}
@@ -235,7 +272,12 @@ public final class Main {
 				default -> throw new IllegalArgumentException("unknown argument " + a);
 				}
 			}
-			if ((o.router == null) == (o.replay == null)) {
+			if (o.compileOnly) {
+				if (o.router != null || o.replay != null) {
+					throw new IllegalArgumentException("--compile-only starts neither live mode nor a replay: "
+							+ "not with --router or --replay");
+				}
+			} else if ((o.router == null) == (o.replay == null)) {
 				throw new IllegalArgumentException("give exactly one of --router and --replay");
 			}
 			if (o.router != null && !runGiven) {

@@ -14,6 +14,8 @@ import java.nio.file.FileSystemAlreadyExistsException;
 import java.nio.file.FileSystems;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Collections;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -85,6 +87,21 @@ public final class PatternRules {
 	 */
 	public static List<DrlSources.Source> compile(List<VeplLoader.Source> patterns, List<DrlSources.Source> queries)
 			throws VeplLoader.VeplException {
+		return compileWithUtilities(patterns, queries).drl();
+	}
+
+	/**
+	 * The DRL of {@link #compile} and the utility every loaded pattern declares for its signals.
+	 *
+	 * @param drl       the generated rule files
+	 * @param utilities signal -> declared utility, in declaration order; null for a signal declared without one
+	 */
+	public record Compiled(List<DrlSources.Source> drl, Map<String, Double> utilities) {
+	}
+
+	/** As {@link #compile}, keeping the declared utilities (the evaluator scores signals with them). */
+	public static Compiled compileWithUtilities(List<VeplLoader.Source> patterns, List<DrlSources.Source> queries)
+			throws VeplLoader.VeplException {
 		Set<String> known = new TreeSet<>();
 		for (DrlSources.Source q : queries) {
 			known.addAll(KnownQueries.inDrl(q.text()));
@@ -94,6 +111,7 @@ public final class PatternRules {
 		for (CompiledRules.DrlFile f : compiled.files()) {
 			out.add(new DrlSources.Source("patterns/" + f.name(), f.text()));
 		}
-		return out;
+		// a copy that keeps the order and the nulls (Map.copyOf would reject the nulls)
+		return new Compiled(List.copyOf(out), Collections.unmodifiableMap(new LinkedHashMap<>(compiled.utilities())));
 	}
 }
