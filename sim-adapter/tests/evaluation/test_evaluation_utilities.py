@@ -1,13 +1,26 @@
 # SPDX-License-Identifier: EPL-2.0
-"""The utility table: Table 3 defaults, YAML overrides and the errors that name file and key."""
+"""The utility table: Table 3 defaults, the patterns' declared utilities, YAML overrides and the errors that name
+file and key."""
 
 from __future__ import annotations
 
+import csv
+import json
 from pathlib import Path
 
 import pytest
 
-from rei.evaluation import DEFAULT_UTILITIES, KNOWN_SIGNALS, UtilityError, load_utilities
+from rei.evaluation import (
+    DEFAULT_UTILITIES,
+    KNOWN_SIGNALS,
+    Evaluator,
+    UtilityError,
+    load_declared_utilities,
+    load_utilities,
+    replay,
+)
+
+from .traces import MISSION, MONITOR, WORLD, TraceBuilder
 
 TABLE_3 = {
     "SIG_MISSION_BEGIN": 20, "SIG_MISSION_END": 20, "SIG_MISSION_TASK_START": 5,
@@ -64,3 +77,74 @@ def test_bad_utility_files_name_file_and_key(tmp_path: Path, text: str, expected
 def test_missing_utility_file_is_an_error_naming_it(tmp_path: Path) -> None:
     with pytest.raises(UtilityError, match="missing.yaml: cannot read the utility file"):
         load_utilities(tmp_path / "missing.yaml")
+
+
+# --- utilities the VEPL patterns declare (the monitor's --utilities-out): YAML > patterns > Table 3 > 0 ---
+
+DECLARED = {"SIG_GEOM_FAR_TRANSIT_CLOSE": -3.0, "SIG_LASER_FAR_TRANSIT_CLOSE": None,
+            "SIG_USER_TASK_STARTED": 7.0, "SIG_USER_UNSCORED": None}
+
+
+def test_declared_utilities_override_table_3_and_add_the_users_signals() -> None:
+    table = load_utilities(None, DECLARED, patterns="patterns (defaults + mine)")
+    assert table["SIG_GEOM_FAR_TRANSIT_CLOSE"] == -3  # declared beats Table 3
+    assert table["SIG_USER_TASK_STARTED"] == 7  # a new signal is worth what its pattern says
+    assert table["SIG_LASER_FAR_TRANSIT_CLOSE"] == 0 and table["SIG_MISSION_BEGIN"] == 20  # Table 3 still holds
+    assert "SIG_USER_UNSCORED" in table and table["SIG_USER_UNSCORED"] == 0  # declared without one: known, 0
+    assert table.utility("SIG_NOBODY_DECLARED") == 0 and "SIG_NOBODY_DECLARED" not in table
+    assert table.source == "Table 3 + patterns (defaults + mine)"
+
+
+def test_yaml_beats_the_declared_utilities_and_may_name_the_users_signals(tmp_path: Path) -> None:
+    path = tmp_path / "u.yaml"
+    path.write_text("SIG_GEOM_FAR_TRANSIT_CLOSE: -4\nSIG_USER_UNSCORED: 2.5\n")
+    table = load_utilities(path, DECLARED)
+    assert table["SIG_GEOM_FAR_TRANSIT_CLOSE"] == -4 and table["SIG_USER_UNSCORED"] == 2.5
+    assert table["SIG_USER_TASK_STARTED"] == 7
+    assert table.source == f"Table 3 + patterns + {path}"
+    with pytest.raises(UtilityError, match="unknown signal 'SIG_USER_UNSCORED'"):
+        load_utilities(path)  # without the patterns the user's signal is unknown
+
+
+def test_hand_written_rules_declare_nothing_and_change_no_utility() -> None:
+    assert load_utilities(None, {}).source == "Table 3 + patterns"  # the monitor's --rules DIR writes {}
+    assert dict(load_utilities(None, {})) == dict(DEFAULT_UTILITIES)
+
+
+def test_the_declared_utilities_file_reads_numbers_and_nulls(tmp_path: Path) -> None:
+    path = tmp_path / "utilities.json"
+    path.write_text('{"SIG_MISSION_BEGIN": 20.0, "SIG_USER_X": -2, "SIG_LASER_FAR_TRANSIT_CLOSE": null}\n')
+    assert load_declared_utilities(path) == {"SIG_MISSION_BEGIN": 20.0, "SIG_USER_X": -2.0,
+                                             "SIG_LASER_FAR_TRANSIT_CLOSE": None}
+    (tmp_path / "empty.json").write_text("{}")
+    assert load_declared_utilities(tmp_path / "empty.json") == {}
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    ("[1]", "expected a JSON object"),
+    ('{"SIG_X": "high"}', "SIG_X: the utility must be a finite number or null, got 'high'"),
+    ('{"SIG_X": true}', "SIG_X: the utility must be a finite number or null, got True"),
+    ('{"SIG_X": NaN}', "SIG_X: the utility must be a finite number or null, got nan"),
+    ('{"SIG_X": ', "not valid JSON"),
+])
+def test_a_bad_declared_utilities_file_names_file_and_key(tmp_path: Path, text: str, expected: str) -> None:
+    path = tmp_path / "utilities.json"
+    path.write_text(text)
+    with pytest.raises(UtilityError) as error:
+        load_declared_utilities(path)
+    assert str(error.value).startswith(f"{path}: ") and expected in str(error.value)
+    with pytest.raises(UtilityError, match="cannot read the declared utilities"):
+        load_declared_utilities(tmp_path / "missing.json")
+
+
+def test_the_evaluator_scores_a_declared_signal_and_does_not_count_it_unknown(tmp_path: Path) -> None:
+    evaluator = Evaluator(tmp_path, utilities=load_utilities(None, DECLARED, patterns="patterns (mine)"),
+                          mission_info=MISSION, monitor_config=MONITOR, world=WORLD)
+    messages = TraceBuilder().begin().at(1.0, "SIG_USER_TASK_STARTED", "task_0").at(2.0, "SIG_OTHER").messages
+    summary = replay(messages, evaluator, run_id="r")
+    rows = list(csv.DictReader((tmp_path / "events.csv").open()))
+    assert [(r["signal"], r["utility"], r["total"]) for r in rows] == [
+        ("SIG_MISSION_BEGIN", "20", "20"), ("SIG_MISSION_TASK_START", "5", "25"),
+        ("SIG_USER_TASK_STARTED", "7", "32"), ("SIG_OTHER", "0", "32")]
+    assert summary.unknown_signals == {"SIG_OTHER": 1}
+    assert json.loads((tmp_path / "summary.json").read_text())["utilities"] == "Table 3 + patterns (mine)"

@@ -2,8 +2,9 @@
 """`rei run CASE -o OUT`: generate, start the router, the monitor and the simulation, evaluate, report.
 
 Exit 0: every verdict passes; 1: a verdict fails; 2: an error (a part died, the run was interrupted, bad
-arguments). OUT gets events.csv, summary.json, verdicts.xml, the recorded streams (streams/), the monitor's
-model (runtime.xmi) and each part's log.
+arguments, patterns that do not compile). OUT gets events.csv, summary.json, verdicts.xml, the recorded streams
+(streams/), the monitor's model (runtime.xmi), what its patterns declare (utilities.json), a copy of the user's
+patterns (patterns/) and each part's log.
 """
 
 from __future__ import annotations
@@ -12,13 +13,16 @@ import argparse
 import secrets
 import sys
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from rei.cli._case import case_folder, prepare_output, valid_run_id
 from rei.cli._mission_options import add_mission_options, check_mission_options, mission_argv
 from rei.cli._outcome import print_verdicts, write_views
 from rei.cli._router_options import add_router_options, check_router_options
 from rei.cli.errors import CommandError
+
+if TYPE_CHECKING:
+    from rei.run.patterns import PatternSelection
 
 
 def register(subparsers: argparse._SubParsersAction[Any]) -> None:
@@ -30,7 +34,12 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
     parser.add_argument("-o", "--output", required=True, metavar="OUT", help="output folder")
     add_mission_options(parser)
     parser.add_argument("--utilities", metavar="YAML", type=Path,
-                        help="utility per signal, overriding the defaults of thesis Table 3")
+                        help="utility per signal, overriding the patterns' and the defaults of thesis Table 3")
+    parser.add_argument("--patterns", metavar="DIR", type=Path,
+                        help="the *.vepl of DIR: temporal patterns the monitor runs besides the default ones "
+                        "(docs/vepl.md); checked before the run, kept in OUT/patterns/")
+    parser.add_argument("--no-default-patterns", action="store_true",
+                        help="with --patterns: only the patterns of DIR")
     parser.add_argument("--run-id", metavar="ID", help="identifier of the run in topic names (default: random)")
     parser.add_argument("--view", action="store_true",
                         help="watch the run live in the browser: serves a page on 127.0.0.1 and prints its URL")
@@ -43,11 +52,12 @@ def run(args: argparse.Namespace) -> int:
 
     check_mission_options(args)
     check_router_options(args)
+    patterns, declared = _check_patterns(args)
     if args.utilities is not None:
         from rei.evaluation import UtilityError, load_utilities
 
         try:
-            load_utilities(args.utilities)
+            load_utilities(args.utilities, declared)  # it may name the signals of the user's patterns
         except UtilityError as error:
             raise CommandError(str(error)) from None
     run_id = args.run_id or secrets.token_hex(6)
@@ -64,7 +74,8 @@ def run(args: argparse.Namespace) -> int:
 
     options = PipelineOptions(sim_args=tuple(mission_argv(args)), utilities=args.utilities,
                               humans=not args.no_humans, laser=args.laser != "none", view=args.view,
-                              bind=args.bind, tls_cert=_path(args.tls_cert), tls_key=_path(args.tls_key))
+                              bind=args.bind, tls_cert=_path(args.tls_cert), tls_key=_path(args.tls_key),
+                              patterns=patterns, declared=declared)
     result = run_pipeline(case_dir, out, options,
                           run_id=run_id, on_progress=show)
     if sys.stderr.isatty():
@@ -72,6 +83,22 @@ def run(args: argparse.Namespace) -> int:
     print_verdicts(result.summary)
     write_views(out)
     return result.exit_code
+
+
+def _check_patterns(args: argparse.Namespace) -> tuple[PatternSelection, dict[str, float | None] | None]:
+    """The monitor's patterns, compiled now so a bad one fails before anything starts (with file:line:column);
+    with them, what they declare (None for the defaults only, which need no check)."""
+    from rei.run.patterns import PatternError, PatternSelection, check
+
+    if args.patterns is None:
+        if args.no_default_patterns:
+            raise CommandError("--no-default-patterns needs --patterns DIR")
+        return PatternSelection(), None
+    selection = PatternSelection(args.patterns.resolve(), defaults=not args.no_default_patterns)
+    try:
+        return selection, check(selection)
+    except PatternError as error:
+        raise CommandError(str(error)) from None
 
 
 def _path(value: str | None) -> Path | None:

@@ -3,7 +3,8 @@
 
 Semantics and file formats: docs/evaluation.md. Typical use (``rei run``)::
 
-    evaluator = Evaluator(out, utilities=load_utilities(path), mission_info=None,
+    declared = load_declared_utilities(out / "utilities.json")  # what the monitor's patterns declare
+    evaluator = Evaluator(out, utilities=load_utilities(path, declared), mission_info=None,
                           monitor_config=monitor_json, world=world_json)
     attach(client, run_id, evaluator)              # live; or replay(signals, evaluator) offline
     ...                                            # evaluator.total for progress
@@ -23,6 +24,7 @@ from rei.evaluation.utilities import (
     UtilityError,
     UtilityTable,
     default_utilities,
+    load_declared_utilities,
     load_utilities,
 )
 from rei.evaluation.verdicts import REQUIREMENTS, judge
@@ -53,6 +55,7 @@ __all__ = [
     "attach",
     "default_utilities",
     "judge",
+    "load_declared_utilities",
     "load_utilities",
     "replay",
 ]

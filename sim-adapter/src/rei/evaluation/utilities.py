@@ -1,5 +1,9 @@
 # SPDX-License-Identifier: EPL-2.0
-"""The utility of each signal (thesis 5.2.1, Table 3) and the YAML file that overrides it.
+"""The utility of each signal (thesis 5.2.1, Table 3), the utilities the VEPL patterns declare, and the YAML file
+that overrides both.
+
+Precedence, highest first (docs/evaluation.md, "Utilities"): the user's YAML file, the utility the patterns in use
+declare (``signal SIG_X utility -2``; the monitor writes them with ``--utilities-out``), the defaults below, 0.
 
 The total utility of a mission is the plain sum of its signals' utilities (thesis 5.2). Table 3 leaves some
 signals out; their defaults are chosen here (docs/evaluation.md, "Utilities"):
@@ -11,11 +15,13 @@ signals out; their defaults are chosen here (docs/evaluation.md, "Utilities"):
   makes the affected verdicts ``error`` instead (rei.evaluation.verdicts).
 
 A signal that is in no table at run time is worth 0 and counted by the evaluator (summary
-``unknown_signals``).
+``unknown_signals``). A signal a pattern declares without a utility is known: it falls through to the defaults,
+else 0, and is not counted.
 """
 
 from __future__ import annotations
 
+import json
 import math
 import os
 from collections.abc import Iterator, Mapping
@@ -77,14 +83,28 @@ def default_utilities() -> UtilityTable:
     return UtilityTable(DEFAULT_UTILITIES)
 
 
-def load_utilities(path: str | os.PathLike[str] | None = None) -> UtilityTable:
-    """The defaults, overridden by the mapping ``signal: number`` in the YAML file ``path`` (None: defaults).
+#: How ``UtilityTable.source`` names the defaults when other sources are combined with them.
+TABLE_3 = "Table 3"
 
-    Only the listed signals change. A key that is not a known signal, or a value that is not a finite number,
-    raises UtilityError naming the file and the key: a typo must not silently score a run with the default.
+
+def load_utilities(path: str | os.PathLike[str] | None = None,
+                   declared: Mapping[str, float | None] | None = None, *,
+                   patterns: str = "patterns") -> UtilityTable:
+    """The defaults, overridden by the utilities the patterns ``declared`` (signal -> number, or None for a
+    signal declared without one), overridden in turn by the mapping ``signal: number`` in the YAML file ``path``.
+
+    Only the listed signals change. A YAML key that is neither a known nor a declared signal, or a value that is
+    not a finite number, raises UtilityError naming the file and the key: a typo must not silently score a run
+    with the default. ``patterns`` names the declaring patterns in ``source`` ("Table 3 + patterns + FILE");
+    without ``declared`` the source is "defaults" or the file, as before.
     """
+    values = dict(DEFAULT_UTILITIES)
+    sources = [TABLE_3]
+    if declared is not None:
+        values.update(_declared(declared))
+        sources.append(patterns)
     if path is None:
-        return default_utilities()
+        return UtilityTable(values, source=" + ".join(sources) if declared is not None else "defaults")
     path = Path(path)
     try:
         text = path.read_text(encoding="utf-8")
@@ -98,12 +118,49 @@ def load_utilities(path: str | os.PathLike[str] | None = None) -> UtilityTable:
         data = {}
     if not isinstance(data, dict):
         raise UtilityError(f"{path}: expected a mapping 'SIGNAL: utility', got {type(data).__name__}")
-    values = dict(DEFAULT_UTILITIES)
     for key, value in data.items():
-        if key not in KNOWN_SIGNALS:
-            known = ", ".join(sorted(KNOWN_SIGNALS))
+        if key not in values:
+            known = ", ".join(sorted(values))
             raise UtilityError(f"{path}: unknown signal {key!r} (known: {known})")
-        if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
+        if not _is_number(value):
             raise UtilityError(f"{path}: {key}: the utility must be a finite number, got {value!r}")
         values[key] = float(value)
-    return UtilityTable(values, source=str(path))
+    return UtilityTable(values, source=" + ".join((*sources, str(path))) if declared is not None else str(path))
+
+
+def load_declared_utilities(path: str | os.PathLike[str]) -> dict[str, float | None]:
+    """The monitor's ``--utilities-out`` file: ``{"SIG_X": -2.0, "SIG_Y": null, ...}`` (null: no utility declared).
+
+    Raises UtilityError naming the file for anything else.
+    """
+    path = Path(path)
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except OSError as error:
+        raise UtilityError(f"{path}: cannot read the declared utilities: {error.strerror or error}") from None
+    except ValueError as error:
+        raise UtilityError(f"{path}: not valid JSON: {error}") from None
+    if not isinstance(data, dict):
+        raise UtilityError(f"{path}: expected a JSON object 'SIGNAL: utility', got {type(data).__name__}")
+    for key, value in data.items():
+        if value is not None and not _is_number(value):
+            raise UtilityError(f"{path}: {key}: the utility must be a finite number or null, got {value!r}")
+    return {key: None if value is None else float(value) for key, value in data.items()}
+
+
+def _declared(declared: Mapping[str, float | None]) -> dict[str, float]:
+    """Declared signals as table entries: a declared utility wins over the default; a signal declared without
+    one keeps its default, else 0 (it is known, so it is not counted as unknown)."""
+    out: dict[str, float] = {}
+    for name, value in declared.items():
+        if value is None:
+            out[name] = DEFAULT_UTILITIES.get(name, 0.0)
+        elif not _is_number(value):
+            raise UtilityError(f"declared utility of {name}: expected a finite number or None, got {value!r}")
+        else:
+            out[name] = float(value)
+    return out
+
+
+def _is_number(value: object) -> bool:
+    return not isinstance(value, bool) and isinstance(value, int | float) and math.isfinite(value)

@@ -6,14 +6,17 @@
                       -> evaluator (here) scores them, writes events.csv, summary.json, verdicts.xml
 
 The monitor is started first and the simulation only once the monitor answers its snapshot procedure: the
-router has then processed its subscriptions, so the first state message is not lost.
+router has then processed its subscriptions, so the first state message is not lost. By then the monitor has
+also written what its patterns declare (``OUT/utilities.json``), so the evaluator is made and subscribed
+between the two - still before the simulation, hence before the first signal.
 
 Faults during the run (docs/security.md, "Faults mid-run"):
 
 - the router dies: it is restarted on the same ports with the same secrets and every component reconnects;
-  what was lost in flight shows as the monitor's SIG_MONITOR_DATA_GAP, which turns the verdicts that would pass
-  into errors. Signals the evaluator missed while reconnecting are recovered from the monitor's own signal
-  file (``OUT/signals.jsonl``) at the end.
+  the simulation holds what it queued meanwhile until the monitor answers again (the router drops events nobody
+  is subscribed to). What was lost inside the dying router shows as the monitor's SIG_MONITOR_DATA_GAP, which
+  turns the verdicts that would pass into errors. Signals the evaluator missed while reconnecting are recovered
+  from the monitor's own signal file (``OUT/signals.jsonl``) at the end.
 - the monitor dies: the simulation goes on (it records everything it publishes); at the end the recorded
   streams are replayed through a fresh monitor (``rei.run.reevaluate``) - the same signals the live monitor
   would have given - and the live event log is kept as ``events-live.csv``.
@@ -27,12 +30,14 @@ import json
 import signal
 import sys
 import time
-from collections.abc import Callable
-from dataclasses import dataclass
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from rei import toolchain
+from rei.run.patterns import UTILITIES_FILE, PatternSelection
+from rei.run.patterns import record as record_patterns
 from rei.run.processes import ManagedProcess
 from rei.run.reevaluate import (
     LIVE_EVENTS_FILE,
@@ -72,6 +77,10 @@ class PipelineOptions:
     bind: str | None = None  # also expose the router on this interface (TLS required; docs/security.md)
     tls_cert: Path | None = None
     tls_key: Path | None = None
+    patterns: PatternSelection = field(default_factory=PatternSelection)  # the monitor's VEPL patterns
+    # what they declare when checked before the run (rei.run.patterns.check): the live view starts before the
+    # monitor and scores with it; the evaluator uses the monitor's own OUT/utilities.json
+    declared: Mapping[str, float | None] | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -101,14 +110,26 @@ class _Interrupted(Exception):
 
 def run_pipeline(case_dir: Path, out: Path, options: PipelineOptions, *, run_id: str,
                  on_progress: Callable[[Progress], None] | None = None) -> PipelineResult:
-    from rei.evaluation import Evaluator, VerdictSettings, attach, load_utilities
+    from rei.evaluation import (
+        Evaluator,
+        UtilityTable,
+        VerdictSettings,
+        attach,
+        load_declared_utilities,
+        load_utilities,
+    )
 
     world = _json(case_dir / "world.json")
     monitor_config = _json(case_dir / "monitor.json")
     topics = Topics(run_id)
-    evaluator = Evaluator(out, utilities=load_utilities(options.utilities), mission_info=None,
-                          monitor_config=monitor_config, world=world,
-                          settings=VerdictSettings(humans=options.humans, laser=options.laser))
+
+    def make_evaluator(utilities: UtilityTable) -> Evaluator:
+        return Evaluator(out, utilities=utilities, mission_info=None, monitor_config=monitor_config, world=world,
+                         settings=VerdictSettings(humans=options.humans, laser=options.laser))
+
+    evaluator: Evaluator | None = None  # made once the monitor says which utilities its patterns declare
+    patterns = options.patterns
+    (out / UTILITIES_FILE).unlink(missing_ok=True)  # a previous run's must not stand in for this one's
     status, reason = "COMPLETED", None
     started = time.perf_counter()
     progress = {"t": 0.0, "done": 0, "total": 0}
@@ -117,6 +138,7 @@ def run_pipeline(case_dir: Path, out: Path, options: PipelineOptions, *, run_id:
     monitor_lost: str | None = None  # how the live monitor ended during the run, if it did
     emitted: list[Any] = []  # the monitor's own record of its signals, when some were missed live
     try:
+        patterns = record_patterns(options.patterns, out)  # so a replay runs the patterns the live monitor ran
         # authenticated: one role per component, secrets in OUT/router/auth/<role>.json (0600), docs/security.md
         router = Router(run_dir=out / "router", run_id=run_id, bind=options.bind, tls_cert=options.tls_cert,
                         tls_key=options.tls_key).start()
@@ -125,20 +147,25 @@ def run_pipeline(case_dir: Path, out: Path, options: PipelineOptions, *, run_id:
         viewer = _start_view(router, run_id, case_dir, options) if options.view else None
         client = WampClient(router.rs_url, auth=router.credentials("evaluator"), reconnect=ROUTER_RECONNECT).start()
         signals = RecordingWriter(stream_path(out, "signal"))
-        attach(client, run_id, evaluator, also=signals.write)
         monitor = ManagedProcess("monitor", [
             str(toolchain.find_java().executable), "-jar", str(toolchain.find_jar("monitor")),
             "--router", router.ws_url, "--auth-file", str(router.auth_file("monitor")),
             "--run", run_id, "--case", str(case_dir), "--until-end", "--quiet",
-            "--snapshot-out", str(out / "runtime.xmi"), "--signals-out", str(out / SIGNALS_FILE)],
+            "--snapshot-out", str(out / "runtime.xmi"), "--signals-out", str(out / SIGNALS_FILE),
+            *patterns.monitor_args(), "--utilities-out", str(out / UTILITIES_FILE)],
             out / "monitor.log")
         _await_monitor(client, topics, monitor)
+        # the monitor wrote what its patterns declare before it answered; signals only come once the simulation
+        # runs, so subscribing here still sees the first one
+        evaluator = make_evaluator(load_utilities(options.utilities, load_declared_utilities(out / UTILITIES_FILE),
+                                                  patterns=patterns.describe()))
+        attach(client, run_id, evaluator, also=signals.write)
         if viewer is not None:
             _await_viewer(viewer)
         sim = ManagedProcess("simulation", [
             sys.executable, "-m", "rei.cli", "sim", str(case_dir), "-o", str(out), "--router", router.rs_url,
             "--auth-file", str(router.auth_file("simulation")), "--run-id", run_id, "--progress", "lines",
-            "--reconnect", str(ROUTER_RECONNECT), *options.sim_args],
+            "--reconnect", str(ROUTER_RECONNECT), "--wait-for-monitor", *options.sim_args],
             out / "simulation.log", on_line=lambda line: _parse_progress(line, progress))
         while sim.poll() is None:
             if router.poll() is not None:
@@ -184,6 +211,8 @@ def run_pipeline(case_dir: Path, out: Path, options: PipelineOptions, *, run_id:
                 except Exception as error:  # noqa: BLE001 - shutting down; note and go on
                     reason = reason or f"shutdown: {error}"
         signal.signal(signal.SIGTERM, previous_term)
+    if evaluator is None:  # the run broke before the monitor was up: no signal was scored, write it up anyway
+        evaluator = make_evaluator(_utilities_without_monitor(options, patterns))
     if emitted:  # the report and run.mcap read this copy of the signals: make it whole
         with RecordingWriter(stream_path(out, "signal")) as recording:
             for message in emitted:
@@ -196,6 +225,16 @@ def run_pipeline(case_dir: Path, out: Path, options: PipelineOptions, *, run_id:
     summary = evaluator.finish(status=status, reason=reason, sim_duration=sim_duration,
                                wall_time=time.perf_counter() - started, run_id=run_id)
     return PipelineResult(status, reason, summary)
+
+
+def _utilities_without_monitor(options: PipelineOptions, patterns: PatternSelection) -> Any:
+    """The utility table of a run that broke before the monitor said what its patterns declare."""
+    from rei.evaluation import UtilityError, load_utilities
+
+    try:
+        return load_utilities(options.utilities, options.declared, patterns=patterns.describe())
+    except UtilityError:  # the file names a signal only the patterns know; nothing was scored with it anyway
+        return load_utilities()
 
 
 def _restart_router(router: Router, evaluator: Any, sim_time: float) -> None:
@@ -261,7 +300,7 @@ def _start_view(router: Router, run_id: str, case_dir: Path, options: PipelineOp
     credentials = router.credentials("viewer")
     auth = None if credentials is None else RouterAuth(credentials.authid, credentials.secret, credentials.method)
     viewer = ViewServer(view_config(router.ws_url, run_id, case_dir, utilities=options.utilities,
-                                    auth=auth)).start()
+                                    declared=options.declared, auth=auth)).start()
     print(f"view:   {viewer.url}", flush=True)
     return viewer
 

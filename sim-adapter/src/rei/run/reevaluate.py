@@ -8,7 +8,8 @@ fresh evaluator turns them into events.csv, summary.json and verdicts.xml, repla
 event log is kept as ``events-live.csv`` (the first time: a second re-evaluation does not overwrite it).
 
 Used by ``rei run`` when the monitor dies during a run, by ``rei evaluate OUT`` on any finished run, and by
-campaigns, whose runs are always judged this way.
+campaigns, whose runs are always judged this way. The replay runs the patterns the run kept in ``OUT/patterns/``
+(rei.run.patterns), and the evaluator scores with the utilities they declare.
 """
 
 from __future__ import annotations
@@ -21,6 +22,7 @@ from pathlib import Path
 from typing import Any
 
 from rei.run.jvm import JvmResult, run_jar
+from rei.run.patterns import UTILITIES_FILE, PatternSelection
 from rei.wamp.recording import RecordingWriter, read_recording, stream_path
 
 #: The monitor's own record of the signals it emitted (``--signals-out``): one JSON object per line.
@@ -56,17 +58,23 @@ class RunSettings:
                    run_id=str(sim.get("run_id", "replay")), sim_duration=sim.get("sim_time"))
 
 
-def replay_monitor(out: Path, case_dir: Path, *, timeout: float = REPLAY_TIMEOUT) -> tuple[JvmResult, list[Any]]:
+def replay_monitor(out: Path, case_dir: Path, *, patterns: PatternSelection | None = None,
+                   timeout: float = REPLAY_TIMEOUT) -> tuple[JvmResult, list[Any]]:
     """Run the monitor jar over the run's recorded streams; returns its result and the signals it emitted.
 
-    Writes ``OUT/signals.jsonl``, ``OUT/runtime.xmi`` (the final model) and ``OUT/monitor-replay.log``.
+    ``patterns``: default the run's own (``PatternSelection.recorded``). Writes ``OUT/signals.jsonl``,
+    ``OUT/utilities.json`` (what the patterns declare), ``OUT/runtime.xmi`` (the final model) and
+    ``OUT/monitor-replay.log``.
     """
     if not stream_path(out, "state").is_file():
         raise ReevaluationError(f"{stream_path(out, 'state')}: no recorded state stream to re-evaluate")
+    patterns = patterns or PatternSelection.recorded(out)
     signals_file = out / SIGNALS_FILE
     signals_file.unlink(missing_ok=True)
+    (out / UTILITIES_FILE).unlink(missing_ok=True)  # the live monitor's must not stand in for the replay's
     result = run_jar("monitor", ["--replay", str(out), "--case", str(case_dir), "--signals-out", str(signals_file),
-                                 "--snapshot-out", str(out / "runtime.xmi"), "--quiet"],
+                                 "--snapshot-out", str(out / "runtime.xmi"), "--quiet", *patterns.monitor_args(),
+                                 "--utilities-out", str(out / UTILITIES_FILE)],
                      out / "monitor-replay.log", timeout=timeout)
     return result, read_signals(signals_file)
 
@@ -93,22 +101,39 @@ class Reevaluation:
 
 def reevaluate(out: Path, case_dir: Path | None = None, *, utilities: Path | None = None,
                settings: RunSettings | None = None, notes: tuple[str, ...] = (),
-               status: str = "COMPLETED", reason: str | None = None) -> Reevaluation:
+               status: str = "COMPLETED", reason: str | None = None,
+               patterns: PatternSelection | None = None) -> Reevaluation:
     """Replay the recorded streams through the monitor and evaluate the signals into ``out``.
 
-    ``notes``: what the summary should say about why the run was re-evaluated. A failed replay makes the run an
-    ERROR with the monitor's log tail as the reason.
+    ``notes``: what the summary should say about why the run was re-evaluated. ``patterns``: default the ones
+    the run kept (``OUT/patterns/``, else the defaults). A failed replay makes the run an ERROR with the
+    monitor's log tail as the reason; a utility file that does not fit the patterns raises ReevaluationError
+    before the live results are touched.
     """
     from rei.artifacts import read_case
-    from rei.evaluation import Evaluator, VerdictSettings, load_utilities, replay
+    from rei.evaluation import (
+        Evaluator,
+        UtilityError,
+        VerdictSettings,
+        load_declared_utilities,
+        load_utilities,
+        replay,
+    )
     from rei.mission import mission_info
 
     case_dir = case_dir or out / "case"
     if not (case_dir / "world.json").is_file():
         raise ReevaluationError(f"no generated case in {case_dir} (world.json missing)")
     settings = settings or RunSettings.from_run(out)
-    monitor, signals = replay_monitor(out, case_dir)
+    patterns = patterns or PatternSelection.recorded(out)
+    monitor, signals = replay_monitor(out, case_dir, patterns=patterns)
     started = time.perf_counter()
+    declared_file = out / UTILITIES_FILE  # missing only when the replay failed before compiling its rules
+    try:
+        table = load_utilities(utilities, load_declared_utilities(declared_file) if declared_file.is_file() else None,
+                               patterns=patterns.describe())
+    except UtilityError as error:
+        raise ReevaluationError(str(error)) from None
     if monitor.code != 0 and status == "COMPLETED":
         status, reason = "ERROR", f"the monitor's replay exited with {monitor.code}: {monitor.log_tail}"
     live_events = out / "events.csv"
@@ -117,7 +142,7 @@ def reevaluate(out: Path, case_dir: Path | None = None, *, utilities: Path | Non
     with RecordingWriter(stream_path(out, "signal")) as recording:  # the report and the mcap read this copy
         for signal in signals:
             recording.write(signal)
-    evaluator = Evaluator(out, utilities=load_utilities(utilities),
+    evaluator = Evaluator(out, utilities=table,
                           mission_info=mission_info(read_case(case_dir).mission),
                           monitor_config=_json(case_dir / "monitor.json"), world=_json(case_dir / "world.json"),
                           settings=VerdictSettings(humans=settings.humans, laser=settings.laser))

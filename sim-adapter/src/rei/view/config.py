@@ -41,8 +41,12 @@ class RouterAuth:
 
 
 def view_config(router_url: str, run_id: str, case_dir: Path | None, *, realm: str = "rei",
-                utilities: Path | None = None, auth: RouterAuth | None = None) -> dict[str, Any]:
+                utilities: Path | None = None, auth: RouterAuth | None = None,
+                declared: Mapping[str, float | None] | None = None) -> dict[str, Any]:
     """The page's configuration; the case folder's files are optional (what is missing is simply not drawn).
+
+    ``declared``: the utilities the run's VEPL patterns declare (rei.run.patterns.check), so the page scores a
+    user's own signals as the evaluator does.
 
     Raises ValueError for a bad run id or router URL, ``ArtifactError`` for a case file that exists but can
     not be read, ``UtilityError`` for a bad utility file.
@@ -61,7 +65,7 @@ def view_config(router_url: str, run_id: str, case_dir: Path | None, *, realm: s
         "world": world,
         "paths": _paths(case_dir / "animation.json") if case_dir is not None else [],
         "mission": _mission(case_dir / "mission.xml") if case_dir is not None else None,
-        "utilities": dict(load_utilities(utilities)),
+        "utilities": dict(load_utilities(utilities, declared)),
         "colours": dict(SIGNAL_COLOURS),
         "hello": None,
     }
