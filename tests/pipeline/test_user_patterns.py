@@ -49,6 +49,9 @@ def test_a_users_signal_is_scored_with_its_declared_utility_live_and_replayed(
     assert again.returncode == 0, again.stdout + again.stderr
     assert _rows(out / "events.csv") == rows
     assert json.loads((out / "summary.json").read_text())["utilities"] == summary["utilities"]
+    replayed = run_cli("monitor", "--replay", out, timeout=300)  # with the kept patterns, as the live monitor
+    assert replayed.returncode == 0, replayed.stderr
+    assert replayed.stdout.count("SIG_USER_TASK_STARTED") == 2
     assert processes_mentioning(out) == []
 
 

@@ -2,7 +2,8 @@
 """`rei monitor --replay OUT`: feed a run's recorded state and mission streams through the monitor again.
 
 Prints one line per signal (``seq t signal subject object distance``), the same signals the live run produced;
-for re-checking a run with other rules or after a monitor change, without a simulator or a router.
+for re-checking a run with other rules or after a monitor change, without a simulator or a router. A run folder
+made with ``rei run --patterns DIR`` is replayed with the patterns it kept (``OUT/patterns/``).
 """
 
 from __future__ import annotations
@@ -32,6 +33,9 @@ def run(args: argparse.Namespace) -> int:
         raise CommandError(f"{replay}: no such run folder or recording", EXIT_USAGE)
     if case is None or not (case / "world.json").is_file():
         raise CommandError(f"no generated case found (expected {case or 'OUT/case'}/world.json); give --case DIR")
+    from rei.run.patterns import PatternSelection
+
+    patterns = PatternSelection.recorded(replay) if replay.is_dir() else PatternSelection()
     java = toolchain.find_java()
-    return toolchain.run_jar(toolchain.find_jar("monitor"), ["--replay", str(replay), "--case", str(case)],
-                             java=java)
+    return toolchain.run_jar(toolchain.find_jar("monitor"),
+                             ["--replay", str(replay), "--case", str(case), *patterns.monitor_args()], java=java)
