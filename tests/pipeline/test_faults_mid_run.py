@@ -145,3 +145,30 @@ def test_a_router_restarted_mid_run_is_survived_and_the_lost_data_turns_verdicts
     assert "SIG_MONITOR_DATA_GAP" not in {s["signal"] for s in _signals(out)}
     assert set(_statuses(out).values()) <= {"pass", "not-applicable"}
     assert (out / "events-live.csv").is_file()
+
+
+def test_a_rei_run_killed_outright_leaves_no_process_behind(
+    processes_mentioning, rei_script: Path, repo_root: Path, tmp_path: Path
+) -> None:
+    """SIGKILL runs no clean-up code: the children must go by themselves (rei.lifetime)."""
+    out = tmp_path / "out"
+    with _realtime_run(rei_script, repo_root, out) as process:
+        _await_rows(out, 2)
+        router = json.loads((out / "router" / ".crossbar" / "node.pid").read_text())["pid"]
+        assert processes_mentioning(out) and _running(router)
+        process.kill()  # the rei process only, not its group: its children are in sessions of their own anyway
+        process.wait(timeout=10)
+        deadline = time.monotonic() + 30
+        while (processes_mentioning(out) or _running(router)) and time.monotonic() < deadline:
+            time.sleep(0.2)
+    assert processes_mentioning(out) == [], "the monitor or the simulation outlived rei run"
+    assert not _running(router), "the router outlived rei run"
+
+
+def _running(pid: int) -> bool:
+    """Alive and not a zombie (an orphan's zombie waits for init to reap it)."""
+    try:
+        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+    except (OSError, IndexError):
+        return False
+    return state != "Z"

@@ -135,7 +135,7 @@ class _publisher:
             return None
         url = self._args.router
         if url is None:
-            self._router = Router(run_dir=self._out / "router", run_id=self._run_id, bind=self._args.bind,
+            self._router = Router(run_dir=self._out / "router", run_id=self._run_id, bind=self._args.bind, die_with_parent=True,
                                   tls_cert=self._args.tls_cert, tls_key=self._args.tls_key).start()
             if self._router.exposed_url is not None:
                 print(f"router: {self._router.exposed_url} (TLS, authenticated)", flush=True)

@@ -141,7 +141,7 @@ def run_pipeline(case_dir: Path, out: Path, options: PipelineOptions, *, run_id:
         patterns = record_patterns(options.patterns, out)  # so a replay runs the patterns the live monitor ran
         # authenticated: one role per component, secrets in OUT/router/auth/<role>.json (0600), docs/security.md
         router = Router(run_dir=out / "router", run_id=run_id, bind=options.bind, tls_cert=options.tls_cert,
-                        tls_key=options.tls_key).start()
+                        tls_key=options.tls_key, die_with_parent=True).start()
         if router.exposed_url is not None:
             print(f"router: {router.exposed_url} (TLS, authenticated)", flush=True)
         viewer = _start_view(router, run_id, case_dir, options) if options.view else None

@@ -3,8 +3,10 @@
 
 Each child gets its own process group, so stopping it stops whatever it started too. (No pre-exec hooks: the
 supervisor runs a WAMP client thread, and code between fork and exec could deadlock on its locks; the
-supervisor stops its children in ``finally`` blocks and on SIGTERM instead.) Output goes to a log file in the
-run folder; stdout lines can also be handed to a callback as they come.
+supervisor stops its children in ``finally`` blocks and on SIGTERM instead.) A supervisor killed outright
+(SIGKILL, the OOM killer) runs no ``finally``: ``rei.lifetime.die_with_parent`` starts a child through util-linux's
+``setpriv --pdeathsig TERM``, so the kernel sends it SIGTERM when the thread that started it dies. Output goes to
+a log file in the run folder; stdout lines can also be handed to a callback as they come.
 """
 
 from __future__ import annotations
@@ -17,6 +19,8 @@ import threading
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
+from rei.lifetime import die_with_parent
+
 
 class ManagedProcess:
     """A child process with its output in ``log`` and, optionally, each stdout line passed to ``on_line``."""
@@ -27,7 +31,7 @@ class ManagedProcess:
         self.log = log
         self._log = open(log, "w", encoding="utf-8")  # noqa: SIM115 - closed in stop()
         self._process = subprocess.Popen(
-            list(argv), stdin=subprocess.DEVNULL, stdout=subprocess.PIPE if on_line else self._log,
+            die_with_parent(argv), stdin=subprocess.DEVNULL, stdout=subprocess.PIPE if on_line else self._log,
             stderr=self._log, start_new_session=True,
             env={**os.environ, **(env or {})}, text=True, bufsize=1)
         self._reader: threading.Thread | None = None

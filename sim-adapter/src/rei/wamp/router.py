@@ -33,6 +33,7 @@ from pathlib import Path
 from types import TracebackType
 from typing import Self
 
+from rei.lifetime import die_with_parent
 from rei.wamp.auth import Credentials, new_secret, private_dir, write_credentials, write_private
 from rei.wamp.crossbar_config import (
     ROLE_GRANTS,
@@ -128,6 +129,7 @@ class Router:
         tls_key: str | os.PathLike[str] | None = None,
         startup_timeout: float = 30.0,
         stop_timeout: float = 10.0,
+        die_with_parent: bool = False,
     ) -> None:
         if not _is_loopback(host):
             raise ValueError(f"router host {host!r} is not loopback; use bind=ADDRESS (with TLS) to expose it")
@@ -155,6 +157,9 @@ class Router:
         self._tls = tls
         self._exposed: Transport | None = None
         self._secrets: dict[str, str] = {}
+        # crossbar gets SIGTERM if the thread that starts it dies (rei.lifetime.die_with_parent): for a
+        # router owned by a process's main thread, so a killed `rei run` leaves no router behind
+        self._die_with_parent = die_with_parent
         self._startup_timeout = startup_timeout
         self._stop_timeout = stop_timeout
         self._process: subprocess.Popen[bytes] | None = None
@@ -345,7 +350,7 @@ class Router:
             try:
                 # Own session = own process group: stop() signals the node controller and its worker together.
                 self._process = subprocess.Popen(
-                    command,
+                    die_with_parent(command) if self._die_with_parent else command,
                     cwd=self.run_dir,
                     env=env,
                     stdin=subprocess.DEVNULL,

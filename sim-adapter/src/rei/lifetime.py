@@ -1,0 +1,26 @@
+# SPDX-License-Identifier: EPL-2.0
+"""Children that do not outlive their parent, even one killed outright (SIGKILL, the OOM killer).
+
+A supervisor stops its children in ``finally`` blocks and on SIGTERM; a SIGKILL runs neither. On Linux the kernel
+can signal a child when its parent dies (``PR_SET_PDEATHSIG``); setting it between fork and exec would need a
+pre-exec hook, which can deadlock a process that runs threads, so the child is started through util-linux's
+``setpriv --pdeathsig TERM`` instead (part of every Debian system), which sets it and execs the command.
+"""
+
+from __future__ import annotations
+
+import shutil
+import sys
+from collections.abc import Sequence
+
+
+def die_with_parent(argv: Sequence[str]) -> list[str]:
+    """``argv`` started so that it gets SIGTERM when the starting thread dies (Linux with setpriv; else as is).
+
+    The signal follows the *thread* that forked, not the process: start such children from a thread that lives
+    as long as they should (the pipeline's main thread).
+    """
+    setpriv = shutil.which("setpriv")
+    if setpriv is None or not sys.platform.startswith("linux"):
+        return list(argv)
+    return [setpriv, "--pdeathsig", "TERM", "--", *argv]
