@@ -110,89 +110,13 @@ class _Interrupted(Exception):
 
 def run_pipeline(case_dir: Path, out: Path, options: PipelineOptions, *, run_id: str,
                  on_progress: Callable[[Progress], None] | None = None) -> PipelineResult:
-    from rei.evaluation import (
-        Evaluator,
-        UtilityTable,
-        VerdictSettings,
-        attach,
-        load_declared_utilities,
-        load_utilities,
-    )
-
-    world = _json(case_dir / "world.json")
-    monitor_config = _json(case_dir / "monitor.json")
-    topics = Topics(run_id)
-
-    def make_evaluator(utilities: UtilityTable) -> Evaluator:
-        return Evaluator(out, utilities=utilities, mission_info=None, monitor_config=monitor_config, world=world,
-                         settings=VerdictSettings(humans=options.humans, laser=options.laser))
-
-    evaluator: Evaluator | None = None  # made once the monitor says which utilities its patterns declare
-    patterns = options.patterns
-    (out / UTILITIES_FILE).unlink(missing_ok=True)  # a previous run's must not stand in for this one's
+    run = _Run(case_dir, out, options, run_id, on_progress)
     status, reason = "COMPLETED", None
-    started = time.perf_counter()
-    progress = {"t": 0.0, "done": 0, "total": 0}
     previous_term = signal.signal(signal.SIGTERM, _raise_interrupted)
-    router = monitor = sim = client = signals = viewer = None
-    monitor_lost: str | None = None  # how the live monitor ended during the run, if it did
-    emitted: list[Any] = []  # the monitor's own record of its signals, when some were missed live
     try:
-        patterns = record_patterns(options.patterns, out)  # so a replay runs the patterns the live monitor ran
-        # authenticated: one role per component, secrets in OUT/router/auth/<role>.json (0600), docs/security.md
-        router = Router(run_dir=out / "router", run_id=run_id, bind=options.bind, tls_cert=options.tls_cert,
-                        tls_key=options.tls_key, die_with_parent=True).start()
-        if router.exposed_url is not None:
-            print(f"router: {router.exposed_url} (TLS, authenticated)", flush=True)
-        viewer = _start_view(router, run_id, case_dir, options) if options.view else None
-        client = WampClient(router.rs_url, auth=router.credentials("evaluator"), reconnect=ROUTER_RECONNECT).start()
-        signals = RecordingWriter(stream_path(out, "signal"))
-        monitor = ManagedProcess("monitor", [
-            str(toolchain.find_java().executable), "-jar", str(toolchain.find_jar("monitor")),
-            "--router", router.ws_url, "--auth-file", str(router.auth_file("monitor")),
-            "--run", run_id, "--case", str(case_dir), "--until-end", "--quiet",
-            "--snapshot-out", str(out / "runtime.xmi"), "--signals-out", str(out / SIGNALS_FILE),
-            *patterns.monitor_args(), "--utilities-out", str(out / UTILITIES_FILE)],
-            out / "monitor.log")
-        _await_monitor(client, topics, monitor)
-        # the monitor wrote what its patterns declare before it answered; signals only come once the simulation
-        # runs, so subscribing here still sees the first one
-        evaluator = make_evaluator(load_utilities(options.utilities, load_declared_utilities(out / UTILITIES_FILE),
-                                                  patterns=patterns.describe()))
-        attach(client, run_id, evaluator, also=signals.write)
-        if viewer is not None:
-            _await_viewer(viewer)
-        sim = ManagedProcess("simulation", [
-            sys.executable, "-m", "rei.cli", "sim", str(case_dir), "-o", str(out), "--router", router.rs_url,
-            "--auth-file", str(router.auth_file("simulation")), "--run-id", run_id, "--progress", "lines",
-            "--reconnect", str(ROUTER_RECONNECT), "--wait-for-monitor", *options.sim_args],
-            out / "simulation.log", on_line=lambda line: _parse_progress(line, progress))
-        while sim.poll() is None:
-            if router.poll() is not None:
-                _restart_router(router, evaluator, progress["t"])
-            # --until-end: a monitor that saw the mission's END may finish before the simulation has closed
-            if monitor_lost is None and monitor.poll() is not None and not (monitor.poll() == 0 and evaluator.ended):
-                monitor_lost = f"{monitor.describe_exit()} at about {progress['t']:.1f} s simulated"
-                print(f"rei: the live {monitor_lost}; the simulation goes on and the run will be judged from "
-                      "its recorded streams", flush=True)
-            if on_progress is not None:
-                on_progress(Progress(progress["t"], progress["done"], progress["total"], evaluator.total))
-            time.sleep(0.2)
-        # 0 and 1 are a mission that succeeded or failed; anything else, or no summary, is a broken run
-        if sim.poll() not in (0, 1) or not (out / "sim.json").is_file():
-            raise _Interrupted(f"{sim.describe_exit()}: {sim.log_tail(5)}")
-        if monitor_lost is None:
-            if monitor.wait(MONITOR_DRAIN_TIMEOUT) is None:
-                raise _Interrupted(f"the monitor did not finish within {MONITOR_DRAIN_TIMEOUT:.0f} s of the "
-                                   "mission's end")
-            if monitor.poll() != 0:
-                monitor_lost = f"{monitor.describe_exit()} after the mission: {monitor.log_tail(3)}"
-        if monitor_lost is None:
-            # in the usual case END arrives live at once; after a router restart it may be in the file only
-            evaluator.wait_for_end(timeout=2.0 if router.restarts else 10.0)
-            # after a reconnection the received stream may have holes or repeats: the monitor's record has neither
-            if evaluator.reconcile(monitor_record := read_signals(out / SIGNALS_FILE)) or router.restarts:
-                emitted = monitor_record
+        run.start()
+        run.supervise()
+        run.drain()
     except _Interrupted as error:
         status, reason = "ERROR", error.reason
     except KeyboardInterrupt:
@@ -200,31 +124,150 @@ def run_pipeline(case_dir: Path, out: Path, options: PipelineOptions, *, run_id:
     except Exception as error:  # noqa: BLE001 - the run must still be written up and its processes stopped
         status, reason = "ERROR", f"{type(error).__name__}: {error}"
     finally:
-        for process in (sim, monitor):
+        shutdown_problem = run.stop()
+        signal.signal(signal.SIGTERM, previous_term)
+    return run.write_up(status, reason or shutdown_problem)
+
+
+class _Run:
+    """One run's parts and what they reported; ``run_pipeline`` calls the phases in order."""
+
+    def __init__(self, case_dir: Path, out: Path, options: PipelineOptions, run_id: str,
+                 on_progress: Callable[[Progress], None] | None) -> None:
+        self.case_dir, self.out, self.options, self.run_id = case_dir, out, options, run_id
+        self.on_progress = on_progress
+        self.topics = Topics(run_id)
+        self.world = _json(case_dir / "world.json")
+        self.monitor_config = _json(case_dir / "monitor.json")
+        self.started = time.perf_counter()
+        self.progress = {"t": 0.0, "done": 0, "total": 0}
+        self.patterns = options.patterns
+        self.router: Router | None = None
+        self.viewer: ViewServer | None = None
+        self.client: WampClient | None = None
+        self.signals: RecordingWriter | None = None
+        self.monitor: ManagedProcess | None = None
+        self.sim: ManagedProcess | None = None
+        self.evaluator: Any = None  # made once the monitor says which utilities its patterns declare
+        self.monitor_lost: str | None = None  # how the live monitor ended during the run, if it did
+        self.emitted: list[Any] = []  # the monitor's own record of its signals, when the received copy is not whole
+        (out / UTILITIES_FILE).unlink(missing_ok=True)  # a previous run's must not stand in for this one's
+
+    def start(self) -> None:
+        """Router, view, the evaluator's client, monitor, evaluator, simulation - in that order (module docstring)."""
+        from rei.evaluation import attach, load_declared_utilities, load_utilities
+
+        out, options = self.out, self.options
+        self.patterns = record_patterns(options.patterns, out)  # so a replay runs the patterns the live monitor ran
+        # authenticated: one role per component, secrets in OUT/router/auth/<role>.json (0600), docs/security.md
+        router = self.router = Router(run_dir=out / "router", run_id=self.run_id, bind=options.bind,
+                                      tls_cert=options.tls_cert, tls_key=options.tls_key, die_with_parent=True).start()
+        if router.exposed_url is not None:
+            print(f"router: {router.exposed_url} (TLS, authenticated)", flush=True)
+        self.viewer = _start_view(router, self.run_id, self.case_dir, options) if options.view else None
+        client = self.client = WampClient(router.rs_url, auth=router.credentials("evaluator"),
+                                          reconnect=ROUTER_RECONNECT).start()
+        self.signals = RecordingWriter(stream_path(out, "signal"))
+        monitor = self.monitor = ManagedProcess("monitor", [
+            str(toolchain.find_java().executable), "-jar", str(toolchain.find_jar("monitor")),
+            "--router", router.ws_url, "--auth-file", str(router.auth_file("monitor")),
+            "--run", self.run_id, "--case", str(self.case_dir), "--until-end", "--quiet",
+            "--snapshot-out", str(out / "runtime.xmi"), "--signals-out", str(out / SIGNALS_FILE),
+            *self.patterns.monitor_args(), "--utilities-out", str(out / UTILITIES_FILE)],
+            out / "monitor.log")
+        _await_monitor(client, self.topics, monitor)
+        # the monitor wrote what its patterns declare before it answered; signals only come once the simulation
+        # runs, so subscribing here still sees the first one
+        self.evaluator = self._evaluator(load_utilities(options.utilities, load_declared_utilities(
+            out / UTILITIES_FILE), patterns=self.patterns.describe()))
+        attach(client, self.run_id, self.evaluator, also=self.signals.write)
+        if self.viewer is not None:
+            _await_viewer(self.viewer)
+        self.sim = ManagedProcess("simulation", [
+            sys.executable, "-m", "rei.cli", "sim", str(self.case_dir), "-o", str(out), "--router", router.rs_url,
+            "--auth-file", str(router.auth_file("simulation")), "--run-id", self.run_id, "--progress", "lines",
+            "--reconnect", str(ROUTER_RECONNECT), "--wait-for-monitor", *options.sim_args],
+            out / "simulation.log", on_line=lambda line: _parse_progress(line, self.progress))
+
+    def supervise(self) -> None:
+        """While the simulation runs: restart a dead router, note a dead monitor, report progress."""
+        assert self.sim is not None and self.monitor is not None and self.router is not None
+        sim, monitor, evaluator = self.sim, self.monitor, self.evaluator
+        while sim.poll() is None:
+            if self.router.poll() is not None:
+                _restart_router(self.router, evaluator, self.progress["t"])
+            # --until-end: a monitor that saw the mission's END may finish before the simulation has closed
+            if self.monitor_lost is None and monitor.poll() is not None and not (
+                    monitor.poll() == 0 and evaluator.ended):
+                self.monitor_lost = f"{monitor.describe_exit()} at about {self.progress['t']:.1f} s simulated"
+                print(f"rei: the live {self.monitor_lost}; the simulation goes on and the run will be judged from "
+                      "its recorded streams", flush=True)
+            if self.on_progress is not None:
+                p = self.progress
+                self.on_progress(Progress(p["t"], int(p["done"]), int(p["total"]), evaluator.total))
+            time.sleep(0.2)
+        # 0 and 1 are a mission that succeeded or failed; anything else, or no summary, is a broken run
+        if sim.poll() not in (0, 1) or not (self.out / "sim.json").is_file():
+            raise _Interrupted(f"{sim.describe_exit()}: {sim.log_tail(5)}")
+
+    def drain(self) -> None:
+        """The simulation is done: let the monitor finish, then complete the received signals from its record."""
+        assert self.monitor is not None and self.router is not None
+        monitor = self.monitor
+        if self.monitor_lost is None:
+            if monitor.wait(MONITOR_DRAIN_TIMEOUT) is None:
+                raise _Interrupted(f"the monitor did not finish within {MONITOR_DRAIN_TIMEOUT:.0f} s of the "
+                                   "mission's end")
+            if monitor.poll() != 0:
+                self.monitor_lost = f"{monitor.describe_exit()} after the mission: {monitor.log_tail(3)}"
+        if self.monitor_lost is None:
+            restarts = self.router.restarts
+            # in the usual case END arrives live at once; after a router restart it may be in the file only
+            self.evaluator.wait_for_end(timeout=2.0 if restarts else 10.0)
+            # after a reconnection the received stream may have holes or repeats: the monitor's record has neither
+            record = read_signals(self.out / SIGNALS_FILE)
+            if self.evaluator.reconcile(record) or restarts:
+                self.emitted = record
+
+    def stop(self) -> str | None:
+        """Stop every part, whatever happened; returns a problem met on the way, if any."""
+        problem = None
+        for process in (self.sim, self.monitor):
             if process is not None:
                 process.stop()
-        for closing in (client.close if client else None, signals.close if signals else None,
-                        router.stop if router else None, viewer.stop if viewer else None):
+        for closing in (self.client.close if self.client else None, self.signals.close if self.signals else None,
+                        self.router.stop if self.router else None, self.viewer.stop if self.viewer else None):
             if closing is not None:
                 try:
                     closing()
                 except Exception as error:  # noqa: BLE001 - shutting down; note and go on
-                    reason = reason or f"shutdown: {error}"
-        signal.signal(signal.SIGTERM, previous_term)
-    if evaluator is None:  # the run broke before the monitor was up: no signal was scored, write it up anyway
-        evaluator = make_evaluator(_utilities_without_monitor(options, patterns))
-    if emitted:  # the report and run.mcap read this copy of the signals: make it whole
-        with RecordingWriter(stream_path(out, "signal")) as recording:
-            for message in emitted:
-                recording.write(message)
-    sim_summary = _json(out / "sim.json") if (out / "sim.json").is_file() else {}
-    sim_duration = sim_summary.get("sim_time", progress["t"])
-    if status == "COMPLETED" and monitor_lost is not None:
-        return _judge_from_recording(out, case_dir, options, evaluator, monitor_lost, run_id=run_id,
-                                     sim_duration=sim_duration, started=started)
-    summary = evaluator.finish(status=status, reason=reason, sim_duration=sim_duration,
-                               wall_time=time.perf_counter() - started, run_id=run_id)
-    return PipelineResult(status, reason, summary)
+                    problem = problem or f"shutdown: {error}"
+        return problem
+
+    def write_up(self, status: str, reason: str | None) -> PipelineResult:
+        """The evaluator's files (or, after a monitor's death, the re-evaluation's) and the run's result."""
+        out = self.out
+        if self.evaluator is None:  # the run broke before the monitor was up: no signal was scored, write it up
+            self.evaluator = self._evaluator(_utilities_without_monitor(self.options, self.patterns))
+        if self.emitted:  # the report and run.mcap read this copy of the signals: make it whole
+            with RecordingWriter(stream_path(out, "signal")) as recording:
+                for message in self.emitted:
+                    recording.write(message)
+        sim_summary = _json(out / "sim.json") if (out / "sim.json").is_file() else {}
+        sim_duration = sim_summary.get("sim_time", self.progress["t"])
+        if status == "COMPLETED" and self.monitor_lost is not None:
+            return _judge_from_recording(out, self.case_dir, self.options, self.evaluator, self.monitor_lost,
+                                         run_id=self.run_id, sim_duration=sim_duration, started=self.started)
+        summary = self.evaluator.finish(status=status, reason=reason, sim_duration=sim_duration,
+                                        wall_time=time.perf_counter() - self.started, run_id=self.run_id)
+        return PipelineResult(status, reason, summary)
+
+    def _evaluator(self, utilities: Any) -> Any:
+        from rei.evaluation import Evaluator, VerdictSettings
+
+        return Evaluator(self.out, utilities=utilities, mission_info=None, monitor_config=self.monitor_config,
+                         world=self.world, settings=VerdictSettings(humans=self.options.humans,
+                                                                    laser=self.options.laser))
 
 
 def _utilities_without_monitor(options: PipelineOptions, patterns: PatternSelection) -> Any:
