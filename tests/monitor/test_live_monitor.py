@@ -13,10 +13,7 @@ Real processes only; every wait is bounded and every process group started here 
 
 from __future__ import annotations
 
-import ctypes
 import json
-import os
-import socket
 import subprocess
 import threading
 from collections.abc import Callable, Iterator
@@ -30,6 +27,7 @@ from monitor_helpers import call_when_registered, kill_group, wait_for
 from rei.wamp.client import WampClient
 from rei.wamp.recording import read_recording
 from rei.wamp.router import Router
+from rei.wamp.sockets import tcp_nodelay
 
 RUN_ID = "monitor-live-e2e"
 EXAMPLE = "l_shaped_office.rei"
@@ -54,39 +52,6 @@ class LiveRun:
     snapshot_after: str
     nodelay: list[int]
     sim_stdout: str
-
-
-def _tcp_nodelay_towards(pid: int, port: int) -> list[int]:
-    """TCP_NODELAY of every TCP connection of process `pid` to `port`, read from the socket itself.
-
-    pidfd_getfd(2) (Linux >= 5.6, syscall 438) duplicates the monitor's socket into this process; allowed because
-    the JVM is this process's child.
-    """
-    libc = ctypes.CDLL(None, use_errno=True)
-    pidfd = os.pidfd_open(pid)
-    values = []
-    try:
-        for fd in os.listdir(f"/proc/{pid}/fd"):
-            try:
-                if not os.readlink(f"/proc/{pid}/fd/{fd}").startswith("socket:"):
-                    continue
-            except OSError:
-                continue
-            dup = libc.syscall(438, pidfd, int(fd), 0)
-            if dup < 0:
-                raise OSError(ctypes.get_errno(), "pidfd_getfd")
-            with socket.socket(fileno=dup) as sock:
-                if sock.family not in (socket.AF_INET, socket.AF_INET6) or sock.type != socket.SOCK_STREAM:
-                    continue
-                try:
-                    peer = sock.getpeername()
-                except OSError:
-                    continue
-                if peer[1] == port:
-                    values.append(sock.getsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY))
-    finally:
-        os.close(pidfd)
-    return values
 
 
 @pytest.fixture(scope="module")
@@ -130,7 +95,7 @@ def live_run(run_cli, repo_root: Path, monitor_jar: Path, java_exe: str, tmp_pat
                 client.subscribe(f"rei.run.{RUN_ID}.signal", on_signal)
                 snapshot = f"rei.run.{RUN_ID}.snapshot"
                 before = call_when_registered(client, snapshot, START_S)
-                nodelay = _tcp_nodelay_towards(monitor.pid, urlparse(router.ws_url).port)
+                nodelay = tcp_nodelay(monitor.pid, peer_port=urlparse(router.ws_url).port)
                 sim = run_cli("sim", case, "-o", out, "--router", router.rs_url, "--auth-file",
                               router.auth_file("simulation"), "--run-id", RUN_ID, "--seed", SEED)
                 assert sim.returncode == 0, sim.stdout + sim.stderr

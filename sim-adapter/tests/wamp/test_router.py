@@ -3,7 +3,6 @@
 
 from __future__ import annotations
 
-import ctypes
 import json
 import os
 import socket
@@ -17,6 +16,7 @@ import pytest
 
 from rei.wamp import Router, RouterError, WampClient
 from rei.wamp.crossbar_config import Transport, anonymous_role, node_config
+from rei.wamp.sockets import tcp_nodelay
 
 
 def _children(pid: int) -> list[int]:
@@ -30,39 +30,6 @@ def _children(pid: int) -> list[int]:
             if int(stat[stat.rindex(")") + 2 :].split()[1]) == pid:
                 out.append(int(entry.name))
     return out
-
-
-def _router_side_nodelay(pid: int, port: int) -> list[int]:
-    """TCP_NODELAY of every connection process ``pid`` accepted on ``port``, read from the socket itself.
-
-    pidfd_getfd(2) (Linux >= 5.6, syscall 438 on every architecture) duplicates the router's socket into this
-    process; allowed because the router is our descendant.
-    """
-    libc = ctypes.CDLL(None, use_errno=True)
-    pidfd = os.pidfd_open(pid)
-    values = []
-    try:
-        for fd in os.listdir(f"/proc/{pid}/fd"):
-            try:
-                if not os.readlink(f"/proc/{pid}/fd/{fd}").startswith("socket:"):
-                    continue
-            except OSError:
-                continue
-            dup = libc.syscall(438, pidfd, int(fd), 0)
-            if dup < 0:
-                raise OSError(ctypes.get_errno(), "pidfd_getfd")
-            with socket.socket(fileno=dup) as sock:
-                if sock.family != socket.AF_INET or sock.type != socket.SOCK_STREAM:
-                    continue
-                try:
-                    sock.getpeername()  # accepted connections only, not the listening socket
-                except OSError:
-                    continue
-                if sock.getsockname()[1] == port:
-                    values.append(sock.getsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY))
-    finally:
-        os.close(pidfd)
-    return values
 
 
 def _accepts(url: str) -> bool:
@@ -148,7 +115,7 @@ def test_router_side_sockets_get_tcp_nodelay_only_from_the_nodelay_endpoint(
         (worker,) = _children(running.pid or -1)
         with WampClient(running.ws_url), WampClient(running.rs_url):
             for url in (running.ws_url, running.rs_url):
-                values = _router_side_nodelay(worker, urlparse(url).port or 0)
+                values = tcp_nodelay(worker, local_port=urlparse(url).port or 0)
                 assert values and set(values) == {int(nodelay)}, f"{url}: TCP_NODELAY {values}"
     finally:
         if other is not None:
