@@ -23,7 +23,9 @@ import org.kie.api.runtime.rule.Row;
 import org.kie.api.runtime.rule.Variable;
 import org.kie.api.runtime.rule.ViewChangedEventListener;
 import org.kie.api.time.SessionPseudoClock;
-import org.rei.monitor.signals.SignalSink;
+import org.rei.vepl.runtime.MissionEvent;
+import org.rei.vepl.runtime.QueryEvent;
+import org.rei.vepl.runtime.SignalSink;
 
 /**
  * The incremental part of the monitor: keeps the facts (thresholds, robot, one proximity per nearby obstacle,

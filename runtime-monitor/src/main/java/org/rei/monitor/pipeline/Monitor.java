@@ -13,9 +13,7 @@ import org.locationtech.jts.geom.Envelope;
 import org.rei.monitor.config.MonitorSpec;
 import org.rei.monitor.config.World;
 import org.rei.monitor.engine.DrlSources;
-import org.rei.monitor.engine.MissionEvent;
 import org.rei.monitor.engine.MonitorEngine;
-import org.rei.monitor.engine.QueryEvent;
 import org.rei.monitor.engine.SessionFactory;
 import org.rei.monitor.engine.Thresholds;
 import org.rei.monitor.geometry.Footprint;
@@ -31,6 +29,8 @@ import org.rei.monitor.wire.ObjectState;
 import org.rei.monitor.wire.StateMessage;
 import org.rei.monitor.wire.StaticEntryCache;
 import org.rei.monitor.wire.WireDecoder;
+import org.rei.vepl.runtime.MissionEvent;
+import org.rei.vepl.runtime.QueryEvent;
 
 /**
  * The whole monitor pipeline for one run, the same for live and replay: decode, check order, update the EMF

@@ -8,6 +8,8 @@ import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.Consumer;
 
+import org.rei.vepl.runtime.SignalSink;
+
 /**
  * Numbers signals gap-free from 0 and hands them to the listeners (WAMP publisher, printer, tests) in order.
  * Single-threaded by design: the pipeline calls it from its one thread.

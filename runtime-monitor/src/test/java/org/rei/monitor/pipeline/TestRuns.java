@@ -13,9 +13,9 @@ import java.util.List;
 
 import org.rei.monitor.config.CaseReader;
 import org.rei.monitor.engine.DrlSources;
-import org.rei.monitor.engine.QueryEvent;
 import org.rei.monitor.signals.Signal;
 import org.rei.monitor.signals.SignalPublisher;
+import org.rei.vepl.runtime.QueryEvent;
 
 /** A monitor on the test room (src/test/resources/cases/room) with the packaged rules, recording its output. */
 public final class TestRuns implements AutoCloseable {

@@ -27,9 +27,8 @@ import org.kie.internal.utils.KieHelper;
 import org.rei.vepl.compiler.CompiledRules;
 import org.rei.vepl.compiler.DrlTarget;
 import org.rei.vepl.compiler.VeplLoader;
-import org.rei.vepl.tests.fixture.MissionEvent;
-import org.rei.vepl.tests.fixture.QueryEvent;
-import org.rei.vepl.tests.fixture.SignalSink;
+import org.rei.vepl.runtime.MissionEvent;
+import org.rei.vepl.runtime.QueryEvent;
 
 /**
  * Compiles VEPL text and runs it on a STREAM session with a pseudo clock, the way the monitor does: events are
@@ -38,14 +37,12 @@ import org.rei.vepl.tests.fixture.SignalSink;
  */
 public final class Cep implements AutoCloseable {
 
-	static final DrlTarget TARGET = new DrlTarget("rei", QueryEvent.class.getName(), MissionEvent.class.getName(),
-			org.rei.vepl.tests.fixture.Observation.class.getName(), SignalSink.class.getName());
 	static final Set<String> QUERIES = Set.of("a", "b", "c", "d", "robotFar", "robotClose", "robotInCollision",
 			"laserSensesNothingClose", "laserSensesCloseness", "laserSensesCollision");
 
 	final CompiledRules rules;
 	final KieSession session;
-	final SignalSink sink = new SignalSink();
+	final RecordingSink sink = new RecordingSink();
 	private final SessionPseudoClock clock;
 
 	Cep(String vepl) throws VeplLoader.VeplException {
@@ -53,7 +50,7 @@ public final class Cep implements AutoCloseable {
 	}
 
 	Cep(List<VeplLoader.Source> sources) throws VeplLoader.VeplException {
-		rules = VeplLoader.compile(sources, QUERIES, TARGET);
+		rules = VeplLoader.compile(sources, QUERIES, DrlTarget.MONITOR);
 		session = build(rules);
 		session.setGlobal("signals", sink);
 		clock = session.getSessionClock();
@@ -99,14 +96,19 @@ public final class Cep implements AutoCloseable {
 				e = e.substring(0, slash);
 			}
 			switch (e.charAt(0)) {
-			case '+' -> session.insert(new QueryEvent(e.substring(1), QueryEvent.Kind.FOUND, subject, e.substring(1), ms));
-			case '-' -> session.insert(new QueryEvent(e.substring(1), QueryEvent.Kind.LOST, subject, e.substring(1), ms));
-			case '!' -> session.insert(new MissionEvent(e.substring(1), subject, ms));
+			case '+' -> session.insert(queryEvent(e.substring(1), QueryEvent.Kind.FOUND, subject, ms));
+			case '-' -> session.insert(queryEvent(e.substring(1), QueryEvent.Kind.LOST, subject, ms));
+			case '!' -> session.insert(new MissionEvent(e.substring(1), -1, subject, 0, ms / 1000.0)); // no task
 			default -> throw new IllegalArgumentException(e);
 			}
 		}
 		session.fireAllRules();
 		return this;
+	}
+
+	/** A query event whose target is the query's name, so a signal's target tells which event it reports. */
+	static QueryEvent queryEvent(String query, QueryEvent.Kind kind, String subject, long ms) {
+		return new QueryEvent(query, kind, subject, query, 0, ms / 1000.0);
 	}
 
 	List<String> signals() {

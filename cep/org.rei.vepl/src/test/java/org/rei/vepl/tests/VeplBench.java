@@ -15,9 +15,9 @@ import java.util.concurrent.TimeUnit;
 import org.kie.api.runtime.KieSession;
 import org.kie.api.time.SessionPseudoClock;
 import org.rei.vepl.compiler.CompiledRules;
+import org.rei.vepl.compiler.DrlTarget;
 import org.rei.vepl.compiler.VeplLoader;
-import org.rei.vepl.tests.fixture.QueryEvent;
-import org.rei.vepl.tests.fixture.SignalSink;
+import org.rei.vepl.runtime.QueryEvent;
 
 /**
  * Complex-event throughput (benchmarks/vepl_throughput.sh): the default patterns plus three user patterns (20 rules)
@@ -50,11 +50,11 @@ public final class VeplBench {
 		int measured = args.length > 1 ? Integer.parseInt(args[1]) : 1_000_000;
 		List<VeplLoader.Source> sources = new ArrayList<>(DefaultPatterns.sources());
 		sources.add(new VeplLoader.Source("user.vepl", USER));
-		CompiledRules rules = VeplLoader.compile(sources, Cep.QUERIES, Cep.TARGET);
+		CompiledRules rules = VeplLoader.compile(sources, Cep.QUERIES, DrlTarget.MONITOR);
 		long ruleCount = rules.files().stream().mapToLong(f -> f.text().lines().filter(l -> l.startsWith("rule ")).count())
 				.sum();
 		KieSession session = Cep.build(rules);
-		SignalSink sink = new SignalSink();
+		RecordingSink sink = new RecordingSink();
 		session.setGlobal("signals", sink);
 		SessionPseudoClock clock = session.getSessionClock();
 		Random random = new Random(42);
@@ -72,18 +72,19 @@ public final class VeplBench {
 			clock.advanceTime(50, TimeUnit.MILLISECONDS);
 			for (int r = 0; r < robots; r++) {
 				String subject = "r" + r;
+				double at = t / 1000.0;
 				List<QueryEvent> events = new ArrayList<>();
 				for (int f = 0; f < 2; f++) {
 					if (random.nextInt(4) == 0) {
 						int to = (state[r][f] + 1 + random.nextInt(2)) % 3;
-						events.add(new QueryEvent(FAMILIES[f][state[r][f]], QueryEvent.Kind.LOST, subject, "x", t));
-						events.add(new QueryEvent(FAMILIES[f][to], QueryEvent.Kind.FOUND, subject, "x", t));
+						events.add(new QueryEvent(FAMILIES[f][state[r][f]], QueryEvent.Kind.LOST, subject, "x", 0, at));
+						events.add(new QueryEvent(FAMILIES[f][to], QueryEvent.Kind.FOUND, subject, "x", 0, at));
 						state[r][f] = to;
 					}
 				}
 				if (random.nextInt(2) == 0) { // a per-object query that no pattern names
 					events.add(new QueryEvent("closeToObject", random.nextBoolean() ? QueryEvent.Kind.FOUND
-							: QueryEvent.Kind.LOST, subject, "o" + random.nextInt(5), t));
+							: QueryEvent.Kind.LOST, subject, "o" + random.nextInt(5), 0, at));
 				}
 				for (QueryEvent e : events) {
 					long s = System.nanoTime();

@@ -2,9 +2,12 @@
  * Copyright (c) 2026 the REI authors.
  * SPDX-License-Identifier: EPL-2.0
  */
-package org.rei.monitor.signals;
+package org.rei.vepl.runtime;
 
-/** Where rules send signals (the DRL global {@code signals}). */
+/**
+ * Where the generated rules send signals (the DRL global {@code signals}): the monitor's publisher, or a recorder
+ * in tests.
+ */
 public interface SignalSink {
 
 	/** Emits {@code signal} about the observation that raised it. */
