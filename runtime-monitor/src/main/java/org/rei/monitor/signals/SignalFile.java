@@ -11,8 +11,6 @@ import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.LinkedHashMap;
-import java.util.Map;
 import java.util.function.Consumer;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
@@ -34,15 +32,8 @@ public final class SignalFile implements Consumer<Signal>, Closeable {
 
 	@Override
 	public synchronized void accept(Signal s) {
-		Map<String, Object> line = new LinkedHashMap<>();
-		line.put("seq", s.seq());
-		line.put("t", s.t());
-		line.put("signal", s.signal());
-		line.put("subject", s.subject());
-		line.put("object", s.object());
-		line.put("distance", s.distance());
 		try {
-			out.write(JSON.writeValueAsString(line));
+			out.write(JSON.writeValueAsString(s.payload()));
 			out.newLine();
 			out.flush();
 		} catch (IOException e) {

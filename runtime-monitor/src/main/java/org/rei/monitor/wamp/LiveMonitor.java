@@ -9,8 +9,6 @@ import java.io.OutputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.EnumSet;
-import java.util.LinkedHashMap;
-import java.util.Map;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -226,14 +224,7 @@ public final class LiveMonitor implements AutoCloseable {
 
 	/** Publishes one signal with an acknowledgement: without one a signal written into a dying connection is lost. */
 	private void publish(String topic, Signal s, Consumer<SignalOutbox.Outcome> done) {
-		Map<String, Object> payload = new LinkedHashMap<>();
-		payload.put("seq", s.seq());
-		payload.put("t", s.t());
-		payload.put("signal", s.signal());
-		payload.put("subject", s.subject());
-		payload.put("object", s.object());
-		payload.put("distance", s.distance());
-		ArrayNode arguments = JSON.createArrayNode().add(JSON.valueToTree(payload));
+		ArrayNode arguments = JSON.createArrayNode().add(JSON.valueToTree(s.payload()));
 		client.publish(topic, EnumSet.of(PublishFlags.RequireAcknowledge), arguments, null)
 				.subscribe(id -> done.accept(SignalOutbox.Outcome.ACKNOWLEDGED), e -> {
 					if (isConnectionLoss(e)) {
