@@ -59,24 +59,34 @@ public final class DrlSources {
 
 	/** The packaged copies in {@code classpathFolder} (a folder of the classes directory or of the jar). */
 	public static List<Source> packaged(String classpathFolder) {
+		try {
+			return folder(packagedFolder(classpathFolder, "rules"));
+		} catch (IOException e) {
+			throw new UncheckedIOException(e);
+		}
+	}
+
+	/**
+	 * A folder of the classpath as a {@link Path}: in the classes directory (builds, tests) or inside the jar (a zip
+	 * file system, opened once and shared). {@code what} names its content in the error when it is missing.
+	 */
+	static Path packagedFolder(String classpathFolder, String what) throws IOException {
 		URL url = DrlSources.class.getResource(classpathFolder);
 		if (url == null) {
-			throw new IllegalStateException("packaged rules missing: " + classpathFolder);
+			throw new IllegalStateException("packaged " + what + " missing: " + classpathFolder);
 		}
 		try {
 			URI uri = url.toURI();
-			if ("jar".equals(uri.getScheme())) {
-				FileSystem fs;
-				try {
-					fs = FileSystems.newFileSystem(uri, Map.of());
-				} catch (FileSystemAlreadyExistsException e) {
-					fs = FileSystems.getFileSystem(uri);
-				}
-				return folder(fs.getPath(classpathFolder));
+			if (!"jar".equals(uri.getScheme())) {
+				return Path.of(uri);
 			}
-			return folder(Path.of(uri));
-		} catch (IOException e) {
-			throw new UncheckedIOException(e);
+			FileSystem fs;
+			try {
+				fs = FileSystems.newFileSystem(uri, Map.of());
+			} catch (FileSystemAlreadyExistsException e) {
+				fs = FileSystems.getFileSystem(uri);
+			}
+			return fs.getPath(classpathFolder);
 		} catch (URISyntaxException e) {
 			throw new IllegalStateException(e);
 		}

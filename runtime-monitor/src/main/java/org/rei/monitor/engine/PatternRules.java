@@ -6,12 +6,6 @@ package org.rei.monitor.engine;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
-import java.net.URI;
-import java.net.URISyntaxException;
-import java.net.URL;
-import java.nio.file.FileSystem;
-import java.nio.file.FileSystemAlreadyExistsException;
-import java.nio.file.FileSystems;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collections;
@@ -41,26 +35,10 @@ public final class PatternRules {
 
 	/** The packaged default patterns. */
 	public static List<VeplLoader.Source> packaged() {
-		URL url = PatternRules.class.getResource(PATTERNS);
-		if (url == null) {
-			throw new IllegalStateException("packaged patterns missing: " + PATTERNS);
-		}
 		try {
-			URI uri = url.toURI();
-			if ("jar".equals(uri.getScheme())) {
-				FileSystem fs;
-				try {
-					fs = FileSystems.newFileSystem(uri, Map.of());
-				} catch (FileSystemAlreadyExistsException e) {
-					fs = FileSystems.getFileSystem(uri);
-				}
-				return VeplLoader.folder(fs.getPath(PATTERNS));
-			}
-			return VeplLoader.folder(Path.of(uri));
+			return VeplLoader.folder(DrlSources.packagedFolder(PATTERNS, "patterns"));
 		} catch (IOException e) {
 			throw new UncheckedIOException(e);
-		} catch (URISyntaxException e) {
-			throw new IllegalStateException(e);
 		}
 	}
 
