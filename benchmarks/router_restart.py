@@ -43,16 +43,6 @@ class _Receiver:
             self.last_arrival = time.monotonic()
 
 
-def _await_procedure(client: WampClient, uri: str, timeout: float = 10.0) -> None:
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        try:
-            client.call(uri, timeout=1.0)
-            return
-        except Exception:  # noqa: BLE001 - not registered again yet
-            time.sleep(0.05)
-
-
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n", 1)[0])
     parser.add_argument("--rounds", type=int, default=5)
@@ -70,7 +60,7 @@ def main() -> int:
         subscriber.register(topics.snapshot, lambda: "ok")  # after subscribing, as the monitor does
         publisher = WampClient(router.rs_url, auth=router.credentials("simulation"), reconnect=30.0).start()
         if not args.no_gate:
-            publisher.hold_after_reconnect(lambda: _await_procedure(publisher, topics.snapshot))
+            publisher.hold_after_reconnect(lambda: publisher.call_when_registered(topics.snapshot, timeout=10.0))
         sent = 0
         rows = []
         period = 1.0 / args.rate

@@ -11,9 +11,6 @@ from collections.abc import Callable
 from pathlib import Path
 
 import pytest
-from autobahn.wamp.exception import ApplicationError
-
-from rei.wamp.client import WampClient
 
 
 def kill_group(process: subprocess.Popen) -> None:
@@ -35,16 +32,3 @@ def wait_for(predicate: Callable[[], bool], timeout: float, what: str, process: 
         if time.monotonic() > deadline:
             pytest.fail(f"{what}: not within {timeout} s" + (f"; monitor stderr: {log.read_text()}" if log else ""))
         time.sleep(0.05)
-
-
-def call_when_registered(client: WampClient, procedure: str, timeout: float) -> str:
-    """The monitor logs "monitoring" when it has asked for its subscriptions and registration; on a loaded
-    machine the router may not have processed the registration yet, so retry until it answers."""
-    deadline = time.monotonic() + timeout
-    while True:
-        try:
-            return client.call(procedure, timeout=30)
-        except ApplicationError as error:
-            if error.error != "wamp.error.no_such_procedure" or time.monotonic() > deadline:
-                raise
-            time.sleep(0.25)

@@ -22,7 +22,7 @@ from pathlib import Path
 from urllib.parse import urlparse
 
 import pytest
-from monitor_helpers import call_when_registered, kill_group, wait_for
+from monitor_helpers import kill_group, wait_for
 
 from rei.wamp.client import WampClient
 from rei.wamp.recording import read_recording
@@ -94,7 +94,7 @@ def live_run(run_cli, repo_root: Path, monitor_jar: Path, java_exe: str, tmp_pat
             with WampClient(router.rs_url, auth=router.credentials("evaluator")) as client:
                 client.subscribe(f"rei.run.{RUN_ID}.signal", on_signal)
                 snapshot = f"rei.run.{RUN_ID}.snapshot"
-                before = call_when_registered(client, snapshot, START_S)
+                before = client.call_when_registered(snapshot, timeout=START_S)
                 nodelay = tcp_nodelay(monitor.pid, peer_port=urlparse(router.ws_url).port)
                 sim = run_cli("sim", case, "-o", out, "--router", router.rs_url, "--auth-file",
                               router.auth_file("simulation"), "--run-id", RUN_ID, "--seed", SEED)

@@ -26,7 +26,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
-from monitor_helpers import call_when_registered, kill_group, wait_for
+from monitor_helpers import kill_group, wait_for
 
 from rei.wamp import Router, WampClient, WampError, read_recording, stream_path
 
@@ -116,7 +116,7 @@ def restart_run(repo_root: Path, monitor_jar: Path, java_exe: str, tmp_path_fact
                 simulation = WampClient(router.rs_url, auth=router.credentials("simulation")).start()
                 clients.callback(_leave, simulation)
                 evaluator.subscribe(topic["signal"], before.append)
-                call_when_registered(evaluator, topic["snapshot"], START_S)
+                evaluator.call_when_registered(topic["snapshot"], timeout=START_S)
                 simulation.publish(topic["mission"], begin)
                 simulation.publish(topic["mission"], task_start)
                 for state in states[: LAST_BEFORE + 1]:
@@ -139,7 +139,7 @@ def restart_run(repo_root: Path, monitor_jar: Path, java_exe: str, tmp_path_fact
             with WampClient(router.rs_url, auth=router.credentials("evaluator")) as evaluator:
                 evaluator.subscribe(topic["signal"], after.append)
                 # answered: the monitor's subscriptions of the new session are in place (registered after them)
-                snapshot_after_restart = call_when_registered(evaluator, topic["snapshot"], START_S)
+                snapshot_after_restart = evaluator.call_when_registered(topic["snapshot"], timeout=START_S)
                 with WampClient(router.rs_url, auth=router.credentials("simulation")) as simulation:
                     for state in states[RESUME:]:
                         simulation.publish(topic["state"], state)

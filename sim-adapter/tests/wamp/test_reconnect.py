@@ -15,6 +15,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from autobahn.wamp.exception import ApplicationError
 
 from rei.wamp import Router, WampClient, WampError
 
@@ -239,3 +240,28 @@ def test_wamp_cra_roles_authenticate_again_after_the_restart(crossbar: Path):
         sim.flush()
         _wait(lambda: len(states) == 10, timeout=10, what="state after the restart")
     assert states == list(range(10))
+
+
+def test_call_when_registered_waits_for_the_procedure_and_passes_other_errors_at_once(crossbar: Path):
+    with (
+        Router(crossbar=crossbar, auth=False) as router,
+        WampClient(router.rs_url, name="test-server") as server,
+        WampClient(router.ws_url, name="test-caller") as caller,
+    ):
+        later = threading.Timer(0.5, server.register, ("rei.test.late", lambda: "here"))
+        later.start()
+        started = time.monotonic()
+        assert caller.call_when_registered("rei.test.late", timeout=20) == "here"
+        assert time.monotonic() - started >= 0.4  # it did wait for the registration
+        later.join()
+
+        def refuse() -> None:
+            raise ApplicationError("rei.error.refused", "no")
+
+        server.register("rei.test.refuse", refuse)
+        started = time.monotonic()
+        with pytest.raises(ApplicationError, match="rei.error.refused"):
+            caller.call_when_registered("rei.test.refuse", timeout=20)
+        assert time.monotonic() - started < 5  # not retried until the timeout
+        with pytest.raises(ApplicationError, match="no_such_procedure"):
+            caller.call_when_registered("rei.test.never", timeout=0.5)

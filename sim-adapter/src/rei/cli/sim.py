@@ -14,7 +14,6 @@ from __future__ import annotations
 import argparse
 import secrets
 import sys
-import time
 from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -171,15 +170,11 @@ def _monitor_gate(client: WampClient, snapshot: str) -> Callable[[], None]:
     registers after subscribing) or after MONITOR_GATE_S."""
 
     def gate() -> None:
-        deadline = time.monotonic() + MONITOR_GATE_S
-        while time.monotonic() < deadline:
-            try:
-                client.call(snapshot, timeout=max(0.1, deadline - time.monotonic()))
-                return
-            except Exception:  # noqa: BLE001 - not registered again yet, or the call timed out: retry
-                time.sleep(0.1)
-        print(f"rei sim: the monitor did not answer within {MONITOR_GATE_S:g} s of the reconnection; sending on",
-              file=sys.stderr, flush=True)
+        try:
+            client.call_when_registered(snapshot, timeout=MONITOR_GATE_S)
+        except Exception:  # noqa: BLE001 - not back in time (or the call failed): the queue goes out anyway
+            print(f"rei sim: the monitor did not answer within {MONITOR_GATE_S:g} s of the reconnection; sending on",
+                  file=sys.stderr, flush=True)
 
     return gate
 

@@ -42,6 +42,7 @@ import concurrent.futures
 import logging
 import ssl
 import threading
+import time
 from collections.abc import Callable, Coroutine, Mapping
 from dataclasses import dataclass
 from types import TracebackType
@@ -73,6 +74,7 @@ _BACKOFF = (0.1, 1.0)
 #: Reasons a session ends with when the router goes away (crash, restart): worth reconnecting; others are final.
 _RECOVERABLE = frozenset({CloseDetails.REASON_TRANSPORT_LOST, "wamp.close.system_shutdown"})
 _LOST = "connection to the router lost"
+_NO_SUCH_PROCEDURE = "wamp.error.no_such_procedure"
 
 _log = logging.getLogger(__name__)
 
@@ -318,6 +320,20 @@ class WampClient:
         """Call a procedure and return its result."""
         session = self._joined_session()
         return self._submit(_on_loop(lambda: session.call(uri, *args))).result(timeout=timeout)
+
+    def call_when_registered(self, uri: str, *args: Any, timeout: float = 10.0, interval: float = 0.1) -> Any:
+        """``call()``, retried every ``interval`` s while the procedure is not registered (yet, or again after a
+        router restart) or this client is reconnecting; the last error is raised after ``timeout`` seconds."""
+        deadline = time.monotonic() + timeout
+        while True:
+            try:
+                return self.call(uri, *args, timeout=max(0.1, deadline - time.monotonic()))
+            except (ApplicationError, WampError) as error:
+                absent = isinstance(error, ApplicationError) and error.error == _NO_SUCH_PROCEDURE
+                reconnecting = isinstance(error, WampError) and self._failure is None
+                if not (absent or reconnecting) or time.monotonic() + interval > deadline:
+                    raise
+            time.sleep(interval)
 
     # -- loop side -------------------------------------------------------------------------------------------
 
