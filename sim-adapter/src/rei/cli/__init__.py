@@ -19,7 +19,8 @@ from rei.cli.errors import EXIT_TOOLCHAIN, CommandError
 from rei.toolchain import ToolchainError
 
 #: Subcommand modules under `rei.cli`, in the order `rei --help` lists them.
-COMMANDS: tuple[str, ...] = ("validate", "generate", "sim", "run", "evaluate", "monitor", "report", "gen_rooms", "campaign", "view")
+COMMANDS: tuple[str, ...] = ("validate", "generate", "sim", "run", "evaluate", "monitor", "report", "gen_rooms", "campaign", "view",
+                            "nav_sut")
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -4,8 +4,10 @@
 from __future__ import annotations
 
 import argparse
+from pathlib import Path
 
 from rei.cli.errors import CommandError
+from rei.sut.external import DEFAULT_DEADLINE, DEFAULT_JOIN_TIMEOUT, SutOptions
 
 
 def add_mission_options(parser: argparse.ArgumentParser) -> None:
@@ -20,6 +22,21 @@ def add_mission_options(parser: argparse.ArgumentParser) -> None:
                         help="state messages per simulated second (default 20)")
     parser.add_argument("--laser", choices=("min", "full", "none"), default="min",
                         help="laser data in state messages: the minimum only (default), every range, or none")
+    sut = parser.add_argument_group("external system under test (docs/sut.md)")
+    how = sut.add_mutually_exclusive_group()
+    how.add_argument("--sut", metavar="COMMAND", help="start COMMAND as the system under test (instead of "
+                     "--controller); it connects to the run's router from the environment REI gives it")
+    how.add_argument("--sut-attach", action="store_true",
+                     help="wait for a system under test you start yourself (connection details in OUT/sut.env)")
+    sut.add_argument("--sut-clock", choices=("lockstep", "realtime"), default="lockstep",
+                     help="lockstep (default): each control period waits for the SUT's command; realtime: the "
+                     "simulation keeps to the wall clock and applies commands when they arrive")
+    sut.add_argument("--sut-deadline", type=float, default=DEFAULT_DEADLINE, metavar="S",
+                     help=f"seconds the SUT may take to answer a tick (realtime: to say anything) before the run "
+                     f"is an ERROR (default {DEFAULT_DEADLINE:g})")
+    sut.add_argument("--sut-map", action="store_true", help="offer the static map to the SUT")
+    sut.add_argument("--sut-join-timeout", type=float, default=DEFAULT_JOIN_TIMEOUT, metavar="S",
+                     help=f"seconds the SUT has to join (default {DEFAULT_JOIN_TIMEOUT:g})")
 
 
 def check_mission_options(args: argparse.Namespace) -> None:
@@ -35,6 +52,29 @@ def check_mission_options(args: argparse.Namespace) -> None:
         raise CommandError(str(error)) from None
     if not args.state_rate > 0:
         raise CommandError(f"--state-rate must be positive, got {args.state_rate}")
+    sut_options(args)
+
+
+def sut_options(args: argparse.Namespace, *, router_url: str | None = None,
+                auth_file: Path | None = None) -> SutOptions | None:
+    """The external SUT the arguments ask for (None: the in-process --controller); CommandError if wrong."""
+    from rei.sut.external.process import SutLaunchError, check_command
+
+    wanted = args.sut is not None or args.sut_attach
+    if not wanted:
+        if args.sut_map or args.sut_clock != "lockstep":
+            raise CommandError("--sut-map and --sut-clock apply with --sut COMMAND or --sut-attach only")
+        return None
+    if args.controller != "nav":
+        raise CommandError("--controller is the in-process system under test; --sut/--sut-attach replace it")
+    try:
+        if args.sut is not None:
+            check_command(args.sut)
+        return SutOptions(command=args.sut, attach=args.sut_attach, clock=args.sut_clock,
+                          deadline=args.sut_deadline, offer_map=args.sut_map, join_timeout=args.sut_join_timeout,
+                          router_url=router_url, auth_file=auth_file)
+    except (ValueError, SutLaunchError) as error:
+        raise CommandError(str(error)) from None
 
 
 def mission_argv(args: argparse.Namespace) -> list[str]:
@@ -47,4 +87,11 @@ def mission_argv(args: argparse.Namespace) -> list[str]:
         argv += ["--fault", args.fault]
     if args.realtime:
         argv.append("--realtime")
+    if args.sut is not None:
+        argv += ["--sut", args.sut]
+    if args.sut_attach:
+        argv.append("--sut-attach")
+    if args.sut is not None or args.sut_attach:
+        argv += ["--sut-clock", args.sut_clock, "--sut-deadline", str(args.sut_deadline),
+                 "--sut-join-timeout", str(args.sut_join_timeout)] + (["--sut-map"] if args.sut_map else [])
     return argv

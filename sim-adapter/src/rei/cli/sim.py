@@ -12,6 +12,7 @@ mission streams go through a real Crossbar router started on a free loopback por
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import secrets
 import sys
 from collections.abc import Callable
@@ -19,9 +20,9 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from rei.cli._case import case_folder, prepare_output, valid_run_id
-from rei.cli._mission_options import add_mission_options, check_mission_options
+from rei.cli._mission_options import add_mission_options, check_mission_options, sut_options
 from rei.cli._router_options import add_router_options, check_router_options
-from rei.cli.errors import EXIT_INVALID, EXIT_OK, CommandError
+from rei.cli.errors import EXIT_INVALID, EXIT_OK, EXIT_USAGE, CommandError
 
 if TYPE_CHECKING:
     from rei.wamp.client import WampClient
@@ -57,6 +58,10 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
     parser.add_argument("--wait-for-monitor", action="store_true",
                         help="with --reconnect: after a reconnection, send the queued messages only once the run's "
                         f"monitor answers again (at most {MONITOR_GATE_S:g} s), so the router does not drop them")
+    parser.add_argument("--sut-auth-file", metavar="FILE", type=Path,
+                        help="with --router and --sut/--sut-attach: the sut role's credentials, for the SUT")
+    parser.add_argument("--sut-router", metavar="URL",
+                        help="with --router: the URL the SUT connects to (default: the --router URL)")
     add_router_options(parser, "sim")
     parser.set_defaults(handler=run)
 
@@ -84,12 +89,19 @@ def run(args: argparse.Namespace) -> int:
     if not valid_run_id(run_id):
         raise CommandError(f"--run-id {run_id!r}: expected letters, digits, '_' or '-' (it becomes part of topic URIs)")
     try:
-        with _publisher(args, out, run_id) as client:
+        publisher = _publisher(args, out, run_id)
+        with publisher as client:
+            url, auth_file = publisher.sut_connection(client)
+            options = dataclasses.replace(options, sut=sut_options(args, router_url=url, auth_file=auth_file))
             result = run_mission(case_dir, out, options, run_id=run_id, client=client,
                                  progress=_PROGRESS[args.progress])
     except ArtifactError as error:
         raise CommandError(str(error)) from None
     _clear_progress()
+    if result.error is not None:
+        print(f"rei sim: error: {result.error}", file=sys.stderr, flush=True)
+        print(f"the run ended in error after {result.sim_time:.1f} s simulated; streams so far: {out / 'streams'}")
+        return EXIT_USAGE
     for task in result.tasks:
         verdict = "ok  " if task.succeeded else "FAIL"
         print(f"task {task.index}: {verdict} {task.ended - task.started:7.1f} s" + (f"  {task.reason}" if task.reason else ""))
@@ -108,6 +120,10 @@ def _check_router_options(args: argparse.Namespace) -> None:
         raise CommandError("--wait-for-monitor applies with --reconnect SECONDS only")
     if args.auth_file is not None and args.router is None:
         raise CommandError("--auth-file applies with --router URL only (a router started here makes its own)")
+    if (args.sut_auth_file is not None or args.sut_router is not None) and args.router is None:
+        raise CommandError("--sut-auth-file and --sut-router apply with --router URL only")
+    if (args.sut is not None or args.sut_attach) and args.no_router:
+        raise CommandError("--sut and --sut-attach need a router: the SUT talks to the simulation through it")
     if (args.router is not None or args.no_router) and (args.bind or args.tls_cert or args.tls_key):
         raise CommandError("--bind/--tls-cert/--tls-key apply to the router `rei sim` starts (not with "
                            "--router or --no-router)")
@@ -155,6 +171,14 @@ class _publisher:
                 self._router.stop()
             raise
         return self._client
+
+    def sut_connection(self, client: Any) -> tuple[str | None, Path | None]:
+        """Where an external SUT connects (WebSocket: every WAMP library has it) and its credentials file."""
+        if self._router is not None:
+            return self._router.ws_url, self._router.auth_file("sut")
+        if client is None:
+            return None, None
+        return self._args.sut_router or client.url, self._args.sut_auth_file
 
     def __exit__(self, *exc: object) -> None:
         try:

@@ -9,17 +9,21 @@ so a seed fixes the whole run and the recorded streams.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import math
 import time
 from collections.abc import Callable
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
+from typing import Any
 
 from rei.artifacts import read_case
 from rei.geometry import Twist2D
 from rei.mission import MissionEvent, MissionExecutor, TaskResult, mission_info
 from rei.sim.simulation import Simulation
+from rei.sut.api import Controller
+from rei.sut.external import SutError, SutOptions, external_sut
 from rei.sut.registry import create_controller
 from rei.wamp.client import WampClient
 from rei.wamp.collector import CollectorConfig, DataCollector, MissionPublisher
@@ -41,10 +45,16 @@ class MissionRunOptions:
     control_rate: float = 10.0
     physics_rate: float = 240.0
     collector: CollectorConfig = field(default_factory=CollectorConfig)
+    sut: SutOptions | None = None  # an external system under test instead of ``controller`` (docs/sut.md)
 
     def __post_init__(self) -> None:
         if not (self.control_rate > 0 and self.physics_rate >= self.control_rate):
             raise ValueError(f"control rate must be in (0, physics rate], got {self.control_rate} Hz")
+
+    @property
+    def paced(self) -> bool:
+        """Whether the loop keeps to the wall clock (asked for, or a free-running external SUT)."""
+        return self.realtime or (self.sut is not None and self.sut.clock == "realtime")
 
 
 @dataclass(frozen=True, slots=True)
@@ -58,10 +68,13 @@ class MissionRunResult:
     state_messages: int
     mission_messages: int
     cut_off: bool
+    error: str | None = None  # what ended the run early (an external SUT that broke it)
+    sut: dict[str, Any] | None = None  # an external SUT's counts (rei.sut.external.SutStats)
 
     @property
     def succeeded(self) -> bool:
-        return not self.cut_off and len(self.tasks) == self.goals and all(t.succeeded for t in self.tasks)
+        return (self.error is None and not self.cut_off and len(self.tasks) == self.goals
+                and all(t.succeeded for t in self.tasks))
 
     @property
     def real_time_factor(self) -> float:
@@ -81,39 +94,63 @@ def run_mission(
     client: WampClient | None = None,
     progress: Progress | None = None,
 ) -> MissionRunResult:
-    """Run the case's mission once; the streams it published are recorded under ``out_dir/streams``."""
+    """Run the case's mission once; the streams it published are recorded under ``out_dir/streams``.
+
+    An external SUT that breaks the run (``SutError``) ends it early: the result carries the error, and everything
+    published until then is recorded."""
     case = read_case(case_dir)
-    controller = create_controller(options.controller)
     time_limit = sum(goal.timeout for goal in case.mission.goals) + TIME_LIMIT_MARGIN
     control_every = max(1, round(options.physics_rate / options.control_rate))
     wall_start = time.perf_counter()
-    with (
-        Simulation(case, seed=options.seed, physics_rate=options.physics_rate, humans=options.humans,
-                   fault=options.fault) as sim,
-        DataCollector(run_id, out_dir, config=options.collector, client=client,
-                      monitor=_json(case_dir / "monitor.json"), world=_json(case_dir / "world.json")) as collector,
-        MissionPublisher(run_id, out_dir, client=client, mission_info=mission_info(case.mission)) as missions,
-    ):
-        executor = MissionExecutor(case.mission, controller, lambda event: _publish(missions, event))
-        controller.reset(sim.static_map(), case.mission.start)
-        command = Twist2D()
-        next_progress = 0.0
-        while not executor.done and sim.t < time_limit:
-            if sim.steps % control_every == 0:
-                executor.tick(sim.t, sim.robot_pose())
-                command = controller.step(sim.observation())
-            sim.step(command)
-            if collector.due(sim.t):  # a snapshot costs; build it only when it will be sent
-                collector.step(sim.state(), controller.status.value)
-            if options.realtime:
-                _pace(wall_start, sim.t)
-            if progress is not None and sim.t >= next_progress:
-                progress(sim.t, len(executor.results), len(case.mission.goals))
-                next_progress += 1.0
+    error = None
+    external = None
+    executor: MissionExecutor | None = None
+    with contextlib.ExitStack() as stack:
+        sim = stack.enter_context(Simulation(case, seed=options.seed, physics_rate=options.physics_rate,
+                                             humans=options.humans, fault=options.fault))
+        collector = stack.enter_context(DataCollector(
+            run_id, out_dir, config=options.collector, client=client, monitor=_json(case_dir / "monitor.json"),
+            world=_json(case_dir / "world.json")))
+        missions = stack.enter_context(MissionPublisher(run_id, out_dir, client=client,
+                                                        mission_info=mission_info(case.mission)))
+        try:
+            controller: Controller
+            if options.sut is not None:
+                if client is None:
+                    raise SutError("an external system under test needs a router (not --no-router)")
+                controller = external = stack.enter_context(external_sut(
+                    options.sut, client, run_id, out_dir, case=case, static_map=sim.static_map(),
+                    control_rate=options.control_rate, now=lambda: sim.t))
+                wall_start = time.perf_counter()  # the SUT's start-up is not the mission's time
+            else:
+                controller = create_controller(options.controller)
+            executor = MissionExecutor(case.mission, controller, lambda event: _publish(missions, event))
+            controller.reset(sim.static_map(), case.mission.start)
+            command = Twist2D()
+            next_progress = 0.0
+            while not executor.done and sim.t < time_limit:
+                if sim.steps % control_every == 0:
+                    executor.tick(sim.t, sim.robot_pose())
+                    command = controller.step(sim.observation())
+                sim.step(command)
+                if collector.due(sim.t):  # a snapshot costs; build it only when it will be sent
+                    collector.step(sim.state(), controller.status.value)
+                if options.paced:
+                    _pace(wall_start, sim.t)
+                if progress is not None and sim.t >= next_progress:
+                    progress(sim.t, len(executor.results), len(case.mission.goals))
+                    next_progress += 1.0
+        except SutError as broken:
+            error = str(broken)
+        wall_time = time.perf_counter() - wall_start
+        stack.close()  # stops the SUT first: its exit code belongs in the summary
+        done = executor is not None and executor.done
         result = MissionRunResult(
-            run_id=run_id, sim_time=sim.t, wall_time=time.perf_counter() - wall_start, steps=sim.steps,
-            tasks=tuple(executor.results), goals=len(case.mission.goals), state_messages=collector.seq,
-            mission_messages=missions.seq, cut_off=not executor.done)
+            run_id=run_id, sim_time=sim.t, wall_time=wall_time, steps=sim.steps,
+            tasks=tuple(executor.results) if executor is not None else (), goals=len(case.mission.goals),
+            state_messages=collector.seq, mission_messages=missions.seq, cut_off=error is None and not done,
+            error=error,
+            sut=None if external is None else external.stats.to_json())
     _write_summary(out_dir, options, result)
     return result
 
@@ -137,7 +174,8 @@ def _json(path: Path) -> dict:
 def _write_summary(out_dir: Path, options: MissionRunOptions, result: MissionRunResult) -> None:
     summary = {
         "run_id": result.run_id,
-        "options": {**{k: v for k, v in asdict(options).items() if k != "collector"},
+        "options": {**{k: v for k, v in asdict(options).items() if k not in ("collector", "sut")},
+                    **({"sut": _sut_options(options.sut)} if options.sut is not None else {}),
                     "laser": options.collector.laser.value},  # what the verdicts need to know (rei.run.reevaluate)
         "sim_time": result.sim_time,
         "wall_time": result.wall_time,
@@ -145,7 +183,15 @@ def _write_summary(out_dir: Path, options: MissionRunOptions, result: MissionRun
         "steps": result.steps,
         "cut_off": result.cut_off,
         "succeeded": result.succeeded,
+        **({"error": result.error} if result.error is not None else {}),
+        **({"sut": result.sut} if result.sut is not None else {}),
         "tasks": [asdict(task) for task in result.tasks],
         "messages": {"state": result.state_messages, "mission": result.mission_messages},
     }
     (out_dir / "sim.json").write_text(json.dumps(summary, indent=2) + "\n", encoding="utf-8")
+
+
+def _sut_options(sut: SutOptions) -> dict[str, Any]:
+    """The external SUT's settings as a run keeps them (no paths: the router and credentials were the run's)."""
+    return {"command": sut.command, "attach": sut.attach, "clock": sut.clock, "deadline": sut.deadline,
+            "map": sut.offer_map, "join_timeout": sut.join_timeout}

@@ -36,9 +36,9 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from rei import toolchain
+from rei.processes import ManagedProcess
 from rei.run.patterns import UTILITIES_FILE, PatternSelection
 from rei.run.patterns import record as record_patterns
-from rei.run.processes import ManagedProcess
 from rei.run.reevaluate import (
     LIVE_EVENTS_FILE,
     SIGNALS_FILE,

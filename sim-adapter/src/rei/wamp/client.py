@@ -262,6 +262,11 @@ class WampClient:
     # -- thread-safe API -------------------------------------------------------------------------------------
 
     @property
+    def failure(self) -> str | None:
+        """Why the session is lost for good (None while it is live or reconnecting)."""
+        return self._failure
+
+    @property
     def reconnects(self) -> int:
         """How many times the client reconnected after losing the router."""
         return self._reconnects

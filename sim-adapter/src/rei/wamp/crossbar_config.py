@@ -85,7 +85,12 @@ ROLE_GRANTS: dict[str, tuple[tuple[str, tuple[str, ...]], ...]] = {
     # publisher session only, and the monitor needs state and mission events in publication order.
     # snapshot (read-only): after a router restart it holds its queue until the monitor answers again
     "simulation": (("state", ("publish",)), ("config", ("register",)),
-                   ("mission", ("publish",)), ("mission_info", ("register",)), ("snapshot", ("call",))),
+                   ("mission", ("publish",)), ("mission_info", ("register",)), ("snapshot", ("call",)),
+                   *((f"sut.{name}", ("publish",)) for name in ("tick", "goal", "cancel", "end")),
+                   ("sut.command", ("subscribe",)), ("sut.status", ("subscribe",)), ("sut.hello", ("register",))),
+    # the system under test (docs/sut.md): what a robot's software sees, never the true state
+    "sut": (*((f"sut.{name}", ("subscribe",)) for name in ("tick", "goal", "cancel", "end")),
+            ("sut.command", ("publish",)), ("sut.status", ("publish",)), ("sut.hello", ("call",))),
     "monitor": (("state", ("subscribe",)), ("mission", ("subscribe",)), ("signal", ("publish",)),
                 ("snapshot", ("register",)), ("config", ("call",))),
     # read-only: subscriptions plus the read-only procedures (snapshot: readiness probe of `rei run`)

@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: EPL-2.0
-"""Child processes of a pipeline run (the monitor, the simulation), supervised so none outlives the run.
+"""Child processes REI starts (the monitor, the simulation, an external system under test), supervised so none
+outlives the run.
 
 Each child gets its own process group, so stopping it stops whatever it started too. (No pre-exec hooks: the
 supervisor runs a WAMP client thread, and code between fork and exec could deadlock on its locks; the

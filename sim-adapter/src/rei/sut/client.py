@@ -1,0 +1,281 @@
+# SPDX-License-Identifier: EPL-2.0
+"""The Python client kit for external systems under test: write callbacks, not WAMP (docs/sut.md).
+
+A SUT subclasses :class:`SystemUnderTest`, answers ``on_tick`` with a velocity command and reports the goal's
+state with ``succeed``/``abort``/``feedback``; :func:`main` connects with the environment REI gives a SUT and runs
+it until the run ends::
+
+    from rei.geometry import Twist2D
+    from rei.sut.client import SystemUnderTest, Tick, main
+
+    class Forward(SystemUnderTest):
+        def on_tick(self, tick: Tick) -> Twist2D:
+            return Twist2D(0.1, 0.0)
+
+    main(Forward())
+
+Every callback runs on the calling thread, one message at a time in arrival order, so a SUT needs no locks. The
+kit publishes a changed status before the command of the same tick, as the protocol asks. Any in-process
+:class:`~rei.sut.api.Controller` runs as an external SUT through :class:`ControllerSut` (``rei nav-sut``).
+"""
+
+from __future__ import annotations
+
+import os
+import queue
+import sys
+import traceback
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Any, NoReturn
+
+from rei.geometry import Pose2D, Twist2D
+from rei.sut.api import Controller, LaserScan, NavGoal, NavStatus, Observation, StaticMap
+from rei.sut.external import protocol
+
+#: Exit codes of a kit-based SUT: 1 a callback raised, 2 it could not connect or the router went away.
+EXIT_CALLBACK = 1
+EXIT_CONNECTION = 2
+_ENVIRONMENT = ("REI_ROUTER_URL", "REI_RUN_ID")
+
+
+class SutConnectionError(RuntimeError):
+    """The SUT could not join the run, or lost it; the message says why."""
+
+
+@dataclass(frozen=True, slots=True)
+class Session:
+    """``hello``'s answer: what the SUT may know before the run starts."""
+
+    run_id: str
+    clock: str
+    control_rate: float
+    deadline: float
+    start: Pose2D
+    robot: Mapping[str, Any]
+    goals: int
+    static_map: StaticMap | None
+
+    @classmethod
+    def from_hello(cls, hello: Mapping[str, Any]) -> Session:
+        return cls(run_id=str(hello["run_id"]), clock=str(hello["clock"]), control_rate=float(hello["control_rate"]),
+                   deadline=float(hello["deadline"]), start=protocol.read_pose(hello["start"]), robot=hello["robot"],
+                   goals=int(hello["goals"]), static_map=protocol.read_static_map(hello))
+
+
+@dataclass(frozen=True, slots=True)
+class Tick:
+    """One control period: the clock, odometry and the newest scan (``new_scan``: taken since the last tick)."""
+
+    tick: int
+    observation: Observation
+    new_scan: bool
+
+    @property
+    def t(self) -> float:
+        return self.observation.t
+
+    @property
+    def odom(self) -> Pose2D:
+        return self.observation.odom
+
+    @property
+    def scan(self) -> LaserScan | None:
+        return self.observation.scan
+
+
+class SystemUnderTest:
+    """Callbacks of an external SUT; override ``on_tick`` and whichever others you need."""
+
+    def __init__(self) -> None:
+        self._goal: NavGoal | None = None
+        self._report: tuple[int, NavStatus, str] | None = None
+
+    # -- callbacks ---------------------------------------------------------------------------------------------
+
+    def on_start(self, session: Session) -> None:
+        """Once, before the first goal and tick."""
+
+    def on_goal(self, goal: NavGoal) -> None:
+        """A new goal replaces the current one; it is ACTIVE until you report otherwise."""
+
+    def on_cancel(self, goal: NavGoal) -> None:
+        """The mission withdrew ``goal`` (its timeout); by default reported CANCELLED."""
+        self.report(NavStatus.CANCELLED, "cancelled by the client")
+
+    def on_scan(self, scan: LaserScan) -> None:
+        """A new scan, before the ``on_tick`` of the same period."""
+
+    def on_tick(self, tick: Tick) -> Twist2D:
+        """The velocity command for this control period."""
+        raise NotImplementedError("a SystemUnderTest answers on_tick with a Twist2D")
+
+    def on_end(self, reason: str) -> None:
+        """The run is over; the kit returns after this."""
+
+    # -- reporting the goal's state ----------------------------------------------------------------------------
+
+    @property
+    def goal(self) -> NavGoal | None:
+        """The goal being worked on (None before the first)."""
+        return self._goal
+
+    def report(self, status: NavStatus, text: str = "") -> None:
+        """The current goal's state; sent before the next command if it changed."""
+        if self._goal is not None:
+            self._report = (self._goal.index, status, text[:protocol.MAX_TEXT])
+
+    def feedback(self, text: str) -> None:
+        self.report(NavStatus.ACTIVE, text)
+
+    def succeed(self, text: str = "") -> None:
+        self.report(NavStatus.SUCCEEDED, text)
+
+    def abort(self, text: str = "") -> None:
+        self.report(NavStatus.ABORTED, text)
+
+    def _start_goal(self, goal: NavGoal) -> None:
+        self._goal = goal
+        self.report(NavStatus.ACTIVE)
+
+
+class ControllerSut(SystemUnderTest):
+    """An in-process :class:`Controller` as an external SUT (what ``rei nav-sut`` runs).
+
+    ``needs_map``: refuse to start without the static map (the run must offer it: ``--sut-map``)."""
+
+    def __init__(self, controller: Controller, *, needs_map: bool = False) -> None:
+        super().__init__()
+        self.controller = controller
+        self.needs_map = needs_map
+
+    def on_start(self, session: Session) -> None:
+        static_map = session.static_map
+        if static_map is None:
+            if self.needs_map:
+                raise SutConnectionError("this controller plans on the static map, which the run does not offer; "
+                                         "start the run with --sut-map")
+            footprint = session.robot["footprint"]
+            static_map = StaticMap(bounds=(0.0, 0.0, 0.0, 0.0), obstacles=(),
+                                   robot_size=(float(footprint[0]), float(footprint[1])))
+        self.controller.reset(static_map, session.start)
+
+    def on_goal(self, goal: NavGoal) -> None:
+        self.controller.set_goal(goal)
+        self._mirror()
+
+    def on_cancel(self, goal: NavGoal) -> None:
+        self.controller.cancel()
+        self._mirror()
+
+    def on_tick(self, tick: Tick) -> Twist2D:
+        command = self.controller.step(tick.observation)
+        self._mirror()
+        return command
+
+    def _mirror(self) -> None:
+        if self.controller.status is not NavStatus.IDLE:
+            self.report(self.controller.status, self.controller.status_text)
+
+
+def run(sut: SystemUnderTest, *, environ: Mapping[str, str] = os.environ, name: str | None = None) -> None:
+    """Join the run described by ``environ`` (docs/sut.md) and serve ``sut`` until the run's ``end``.
+
+    Raises SutConnectionError when the run cannot be joined or is lost; a callback's exception propagates."""
+    from rei.wamp.auth import load_credentials
+    from rei.wamp.client import WampClient, WampError
+
+    missing = [key for key in _ENVIRONMENT if not environ.get(key)]
+    if missing:
+        raise SutConnectionError(f"{', '.join(missing)} not set: a SUT is started by `rei run --sut COMMAND`, or "
+                                 "with the variables of OUT/sut.env for `rei run --sut-attach` (docs/sut.md)")
+    run_id = environ["REI_RUN_ID"]
+    try:
+        auth = load_credentials(environ["REI_AUTH_FILE"]) if environ.get("REI_AUTH_FILE") else None
+    except (OSError, ValueError, KeyError) as error:
+        raise SutConnectionError(f"REI_AUTH_FILE: {error}") from None
+    inbox: queue.SimpleQueue[tuple[str, Any]] = queue.SimpleQueue()
+    try:
+        client = WampClient(environ["REI_ROUTER_URL"], environ.get("REI_REALM", "rei"), auth=auth,
+                            name="rei-sut").start()
+    except (WampError, ValueError) as error:
+        raise SutConnectionError(str(error)) from None
+    try:
+        for topic in protocol.FROM_SIMULATION:
+            client.subscribe(protocol.uri(run_id, topic), _enqueue(inbox, topic))
+        hello = client.call(protocol.uri(run_id, "hello"), {"name": name or type(sut).__name__})
+        _serve(sut, client, run_id, Session.from_hello(hello), inbox)
+    except WampError as error:
+        raise SutConnectionError(str(error)) from None
+    except Exception as error:
+        if type(error).__module__.startswith("autobahn"):  # refused by the router (e.g. not authorized)
+            raise SutConnectionError(f"the router refused: {error}") from None
+        raise
+    finally:
+        try:
+            client.close(timeout=5.0)
+        except WampError:
+            pass  # leaving a run that is already gone
+
+
+def main(sut: SystemUnderTest, *, name: str | None = None) -> NoReturn:
+    """``run(sut)`` as a program: exit 0 at the run's end, 1 if a callback raised, 2 if the run was lost."""
+    try:
+        run(sut, name=name)
+    except SutConnectionError as error:
+        print(f"rei sut: {error}", file=sys.stderr, flush=True)
+        sys.exit(EXIT_CONNECTION)
+    except Exception:  # noqa: BLE001 - the SUT's own bug: say where, and exit so the run sees it at once
+        traceback.print_exc()
+        sys.exit(EXIT_CALLBACK)
+    sys.exit(0)
+
+
+def _enqueue(inbox: queue.SimpleQueue[tuple[str, Any]], topic: str) -> Any:
+    def handler(payload: Any = None, *args: Any, **kwargs: Any) -> None:  # on the client's thread: queue only
+        inbox.put((topic, payload))
+    return handler
+
+
+def _serve(sut: SystemUnderTest, client: Any, run_id: str, session: Session,
+           inbox: queue.SimpleQueue[tuple[str, Any]]) -> None:
+    command_uri, status_uri = protocol.uri(run_id, "command"), protocol.uri(run_id, "status")
+    published: tuple[int, NavStatus, str] | None = None
+
+    def send_status() -> None:
+        nonlocal published
+        if sut._report is not None and sut._report != published:
+            published = sut._report
+            goal_id, status, text = published
+            client.publish(status_uri, {"goal_id": goal_id, "status": status.value, "text": text})
+
+    sut.on_start(session)
+    last_scan: LaserScan | None = None
+    while True:
+        try:
+            topic, payload = inbox.get(timeout=0.5)
+        except queue.Empty:
+            if client.failure is not None:
+                raise SutConnectionError(f"lost the run's router: {client.failure}")
+            continue
+        if topic == "tick":
+            observation = protocol.read_observation(payload, last_scan)
+            new_scan = payload.get("scan") is not None
+            if new_scan and observation.scan is not None:
+                last_scan = observation.scan
+                sut.on_scan(observation.scan)
+            twist = sut.on_tick(Tick(int(payload["tick"]), observation, new_scan))
+            send_status()
+            client.publish(command_uri, {"tick": int(payload["tick"]), "v": float(twist.v), "w": float(twist.w)})
+        elif topic == "goal":
+            goal = protocol.read_goal(payload)
+            sut._start_goal(goal)
+            sut.on_goal(goal)
+            send_status()
+        elif topic == "cancel":
+            if sut.goal is not None and sut.goal.index == payload.get("goal_id"):
+                sut.on_cancel(sut.goal)
+                send_status()
+        elif topic == "end":
+            sut.on_end(str(payload.get("reason", "")))
+            return

@@ -1,0 +1,97 @@
+# SPDX-License-Identifier: EPL-2.0
+"""Starting an external SUT (``--sut "COMMAND ..."``) and telling an attached one where to connect.
+
+The connection goes into environment variables and the secret stays in its 0600 file: a command line is
+readable by every user of the machine (docs/security.md). The command is split like a shell line but no shell
+runs it, so nothing in it is expanded twice. Its PATH starts with the folder of REI's own Python environment, so
+``rei nav-sut`` and ``python3 my_nav.py`` find REI and its client kit.
+"""
+
+from __future__ import annotations
+
+import os
+import shlex
+import shutil
+import sys
+from collections.abc import Mapping
+from dataclasses import dataclass
+from pathlib import Path
+
+from rei.processes import ManagedProcess
+
+LOG_FILE = "sut.log"
+ENV_FILE = "sut.env"
+#: Seconds a SUT has to exit by itself after ``end`` before it is stopped (SIGTERM, then SIGKILL).
+EXIT_GRACE = 2.0
+
+
+class SutLaunchError(ValueError):
+    """The SUT command cannot be started; the message says why."""
+
+
+@dataclass(frozen=True, slots=True)
+class Connection:
+    """Where and as whom a SUT joins: the four variables of docs/sut.md."""
+
+    router_url: str
+    realm: str
+    run_id: str
+    auth_file: Path | None
+
+    def environment(self) -> dict[str, str]:
+        env = {"REI_ROUTER_URL": self.router_url, "REI_REALM": self.realm, "REI_RUN_ID": self.run_id}
+        if self.auth_file is not None:
+            env["REI_AUTH_FILE"] = str(self.auth_file)
+        return env
+
+    def write_env_file(self, path: Path) -> Path:
+        """``KEY=value`` lines (shell-quoted) for a SUT the user starts (``--sut-attach``); no secret in it."""
+        path.write_text("".join(f"{key}={shlex.quote(value)}\n" for key, value in self.environment().items()),
+                        encoding="utf-8")
+        return path
+
+
+def split_command(command: str) -> list[str]:
+    """The argv of ``--sut``; raises SutLaunchError for an empty or unbalanced command."""
+    try:
+        argv = shlex.split(command)
+    except ValueError as error:
+        raise SutLaunchError(f"--sut {command!r}: {error}") from None
+    if not argv:
+        raise SutLaunchError("--sut needs a command, e.g. --sut \"python3 my_nav.py\"")
+    return argv
+
+
+def _search_path(base: Mapping[str, str]) -> str:
+    own = str(Path(sys.executable).parent)
+    rest = base.get("PATH", os.defpath)
+    return own if not rest else f"{own}{os.pathsep}{rest}"
+
+
+def check_command(command: str) -> list[str]:
+    """The argv, once its program is known to exist (so a typo fails before any process starts)."""
+    argv = split_command(command)
+    program = argv[0]
+    if os.sep in program:
+        if not (os.path.isfile(program) and os.access(program, os.X_OK)):
+            raise SutLaunchError(f"--sut: {program} is not an executable file")
+    elif shutil.which(program, path=_search_path(os.environ)) is None:
+        raise SutLaunchError(f"--sut: program {program!r} not found on PATH")
+    return argv
+
+
+def start(command: str, connection: Connection, out_dir: Path) -> ManagedProcess:
+    """Start the SUT in its own process group with its output in ``out_dir/sut.log``."""
+    argv = check_command(command)
+    env = {**connection.environment(), "PATH": _search_path(os.environ), "PYTHONUNBUFFERED": "1"}
+    try:
+        return ManagedProcess("system under test", argv, out_dir / LOG_FILE, env=env)
+    except OSError as error:
+        raise SutLaunchError(f"--sut: cannot start {argv[0]}: {error.strerror or error}") from None
+
+
+def stop(process: ManagedProcess) -> int:
+    """Give the SUT EXIT_GRACE seconds to leave after ``end``, then stop its process group; its exit code."""
+    if process.wait(EXIT_GRACE) is None:
+        return process.stop(grace=5.0)
+    return process.stop()

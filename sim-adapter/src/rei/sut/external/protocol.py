@@ -1,0 +1,237 @@
+# SPDX-License-Identifier: EPL-2.0
+"""The messages of the external-SUT protocol (docs/sut.md): built, read and checked in one place.
+
+Both sides use this module: the simulation (``rei.sut.external.controller``) builds ticks, goals and the ``hello``
+answer and checks what the SUT sends; the Python kit (``rei.sut.client``) reads ticks and goals back into the
+in-process types of ``rei.sut.api``. Nothing here talks to the network, so every rule is a plain function a test
+can pin.
+
+Numbers are sent as float64 (``float()``), so a value crosses the process boundary bit for bit: an external
+controller sees exactly the observation an in-process one would.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from rei.geometry import Pose2D, Twist2D
+from rei.sut.api import LaserScan, NavGoal, NavStatus, Observation, StaticMap
+
+PROTOCOL_VERSION = 1
+#: The URIs' last components, ``rei.run.<run_id>.sut.<name>``.
+FROM_SIMULATION = ("tick", "goal", "cancel", "end")
+FROM_SUT = ("command", "status")
+PROCEDURES = ("hello",)
+#: Statuses a SUT may report (IDLE is the state before any goal, never reported).
+REPORTABLE = frozenset({NavStatus.ACTIVE, NavStatus.SUCCEEDED, NavStatus.ABORTED, NavStatus.CANCELLED})
+MAX_TEXT = 1000
+_COMMAND_FIELDS = frozenset({"tick", "v", "w"})
+_STATUS_FIELDS = frozenset({"goal_id", "status", "text"})
+
+
+def uri(run_id: str, name: str) -> str:
+    """``rei.run.<run_id>.sut.<name>`` for one of the protocol's names."""
+    if name not in (*FROM_SIMULATION, *FROM_SUT, *PROCEDURES):
+        raise ValueError(f"no SUT URI named {name!r}")
+    return f"rei.run.{run_id}.sut.{name}"
+
+
+@dataclass(frozen=True, slots=True)
+class RobotLimits:
+    """What clamping uses: the robot's drive limits (m/s, rad/s)."""
+
+    max_linear: float
+    max_angular: float
+
+
+# -- simulation -> SUT -----------------------------------------------------------------------------------------
+
+
+def hello_answer(*, run_id: str, clock: str, control_rate: float, deadline: float, start: Pose2D,
+                 robot: Mapping[str, Any], goals: int, static_map: StaticMap | None) -> dict[str, Any]:
+    """The session description ``hello`` returns (docs/sut.md)."""
+    return {
+        "protocol": PROTOCOL_VERSION, "run_id": run_id, "clock": clock, "control_rate": float(control_rate),
+        "deadline": float(deadline), "start": _pose(start), "robot": dict(robot), "goals": goals,
+        "map": None if static_map is None else {
+            "bounds": [float(v) for v in static_map.bounds],
+            "obstacles": [[float(v) for v in box] for box in static_map.obstacles],
+        },
+    }
+
+
+def tick_message(tick: int, observation: Observation, *, new_scan: bool, scan_time: float) -> dict[str, Any]:
+    """One control period: clock, odometry and (when taken since the previous tick) the newest scan."""
+    scan = observation.scan
+    return {
+        "tick": tick, "t": float(observation.t),
+        "odom": {"pose": _pose(observation.odom), "twist": [float(observation.odom_twist.v),
+                                                            float(observation.odom_twist.w)]},
+        "scan": _scan(scan, scan_time) if new_scan and scan is not None else None,
+    }
+
+
+def goal_message(t: float, goal: NavGoal) -> dict[str, Any]:
+    return {"goal_id": goal.index, "t": float(t), "pose": _pose(goal.pose), "tolerance": float(goal.tolerance)}
+
+
+def cancel_message(t: float, goal_id: int) -> dict[str, Any]:
+    return {"goal_id": goal_id, "t": float(t)}
+
+
+def end_message(t: float, reason: str) -> dict[str, Any]:
+    return {"t": float(t), "reason": reason}
+
+
+def _pose(pose: Pose2D) -> list[float]:
+    return [float(pose.x), float(pose.y), float(pose.yaw)]
+
+
+def _scan(scan: LaserScan, scan_time: float) -> dict[str, Any]:
+    count = len(scan.ranges)
+    return {
+        "t": float(scan.t), "angle_min": float(scan.angle_min),
+        "angle_max": float(scan.angle_min + (count - 1) * scan.angle_increment),
+        "angle_increment": float(scan.angle_increment), "scan_time": float(scan_time),
+        "range_min": float(scan.range_min), "range_max": float(scan.range_max),
+        "ranges": np.asarray(scan.ranges, dtype=np.float64).tolist(),
+    }
+
+
+# -- read back by a Python SUT ---------------------------------------------------------------------------------
+
+
+def read_pose(values: Any) -> Pose2D:
+    x, y, yaw = values
+    return Pose2D(float(x), float(y), float(yaw))
+
+
+def read_static_map(hello: Mapping[str, Any]) -> StaticMap | None:
+    data = hello.get("map")
+    if data is None:
+        return None
+    size_x, size_y = hello["robot"]["footprint"]
+    return StaticMap(bounds=tuple(float(v) for v in data["bounds"]),  # type: ignore[arg-type]
+                     obstacles=tuple(tuple(float(v) for v in box) for box in data["obstacles"]),  # type: ignore[misc]
+                     robot_size=(float(size_x), float(size_y)))
+
+
+def read_scan(data: Mapping[str, Any]) -> LaserScan:
+    return LaserScan(t=float(data["t"]), angle_min=float(data["angle_min"]),
+                     angle_increment=float(data["angle_increment"]), range_min=float(data["range_min"]),
+                     range_max=float(data["range_max"]), ranges=np.asarray(data["ranges"], dtype=np.float64))
+
+
+def read_goal(data: Mapping[str, Any]) -> NavGoal:
+    return NavGoal(int(data["goal_id"]), read_pose(data["pose"]), float(data["tolerance"]))
+
+
+def read_observation(data: Mapping[str, Any], last_scan: LaserScan | None) -> Observation:
+    """The tick as an in-process controller's Observation; ``last_scan`` stands in when the tick has none."""
+    odom = data["odom"]
+    v, w = odom["twist"]
+    scan = read_scan(data["scan"]) if data.get("scan") is not None else last_scan
+    return Observation(t=float(data["t"]), odom=read_pose(odom["pose"]), odom_twist=Twist2D(float(v), float(w)),
+                       scan=scan)
+
+
+# -- SUT -> simulation: the rules of docs/sut.md, "What happens to bad input" ---------------------------------
+
+
+@dataclass(frozen=True, slots=True)
+class Command:
+    """A command that passed the checks; ``clamped`` says it was limited to the robot's speeds."""
+
+    tick: int
+    twist: Twist2D
+    clamped: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class Status:
+    goal_id: int
+    status: NavStatus
+    text: str
+
+
+@dataclass(frozen=True, slots=True)
+class Rejected:
+    """Not applied. ``stale``: well formed but for a past tick or another goal (ignored); else malformed."""
+
+    reason: str
+    stale: bool = False
+
+
+def check_command(payload: Any, *, current_tick: int, answered: bool, limits: RobotLimits) -> Command | Rejected:
+    """A ``command`` against the tick the simulation last published (``answered``: a command for it was taken)."""
+    if not isinstance(payload, Mapping):
+        return Rejected(f"a command must be a map {{tick, v, w}}, got {_kind(payload)}")
+    keys = set(payload)
+    if keys != _COMMAND_FIELDS:
+        missing, extra = sorted(_COMMAND_FIELDS - keys), sorted(map(str, keys - _COMMAND_FIELDS))
+        return Rejected("a command has exactly the fields tick, v, w"
+                        + (f"; missing {', '.join(missing)}" if missing else "")
+                        + (f"; unknown {', '.join(extra)}" if extra else ""))
+    tick = payload["tick"]
+    if not _is_int(tick) or tick < 0:
+        return Rejected(f"tick must be an integer >= 0, got {tick!r}")
+    values = []
+    for name in ("v", "w"):
+        value = payload[name]
+        if not _is_number(value):
+            return Rejected(f"{name} must be a number, got {_kind(value)}")
+        if not math.isfinite(value):
+            return Rejected(f"{name} must be finite, got {value!r}")
+        values.append(float(value))
+    if tick > current_tick:
+        return Rejected(f"tick {tick} was not published yet (the last is {current_tick})")
+    if tick < current_tick or answered:
+        return Rejected(f"tick {tick} is already answered", stale=True)
+    v, w = values
+    clamped_v = max(-limits.max_linear, min(limits.max_linear, v))
+    clamped_w = max(-limits.max_angular, min(limits.max_angular, w))
+    return Command(tick, Twist2D(clamped_v, clamped_w), clamped=(clamped_v, clamped_w) != (v, w))
+
+
+def check_status(payload: Any, *, current_goal: int | None) -> Status | Rejected:
+    """A ``status`` against the goal the simulation last sent (None before the first)."""
+    if not isinstance(payload, Mapping):
+        return Rejected(f"a status must be a map {{goal_id, status, text?}}, got {_kind(payload)}")
+    keys = set(payload)
+    if not {"goal_id", "status"} <= keys <= _STATUS_FIELDS:
+        return Rejected(f"a status has the fields goal_id, status and optionally text, got {sorted(map(str, keys))}")
+    goal_id, name, text = payload["goal_id"], payload["status"], payload.get("text", "")
+    if not _is_int(goal_id):
+        return Rejected(f"goal_id must be an integer, got {goal_id!r}")
+    try:
+        status = NavStatus(name)
+    except (ValueError, TypeError):
+        status = None
+    if status not in REPORTABLE:
+        return Rejected(f"status must be one of {', '.join(sorted(s.value for s in REPORTABLE))}, got {name!r}")
+    if text is None:
+        text = ""
+    if not isinstance(text, str) or len(text) > MAX_TEXT:
+        return Rejected(f"text must be a string of at most {MAX_TEXT} characters")
+    if goal_id != current_goal:
+        return Rejected(f"status for goal {goal_id}, the current goal is {current_goal}", stale=True)
+    assert status is not None
+    return Status(goal_id, status, text)
+
+
+def _is_int(value: Any) -> bool:
+    return isinstance(value, int) and not isinstance(value, bool)
+
+
+def _is_number(value: Any) -> bool:
+    return isinstance(value, int | float) and not isinstance(value, bool)
+
+
+def _kind(value: Any) -> str:
+    text = repr(value)
+    return f"{type(value).__name__} {text[:40]}{'...' if len(text) > 40 else ''}"
