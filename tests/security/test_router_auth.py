@@ -236,3 +236,53 @@ def test_bind_with_tls_serves_authenticated_wss_only(tmp_path: Path):
             WampClient(url.replace("wss://", "ws://"), auth=router.credentials("viewer"), connect_timeout=5).start()
         # the loopback transports stay loopback
         assert router.ws_url.startswith("ws://127.0.0.1:") and router.rs_url.startswith("rs://127.0.0.1:")
+
+
+# -- the external system under test (docs/sut.md) ----------------------------------------------------------------
+
+
+def _sut(name: str) -> str:
+    return f"rei.run.{RUN_ID}.sut.{name}"
+
+
+def test_the_sut_role_sees_what_a_robot_sees_and_answers_but_never_the_ground_truth(router: Router):
+    commands, ticks = _Inbox(), _Inbox()
+    with _client(router, "simulation") as simulation, _client(router, "sut", router.ws_url) as sut:
+        simulation.subscribe(_sut("command"), commands)
+        simulation.register(_sut("hello"), lambda *args: {"protocol": 1})
+        sut.subscribe(_sut("tick"), ticks)
+        assert sut.call(_sut("hello"), {"name": "test"}) == {"protocol": 1}
+        simulation.publish_acknowledged(_sut("tick"), {"tick": 0})
+        sut.publish_acknowledged(_sut("command"), {"tick": 0, "v": 0.0, "w": 0.0})
+        assert ticks.arrived.wait(5) and commands.arrived.wait(5)
+        for topic in (TOPICS.state, TOPICS.mission, TOPICS.signal):  # ground truth and verdict inputs
+            with pytest.raises(ApplicationError, match="not_authorized"):
+                sut.subscribe(topic, lambda payload: None)
+        for procedure in (TOPICS.config, TOPICS.mission_info, TOPICS.snapshot):
+            with pytest.raises(ApplicationError, match="not_authorized"):
+                sut.call(procedure)
+        with pytest.raises(ApplicationError, match="not_authorized"):  # it cannot play the simulation
+            sut.publish_acknowledged(_sut("tick"), {"tick": 1})
+        with pytest.raises(ApplicationError, match="not_authorized"):
+            sut.register(_sut("hello") + "_x", lambda: None)
+    assert commands.items == [{"tick": 0, "v": 0.0, "w": 0.0}]
+
+
+@pytest.mark.parametrize("topic", [TOPICS.state, TOPICS.mission, TOPICS.signal])
+def test_the_sut_cannot_forge_what_verdicts_read(router: Router, topic: str):
+    _assert_refused_and_unseen(router, "sut", "evaluator", topic)
+
+
+def test_a_sut_with_another_run_s_credentials_or_none_is_refused(router: Router, tmp_path: Path):
+    with Router(run_dir=tmp_path / "other", run_id="another-run") as other:
+        stolen = other.credentials("sut")
+        with pytest.raises(WampError, match="not_authorized|authentication_failed"):
+            WampClient(router.ws_url, auth=stolen, connect_timeout=JOIN_S).start()
+    # and the kit's own check: no credential file, no join
+    script = "from rei.sut.client import SystemUnderTest, main\nmain(SystemUnderTest())\n"
+    env = {**os.environ, "REI_ROUTER_URL": router.ws_url, "REI_RUN_ID": RUN_ID}
+    env.pop("REI_AUTH_FILE", None)
+    result = subprocess.run([sys.executable, "-c", script], check=False, env=env, capture_output=True, text=True,
+                            timeout=60)
+    assert result.returncode == 2
+    assert "no_auth_method" in result.stderr or "not_authorized" in result.stderr, result.stderr

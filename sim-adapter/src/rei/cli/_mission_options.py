@@ -44,6 +44,7 @@ def check_mission_options(args: argparse.Namespace) -> None:
     from rei.sim.faults import parse_fault
     from rei.sut.registry import UnknownControllerError, create_controller
 
+    sut_options(args)
     try:
         if args.fault:
             parse_fault(args.fault)
@@ -52,7 +53,6 @@ def check_mission_options(args: argparse.Namespace) -> None:
         raise CommandError(str(error)) from None
     if not args.state_rate > 0:
         raise CommandError(f"--state-rate must be positive, got {args.state_rate}")
-    sut_options(args)
 
 
 def sut_options(args: argparse.Namespace, *, router_url: str | None = None,

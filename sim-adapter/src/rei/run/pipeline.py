@@ -183,11 +183,13 @@ class _Run:
         attach(client, self.run_id, self.evaluator, also=self.signals.write)
         if self.viewer is not None:
             _await_viewer(self.viewer)
+        sut_args = ["--sut-router", router.ws_url, "--sut-auth-file", str(router.auth_file("sut"))] \
+            if _has_sut(options.sim_args) else []
         self.sim = ManagedProcess("simulation", [
             sys.executable, "-m", "rei.cli", "sim", str(self.case_dir), "-o", str(out), "--router", router.rs_url,
             "--auth-file", str(router.auth_file("simulation")), "--run-id", self.run_id, "--progress", "lines",
-            "--reconnect", str(ROUTER_RECONNECT), "--wait-for-monitor", *options.sim_args],
-            out / "simulation.log", on_line=lambda line: _parse_progress(line, self.progress))
+            "--reconnect", str(ROUTER_RECONNECT), "--wait-for-monitor", *sut_args, *options.sim_args],
+            out / "simulation.log", on_line=lambda line: _on_sim_line(line, self.progress))
 
     def supervise(self) -> None:
         """While the simulation runs: restart a dead router, note a dead monitor, report progress."""
@@ -207,8 +209,21 @@ class _Run:
                 self.on_progress(Progress(p["t"], int(p["done"]), int(p["total"]), evaluator.total))
             time.sleep(0.2)
         # 0 and 1 are a mission that succeeded or failed; anything else, or no summary, is a broken run
-        if sim.poll() not in (0, 1) or not (self.out / "sim.json").is_file():
+        summary = _json(self.out / "sim.json") if (self.out / "sim.json").is_file() else None
+        if summary is not None and summary.get("error"):  # the simulation's own account (an external SUT broke it)
+            raise _Interrupted(summary["error"])
+        if sim.poll() not in (0, 1) or summary is None:
             raise _Interrupted(f"{sim.describe_exit()}: {sim.log_tail(5)}")
+        self._note_sut(summary.get("sut"))
+
+    def _note_sut(self, sut: Mapping[str, Any] | None) -> None:
+        """What an external SUT sent that was not applied as is: in the summary's notes (docs/sut.md)."""
+        if not sut or not (sut["rejected"] or sut["clamped"]):
+            return
+        first = f"; first: {sut['first_rejections'][0]}" if sut["first_rejections"] else ""
+        self.evaluator.note(f"the system under test sent {sut['commands']} valid commands, {sut['clamped']} of them "
+                            f"clamped to the robot's limits; {sut['rejected']} messages were rejected{first}",
+                            self.progress["t"])
 
     def drain(self) -> None:
         """The simulation is done: let the monitor finish, then complete the received signals from its record."""
@@ -356,6 +371,17 @@ def _await_viewer(viewer: ViewServer) -> None:
         print(f"view:   waiting up to {VIEWER_WAIT:.0f} s for the page to connect...", flush=True)
         if not viewer.wait_for_viewer(VIEWER_WAIT):
             print("view:   no page connected; running anyway", flush=True)
+
+
+def _has_sut(sim_args: tuple[str, ...]) -> bool:
+    return "--sut" in sim_args or "--sut-attach" in sim_args
+
+
+def _on_sim_line(line: str, progress: dict[str, float]) -> None:
+    """A line the simulation printed: progress is parsed, what concerns an external SUT shown to the user."""
+    if line.startswith("sut: "):
+        print(line, flush=True)
+    _parse_progress(line, progress)
 
 
 def _parse_progress(line: str, progress: dict[str, float]) -> None:

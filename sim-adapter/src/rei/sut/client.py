@@ -120,6 +120,11 @@ class SystemUnderTest:
         """The goal being worked on (None before the first)."""
         return self._goal
 
+    @property
+    def status(self) -> NavStatus:
+        """What was last reported for the current goal (IDLE before the first goal)."""
+        return NavStatus.IDLE if self._report is None else self._report[1]
+
     def report(self, status: NavStatus, text: str = "") -> None:
         """The current goal's state; sent before the next command if it changed."""
         if self._goal is not None:
