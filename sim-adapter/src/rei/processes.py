@@ -27,13 +27,13 @@ class ManagedProcess:
     """A child process with its output in ``log`` and, optionally, each stdout line passed to ``on_line``."""
 
     def __init__(self, name: str, argv: Sequence[str], log: Path, *, on_line: Callable[[str], None] | None = None,
-                 env: dict[str, str] | None = None) -> None:
+                 env: dict[str, str] | None = None, cwd: Path | None = None) -> None:
         self.name = name
         self.log = log
         self._log = open(log, "w", encoding="utf-8")  # noqa: SIM115 - closed in stop()
         self._process = subprocess.Popen(
             die_with_parent(argv), stdin=subprocess.DEVNULL, stdout=subprocess.PIPE if on_line else self._log,
-            stderr=self._log, start_new_session=True,
+            stderr=self._log, start_new_session=True, cwd=cwd,
             env={**os.environ, **(env or {})}, text=True, bufsize=1)
         self._reader: threading.Thread | None = None
         if on_line is not None:

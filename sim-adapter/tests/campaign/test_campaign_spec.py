@@ -63,3 +63,38 @@ def test_the_example_campaigns_are_valid(tmp_path: Path) -> None:
     groups = [r.group for r in thesis.runs]
     assert (groups.count("small"), groups.count("medium"), groups.count("large")) == (14, 8, 1)
     assert plan_campaign(load_spec(EXAMPLES / "campaigns" / "faults.yaml"), tmp_path).runs
+
+
+def test_an_external_sut_is_a_variant_setting_with_the_spec_s_folder_as_its_working_folder(tmp_path: Path) -> None:
+    script = tmp_path / "sut" / "go.sh"
+    script.parent.mkdir()
+    script.write_text("#!/bin/sh\n")
+    script.chmod(0o755)
+    parsed = parse_spec(spec(sut={"command": "rei nav-sut", "map": True, "deadline": 5},
+                             variants=[{"name": "external"}, {"name": "inproc", "controller": "nav"},
+                                       {"name": "mine", "sut": {"command": "sut/go.sh", "clock": "realtime"}}]),
+                        base=tmp_path)
+    external, inproc, mine = (r.sut for r in plan_campaign(parsed, tmp_path / "out").runs[:3])
+    assert external == {"command": "rei nav-sut", "clock": "lockstep", "deadline": 5.0, "map": True,
+                        "join_timeout": 60.0, "cwd": str(tmp_path)}
+    assert inproc is None
+    assert mine is not None and (mine["command"], mine["clock"]) == ("sut/go.sh", "realtime")
+
+
+@pytest.mark.parametrize(("sut", "message"), [
+    ({"command": "no-such-program"}, "program 'no-such-program' not found"),
+    ({"command": "rei nav-sut", "clock": "fast"}, "'clock' must be one of lockstep, realtime"),
+    ({"command": "rei nav-sut", "deadline": 0}, "'deadline' must be positive"),
+    ({"command": "rei nav-sut", "attach": True}, "unknown key 'attach'"),
+    ({"map": True}, "'command' is required"),
+])
+def test_a_bad_external_sut_is_refused_with_its_key_path(sut: dict, message: str) -> None:
+    with pytest.raises(SpecError, match="spec: variants\\[0\\]: sut: ") as error:
+        parse_spec(spec(variants=[{"name": "v", "sut": sut}]), base=EXAMPLES)
+    assert message in str(error.value)
+
+
+def test_a_variant_is_either_in_process_or_external() -> None:
+    with pytest.raises(SpecError, match="either 'controller' .* or 'sut'"):
+        parse_spec(spec(variants=[{"name": "v", "controller": "nav", "sut": {"command": "rei nav-sut"}}]),
+                   base=EXAMPLES)

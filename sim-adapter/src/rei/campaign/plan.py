@@ -56,6 +56,7 @@ class RunTask:
     report: bool
     case_dir: str
     run_dir: str
+    sut: dict[str, Any] | None = None  # rei.campaign.spec.ExternalSut as a dict; None: the in-process controller
 
     def to_dict(self) -> dict[str, Any]:
         return asdict(self)
@@ -99,6 +100,7 @@ def plan_campaign(spec: Spec, out: Path) -> Plan:
                     runs.append(RunTask(
                         key=key, group=group.name, case=source.key, variant=variant.name, repetition=rep,
                         seed=spec.seed + rep, humans=variant.humans, fault=variant.fault,
-                        controller=variant.controller, mode=spec.mode, timeout=spec.timeout, report=spec.report,
+                        controller=variant.controller, sut=variant.sut.to_dict() if variant.sut else None,
+                        mode=spec.mode, timeout=spec.timeout, report=spec.report,
                         case_dir=str(source.case_dir(out)), run_dir=str(out / "runs" / key)))
     return Plan(tuple(cases.values()), tuple(runs))

@@ -10,8 +10,10 @@ run 17 of 23 an hour later. Format (docs/campaigns.md)::
     timeout: 300                # wall seconds per run before it is stopped and recorded as ERROR
     mode: replay                # replay (default) or pipeline (`rei run`: router, live monitor)
     controller: nav             # default controller of the variants
+    sut: {command: "rei nav-sut", map: true}  # or an external SUT (docs/sut.md): command, clock, deadline,
+                                #   map, join_timeout; a variant's own sut: or controller: wins
     report: false               # write each run's report.html too
-    variants: [{name: base}]    # default variants: name, humans (true), fault (null), controller
+    variants: [{name: base}]    # default variants: name, humans (true), fault (null), controller, sut
     groups:
       - name: small
         rooms: {size: small, density: dense, humans: 0, count: 7, seed: 1}
@@ -41,11 +43,32 @@ class SpecError(ValueError):
 
 
 @dataclass(frozen=True, slots=True)
+class ExternalSut:
+    """A variant's external system under test (``rei run --sut COMMAND`` and its options)."""
+
+    command: str
+    clock: str = "lockstep"
+    deadline: float = 10.0
+    map: bool = False
+    join_timeout: float = 60.0
+    cwd: str | None = None  # the spec file's folder: relative paths in the command are relative to it
+
+    def to_dict(self) -> dict[str, Any]:
+        return dataclasses.asdict(self)
+
+    def argv(self) -> list[str]:
+        """As `rei run` options (run in ``cwd``)."""
+        return ["--sut", self.command, "--sut-clock", self.clock, "--sut-deadline", str(self.deadline),
+                "--sut-join-timeout", str(self.join_timeout), *(["--sut-map"] if self.map else [])]
+
+
+@dataclass(frozen=True, slots=True)
 class Variant:
     name: str
     humans: bool = True
     fault: str | None = None
     controller: str = "nav"
+    sut: ExternalSut | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -93,7 +116,7 @@ def load_spec(path: Path) -> Spec:
 def parse_spec(data: Any, *, base: Path, where: str = "spec", default_name: str = "campaign") -> Spec:
     """A checked ``Spec`` from parsed YAML; relative case paths are resolved against ``base``."""
     top = _Reader(data, where)
-    top.only("name", "seed", "repetitions", "timeout", "mode", "controller", "report", "variants", "groups")
+    top.only("name", "seed", "repetitions", "timeout", "mode", "controller", "sut", "report", "variants", "groups")
     name = top.str("name", default_name)
     seed = top.int("seed", 0, minimum=0)
     repetitions = top.int("repetitions", 1, minimum=1)
@@ -101,13 +124,14 @@ def parse_spec(data: Any, *, base: Path, where: str = "spec", default_name: str 
     mode = top.choice("mode", MODES, "replay")
     controller = top.str("controller", "nav")
     report = top.bool("report", False)
-    variants = _variants(top, "variants", controller, (Variant("base", controller=controller),))
+    sut = _sut(top, base)
+    variants = _variants(top, "variants", controller, (Variant("base", controller=controller, sut=sut),), base, sut)
     groups_raw = top.get("groups")
     if not isinstance(groups_raw, list) or not groups_raw:
         raise SpecError(f"{where}: 'groups' must be a non-empty list")
     groups = []
     for i, raw in enumerate(groups_raw):
-        groups.append(_group(_Reader(raw, f"{where}: groups[{i}]"), base, controller, variants, repetitions))
+        groups.append(_group(_Reader(raw, f"{where}: groups[{i}]"), base, controller, sut, variants, repetitions))
     names = [g.name for g in groups]
     duplicate = next((n for n in names if names.count(n) > 1), None)
     if duplicate:
@@ -115,7 +139,8 @@ def parse_spec(data: Any, *, base: Path, where: str = "spec", default_name: str 
     return Spec(name, seed, timeout, mode, report, tuple(groups))
 
 
-def _group(r: _Reader, base: Path, controller: str, variants: tuple[Variant, ...], repetitions: int) -> Group:
+def _group(r: _Reader, base: Path, controller: str, sut: ExternalSut | None, variants: tuple[Variant, ...],
+           repetitions: int) -> Group:
     r.only("name", "cases", "rooms", "variants", "repetitions")
     name = r.name("name", None)
     cases_raw, rooms_raw = r.get("cases"), r.get("rooms")
@@ -135,7 +160,7 @@ def _group(r: _Reader, base: Path, controller: str, variants: tuple[Variant, ...
             raise SpecError(f"{r.where}: two cases have the same name; give each file its own name")
     else:
         rooms = _rooms(_Reader(rooms_raw, f"{r.where}: rooms"))
-    return Group(name, cases, rooms, _variants(r, "variants", controller, variants),
+    return Group(name, cases, rooms, _variants(r, "variants", controller, variants, base, sut),
                  r.int("repetitions", repetitions, minimum=1))
 
 
@@ -152,7 +177,28 @@ def _rooms(r: _Reader) -> RoomSettings:
     return settings
 
 
-def _variants(r: _Reader, key: str, controller: str, default: tuple[Variant, ...]) -> tuple[Variant, ...]:
+def _sut(r: _Reader, base: Path) -> ExternalSut | None:
+    """The ``sut:`` mapping of a spec or variant, checked as `rei run --sut` checks its options."""
+    from rei.sut.external import SutOptions
+    from rei.sut.external.process import SutLaunchError, check_command
+
+    if r.get("sut") is None:
+        return None
+    s = _Reader(r.get("sut"), f"{r.where}: sut")
+    s.only("command", "clock", "deadline", "map", "join_timeout")
+    sut = ExternalSut(command=s.str("command", None), clock=s.choice("clock", ("lockstep", "realtime"), "lockstep"),
+                      deadline=s.number("deadline", 10.0), map=s.bool("map", False),
+                      join_timeout=s.number("join_timeout", 60.0), cwd=str(base))
+    try:
+        SutOptions(command=sut.command, clock=sut.clock, deadline=sut.deadline)  # type: ignore[arg-type]
+        check_command(sut.command, base)
+    except (ValueError, SutLaunchError) as error:
+        raise SpecError(f"{s.where}: {error}") from None
+    return sut
+
+
+def _variants(r: _Reader, key: str, controller: str, default: tuple[Variant, ...], base: Path,
+              sut: ExternalSut | None = None) -> tuple[Variant, ...]:
     from rei.sim.faults import parse_fault
     from rei.sut.registry import available_controllers
 
@@ -164,7 +210,7 @@ def _variants(r: _Reader, key: str, controller: str, default: tuple[Variant, ...
     variants = []
     for i, item in enumerate(raw):
         v = _Reader(item, f"{r.where}: {key}[{i}]")
-        v.only("name", "humans", "fault", "controller")
+        v.only("name", "humans", "fault", "controller", "sut")
         fault = v.get("fault")
         if fault is not None:
             if not isinstance(fault, str):
@@ -176,7 +222,11 @@ def _variants(r: _Reader, key: str, controller: str, default: tuple[Variant, ...
         spec = v.str("controller", controller)
         if spec.partition(":")[0] not in available_controllers():
             raise SpecError(f"{v.where}: unknown controller {spec!r}; available: {', '.join(available_controllers())}")
-        variants.append(Variant(v.name("name", None), v.bool("humans", True), fault, spec))
+        own_sut = _sut(v, base)
+        if own_sut is not None and v.get("controller") is not None:
+            raise SpecError(f"{v.where}: give either 'controller' (in-process) or 'sut' (external), not both")
+        variant_sut = own_sut if own_sut is not None else (None if v.get("controller") is not None else sut)
+        variants.append(Variant(v.name("name", None), v.bool("humans", True), fault, spec, variant_sut))
     names = [x.name for x in variants]
     if len(set(names)) != len(names):
         raise SpecError(f"{r.where}: two variants have the same name")

@@ -19,6 +19,7 @@ Exit 0 once ``summary.json`` is written (whatever the verdicts); anything else i
 from __future__ import annotations
 
 import json
+import os
 import sys
 import time
 from pathlib import Path
@@ -61,7 +62,13 @@ def _replay(task: RunTask, run_dir: Path) -> int:
     with _Phase(timing, "simulation"):
         options = MissionRunOptions(controller=task.controller, seed=task.seed, humans=task.humans,
                                     fault=task.fault)
-        result = run_mission(Path(task.case_dir), run_dir, options, run_id=task.key)
+        if task.sut is None:
+            result = run_mission(Path(task.case_dir), run_dir, options, run_id=task.key)
+        else:
+            result = _with_external_sut(task, run_dir, options)
+        if result.error is not None:  # the worker's log is the run's ERROR evidence (rei.campaign.supervise)
+            print(f"rei: error: {result.error}", file=sys.stderr, flush=True)
+            return 2
     with _Phase(timing, "evaluation"):  # this process's CPU only: the monitor's replay is a child JVM
         judged = reevaluate(run_dir, Path(task.case_dir), settings=RunSettings(
             humans=task.humans, run_id=task.key, sim_duration=result.sim_time))
@@ -74,12 +81,41 @@ def _replay(task: RunTask, run_dir: Path) -> int:
     return 0
 
 
+def _with_external_sut(task: RunTask, run_dir: Path, options: Any) -> Any:
+    """The mission with an external SUT: it needs a router, so the run gets its own (as `rei sim` does)."""
+    import dataclasses
+
+    from rei.campaign.spec import ExternalSut
+    from rei.run import run_mission
+    from rei.sut.external import SutOptions
+    from rei.wamp.client import WampClient
+    from rei.wamp.router import Router
+
+    assert task.sut is not None
+    sut = ExternalSut(**task.sut)
+    with Router(run_dir=run_dir / "router", run_id=task.key, die_with_parent=True) as router, \
+            WampClient(router.rs_url, auth=router.credentials("simulation")) as client:
+        options = dataclasses.replace(options, sut=SutOptions(
+            command=sut.command, clock=sut.clock, deadline=sut.deadline,  # type: ignore[arg-type]
+            offer_map=sut.map, join_timeout=sut.join_timeout, router_url=router.ws_url,
+            auth_file=router.auth_file("sut"), cwd=Path(sut.cwd) if sut.cwd else None))
+        return run_mission(Path(task.case_dir), run_dir, options, run_id=task.key, client=client)
+
+
 def _pipeline(task: RunTask, run_dir: Path) -> int:
     from rei.cli import main
 
     timing: dict[str, Any] = {}
-    argv = ["run", task.case_dir, "-o", str(run_dir), "--seed", str(task.seed), "--controller", task.controller,
-            "--run-id", task.key.replace("__", "-")]
+    argv = ["run", task.case_dir, "-o", str(run_dir), "--seed", str(task.seed), "--run-id", task.key.replace("__", "-")]
+    if task.sut is None:
+        argv += ["--controller", task.controller]
+    else:
+        from rei.campaign.spec import ExternalSut
+
+        sut = ExternalSut(**task.sut)
+        argv += sut.argv()
+        if sut.cwd:  # the command's relative paths are the spec's; every path of argv is absolute
+            os.chdir(sut.cwd)
     if not task.humans:
         argv.append("--no-humans")
     if task.fault:

@@ -37,6 +37,7 @@ class SutOptions:
     join_timeout: float = DEFAULT_JOIN_TIMEOUT
     router_url: str | None = None  # what the SUT connects to (default: the simulation's own URL)
     auth_file: Path | None = None  # the sut role's credentials (None on an anonymous router)
+    cwd: Path | None = None  # where the command runs (default: the current folder; a campaign: its spec's)
 
     def __post_init__(self) -> None:
         if (self.command is None) == (not self.attach):
@@ -72,7 +73,7 @@ def external_sut(options: SutOptions, client: WampClient, run_id: str, out_dir: 
     try:
         if options.command is not None:
             try:
-                started = sut_process.start(options.command, connection, out_dir)
+                started = sut_process.start(options.command, connection, out_dir, options.cwd)
             except SutLaunchError as error:
                 raise SutError(str(error)) from None
             controller.attach_process(started)

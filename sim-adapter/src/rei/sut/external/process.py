@@ -68,24 +68,26 @@ def _search_path(base: Mapping[str, str]) -> str:
     return own if not rest else f"{own}{os.pathsep}{rest}"
 
 
-def check_command(command: str) -> list[str]:
-    """The argv, once its program is known to exist (so a typo fails before any process starts)."""
+def check_command(command: str, cwd: Path | None = None) -> list[str]:
+    """The argv, once its program is known to exist (so a typo fails before any process starts); a relative
+    program path is relative to ``cwd`` (default: the current folder)."""
     argv = split_command(command)
     program = argv[0]
     if os.sep in program:
-        if not (os.path.isfile(program) and os.access(program, os.X_OK)):
-            raise SutLaunchError(f"--sut: {program} is not an executable file")
+        path = Path(program) if cwd is None else cwd / program
+        if not (path.is_file() and os.access(path, os.X_OK)):
+            raise SutLaunchError(f"--sut: {path} is not an executable file")
     elif shutil.which(program, path=_search_path(os.environ)) is None:
         raise SutLaunchError(f"--sut: program {program!r} not found on PATH")
     return argv
 
 
-def start(command: str, connection: Connection, out_dir: Path) -> ManagedProcess:
-    """Start the SUT in its own process group with its output in ``out_dir/sut.log``."""
-    argv = check_command(command)
+def start(command: str, connection: Connection, out_dir: Path, cwd: Path | None = None) -> ManagedProcess:
+    """Start the SUT in its own process group, in ``cwd``, with its output in ``out_dir/sut.log``."""
+    argv = check_command(command, cwd)
     env = {**connection.environment(), "PATH": _search_path(os.environ), "PYTHONUNBUFFERED": "1"}
     try:
-        return ManagedProcess("system under test", argv, out_dir / LOG_FILE, env=env)
+        return ManagedProcess("system under test", argv, out_dir / LOG_FILE, env=env, cwd=cwd)
     except OSError as error:
         raise SutLaunchError(f"--sut: cannot start {argv[0]}: {error.strerror or error}") from None
 

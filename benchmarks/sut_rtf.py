@@ -1,0 +1,69 @@
+# SPDX-License-Identifier: EPL-2.0
+"""What the process boundary costs: the mission's real-time factor with the reference navigation as an external
+SUT (`rei nav-sut`, lockstep over the router) beside the same mission with the in-process controller, measured in
+the same run, interleaved, same seeds. Also the per-tick round trip (tick published -> command taken), whose
+p50 includes the navigation's own step. Target: external >= 0.7 x in-process.
+
+Both variants publish state at 20 Hz through the same authenticated Crossbar router, as `rei run` does.
+
+    .venv/bin/python benchmarks/sut_rtf.py [--runs 3] [--example simple_navigation]
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import statistics
+import tempfile
+from pathlib import Path
+
+from rei import toolchain
+from rei.run import MissionRunOptions, MissionRunResult, run_mission
+from rei.sut.external import SutOptions
+from rei.wamp.client import WampClient
+from rei.wamp.router import Router
+
+REPO = Path(__file__).resolve().parents[1]
+TARGET = 0.7
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--runs", type=int, default=3)
+    parser.add_argument("--example", default="simple_navigation")
+    args = parser.parse_args()
+
+    with tempfile.TemporaryDirectory(prefix="rei-bench-") as tmp:
+        case = Path(tmp) / "case"
+        code = toolchain.run_jar(toolchain.find_jar("cli"),
+                                 ["generate", str(REPO / "examples" / f"{args.example}.rei"), "-o", str(case),
+                                  "--quiet"], java=toolchain.find_java())
+        if code != 0:
+            raise SystemExit(f"generation failed with exit code {code}")
+        with Router(run_dir=Path(tmp) / "router") as router:  # no run id: permissions for every run's URIs
+            external = SutOptions(command="rei nav-sut", offer_map=True, router_url=router.ws_url,
+                                  auth_file=router.auth_file("sut"))
+            rows: dict[str, list[MissionRunResult]] = {"in-process": [], "external": []}
+            for run in range(args.runs):
+                for variant, sut in (("in-process", None), ("external", external)):
+                    with WampClient(router.rs_url, auth=router.credentials("simulation")) as client:
+                        result = run_mission(case, Path(tmp) / f"{variant}{run}", MissionRunOptions(seed=run, sut=sut),
+                                             run_id=f"bench_{variant.replace('-', '_')}{run}", client=client)
+                    rows[variant].append(result)
+                    trip = result.sut["round_trip_ms"] if result.sut else None
+                    print(f"run {run} {variant:10s}: {'ok  ' if result.succeeded else 'FAIL'} sim {result.sim_time:6.1f} s  "
+                          f"wall {result.wall_time:5.2f} s  {result.real_time_factor:5.1f}x real time"
+                          + (f"  round trip p50 {trip['p50']:.2f} ms p99 {trip['p99']:.2f} ms" if trip else ""))
+    inproc = statistics.median(r.real_time_factor for r in rows["in-process"])
+    ext = statistics.median(r.real_time_factor for r in rows["external"])
+    p50 = statistics.median(r.sut["round_trip_ms"]["p50"] for r in rows["external"] if r.sut)
+    p99 = statistics.median(r.sut["round_trip_ms"]["p99"] for r in rows["external"] if r.sut)
+    ratio = ext / inproc
+    print(f"median real-time factor: external SUT {ext:.1f}x, in-process {inproc:.1f}x: ratio {ratio:.2f} "
+          f"(target >= {TARGET}); per-tick round trip p50 {p50:.2f} ms, p99 {p99:.2f} ms; "
+          f"{os.cpu_count()} cores, load average {os.getloadavg()[0]:.2f}")
+    raise SystemExit(0 if ratio >= TARGET else 1)
+
+
+if __name__ == "__main__":
+    main()
