@@ -40,7 +40,7 @@ def main() -> None:
                                   "--quiet"], java=toolchain.find_java())
         if code != 0:
             raise SystemExit(f"generation failed with exit code {code}")
-        with Router(run_dir=Path(tmp) / "router") as router:  # no run id: permissions for every run's URIs
+        with Router(run_dir=Path(tmp) / "router", run_id="bench") as router:  # the runs follow one another
             external = SutOptions(command="rei nav-sut", offer_map=True, router_url=router.ws_url,
                                   auth_file=router.auth_file("sut"))
             rows: dict[str, list[MissionRunResult]] = {"in-process": [], "external": []}
@@ -48,7 +48,7 @@ def main() -> None:
                 for variant, sut in (("in-process", None), ("external", external)):
                     with WampClient(router.rs_url, auth=router.credentials("simulation")) as client:
                         result = run_mission(case, Path(tmp) / f"{variant}{run}", MissionRunOptions(seed=run, sut=sut),
-                                             run_id=f"bench_{variant.replace('-', '_')}{run}", client=client)
+                                             run_id="bench", client=client)
                     rows[variant].append(result)
                     trip = result.sut["round_trip_ms"] if result.sut else None
                     print(f"run {run} {variant:10s}: {'ok  ' if result.succeeded else 'FAIL'} sim {result.sim_time:6.1f} s  "
