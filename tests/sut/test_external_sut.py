@@ -145,3 +145,21 @@ def test_bad_sut_options_fail_before_anything_starts(run_cli, repo_root: Path, t
     assert result.returncode == 2
     assert message in result.stderr
     assert not (tmp_path / "out").exists()
+
+
+def test_a_free_running_sut_drives_a_wall_clock_paced_simulation(run_cli, repo_root: Path, tmp_path: Path) -> None:
+    script = tmp_path / "forward.txt"
+    script.write_text("3.0 0.2 0.0\n")  # 3 s forward, then SUCCEEDED (a false success: the goal is 4 m away)
+    out = tmp_path / "out"
+    started = time.monotonic()
+    result = run_cli("sim", repo_root / EXAMPLE, "-o", out, "--progress", "none", "--sut",
+                     f"rei nav-sut script:{script}", "--sut-clock", "realtime", timeout=120)
+    wall = time.monotonic() - started
+    assert result.returncode == 1, result.stdout + result.stderr  # both tasks fail, the run does not
+    summary = _sim(out)
+    assert summary["sut"]["clock"] == "realtime" and summary["sut"]["commands"] > 20
+    assert summary["wall_time"] >= 0.9 * summary["sim_time"] >= 2.7 and wall >= summary["sim_time"]
+    reasons = [task["reason"] for task in summary["tasks"]]
+    assert "false success" in reasons[0]
+    moved = [m for m in read_recording(out / "streams" / "state.msgpack") if m["robot"]["twist"][0] > 0.15]
+    assert moved, "the commands that arrived while the simulation ran were applied"
