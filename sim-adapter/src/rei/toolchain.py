@@ -25,6 +25,7 @@ JARS: Mapping[str, str] = {
     "cli": "generators/org.rei.cli/target/rei-cli.jar",
     "language-server": "bundles/org.rei.dsl.ide/target/rei-language-server.jar",
     "monitor": "runtime-monitor/target/rei-monitor.jar",
+    "sut-kit": "sut-kits/java/target/rei-sut-kit.jar",  # the Java client kit of external SUTs (docs/sut.md)
 }
 
 BUILD_HINT = "run ./rei once to build the Java parts"

@@ -1,0 +1,153 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.sut.kit;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.msgpack.core.MessagePack;
+import org.msgpack.core.MessageUnpacker;
+import org.msgpack.value.Value;
+import org.msgpack.value.ValueType;
+import org.msgpack.jackson.dataformat.MessagePackFactory;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+
+/** The payloads of docs/sut.md, decoded from and encoded to msgpack as jawampa does. */
+class MessagesTest {
+
+	static final ObjectMapper MSGPACK = new ObjectMapper(new MessagePackFactory());
+	static final ObjectMapper JSON = new ObjectMapper();
+
+	static final String HELLO = """
+			{"protocol": 1, "run_id": "r1", "clock": "lockstep", "control_rate": 10.0, "deadline": 10,
+			 "start": [0.5, 0.5, 0.0],
+			 "robot": {"name": "tb3", "footprint": [0.281, 0.306], "max_linear": 0.26, "max_angular": 1.82,
+			           "lidar": {"beams": 360, "range_min": 0.12, "range_max": 3.5, "rate": 10.0}},
+			 "goals": 2, "map": null}""";
+
+	static final String SCAN = """
+			{"t": 0.1, "angle_min": -3.14159, "angle_max": 3.14159, "angle_increment": 1.5708, "scan_time": 0.1,
+			 "range_min": 0.12, "range_max": 3.5, "ranges": [1.0, 2.0, 3.0, null]}""";
+
+	/** A JSON text as the msgpack tree jawampa hands over (floats stay floats, integers integers). */
+	static JsonNode msgpack(String json) throws Exception {
+		return MSGPACK.readTree(MSGPACK.writeValueAsBytes(JSON.readTree(json)));
+	}
+
+	static String tick(long n, String scan) {
+		return "{\"tick\": " + n + ", \"t\": " + n / 10.0
+				+ ", \"odom\": {\"pose\": [0.5, 0.5, 0.1], \"twist\": [0.2, 0]}, \"scan\": " + scan + "}";
+	}
+
+	@Test
+	void decodesHello() throws Exception {
+		Session s = Messages.session(msgpack(HELLO));
+		assertEquals("r1", s.runId());
+		assertEquals(Session.Clock.LOCKSTEP, s.clock());
+		assertEquals(10.0, s.deadline()); // an integer where a float is due
+		assertEquals(new Pose(0.5, 0.5, 0.0), s.start());
+		assertEquals(0.26, s.robot().maxLinear());
+		assertEquals(360, s.robot().lidar().beams());
+		assertEquals(2, s.goals());
+		assertNull(s.map());
+	}
+
+	@Test
+	void decodesTheMap() throws Exception {
+		String hello = HELLO.replace("\"map\": null",
+				"\"map\": {\"bounds\": [0, 0, 6, 4], \"obstacles\": [[2.5, 1.5, 0.0, 1.2, 0.8]]}");
+		Session.StaticMap map = Messages.session(msgpack(hello)).map();
+		assertEquals(6.0, map.xmax());
+		assertEquals(List.of(new Session.Obstacle(2.5, 1.5, 0.0, 1.2, 0.8)), map.obstacles());
+	}
+
+	@Test
+	void refusesAnotherProtocolAndMalformedFields() throws Exception {
+		SutException e = assertThrows(SutException.class,
+				() -> Messages.session(msgpack(HELLO.replace("\"protocol\": 1", "\"protocol\": 2"))));
+		assertEquals(SutClient.EXIT_CONNECTION, e.exitCode());
+		e = assertThrows(SutException.class, () -> Messages.tick(msgpack("{\"tick\": 1, \"t\": 0.1}")));
+		assertTrue(e.getMessage().contains("'odom' is missing"), e.getMessage());
+		String shortTwist = tick(1, "null").replace("[0.2, 0]", "[0.2]");
+		e = assertThrows(SutException.class, () -> Messages.tick(msgpack(shortTwist)));
+		assertTrue(e.getMessage().contains("twist"), e.getMessage());
+		String fractionalTick = tick(1, "null").replace("\"tick\": 1", "\"tick\": 1.5");
+		assertThrows(SutException.class, () -> Messages.tick(msgpack(fractionalTick)));
+	}
+
+	@Test
+	void decodesTicksWithAndWithoutScan() throws Exception {
+		Messages.TickMessage t = Messages.tick(msgpack(tick(3, SCAN)));
+		assertEquals(3, t.tick());
+		assertEquals(new Pose(0.5, 0.5, 0.1), t.odom());
+		assertEquals(new Twist(0.2, 0.0), t.twist());
+		assertEquals(4, t.scan().ranges().length);
+		assertEquals(Double.POSITIVE_INFINITY, t.scan().ranges()[3]);
+		assertNull(Messages.tick(msgpack(tick(4, "null"))).scan());
+		String noScanField = "{\"tick\": 4, \"t\": 0.4, \"odom\": {\"pose\": [0, 0, 0], \"twist\": [0, 0]}}";
+		assertNull(Messages.tick(msgpack(noScanField)).scan());
+	}
+
+	@Test
+	void readsInfinityFromMsgpack() throws Exception {
+		byte[] bytes = MSGPACK.writeValueAsBytes(JSON.readTree(SCAN.replace("null", "1e400")));
+		assertEquals(Double.POSITIVE_INFINITY, Messages.scan(MSGPACK.readTree(bytes)).ranges()[3]);
+	}
+
+	@Test
+	void commandHasExactlyAnIntegerTickAndTwoFloats() throws Exception {
+		byte[] bytes = MSGPACK.writeValueAsBytes(Messages.command(7, new Command(1, 0)));
+		try (MessageUnpacker in = MessagePack.newDefaultUnpacker(bytes)) {
+			var map = in.unpackValue().asMapValue().map();
+			assertEquals(3, map.size());
+			assertEquals(ValueType.INTEGER, value(map, "tick").getValueType());
+			assertEquals(7, value(map, "tick").asIntegerValue().toLong());
+			assertEquals(ValueType.FLOAT, value(map, "v").getValueType()); // 1.0, not 1
+			assertEquals(ValueType.FLOAT, value(map, "w").getValueType());
+		}
+	}
+
+	private static Value value(java.util.Map<Value, Value> map, String key) {
+		return map.get(org.msgpack.value.ValueFactory.newString(key));
+	}
+
+	@Test
+	void statusHasTextOnlyWhenGiven() {
+		assertEquals("{\"goal_id\":1,\"status\":\"ACTIVE\"}", Messages.status(1, GoalStatus.ACTIVE, null).toString());
+		assertEquals("{\"goal_id\":1,\"status\":\"ABORTED\",\"text\":\"stuck\"}",
+				Messages.status(1, GoalStatus.ABORTED, "stuck").toString());
+	}
+
+	@Test
+	void commandsAreFiniteAndCanBeClamped() {
+		assertThrows(IllegalArgumentException.class, () -> new Command(Double.NaN, 0));
+		assertThrows(IllegalArgumentException.class, () -> new Command(0, Double.POSITIVE_INFINITY));
+		Session.Robot robot = new Session.Robot("r", 0.3, 0.3, 0.26, 1.82, new Session.Lidar(360, 0.1, 3.5, 10));
+		assertEquals(new Command(0.26, -1.82), new Command(1, -5).clamp(robot));
+	}
+
+	@Test
+	void geometryHelpers() {
+		assertEquals(-Math.PI, Pose.normalize(Math.PI), 1e-12);
+		assertEquals(0.5, Pose.normalize(0.5 + 4 * Math.PI), 1e-12);
+		assertEquals(Math.PI / 2, new Pose(1, 1, 0).bearingTo(1, 2), 1e-12);
+		assertEquals(-Math.PI / 2, new Pose(1, 1, Math.PI).bearingTo(1, 2), 1e-12);
+		assertEquals(Math.sqrt(2), new Pose(0, 0, 0).distanceTo(new Pose(1, 1, 3)), 1e-12);
+		Scan scan = new Scan(0, -Math.PI, Math.PI, Math.PI / 2, 0.1, 0.12, 3.5, new double[] { 1, 2, 3, 0.05 });
+		// beams at -pi (behind), -pi/2 (right), 0 (ahead), pi/2 (left, below range_min: ignored)
+		assertEquals(2.0, scan.minRange(-Math.PI / 2, 0.1));
+		assertEquals(3.0, scan.minRange(-0.1, 0.1));
+		assertEquals(Double.POSITIVE_INFINITY, scan.minRange(0.1, Math.PI - 0.1));
+		assertFalse(scan.toString().contains("[D@"));
+	}
+}
