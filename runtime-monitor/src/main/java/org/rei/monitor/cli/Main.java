@@ -22,7 +22,7 @@ import org.rei.monitor.signals.SignalFile;
 import org.rei.monitor.signals.SignalPublisher;
 import org.rei.monitor.signals.UtilitiesFile;
 import org.rei.monitor.wamp.LiveMonitor;
-import org.rei.monitor.wamp.RouterCredentials;
+import org.rei.wamp.auth.RouterCredentials;
 import org.rei.vepl.compiler.VeplLoader;
 
 /**

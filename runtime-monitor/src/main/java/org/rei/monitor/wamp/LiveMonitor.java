@@ -20,6 +20,7 @@ import org.msgpack.jackson.dataformat.MessagePackFactory;
 import org.rei.monitor.config.CaseReader;
 import org.rei.monitor.pipeline.Monitor;
 import org.rei.monitor.signals.Signal;
+import org.rei.wamp.auth.RouterCredentials;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;

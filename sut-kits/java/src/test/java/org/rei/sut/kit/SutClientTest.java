@@ -18,10 +18,6 @@ import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-import com.fasterxml.jackson.databind.ObjectMapper;
-import com.fasterxml.jackson.databind.node.ObjectNode;
-
-import ws.wamp.jawampa.WampMessages.ChallengeMessage;
 
 /** The environment REI passes, and the credentials file it names. */
 class SutClientTest {
@@ -79,14 +75,5 @@ class SutClientTest {
 		}
 		assertEquals("Navigator", SutClient.name(new Navigator()));
 		assertEquals(null, SutClient.name(tick -> Command.STOP));
-	}
-
-	@Test
-	void signsChallengesAsAutobahn() {
-		// the vector of runtime-monitor's WampCraTest (autobahn.wamp.auth.compute_wcs)
-		ObjectMapper json = new ObjectMapper();
-		ObjectNode extra = json.createObjectNode().put("challenge", "{\"nonce\":\"abc\"}");
-		assertEquals("RYs8lh7JQ8L4Gr2sT0yDvxnP97hn2sMDl/USbTUjXvQ=",
-				new WampCra("s3cret").handleChallenge(new ChallengeMessage("wampcra", extra), json).signature);
 	}
 }

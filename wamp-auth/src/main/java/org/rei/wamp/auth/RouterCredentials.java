@@ -2,7 +2,7 @@
  * Copyright (c) 2026 the REI authors.
  * SPDX-License-Identifier: EPL-2.0
  */
-package org.rei.sut.kit;
+package org.rei.wamp.auth;
 
 import java.io.IOException;
 import java.nio.file.Files;
