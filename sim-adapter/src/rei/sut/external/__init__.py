@@ -68,7 +68,9 @@ def external_sut(options: SutOptions, client: WampClient, run_id: str, out_dir: 
                "max_linear": limits.max_linear, "max_angular": limits.max_angular,
                "lidar": {"beams": robot.lidar.beams, "range_min": float(robot.lidar.range_min),
                          "range_max": float(robot.lidar.range_max), "rate": float(robot.lidar.rate)}}))
-    connection = Connection(options.router_url or client.url, client.realm, run_id, options.auth_file)
+    # the simulation's own session is RawSocket when it can be (rei sim, rei run): the SUT may use it too
+    rawsocket = client.url if client.url.startswith(("rs://", "rss://")) else None
+    connection = Connection(options.router_url or client.url, client.realm, run_id, options.auth_file, rawsocket)
     started = None
     try:
         if options.command is not None:

@@ -37,11 +37,14 @@ class Connection:
     realm: str
     run_id: str
     auth_file: Path | None
+    rawsocket_url: str | None = None  # the same router over RawSocket: less framing for clients that have it
 
     def environment(self) -> dict[str, str]:
         env = {"REI_ROUTER_URL": self.router_url, "REI_REALM": self.realm, "REI_RUN_ID": self.run_id}
         if self.auth_file is not None:
             env["REI_AUTH_FILE"] = str(self.auth_file)
+        if self.rawsocket_url is not None:
+            env["REI_ROUTER_RAWSOCKET_URL"] = self.rawsocket_url
         return env
 
     def write_env_file(self, path: Path) -> Path:
