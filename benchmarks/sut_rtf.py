@@ -19,7 +19,7 @@ from pathlib import Path
 
 from rei import toolchain
 from rei.run import MissionRunOptions, MissionRunResult, run_mission
-from rei.sut.external import SutOptions
+from rei.sut.external.options import SutOptions
 from rei.wamp.client import WampClient
 from rei.wamp.router import Router
 

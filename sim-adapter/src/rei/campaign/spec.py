@@ -179,7 +179,7 @@ def _rooms(r: _Reader) -> RoomSettings:
 
 def _sut(r: _Reader, base: Path) -> ExternalSut | None:
     """The ``sut:`` mapping of a spec or variant, checked as `rei run --sut` checks its options."""
-    from rei.sut.external import SutOptions
+    from rei.sut.external.options import SutOptions
     from rei.sut.external.process import SutLaunchError, check_command
 
     if r.get("sut") is None:

@@ -87,7 +87,7 @@ def _with_external_sut(task: RunTask, run_dir: Path, options: Any) -> Any:
 
     from rei.campaign.spec import ExternalSut
     from rei.run import run_mission
-    from rei.sut.external import SutOptions
+    from rei.sut.external.options import SutOptions
     from rei.wamp.client import WampClient
     from rei.wamp.router import Router
 

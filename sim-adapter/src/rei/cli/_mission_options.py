@@ -7,7 +7,7 @@ import argparse
 from pathlib import Path
 
 from rei.cli.errors import CommandError
-from rei.sut.external import DEFAULT_DEADLINE, DEFAULT_JOIN_TIMEOUT, SutOptions
+from rei.sut.external.options import DEFAULT_DEADLINE, DEFAULT_JOIN_TIMEOUT, SutOptions
 
 
 def add_mission_options(parser: argparse.ArgumentParser) -> None:

@@ -23,7 +23,9 @@ from rei.geometry import Twist2D
 from rei.mission import MissionEvent, MissionExecutor, TaskResult, mission_info
 from rei.sim.simulation import Simulation
 from rei.sut.api import Controller
-from rei.sut.external import SutError, SutOptions, external_sut
+from rei.sut.external.controller import SutError
+from rei.sut.external.options import SutOptions
+from rei.sut.external.session import external_sut
 from rei.sut.registry import create_controller
 from rei.wamp.client import WampClient
 from rei.wamp.collector import CollectorConfig, DataCollector, MissionPublisher

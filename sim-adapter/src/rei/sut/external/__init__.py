@@ -1,98 +1,10 @@
 # SPDX-License-Identifier: EPL-2.0
 """External systems under test: robot software in another process, on the run's router (docs/sut.md).
 
-``external_sut`` is what the mission loop uses instead of an in-process controller: it offers ``hello``, starts
-the SUT command (``--sut``) or waits for one started by the user (``--sut-attach``), and at the end tells the SUT
-to leave and stops what it started.
+``session.external_sut`` is what the mission loop uses instead of an in-process controller: it offers ``hello``,
+starts the SUT command (``--sut``) or waits for one started by the user (``--sut-attach``), and at the end tells
+the SUT to leave and stops what it started. The other modules: ``protocol`` (the messages and their rules),
+``options`` (``SutOptions``), ``process`` (starting a SUT), ``controller`` (``ExternalController``, ``SutError``).
+
+This package imports nothing itself, so the command line can check ``options`` without loading the WAMP client.
 """
-
-from __future__ import annotations
-
-import contextlib
-from collections.abc import Callable, Iterator
-from dataclasses import dataclass
-from pathlib import Path
-
-from rei.artifacts.case import Case
-from rei.sut.api import StaticMap
-from rei.sut.external import process as sut_process
-from rei.sut.external import protocol
-from rei.sut.external.controller import Clock, ExternalController, SutError, SutStats
-from rei.sut.external.process import Connection, SutLaunchError
-from rei.wamp.client import WampClient, WampError
-
-DEFAULT_DEADLINE = 10.0
-DEFAULT_JOIN_TIMEOUT = 60.0
-
-
-@dataclass(frozen=True, slots=True)
-class SutOptions:
-    """How the run reaches its SUT: ``command`` to start, or ``attach`` to wait for one (exactly one)."""
-
-    command: str | None = None
-    attach: bool = False
-    clock: Clock = "lockstep"
-    deadline: float = DEFAULT_DEADLINE
-    offer_map: bool = False
-    join_timeout: float = DEFAULT_JOIN_TIMEOUT
-    router_url: str | None = None  # what the SUT connects to (default: the simulation's own URL)
-    auth_file: Path | None = None  # the sut role's credentials (None on an anonymous router)
-    cwd: Path | None = None  # where the command runs (default: the current folder; a campaign: its spec's)
-
-    def __post_init__(self) -> None:
-        if (self.command is None) == (not self.attach):
-            raise ValueError("an external SUT is either started (--sut COMMAND) or attached (--sut-attach)")
-        if self.clock not in ("lockstep", "realtime"):
-            raise ValueError(f"--sut-clock must be lockstep or realtime, got {self.clock!r}")
-        for name, value in (("--sut-deadline", self.deadline), ("--sut-join-timeout", self.join_timeout)):
-            if not value > 0:
-                raise ValueError(f"{name} must be a number of seconds > 0, got {value}")
-        if self.command is not None:
-            sut_process.split_command(self.command)
-
-
-@contextlib.contextmanager
-def external_sut(options: SutOptions, client: WampClient, run_id: str, out_dir: Path, *, case: Case,
-                 static_map: StaticMap, control_rate: float, now: Callable[[], float],
-                 log: Callable[[str], None] = print) -> Iterator[ExternalController]:
-    """The connected SUT as a controller; on leaving, ``end`` is published and a started SUT is stopped."""
-    robot = case.world.robot
-    limits = protocol.RobotLimits(robot.drive.max_linear_velocity, robot.drive.max_angular_velocity)
-    controller = ExternalController(client, run_id, clock=options.clock, deadline=options.deadline, limits=limits,
-                                    scan_time=1.0 / robot.lidar.rate, log=log)
-    controller.attach(protocol.hello_answer(
-        run_id=run_id, clock=options.clock, control_rate=control_rate, deadline=options.deadline,
-        start=case.mission.start, goals=len(case.mission.goals),
-        static_map=static_map if options.offer_map else None,
-        robot={"name": robot.name, "footprint": [float(robot.size[0]), float(robot.size[1])],
-               "max_linear": limits.max_linear, "max_angular": limits.max_angular,
-               "lidar": {"beams": robot.lidar.beams, "range_min": float(robot.lidar.range_min),
-                         "range_max": float(robot.lidar.range_max), "rate": float(robot.lidar.rate)}}))
-    # the simulation's own session is RawSocket when it can be (rei sim, rei run): the SUT may use it too
-    rawsocket = client.url if client.url.startswith(("rs://", "rss://")) else None
-    connection = Connection(options.router_url or client.url, client.realm, run_id, options.auth_file, rawsocket)
-    started = None
-    try:
-        if options.command is not None:
-            try:
-                started = sut_process.start(options.command, connection, out_dir, options.cwd)
-            except SutLaunchError as error:
-                raise SutError(str(error)) from None
-            controller.attach_process(started)
-            what = f"the system under test ({options.command})"
-        else:
-            env_file = connection.write_env_file(out_dir / sut_process.ENV_FILE)
-            log(f"sut: waiting up to {options.join_timeout:g} s for your system under test to join; start it "
-                f"with the variables of {env_file}: {' '.join(f'{k}={v}' for k, v in connection.environment().items())}")
-            what = "the attached system under test"
-        controller.wait_joined(options.join_timeout, what)
-        log(f"sut: {what} joined ({options.clock})")
-        yield controller
-    finally:
-        with contextlib.suppress(WampError):
-            controller.end(now(), "the run is over")
-        if started is not None:
-            controller.stats.exit_code = sut_process.stop(started)
-
-
-__all__ = ["SutError", "SutLaunchError", "SutOptions", "SutStats", "external_sut"]

@@ -17,16 +17,16 @@ import queue
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any, Literal
+from typing import Any
 
 from rei.geometry import Pose2D, Twist2D
 from rei.processes import ManagedProcess
 from rei.sut.api import Controller, NavGoal, NavStatus, Observation, StaticMap
 from rei.sut.external import protocol
+from rei.sut.external.options import Clock
 from rei.sut.external.protocol import Command, Rejected, RobotLimits, Status
 from rei.wamp.client import WampClient
 
-Clock = Literal["lockstep", "realtime"]
 #: Rejections logged one by one (the rest are only counted).
 LOGGED_REJECTIONS = 10
 _POLL = 0.2  # seconds between two liveness checks of a started SUT while waiting
