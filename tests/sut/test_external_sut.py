@@ -133,11 +133,47 @@ def test_a_sut_the_user_starts_attaches_with_the_run_s_environment(
     assert processes_mentioning(tmp_path) == []
 
 
+def test_what_a_sut_leaves_in_its_process_group_is_stopped_too(
+    run_cli, repo_root: Path, tmp_path: Path, processes_mentioning
+) -> None:
+    out = tmp_path / "out"
+    result = run_cli("run", repo_root / EXAMPLE, "-o", out, "--sut", f"{PROGRAMS / 'leaky_sut.sh'} {out}",
+                     "--sut-map", timeout=300)
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert processes_mentioning(tmp_path) == []  # the helper ignored SIGTERM: it got SIGKILL
+
+
+def test_an_external_sut_in_a_campaign_is_judged_and_a_broken_one_is_an_error_with_verdicts(
+    run_cli, repo_root: Path, tmp_path: Path, processes_mentioning
+) -> None:
+    (tmp_path / "silent_sut.py").write_text((PROGRAMS / "silent_sut.py").read_text())
+    spec = tmp_path / "spec.yaml"
+    spec.write_text(f"""
+name: external
+timeout: 200
+variants:
+  - {{name: nav, sut: {{command: "rei nav-sut", map: true}}}}
+  - {{name: silent, sut: {{command: "python3 silent_sut.py {tmp_path}", deadline: 2}}}}
+groups:
+  - {{name: example, cases: ["{repo_root / EXAMPLE}"]}}
+""")
+    result = run_cli("campaign", spec, "-o", tmp_path / "campaign", "--workers", "1", timeout=400)
+    runs = tmp_path / "campaign" / "runs"
+    nav = _summary(runs / "example__simple_navigation__nav__r0")
+    silent = _summary(runs / "example__simple_navigation__silent__r0")
+    assert nav["status"] == "COMPLETED", result.stdout + result.stderr
+    assert {v["status"] for v in nav["verdicts"]} <= {"pass", "not-applicable"}
+    assert silent["status"] == "ERROR" and "no command for tick 0" in silent["error"]
+    assert silent["verdicts"], "a broken run is still judged (as errors)"
+    assert processes_mentioning(tmp_path) == []
+
+
 @pytest.mark.parametrize("arguments, message", [
     (["--sut", "no-such-program --flag"], "program 'no-such-program' not found"),
     (["--sut", "rei nav-sut", "--controller", "script:x.txt"], "--sut/--sut-attach replace it"),
     (["--sut-map"], "apply with --sut COMMAND or --sut-attach only"),
     (["--sut", "rei nav-sut", "--sut-deadline", "0"], "--sut-deadline must be a number of seconds > 0"),
+    (["--sut-deadline", "5"], "apply with --sut COMMAND or --sut-attach only"),
 ])
 def test_bad_sut_options_fail_before_anything_starts(run_cli, repo_root: Path, tmp_path: Path,
                                                      arguments: list[str], message: str) -> None:

@@ -9,9 +9,11 @@ pre-exec hook, which can deadlock a process that runs threads, so the child is s
 
 from __future__ import annotations
 
+import contextlib
 import shutil
+import signal
 import sys
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 
 
 def die_with_parent(argv: Sequence[str]) -> list[str]:
@@ -24,3 +26,18 @@ def die_with_parent(argv: Sequence[str]) -> list[str]:
     if setpriv is None or not sys.platform.startswith("linux"):
         return list(argv)
     return [setpriv, "--pdeathsig", "TERM", "--", *argv]
+
+
+@contextlib.contextmanager
+def sigterm_unwinds() -> Iterator[None]:
+    """SIGTERM raises ``SystemExit(143)`` in the main thread while inside, so ``finally`` blocks and context
+    managers run (stopping the children they started) instead of the process dying on the spot."""
+
+    def unwind(signum: int, frame: object) -> None:
+        raise SystemExit(128 + signum)
+
+    previous = signal.signal(signal.SIGTERM, unwind)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)

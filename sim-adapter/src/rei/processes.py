@@ -17,10 +17,13 @@ import os
 import signal
 import subprocess
 import threading
+import time
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
 from rei.lifetime import die_with_parent
+
+_TAIL_BYTES = 64 * 1024
 
 
 class ManagedProcess:
@@ -55,12 +58,18 @@ class ManagedProcess:
             return None
 
     def stop(self, grace: float = 10.0) -> int:
-        """SIGTERM to the process group, SIGKILL after ``grace`` seconds; returns the exit code."""
-        if self._process.poll() is None:
+        """SIGTERM to the process group, SIGKILL after ``grace`` seconds to whatever of it is left; returns the
+        exit code. The group is stopped also when its leader has exited: a wrapper script's children stay behind
+        in its group otherwise."""
+        self._process.poll()
+        if self._process.returncode is None or self._group_alive():
             self._signal(signal.SIGTERM)
-            if self.wait(grace) is None:
+            deadline = time.monotonic() + grace
+            while self._group_alive() and time.monotonic() < deadline:
+                time.sleep(0.05)
+            if self._group_alive():
                 self._signal(signal.SIGKILL)
-                self._process.wait()
+            self._process.wait()
         if self._reader is not None:
             self._reader.join(timeout=5)
         self._log.close()
@@ -75,9 +84,27 @@ class ManagedProcess:
         return f"{self.name} exited with code {code}"
 
     def log_tail(self, lines: int = 20) -> str:
-        self._log.flush()
-        text = self.log.read_text(encoding="utf-8", errors="replace").splitlines()
+        """The last ``lines`` lines of the log (read from its end: a chatty child's log may be huge)."""
+        if not self._log.closed:
+            self._log.flush()
+        with open(self.log, "rb") as log:
+            log.seek(0, os.SEEK_END)
+            log.seek(max(0, log.tell() - _TAIL_BYTES))
+            text = log.read().decode("utf-8", errors="replace").splitlines()
         return "\n".join(text[-lines:])
+
+    def _group_alive(self) -> bool:
+        """Whether a process of the group is still running (zombies aside; the leader is reaped here)."""
+        self._process.poll()
+        group = self._process.pid
+        for stat in Path("/proc").glob("[0-9]*/stat"):
+            try:
+                fields = stat.read_text().rsplit(")", 1)[1].split()
+            except (OSError, IndexError):
+                continue
+            if fields[0] != "Z" and int(fields[2]) == group:  # state, then ppid, then pgrp
+                return True
+        return False
 
     def _signal(self, sig: signal.Signals) -> None:
         with contextlib.suppress(ProcessLookupError):

@@ -99,6 +99,7 @@ def test_statuses_follow_the_action_server_s_states() -> None:
     ({"goal_id": 1, "status": "DONE"}, "status must be one of"),
     ({"goal_id": "1", "status": "ACTIVE"}, "goal_id must be an integer"),
     ({"goal_id": 1, "status": "ACTIVE", "text": 5}, "text must be a string"),
+    ({"goal_id": 1, "status": "ACTIVE", "text": None}, "text must be a string"),
     ({"goal_id": 1, "status": "ACTIVE", "text": "x" * 1001}, "at most 1000 characters"),
 ])
 def test_malformed_statuses_are_rejected(payload, reason: str) -> None:

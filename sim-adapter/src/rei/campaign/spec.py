@@ -34,6 +34,8 @@ from typing import Any
 
 import yaml
 
+from rei.sut.external.options import DEFAULT_DEADLINE, DEFAULT_JOIN_TIMEOUT
+
 MODES = ("replay", "pipeline")
 _NAME = re.compile(r"[A-Za-z0-9][A-Za-z0-9_-]*")
 
@@ -48,9 +50,9 @@ class ExternalSut:
 
     command: str
     clock: str = "lockstep"
-    deadline: float = 10.0
+    deadline: float = DEFAULT_DEADLINE
     map: bool = False
-    join_timeout: float = 60.0
+    join_timeout: float = DEFAULT_JOIN_TIMEOUT
     cwd: str | None = None  # the spec file's folder: relative paths in the command are relative to it
 
     def to_dict(self) -> dict[str, Any]:
@@ -124,6 +126,8 @@ def parse_spec(data: Any, *, base: Path, where: str = "spec", default_name: str 
     mode = top.choice("mode", MODES, "replay")
     controller = top.str("controller", "nav")
     report = top.bool("report", False)
+    if top.get("controller") is not None and top.get("sut") is not None:
+        raise SpecError(f"{where}: give either 'controller' (in-process) or 'sut' (external), not both")
     sut = _sut(top, base)
     variants = _variants(top, "variants", controller, (Variant("base", controller=controller, sut=sut),), base, sut)
     groups_raw = top.get("groups")
@@ -187,8 +191,8 @@ def _sut(r: _Reader, base: Path) -> ExternalSut | None:
     s = _Reader(r.get("sut"), f"{r.where}: sut")
     s.only("command", "clock", "deadline", "map", "join_timeout")
     sut = ExternalSut(command=s.str("command", None), clock=s.choice("clock", ("lockstep", "realtime"), "lockstep"),
-                      deadline=s.number("deadline", 10.0), map=s.bool("map", False),
-                      join_timeout=s.number("join_timeout", 60.0), cwd=str(base))
+                      deadline=s.number("deadline", DEFAULT_DEADLINE), map=s.bool("map", False),
+                      join_timeout=s.number("join_timeout", DEFAULT_JOIN_TIMEOUT), cwd=str(base))
     try:
         SutOptions(command=sut.command, clock=sut.clock, deadline=sut.deadline)  # type: ignore[arg-type]
         check_command(sut.command, base)

@@ -26,6 +26,7 @@ from pathlib import Path
 from typing import Any, Self
 
 from rei.campaign.plan import RunTask
+from rei.lifetime import sigterm_unwinds
 
 TASK_FILE = "task.json"
 TIMING_FILE = "timing.json"
@@ -66,12 +67,11 @@ def _replay(task: RunTask, run_dir: Path) -> int:
             result = run_mission(Path(task.case_dir), run_dir, options, run_id=task.key)
         else:
             result = _with_external_sut(task, run_dir, options)
-        if result.error is not None:  # the worker's log is the run's ERROR evidence (rei.campaign.supervise)
-            print(f"rei: error: {result.error}", file=sys.stderr, flush=True)
-            return 2
+    # an external SUT that broke the run: what was recorded is still judged, as an ERROR naming it (as `rei run`)
+    broken = {} if result.error is None else {"status": "ERROR", "reason": result.error}
     with _Phase(timing, "evaluation"):  # this process's CPU only: the monitor's replay is a child JVM
         judged = reevaluate(run_dir, Path(task.case_dir), settings=RunSettings(
-            humans=task.humans, run_id=task.key, sim_duration=result.sim_time))
+            humans=task.humans, run_id=task.key, sim_duration=result.sim_time), **broken)
     timing["monitor"] = {"wall": round(judged.monitor.wall, 3), "cpu": round(judged.monitor.cpu, 3)}
     timing["evaluation"]["wall"] = round(judged.evaluation_wall, 3)
     if task.report:
@@ -146,7 +146,8 @@ def main(argv: list[str] | None = None) -> int:
         print("usage: python -m rei.campaign.worker RUN_DIR", file=sys.stderr)
         return 2
     task = RunTask.from_dict(_json(Path(args[0]) / TASK_FILE))
-    return execute(task)
+    with sigterm_unwinds():  # a timed-out run is stopped with SIGTERM: its SUT and router must go with it
+        return execute(task)
 
 
 if __name__ == "__main__":

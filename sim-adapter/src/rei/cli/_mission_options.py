@@ -62,8 +62,10 @@ def sut_options(args: argparse.Namespace, *, router_url: str | None = None,
 
     wanted = args.sut is not None or args.sut_attach
     if not wanted:
-        if args.sut_map or args.sut_clock != "lockstep":
-            raise CommandError("--sut-map and --sut-clock apply with --sut COMMAND or --sut-attach only")
+        if (args.sut_map or args.sut_clock != "lockstep" or args.sut_deadline != DEFAULT_DEADLINE
+                or args.sut_join_timeout != DEFAULT_JOIN_TIMEOUT):
+            raise CommandError("--sut-map, --sut-clock, --sut-deadline and --sut-join-timeout apply with "
+                               "--sut COMMAND or --sut-attach only")
         return None
     if args.controller != "nav":
         raise CommandError("--controller is the in-process system under test; --sut/--sut-attach replace it")

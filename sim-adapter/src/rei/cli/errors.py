@@ -11,6 +11,8 @@ EXIT_OK = 0
 EXIT_INVALID = 1
 #: Bad arguments, or a file that cannot be read or written (argparse uses 2 as well).
 EXIT_USAGE = 2
+#: The run could not be completed (`rei run`, `rei sim`): a part broke it, e.g. an external SUT.
+EXIT_RUN_ERROR = 2
 #: The environment cannot run REI: no Java, an old Java, jars not built.
 EXIT_TOOLCHAIN = 3
 

@@ -22,7 +22,8 @@ from typing import TYPE_CHECKING, Any
 from rei.cli._case import case_folder, prepare_output, valid_run_id
 from rei.cli._mission_options import add_mission_options, check_mission_options, sut_options
 from rei.cli._router_options import add_router_options, check_router_options
-from rei.cli.errors import EXIT_INVALID, EXIT_OK, EXIT_USAGE, CommandError
+from rei.cli.errors import EXIT_INVALID, EXIT_OK, EXIT_RUN_ERROR, CommandError
+from rei.lifetime import sigterm_unwinds
 
 if TYPE_CHECKING:
     from rei.wamp.client import WampClient
@@ -90,7 +91,8 @@ def run(args: argparse.Namespace) -> int:
         raise CommandError(f"--run-id {run_id!r}: expected letters, digits, '_' or '-' (it becomes part of topic URIs)")
     try:
         publisher = _publisher(args, out, run_id)
-        with publisher as client:
+        # stopped by `rei run` or a campaign: unwind, so a started SUT and the router are stopped too
+        with sigterm_unwinds(), publisher as client:
             url, auth_file = publisher.sut_connection(client)
             options = dataclasses.replace(options, sut=sut_options(args, router_url=url, auth_file=auth_file))
             result = run_mission(case_dir, out, options, run_id=run_id, client=client,
@@ -101,7 +103,7 @@ def run(args: argparse.Namespace) -> int:
     if result.error is not None:
         print(f"rei sim: error: {result.error}", file=sys.stderr, flush=True)
         print(f"the run ended in error after {result.sim_time:.1f} s simulated; streams so far: {out / 'streams'}")
-        return EXIT_USAGE
+        return EXIT_RUN_ERROR
     for task in result.tasks:
         verdict = "ok  " if task.succeeded else "FAIL"
         print(f"task {task.index}: {verdict} {task.ended - task.started:7.1f} s" + (f"  {task.reason}" if task.reason else ""))
@@ -124,6 +126,9 @@ def _check_router_options(args: argparse.Namespace) -> None:
         raise CommandError("--sut-auth-file and --sut-router apply with --router URL only")
     if (args.sut is not None or args.sut_attach) and args.no_router:
         raise CommandError("--sut and --sut-attach need a router: the SUT talks to the simulation through it")
+    if (args.sut is not None or args.sut_attach) and args.auth_file is not None and args.sut_auth_file is None:
+        raise CommandError("--sut/--sut-attach on an authenticating router (--auth-file) need --sut-auth-file: the "
+                           "sut role's credentials, e.g. OUT/router/auth/sut.json")
     if (args.router is not None or args.no_router) and (args.bind or args.tls_cert or args.tls_key):
         raise CommandError("--bind/--tls-cert/--tls-key apply to the router `rei sim` starts (not with "
                            "--router or --no-router)")

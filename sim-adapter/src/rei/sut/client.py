@@ -21,6 +21,7 @@ kit publishes a changed status before the command of the same tick, as the proto
 
 from __future__ import annotations
 
+import functools
 import os
 import queue
 import sys
@@ -33,10 +34,13 @@ from rei.geometry import Pose2D, Twist2D
 from rei.sut.api import Controller, LaserScan, NavGoal, NavStatus, Observation, StaticMap
 from rei.sut.external import protocol
 
-#: Exit codes of a kit-based SUT: 1 a callback raised, 2 it could not connect or the router went away.
+#: Exit codes of a kit-based SUT: 1 a callback raised; 2 the run could not be served (not joined, lost, a
+#: malformed message from the simulation, a setting the SUT needs is missing such as the map).
 EXIT_CALLBACK = 1
 EXIT_CONNECTION = 2
 _ENVIRONMENT = ("REI_ROUTER_URL", "REI_RUN_ID")
+#: Seconds to keep calling ``hello`` while the simulation has not registered it yet (its --sut-join-timeout).
+JOIN_WINDOW = 60.0
 
 
 class SutConnectionError(RuntimeError):
@@ -209,8 +213,10 @@ def run(sut: SystemUnderTest, *, environ: Mapping[str, str] = os.environ, name: 
     try:
         for topic in protocol.FROM_SIMULATION:
             client.subscribe(protocol.uri(run_id, topic), _enqueue(inbox, topic))
-        hello = client.call(protocol.uri(run_id, "hello"), {"name": name or type(sut).__name__})
-        _serve(sut, client, run_id, Session.from_hello(hello), inbox)
+        # an attached SUT may be quicker than the simulation's registration: retry within the join window
+        hello = client.call_when_registered(protocol.uri(run_id, "hello"), {"name": name or type(sut).__name__},
+                                            timeout=JOIN_WINDOW)
+        _serve(sut, client, run_id, _read(Session.from_hello, hello, "hello's answer"), inbox)
     except WampError as error:
         raise SutConnectionError(str(error)) from None
     except Exception as error:
@@ -225,7 +231,8 @@ def run(sut: SystemUnderTest, *, environ: Mapping[str, str] = os.environ, name: 
 
 
 def main(sut: SystemUnderTest, *, name: str | None = None) -> NoReturn:
-    """``run(sut)`` as a program: exit 0 at the run's end, 1 if a callback raised, 2 if the run was lost."""
+    """``run(sut)`` as a program: exit 0 at the run's end, 1 if a callback raised, 2 if the run could not be
+    served (see EXIT_CONNECTION)."""
     try:
         run(sut, name=name)
     except SutConnectionError as error:
@@ -235,6 +242,15 @@ def main(sut: SystemUnderTest, *, name: str | None = None) -> NoReturn:
         traceback.print_exc()
         sys.exit(EXIT_CALLBACK)
     sys.exit(0)
+
+
+def _read(reader: Any, payload: Any, what: str) -> Any:
+    """``reader(payload)``; a message the kit cannot read is the run's fault, not the SUT's callback's."""
+    try:
+        return reader(payload)
+    except (KeyError, TypeError, ValueError, AttributeError) as error:
+        raise SutConnectionError(f"malformed {what} from the simulation ({type(error).__name__}: {error}): "
+                                 f"{str(payload)[:200]}") from None
 
 
 def _enqueue(inbox: queue.SimpleQueue[tuple[str, Any]], topic: str) -> Any:
@@ -265,7 +281,7 @@ def _serve(sut: SystemUnderTest, client: Any, run_id: str, session: Session,
                 raise SutConnectionError(f"lost the run's router: {client.failure}")
             continue
         if topic == "tick":
-            observation = protocol.read_observation(payload, last_scan)
+            observation = _read(functools.partial(protocol.read_observation, last_scan=last_scan), payload, "tick")
             new_scan = payload.get("scan") is not None
             if new_scan and observation.scan is not None:
                 last_scan = observation.scan
@@ -274,7 +290,7 @@ def _serve(sut: SystemUnderTest, client: Any, run_id: str, session: Session,
             send_status()
             client.publish(command_uri, {"tick": int(payload["tick"]), "v": float(twist.v), "w": float(twist.w)})
         elif topic == "goal":
-            goal = protocol.read_goal(payload)
+            goal = _read(protocol.read_goal, payload, "goal")
             sut._start_goal(goal)
             sut.on_goal(goal)
             send_status()

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import queue
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -29,6 +29,8 @@ from rei.wamp.client import WampClient
 
 #: Rejections logged one by one (the rest are only counted).
 LOGGED_REJECTIONS = 10
+#: Messages from the SUT waiting to be applied, at most; more are dropped and counted as rejected.
+MAX_INBOX = 10_000
 _POLL = 0.2  # seconds between two liveness checks of a started SUT while waiting
 
 
@@ -46,6 +48,7 @@ class SutStats:
     rejected: int = 0
     stale: int = 0
     statuses: int = 0
+    dropped: int = 0  # arrived while MAX_INBOX messages were waiting
     round_trips: list[float] = field(default_factory=list)  # seconds, lockstep: tick published -> command taken
     first_rejections: list[str] = field(default_factory=list)
     exit_code: int | None = None
@@ -54,7 +57,7 @@ class SutStats:
         trips = sorted(self.round_trips)
         return {
             "clock": self.clock, "commands": self.commands, "clamped": self.clamped, "rejected": self.rejected,
-            "stale": self.stale, "statuses": self.statuses, "first_rejections": self.first_rejections,
+            "stale": self.stale, "dropped": self.dropped, "statuses": self.statuses, "first_rejections": self.first_rejections,
             "round_trip_ms": None if not trips else {
                 "p50": 1000 * _quantile(trips, 0.5), "p99": 1000 * _quantile(trips, 0.99), "max": 1000 * trips[-1]},
             "exit_code": self.exit_code,
@@ -90,6 +93,7 @@ class ExternalController(Controller):
         self._last_heard = time.monotonic()
         self._joined = False
         self._hello: dict[str, Any] | None = None
+        self.name: str | None = None  # what the SUT called itself in hello
         self._t = 0.0
 
     # -- set-up ------------------------------------------------------------------------------------------------
@@ -166,11 +170,17 @@ class ExternalController(Controller):
 
     def _receiver(self, name: str) -> Callable[..., None]:
         def receive(*args: Any, **kwargs: Any) -> None:  # on the client's thread: queue only
+            if self._inbox.qsize() >= MAX_INBOX:  # a flooding SUT must not eat the simulation's memory
+                self.stats.dropped += 1  # written by this thread only
+                return
             self._inbox.put((name, args[0] if len(args) == 1 and not kwargs else _odd(args, kwargs),
                              time.monotonic()))
         return receive
 
     def _on_hello(self, *args: Any, **kwargs: Any) -> dict[str, Any]:
+        about = args[0] if args and isinstance(args[0], dict) else {}
+        name = about.get("name")
+        self.name = name[:100] if isinstance(name, str) and name else None
         self._joined = True
         assert self._hello is not None
         return self._hello
@@ -262,9 +272,10 @@ class ExternalController(Controller):
 
 def _realtime(payload: Any, tick: int, limits: RobotLimits) -> Command | Rejected:
     """Realtime: a command for any tick already published is taken (the newest wins)."""
-    if isinstance(payload, dict) and isinstance(payload.get("tick"), int) and 0 <= payload["tick"] <= tick:
-        return protocol.check_command({**payload, "tick": tick}, current_tick=tick, answered=False, limits=limits)
-    return protocol.check_command(payload, current_tick=tick, answered=False, limits=limits)
+    answered = tick
+    if isinstance(payload, Mapping) and protocol.is_int(payload.get("tick")) and 0 <= payload["tick"] <= tick:
+        answered = payload["tick"]
+    return protocol.check_command(payload, current_tick=answered, answered=False, limits=limits)
 
 
 def _odd(args: tuple[Any, ...], kwargs: dict[str, Any]) -> Any:

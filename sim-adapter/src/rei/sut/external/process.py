@@ -31,7 +31,7 @@ class SutLaunchError(ValueError):
 
 @dataclass(frozen=True, slots=True)
 class Connection:
-    """Where and as whom a SUT joins: the four variables of docs/sut.md."""
+    """Where and as whom a SUT joins: the environment variables of docs/sut.md."""
 
     router_url: str
     realm: str

@@ -13,6 +13,7 @@ controller sees exactly the observation an in-process one would.
 from __future__ import annotations
 
 import math
+import reprlib
 from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
@@ -32,6 +33,10 @@ REPORTABLE = frozenset({NavStatus.ACTIVE, NavStatus.SUCCEEDED, NavStatus.ABORTED
 MAX_TEXT = 1000
 _COMMAND_FIELDS = frozenset({"tick", "v", "w"})
 _STATUS_FIELDS = frozenset({"goal_id", "status", "text"})
+_SHORT = reprlib.Repr()
+_SHORT.maxstring = _SHORT.maxother = 40
+_SHORT.maxlist = _SHORT.maxdict = 4
+_SHORT.maxlevel = 2
 
 
 def uri(run_id: str, name: str) -> str:
@@ -178,7 +183,7 @@ def check_command(payload: Any, *, current_tick: int, answered: bool, limits: Ro
                         + (f"; missing {', '.join(missing)}" if missing else "")
                         + (f"; unknown {', '.join(extra)}" if extra else ""))
     tick = payload["tick"]
-    if not _is_int(tick) or tick < 0:
+    if not is_int(tick) or tick < 0:
         return Rejected(f"tick must be an integer >= 0, got {tick!r}")
     values = []
     for name in ("v", "w"):
@@ -206,7 +211,7 @@ def check_status(payload: Any, *, current_goal: int | None) -> Status | Rejected
     if not {"goal_id", "status"} <= keys <= _STATUS_FIELDS:
         return Rejected(f"a status has the fields goal_id, status and optionally text, got {sorted(map(str, keys))}")
     goal_id, name, text = payload["goal_id"], payload["status"], payload.get("text", "")
-    if not _is_int(goal_id):
+    if not is_int(goal_id):
         return Rejected(f"goal_id must be an integer, got {goal_id!r}")
     try:
         status = NavStatus(name)
@@ -214,8 +219,6 @@ def check_status(payload: Any, *, current_goal: int | None) -> Status | Rejected
         status = None
     if status not in REPORTABLE:
         return Rejected(f"status must be one of {', '.join(sorted(s.value for s in REPORTABLE))}, got {name!r}")
-    if text is None:
-        text = ""
     if not isinstance(text, str) or len(text) > MAX_TEXT:
         return Rejected(f"text must be a string of at most {MAX_TEXT} characters")
     if goal_id != current_goal:
@@ -224,7 +227,7 @@ def check_status(payload: Any, *, current_goal: int | None) -> Status | Rejected
     return Status(goal_id, status, text)
 
 
-def _is_int(value: Any) -> bool:
+def is_int(value: Any) -> bool:
     return isinstance(value, int) and not isinstance(value, bool)
 
 
@@ -233,5 +236,4 @@ def _is_number(value: Any) -> bool:
 
 
 def _kind(value: Any) -> str:
-    text = repr(value)
-    return f"{type(value).__name__} {text[:40]}{'...' if len(text) > 40 else ''}"
+    return f"{type(value).__name__} {_SHORT.repr(value)}"  # reprlib: a 1 MB payload is not copied to be cut

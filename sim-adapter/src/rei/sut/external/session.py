@@ -6,6 +6,7 @@ from __future__ import annotations
 import contextlib
 from collections.abc import Callable, Iterator
 from pathlib import Path
+from urllib.parse import urlparse
 
 from rei.artifacts.case import Case
 from rei.sut.api import StaticMap
@@ -34,9 +35,11 @@ def external_sut(options: SutOptions, client: WampClient, run_id: str, out_dir: 
                "max_linear": limits.max_linear, "max_angular": limits.max_angular,
                "lidar": {"beams": robot.lidar.beams, "range_min": float(robot.lidar.range_min),
                          "range_max": float(robot.lidar.range_max), "rate": float(robot.lidar.rate)}}))
-    # the simulation's own session is RawSocket when it can be (rei sim, rei run): the SUT may use it too
-    rawsocket = client.url if client.url.startswith(("rs://", "rss://")) else None
-    connection = Connection(options.router_url or client.url, client.realm, run_id, options.auth_file, rawsocket)
+    url = options.router_url or client.url
+    # the simulation's own session is RawSocket when it can be (rei sim, rei run): offered to the SUT too, but
+    # only where it reaches the same router as the URL the SUT was given
+    rawsocket = client.url if client.url.startswith(("rs://", "rss://")) and _host(client.url) == _host(url) else None
+    connection = Connection(url, client.realm, run_id, options.auth_file, rawsocket)
     started = None
     try:
         if options.command is not None:
@@ -52,10 +55,14 @@ def external_sut(options: SutOptions, client: WampClient, run_id: str, out_dir: 
                 f"with the variables of {env_file}: {' '.join(f'{k}={v}' for k, v in connection.environment().items())}")
             what = "the attached system under test"
         controller.wait_joined(options.join_timeout, what)
-        log(f"sut: {what} joined ({options.clock})")
+        log(f"sut: {what} joined ({options.clock})" + (f" as {controller.name!r}" if controller.name else ""))
         yield controller
     finally:
         with contextlib.suppress(WampError):
             controller.end(now(), "the run is over")
         if started is not None:
             controller.stats.exit_code = sut_process.stop(started)
+
+
+def _host(url: str) -> str | None:
+    return urlparse(url).hostname
