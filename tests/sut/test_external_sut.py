@@ -57,11 +57,11 @@ def test_a_sut_that_never_answers_ends_the_run_in_error_within_its_deadline(
     out = tmp_path / "out"
     started = time.monotonic()
     result = run_cli("run", repo_root / EXAMPLE, "-o", out, "--sut", _program("silent_sut.py", out),
-                     "--sut-deadline", "2", timeout=300)
+                     "--sut-deadline", "2", "--sut-join-timeout", "3", timeout=300)
     assert result.returncode == 2, result.stdout + result.stderr
     summary = _summary(out)
     assert summary["status"] == "ERROR"
-    assert "no command for tick 0 at t=0.000 s within 2 s" in summary["error"]
+    assert "no command for tick 0 at t=0.000 s within 3 s (--sut-join-timeout for tick 0)" in summary["error"]
     assert "joined; not answering" in summary["error"]  # the tail of sut.log is the evidence
     assert {v["status"] for v in summary["verdicts"]} <= {"error", "not-applicable"}
     # what was published is kept: the mission had begun
@@ -153,7 +153,7 @@ name: external
 timeout: 200
 variants:
   - {{name: nav, sut: {{command: "rei nav-sut", map: true}}}}
-  - {{name: silent, sut: {{command: "python3 silent_sut.py {tmp_path}", deadline: 2}}}}
+  - {{name: silent, sut: {{command: "python3 silent_sut.py {tmp_path}", deadline: 2, join_timeout: 3}}}}
 groups:
   - {{name: example, cases: ["{repo_root / EXAMPLE}"]}}
 """)

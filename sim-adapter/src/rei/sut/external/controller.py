@@ -7,8 +7,9 @@ the SUT sends arrives on the WAMP client's thread and is queued; only the simula
 every rule (docs/sut.md) is applied in arrival order at a point the loop chose: that is what makes lockstep runs
 deterministic.
 
-Lockstep: ``step`` waits for the command of its tick, at most ``deadline`` seconds, checking meanwhile that a
-started SUT is still alive. Realtime: ``step`` takes what has arrived and does not wait.
+Lockstep: ``step`` waits for the command of its tick, at most ``deadline`` seconds (the first tick:
+``first_deadline``, as a stack may finish its start-up only once ``hello`` gave it the map), checking meanwhile
+that a started SUT is still alive. Realtime: ``step`` takes what has arrived and does not wait.
 """
 
 from __future__ import annotations
@@ -72,11 +73,12 @@ class ExternalController(Controller):
     """A controller in another process, reached through ``client`` (the simulation's session)."""
 
     def __init__(self, client: WampClient, run_id: str, *, clock: Clock, deadline: float, limits: RobotLimits,
-                 scan_time: float, log: Callable[[str], None] = print) -> None:
+                 scan_time: float, first_deadline: float | None = None, log: Callable[[str], None] = print) -> None:
         self._client = client
         self._run_id = run_id
         self.clock: Clock = clock
         self.deadline = deadline
+        self.first_deadline = max(deadline, first_deadline or deadline)
         self._limits = limits
         self._scan_time = scan_time
         self._process: ManagedProcess | None = None
@@ -186,12 +188,14 @@ class ExternalController(Controller):
         return self._hello
 
     def _await_command(self, sent: float) -> Twist2D:
-        deadline = sent + self.deadline
+        allowed, option = (self.deadline, "--sut-deadline") if self._tick else (self.first_deadline,
+                                                                                  "--sut-join-timeout for tick 0")
+        deadline = sent + allowed
         while True:
             remaining = deadline - time.monotonic()
             if remaining <= 0:
-                raise SutError(f"no command for tick {self._tick} at t={self._t:.3f} s within {self.deadline:g} s "
-                               f"(--sut-deadline){self._rejection_note()}{self._log_tail()}")
+                raise SutError(f"no command for tick {self._tick} at t={self._t:.3f} s within {allowed:g} s "
+                               f"({option}){self._rejection_note()}{self._log_tail()}")
             try:
                 name, payload, arrived = self._inbox.get(timeout=min(_POLL, remaining))
             except queue.Empty:

@@ -54,15 +54,31 @@ class Connection:
         return path
 
 
+#: ``--sut "PREFIX:COMMAND"``: COMMAND speaks a middleware, reached through REI's bridge for it (docs/ros.md).
+BRIDGES = {"ros1": ["rei", "ros1-bridge"]}
+
+
 def split_command(command: str) -> list[str]:
     """The argv of ``--sut``; raises SutLaunchError for an empty or unbalanced command."""
+    prefix, _, rest = command.partition(":")
+    if prefix in BRIDGES:
+        command = rest
     try:
         argv = shlex.split(command)
     except ValueError as error:
         raise SutLaunchError(f"--sut {command!r}: {error}") from None
     if not argv:
-        raise SutLaunchError("--sut needs a command, e.g. --sut \"python3 my_nav.py\"")
+        raise SutLaunchError("--sut needs a command, e.g. --sut \"python3 my_nav.py\" or \"ros1:roslaunch ...\"")
     return argv
+
+
+def bridged(command: str, out_dir: Path) -> list[str]:
+    """The argv REI starts for ``--sut``: the command, or its bridge with the command after ``--``."""
+    argv = split_command(command)
+    prefix = command.partition(":")[0]
+    if prefix not in BRIDGES:
+        return argv
+    return [*BRIDGES[prefix], "--ros-home", str(out_dir / "ros"), "--", *argv]
 
 
 def _search_path(base: Mapping[str, str]) -> str:
@@ -86,8 +102,9 @@ def check_command(command: str, cwd: Path | None = None) -> list[str]:
 
 
 def start(command: str, connection: Connection, out_dir: Path, cwd: Path | None = None) -> ManagedProcess:
-    """Start the SUT in its own process group, in ``cwd``, with its output in ``out_dir/sut.log``."""
-    argv = check_command(command, cwd)
+    """Start the SUT (or its bridge) in its own process group, in ``cwd``, with its output in ``out_dir/sut.log``."""
+    check_command(command, cwd)
+    argv = bridged(command, out_dir)
     env = {**connection.environment(), "PATH": _search_path(os.environ), "PYTHONUNBUFFERED": "1"}
     try:
         return ManagedProcess("system under test", argv, out_dir / LOG_FILE, env=env, cwd=cwd)

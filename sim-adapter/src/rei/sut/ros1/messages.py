@@ -1,0 +1,133 @@
+# SPDX-License-Identifier: EPL-2.0
+"""REI's values as ROS 1 messages (and back): clock, odometry, tf, laser scan, occupancy grid, move_base goal.
+
+Call ``rei.sut.ros1.environment.import_rospy()`` before importing this module. Times are simulation seconds
+plus ``TIME_OFFSET``: rospy takes time 0 for "no clock yet", so the run's t = 0 must be a later ROS time.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import rospy
+from geometry_msgs.msg import Quaternion, TransformStamped, Twist
+from move_base_msgs.msg import MoveBaseGoal
+from nav_msgs.msg import OccupancyGrid, Odometry
+from rosgraph_msgs.msg import Clock
+from sensor_msgs.msg import LaserScan as RosLaserScan
+from tf2_msgs.msg import TFMessage
+
+from rei.geometry import Pose2D, Twist2D
+from rei.sut.api import LaserScan, NavGoal, StaticMap
+
+TIME_OFFSET_NS = 1000 * 10**9
+#: Cells of the occupancy grid (m) and the margin around the floors, where the walls stand (m).
+MAP_RESOLUTION = 0.05
+MAP_MARGIN = 0.5
+
+
+@dataclass(frozen=True, slots=True)
+class Frames:
+    """Frame ids and topic names, with the ROS defaults (docs/ros.md)."""
+
+    map: str = "map"
+    odom: str = "odom"
+    base: str = "base_link"
+    laser: str = "base_scan"
+
+
+def stamp(t: float) -> rospy.Time:
+    """The ROS time of simulation time ``t`` (to the nanosecond, so a 10 Hz clock stays on a timer's grid)."""
+    return rospy.Time(nsecs=TIME_OFFSET_NS + round(t * 1e9))
+
+
+def clock(t: float) -> Clock:
+    return Clock(clock=stamp(t))
+
+
+def quaternion(yaw: float) -> Quaternion:
+    return Quaternion(x=0.0, y=0.0, z=math.sin(yaw / 2), w=math.cos(yaw / 2))
+
+
+def yaw_of(q: Quaternion) -> float:
+    return math.atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z))
+
+
+def odometry(t: float, pose: Pose2D, twist: Twist2D, frames: Frames) -> Odometry:
+    message = Odometry()
+    message.header.stamp, message.header.frame_id, message.child_frame_id = stamp(t), frames.odom, frames.base
+    message.pose.pose.position.x, message.pose.pose.position.y = pose.x, pose.y
+    message.pose.pose.orientation = quaternion(pose.yaw)
+    message.twist.twist.linear.x, message.twist.twist.angular.z = twist.v, twist.w
+    return message
+
+
+def transforms(t: float, odom: Pose2D, frames: Frames, *, with_map: bool) -> TFMessage:
+    """odom -> base_link from the odometry; map -> odom as identity (the odometry starts at the start pose, in
+    world coordinates) when the run offers a map."""
+    def transform(parent: str, child: str, pose: Pose2D) -> TransformStamped:
+        stamped = TransformStamped()
+        stamped.header.stamp, stamped.header.frame_id, stamped.child_frame_id = stamp(t), parent, child
+        stamped.transform.translation.x, stamped.transform.translation.y = pose.x, pose.y
+        stamped.transform.rotation = quaternion(pose.yaw)
+        return stamped
+
+    edges = [transform(frames.odom, frames.base, odom)]
+    if with_map:
+        edges.insert(0, transform(frames.map, frames.odom, Pose2D(0.0, 0.0, 0.0)))
+    return TFMessage(transforms=edges)
+
+
+def laser_scan(scan: LaserScan, scan_time: float, frames: Frames) -> RosLaserScan:
+    count = len(scan.ranges)
+    return RosLaserScan(
+        header=_header(scan.t, frames.laser), angle_min=scan.angle_min,
+        angle_max=scan.angle_min + (count - 1) * scan.angle_increment, angle_increment=scan.angle_increment,
+        time_increment=0.0, scan_time=scan_time, range_min=scan.range_min, range_max=scan.range_max,
+        ranges=np.asarray(scan.ranges, dtype=np.float32).tolist(), intensities=[])
+
+
+def occupancy_grid(static_map: StaticMap, frames: Frames, resolution: float = MAP_RESOLUTION) -> OccupancyGrid:
+    """The static map's rectangles rasterized: 100 where a cell's centre is inside an obstacle, else 0."""
+    xmin, ymin, xmax, ymax = static_map.bounds
+    x0, y0 = xmin - MAP_MARGIN, ymin - MAP_MARGIN
+    width = math.ceil((xmax - xmin + 2 * MAP_MARGIN) / resolution)
+    height = math.ceil((ymax - ymin + 2 * MAP_MARGIN) / resolution)
+    cx = x0 + (np.arange(width) + 0.5) * resolution
+    cy = y0 + (np.arange(height) + 0.5) * resolution
+    gx, gy = np.meshgrid(cx, cy)  # row-major from the origin, as OccupancyGrid wants
+    occupied = np.zeros(gx.shape, dtype=bool)
+    for x, y, yaw, size_x, size_y in static_map.obstacles:
+        dx, dy = gx - x, gy - y
+        u = math.cos(yaw) * dx + math.sin(yaw) * dy
+        v = -math.sin(yaw) * dx + math.cos(yaw) * dy
+        occupied |= (np.abs(u) <= size_x / 2) & (np.abs(v) <= size_y / 2)
+    grid = OccupancyGrid()
+    grid.header = _header(0.0, frames.map)
+    grid.info.map_load_time, grid.info.resolution = stamp(0.0), resolution
+    grid.info.width, grid.info.height = width, height
+    grid.info.origin.position.x, grid.info.origin.position.y = x0, y0
+    grid.info.origin.orientation.w = 1.0
+    grid.data = np.where(occupied, 100, 0).astype(np.int8).ravel().tolist()
+    return grid
+
+
+def move_base_goal(t: float, goal: NavGoal, frames: Frames) -> MoveBaseGoal:
+    message = MoveBaseGoal()
+    message.target_pose.header = _header(t, frames.map)
+    message.target_pose.pose.position.x, message.target_pose.pose.position.y = goal.pose.x, goal.pose.y
+    message.target_pose.pose.orientation = quaternion(goal.pose.yaw)
+    return message
+
+
+def command(message: Twist) -> Twist2D:
+    """A /cmd_vel as REI's command: forward and yaw rate (the planar robot ignores the rest)."""
+    return Twist2D(float(message.linear.x), float(message.angular.z))
+
+
+def _header(t: float, frame: str):  # type: ignore[no-untyped-def]
+    from std_msgs.msg import Header
+
+    return Header(stamp=stamp(t), frame_id=frame)
