@@ -155,8 +155,8 @@ class Ros1Bridge(SystemUnderTest):
     def _check_stack(self) -> None:
         stack = self.stack
         if stack is not None and stack.poll() is not None:
-            raise SutConnectionError(f"the ROS stack ({stack.name}) {stack.describe_exit().split(' ', 1)[1]}; "
-                                     f"last lines of {stack.log}:\n{stack.log_tail(10)}")
+            raise SutConnectionError(f"the ROS {stack.describe_exit()}; last lines of {stack.log}:\n"
+                                     f"{stack.log_tail(10)}")
 
     def _on_cmd_vel(self, message: Any) -> None:  # a rospy thread
         with self._lock:
