@@ -41,6 +41,10 @@ from rei.sut.ros1.environment import RosUnavailableError, import_rospy, ros_envi
 
 #: Wall seconds the bridge waits for the move_base action server once the map is out (the stack's start-up).
 SERVER_TIMEOUT = 60.0
+#: Wall seconds a new goal may take to become ACTIVE before the next /clock goes out anyway.
+ACCEPT_TIMEOUT = 1.0
+#: Simulation seconds before t = 0 of the clock the stack starts with (one control period).
+PRE_START = 0.1
 STACK_LOG = "stack.log"
 
 
@@ -99,9 +103,16 @@ class Ros1Bridge(SystemUnderTest):
         self._await_server()
 
     def on_goal(self, goal: NavGoal) -> None:
+        from actionlib_msgs.msg import GoalStatus
+
         self._action.send_goal(self.m.move_base_goal(self._t, goal, self.frames),
                                done_cb=functools.partial(self._on_done, goal.index),
                                feedback_cb=functools.partial(self._on_feedback, goal.index))
+        # the goal and /clock travel on different connections: wait until the server has it, so it takes
+        # effect at this tick and not, some runs, at the next
+        deadline = time.monotonic() + ACCEPT_TIMEOUT
+        while self._action.get_state() == GoalStatus.PENDING and time.monotonic() < deadline:
+            time.sleep(0.0005)
 
     def on_cancel(self, goal: NavGoal) -> None:
         self._action.cancel_goal()
@@ -132,13 +143,14 @@ class Ros1Bridge(SystemUnderTest):
     # -- set-up and ROS callbacks ------------------------------------------------------------------------------
 
     def start_clock(self) -> None:
-        """/use_sim_time and a first, latched /clock at t = 0: before the stack starts, so it waits for REI."""
+        """/use_sim_time and a first, latched /clock one period before t = 0: the stack starts with a time and
+        waits for REI's; tick 0 is then a step of its own (a sim-time timer fires once per new time)."""
         import rospy
         from rosgraph_msgs.msg import Clock
 
         rospy.set_param("/use_sim_time", True)
         self._clock = rospy.Publisher("/clock", Clock, queue_size=10, latch=True, tcp_nodelay=True)
-        self._clock.publish(self.m.clock(0.0))
+        self._clock.publish(self.m.clock(-PRE_START))
 
     def _await_server(self) -> None:
         """Until the stack's move_base server answers, in wall time (its own timeout counts the frozen sim time)."""

@@ -97,13 +97,15 @@ def occupancy_grid(static_map: StaticMap, frames: Frames, resolution: float = MA
     height = math.ceil((ymax - ymin + 2 * MAP_MARGIN) / resolution)
     cx = x0 + (np.arange(width) + 0.5) * resolution
     cy = y0 + (np.arange(height) + 0.5) * resolution
-    gx, gy = np.meshgrid(cx, cy)  # row-major from the origin, as OccupancyGrid wants
-    occupied = np.zeros(gx.shape, dtype=bool)
+    occupied = np.zeros((height, width), dtype=bool)  # row-major from the origin, as OccupancyGrid wants
     for x, y, yaw, size_x, size_y in static_map.obstacles:
-        dx, dy = gx - x, gy - y
+        reach = math.hypot(size_x, size_y) / 2  # only the cells around the box: a big map has many boxes
+        cols = slice(max(0, int((x - reach - x0) / resolution)), min(width, int((x + reach - x0) / resolution) + 1))
+        rows = slice(max(0, int((y - reach - y0) / resolution)), min(height, int((y + reach - y0) / resolution) + 1))
+        dx, dy = np.meshgrid(cx[cols] - x, cy[rows] - y)
         u = math.cos(yaw) * dx + math.sin(yaw) * dy
         v = -math.sin(yaw) * dx + math.cos(yaw) * dy
-        occupied |= (np.abs(u) <= size_x / 2) & (np.abs(v) <= size_y / 2)
+        occupied[rows, cols] |= (np.abs(u) <= size_x / 2) & (np.abs(v) <= size_y / 2)
     grid = OccupancyGrid()
     grid.header = _header(0.0, frames.map)
     grid.info.map_load_time, grid.info.resolution = stamp(0.0), resolution
