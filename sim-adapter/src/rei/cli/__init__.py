@@ -20,7 +20,7 @@ from rei.toolchain import ToolchainError
 
 #: Subcommand modules under `rei.cli`, in the order `rei --help` lists them.
 COMMANDS: tuple[str, ...] = ("validate", "generate", "sim", "run", "evaluate", "monitor", "report", "gen_rooms", "campaign", "view",
-                            "nav_sut", "ros1_bridge")
+                            "nav_sut", "ros1_bridge", "import_bag")
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -28,12 +28,15 @@ class VerdictSettings:
     (6.7 cm for the Waffle) closer, so a turn near a wall grazes CLOSE without any laser reading there.
     ``laser``: the run published laser data (``--laser none`` runs: False, the laser verdicts do not apply).
     ``humans``: the humans of world.json are in the simulation (``--no-humans`` runs: False).
+    ``mission``: the run recorded its mission (an imported bag without goals: False): then the mission's
+    requirements on goals do not apply and the others are judged over the observed span, which has no END.
     """
 
     tolerance: float = 1.0
     grace: float = 1.0
     laser: bool = True
     humans: bool = True
+    mission: bool = True
 
     def __post_init__(self) -> None:
         if not (self.tolerance >= 0 and self.grace >= 0):

@@ -249,7 +249,8 @@ class Evaluator:
             if self._problem_count > len(problems):
                 problems.append(Evidence(f"{self._problem_count - len(problems)} more stream problem(s)"))
             trace = Trace(signals, max(duration or 0.0, last), status == "COMPLETED", reason,
-                          dict(self._task_reasons), dict(self._task_goals), tuple(problems))
+                          dict(self._task_reasons), dict(self._task_goals), tuple(problems),
+                          mission_recorded=self.settings.mission)
             context = CaseContext.from_configs(self._mission, self.monitor_config, self.world, self.settings)
             verdicts = judge(trace, context)
             testcase = (self._mission.testcase if self._mission and self._mission.testcase

@@ -31,6 +31,8 @@ class Trace:
     task_reasons: Mapping[int, str] = field(default_factory=dict)
     task_goals: Mapping[int, tuple[float, float]] = field(default_factory=dict)
     stream_problems: tuple[Evidence, ...] = ()
+    #: False for a run that recorded no mission (an imported bag): it is complete without SIG_MISSION_END.
+    mission_recorded: bool = True
 
     @property
     def began(self) -> bool:
@@ -50,7 +52,7 @@ class Trace:
         if not self.completed:
             reason = self.error_reason or "no reason given"
             return Evidence(f"the run ended in ERROR: {reason}", self.end_time)
-        if not self.ended:
+        if not self.ended and self.mission_recorded:
             return Evidence("the run ended without SIG_MISSION_END: the mission was not observed to its end",
                             self.end_time)
         return None

@@ -231,6 +231,8 @@ def _mission_simple(trace: Trace, timeline: Timeline, context: CaseContext,
 
 def _mission_cycle(trace: Trace, timeline: Timeline, context: CaseContext,
                    collisions: list[_Collision]) -> Verdict:
+    if not context.settings.mission:
+        return Verdict(MISSION_SEQUENCE_CYCLE, Status.NOT_APPLICABLE, _NO_MISSION)
     path = _path(trace, context)
     if path is None:
         return Verdict(MISSION_SEQUENCE_CYCLE, Status.ERROR,
@@ -295,8 +297,13 @@ def _same(a: tuple[float, float, float], b: tuple[float, float, float]) -> bool:
 
 # -- mission sequence --------------------------------------------------------------------------------------
 
+_NO_MISSION = "the run recorded no mission (an imported run without goals)"
+
+
 def _mission_sequence(trace: Trace, timeline: Timeline, context: CaseContext) -> Verdict:
     requirement = MISSION_SEQUENCE
+    if not context.settings.mission:
+        return Verdict(requirement, Status.NOT_APPLICABLE, _NO_MISSION)
     starts: dict[int, list[float]] = {}
     finals: dict[int, list[Signal]] = {}
     facts: list[Evidence] = []

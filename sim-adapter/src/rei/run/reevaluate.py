@@ -43,6 +43,7 @@ class RunSettings:
 
     humans: bool = True
     laser: bool = True
+    mission: bool = True  # False: an imported run without goals (rei.bags)
     run_id: str = "replay"
     sim_duration: float | None = None
 
@@ -55,7 +56,7 @@ class RunSettings:
         sim = _json(path)
         options = sim.get("options", {})
         return cls(humans=bool(options.get("humans", True)), laser=options.get("laser", "min") != "none",
-                   run_id=str(sim.get("run_id", "replay")), sim_duration=sim.get("sim_time"))
+                   mission=bool(options.get("mission", True)), run_id=str(sim.get("run_id", "replay")), sim_duration=sim.get("sim_time"))
 
 
 def replay_monitor(out: Path, case_dir: Path, *, patterns: PatternSelection | None = None,
@@ -145,7 +146,8 @@ def reevaluate(out: Path, case_dir: Path | None = None, *, utilities: Path | Non
     evaluator = Evaluator(out, utilities=table,
                           mission_info=mission_info(read_case(case_dir).mission),
                           monitor_config=_json(case_dir / "monitor.json"), world=_json(case_dir / "world.json"),
-                          settings=VerdictSettings(humans=settings.humans, laser=settings.laser))
+                          settings=VerdictSettings(humans=settings.humans, laser=settings.laser,
+                                                                   mission=settings.mission))
     for text in notes:
         evaluator.note(text)
     mission = stream_path(out, "mission")

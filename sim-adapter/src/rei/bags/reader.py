@@ -1,0 +1,112 @@
+# SPDX-License-Identifier: EPL-2.0
+"""A bag's topics as checked samples in time order, read with ``rosbags`` (pure Python, Apache-2.0).
+
+Every problem names the bag, the topic and the time: a topic that is missing (with the topics there are), of a
+type REI cannot read, with stamps that go backwards, or a bag that is corrupt or cut short.
+"""
+
+from __future__ import annotations
+
+import heapq
+import math
+from collections.abc import Iterator, Mapping
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from rei.geometry import Pose2D, Twist2D
+from rei.sut.api import LaserScan
+
+#: Message types each role accepts (rosbags spells ROS 1 and ROS 2 types alike).
+POSE_TYPES = ("nav_msgs/msg/Odometry", "geometry_msgs/msg/PoseStamped", "geometry_msgs/msg/PoseWithCovarianceStamped")
+ROLE_TYPES: Mapping[str, tuple[str, ...]] = {
+    "pose": POSE_TYPES,
+    "odom": ("nav_msgs/msg/Odometry",),
+    "scan": ("sensor_msgs/msg/LaserScan",),
+}
+
+
+class BagError(ValueError):
+    """The bag cannot be imported; the message names the bag, the topic and the time."""
+
+
+@dataclass(frozen=True, slots=True)
+class Sample:
+    """One message of a role: ``t`` its header stamp (s), ``value`` a Pose2D (pose), (Pose2D, Twist2D) (odom) or a
+    LaserScan (scan)."""
+
+    t: float
+    role: str
+    value: Any
+
+
+def read_samples(bag: Path, topics: Mapping[str, str]) -> Iterator[Sample]:
+    """The samples of ``topics`` (role -> topic name) merged in stamp order."""
+    from rosbags.highlevel import AnyReader, AnyReaderError
+
+    try:
+        with AnyReader([bag]) as reader:
+            available = {c.topic: c.msgtype for c in reader.connections}
+            for role, topic in topics.items():
+                _check_topic(bag, role, topic, available)
+            streams = [_stream(bag, reader, role, topic) for role, topic in topics.items()]
+            yield from heapq.merge(*streams, key=lambda sample: sample.t)
+    except AnyReaderError as error:
+        raise BagError(f"{bag}: not a readable bag (corrupt or truncated?): {error}") from None
+    except BagError:
+        raise
+    except Exception as error:  # noqa: BLE001 - rosbags raises many kinds for a corrupt or truncated file
+        raise BagError(f"{bag}: not a readable bag (corrupt or truncated?): {type(error).__name__}: {error}") from None
+
+
+def topics_of(bag: Path) -> dict[str, str]:
+    """topic -> message type of every connection in the bag."""
+    from rosbags.highlevel import AnyReader, AnyReaderError
+
+    try:
+        with AnyReader([bag]) as reader:
+            return {c.topic: c.msgtype for c in reader.connections}
+    except AnyReaderError as error:
+        raise BagError(f"{bag}: not a readable bag (corrupt or truncated?): {error}") from None
+    except Exception as error:  # noqa: BLE001 - see read_samples
+        raise BagError(f"{bag}: not a readable bag (corrupt or truncated?): {type(error).__name__}: {error}") from None
+
+
+def _check_topic(bag: Path, role: str, topic: str, available: Mapping[str, str]) -> None:
+    if topic not in available:
+        listed = ", ".join(f"{name} ({kind})" for name, kind in sorted(available.items())) or "none"
+        raise BagError(f"{bag}: no topic {topic} for the {role} (--{role}-topic); the bag has: {listed}")
+    if available[topic] not in ROLE_TYPES[role]:
+        raise BagError(f"{bag}: topic {topic} is {available[topic]}; the {role} must be one of "
+                       f"{', '.join(ROLE_TYPES[role])}")
+
+
+def _stream(bag: Path, reader: Any, role: str, topic: str) -> Iterator[Sample]:
+    connections = [c for c in reader.connections if c.topic == topic]
+    last = -math.inf
+    for connection, _, raw in reader.messages(connections=connections):
+        message = reader.deserialize(raw, connection.msgtype)
+        stamp = message.header.stamp
+        t = stamp.sec + stamp.nanosec * 1e-9
+        if t < last:
+            raise BagError(f"{bag}: topic {topic}: stamp {t:.6f} s comes after {last:.6f} s (stamps must not go "
+                           "backwards)")
+        last = t
+        yield Sample(t, role, _value(role, message))
+
+
+def _value(role: str, message: Any) -> Any:
+    if role == "scan":
+        return LaserScan(t=0.0, angle_min=float(message.angle_min), angle_increment=float(message.angle_increment),
+                         range_min=float(message.range_min), range_max=float(message.range_max),
+                         ranges=np.asarray(message.ranges, dtype=np.float64))
+    pose = message.pose.pose if hasattr(message.pose, "pose") else message.pose  # Odometry, PoseWithCov: .pose.pose
+    q = pose.orientation
+    pose2d = Pose2D(float(pose.position.x), float(pose.position.y),
+                    math.atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z)))
+    if role == "odom":
+        twist = message.twist.twist
+        return pose2d, Twist2D(float(twist.linear.x), float(twist.angular.z))
+    return pose2d
