@@ -82,9 +82,10 @@ def import_bag(bag: Path, out: Path, case_dir: Path, topics: Mapping[str, str], 
                                    f"{ymin:g}..{ymax:g} m): is it the right case, or the map frame?")
                 if t0 is None:
                     t0 = sample.t
-                if previous is not None and sample.t - t0 <= previous[0]:
+                # to the microsecond: stamps are whole nanoseconds, 1 ns off the 20 Hz grid would sample twice
+                t = round(sample.t - t0, 6)
+                if previous is not None and t <= previous[0]:
                     continue  # the same stamp again: nothing new to sample
-                t = sample.t - t0
                 twist = _twist(previous, (t, pose))
                 previous = (t, pose)
                 if collector.due(t):
