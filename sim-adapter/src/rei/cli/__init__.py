@@ -19,8 +19,8 @@ from rei.cli.errors import EXIT_TOOLCHAIN, CommandError
 from rei.toolchain import ToolchainError
 
 #: Subcommand modules under `rei.cli`, in the order `rei --help` lists them.
-COMMANDS: tuple[str, ...] = ("validate", "generate", "sim", "run", "evaluate", "monitor", "report", "gen_rooms", "campaign", "view",
-                            "nav_sut", "ros1_bridge", "import_bag")
+COMMANDS: tuple[str, ...] = ("validate", "generate", "sim", "run", "evaluate", "import_bag", "monitor", "report",
+                            "gen_rooms", "campaign", "view", "nav_sut", "ros1_bridge")
 
 
 def build_parser() -> argparse.ArgumentParser:
