@@ -21,11 +21,9 @@ from tf2_msgs.msg import TFMessage
 
 from rei.geometry import Pose2D, Twist2D
 from rei.sut.api import LaserScan, NavGoal, StaticMap
+from rei.sut.rasterize import MAP_RESOLUTION, rasterize
 
 TIME_OFFSET_NS = 1000 * 10**9
-#: Cells of the occupancy grid (m) and the margin around the floors, where the walls stand (m).
-MAP_RESOLUTION = 0.05
-MAP_MARGIN = 0.5
 
 
 @dataclass(frozen=True, slots=True)
@@ -90,29 +88,15 @@ def laser_scan(scan: LaserScan, scan_time: float, frames: Frames) -> RosLaserSca
 
 
 def occupancy_grid(static_map: StaticMap, frames: Frames, resolution: float = MAP_RESOLUTION) -> OccupancyGrid:
-    """The static map's rectangles rasterized: 100 where a cell's centre is inside an obstacle, else 0."""
-    xmin, ymin, xmax, ymax = static_map.bounds
-    x0, y0 = xmin - MAP_MARGIN, ymin - MAP_MARGIN
-    width = math.ceil((xmax - xmin + 2 * MAP_MARGIN) / resolution)
-    height = math.ceil((ymax - ymin + 2 * MAP_MARGIN) / resolution)
-    cx = x0 + (np.arange(width) + 0.5) * resolution
-    cy = y0 + (np.arange(height) + 0.5) * resolution
-    occupied = np.zeros((height, width), dtype=bool)  # row-major from the origin, as OccupancyGrid wants
-    for x, y, yaw, size_x, size_y in static_map.obstacles:
-        reach = math.hypot(size_x, size_y) / 2  # only the cells around the box: a big map has many boxes
-        cols = slice(max(0, int((x - reach - x0) / resolution)), min(width, int((x + reach - x0) / resolution) + 1))
-        rows = slice(max(0, int((y - reach - y0) / resolution)), min(height, int((y + reach - y0) / resolution) + 1))
-        dx, dy = np.meshgrid(cx[cols] - x, cy[rows] - y)
-        u = math.cos(yaw) * dx + math.sin(yaw) * dy
-        v = -math.sin(yaw) * dx + math.cos(yaw) * dy
-        occupied[rows, cols] |= (np.abs(u) <= size_x / 2) & (np.abs(v) <= size_y / 2)
+    """The static map's rectangles rasterized (rei.sut.rasterize): 100 where a cell's centre is inside an obstacle."""
+    raster = rasterize(static_map, resolution)
     grid = OccupancyGrid()
     grid.header = _header(0.0, frames.map)
     grid.info.map_load_time, grid.info.resolution = stamp(0.0), resolution
-    grid.info.width, grid.info.height = width, height
-    grid.info.origin.position.x, grid.info.origin.position.y = x0, y0
+    grid.info.width, grid.info.height = raster.width, raster.height
+    grid.info.origin.position.x, grid.info.origin.position.y = raster.x0, raster.y0
     grid.info.origin.orientation.w = 1.0
-    grid.data = np.where(occupied, 100, 0).astype(np.int8).ravel().tolist()
+    grid.data = raster.occupancy().tolist()
     return grid
 
 

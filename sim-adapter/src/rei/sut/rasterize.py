@@ -1,0 +1,59 @@
+# SPDX-License-Identifier: EPL-2.0
+"""The static map as an occupancy raster (pure numpy), shared by the ROS bridges' /map."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from rei.sut.api import StaticMap
+
+#: Cells of the occupancy grid (m) and the margin around the floors, where the walls stand (m).
+MAP_RESOLUTION = 0.05
+MAP_MARGIN = 0.5
+
+
+@dataclass(frozen=True, slots=True)
+class Raster:
+    """``occupied[row, col]``: row-major from the origin ``(x0, y0)`` (the grid's lower left corner), as a ROS
+    OccupancyGrid wants; cells of ``resolution`` metres."""
+
+    occupied: np.ndarray
+    x0: float
+    y0: float
+    resolution: float
+
+    @property
+    def width(self) -> int:
+        return int(self.occupied.shape[1])
+
+    @property
+    def height(self) -> int:
+        return int(self.occupied.shape[0])
+
+    def occupancy(self) -> np.ndarray:
+        """The cells as ROS occupancy values, flat: 100 occupied, 0 free (int8)."""
+        return np.where(self.occupied, 100, 0).astype(np.int8).ravel()
+
+
+def rasterize(static_map: StaticMap, resolution: float = MAP_RESOLUTION, margin: float = MAP_MARGIN) -> Raster:
+    """The static map's rectangles rasterized: a cell is occupied where its centre is inside an obstacle; the grid
+    reaches ``margin`` beyond the floors."""
+    xmin, ymin, xmax, ymax = static_map.bounds
+    x0, y0 = xmin - margin, ymin - margin
+    width = math.ceil((xmax - xmin + 2 * margin) / resolution)
+    height = math.ceil((ymax - ymin + 2 * margin) / resolution)
+    cx = x0 + (np.arange(width) + 0.5) * resolution
+    cy = y0 + (np.arange(height) + 0.5) * resolution
+    occupied = np.zeros((height, width), dtype=bool)
+    for x, y, yaw, size_x, size_y in static_map.obstacles:
+        reach = math.hypot(size_x, size_y) / 2  # only the cells around the box: a big map has many boxes
+        cols = slice(max(0, int((x - reach - x0) / resolution)), min(width, int((x + reach - x0) / resolution) + 1))
+        rows = slice(max(0, int((y - reach - y0) / resolution)), min(height, int((y + reach - y0) / resolution) + 1))
+        dx, dy = np.meshgrid(cx[cols] - x, cy[rows] - y)
+        u = math.cos(yaw) * dx + math.sin(yaw) * dy
+        v = -math.sin(yaw) * dx + math.cos(yaw) * dy
+        occupied[rows, cols] |= (np.abs(u) <= size_x / 2) & (np.abs(v) <= size_y / 2)
+    return Raster(occupied, x0, y0, resolution)

@@ -1,0 +1,215 @@
+# SPDX-License-Identifier: EPL-2.0
+"""REI's ROS 2 messages (rei.sut.ros2): every type's CDR byte for byte as rosbags (an independent ROS 2 serializer)
+writes it, and each topic through DDS from one participant to another in a second process, on loopback only."""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import math
+import os
+import subprocess
+import sys
+import time
+
+import numpy as np
+import pytest
+from cyclonedds.domain import Domain, DomainParticipant
+from cyclonedds.idl import IdlStruct
+from cyclonedds.idl._support import Endianness
+from cyclonedds.pub import DataWriter
+from cyclonedds.topic import Topic
+from rosbags.typesys import Stores, get_typestore
+
+from rei.geometry import Pose2D, Twist2D
+from rei.sut.api import LaserScan, StaticMap
+from rei.sut.ros2 import messages as m
+from rei.sut.ros2 import types as t
+
+STORE = get_typestore(Stores.ROS2_HUMBLE)
+FRAMES = m.Frames()
+ALL_TYPES = [t.Time, t.Header, t.Vector3, t.Point, t.Quaternion, t.Pose, t.PoseWithCovariance, t.Twist,
+             t.TwistWithCovariance, t.Transform, t.TransformStamped, t.Odometry, t.MapMetaData, t.OccupancyGrid,
+             t.LaserScan, t.TFMessage, t.Clock]
+
+
+def msgtype(cls: type[IdlStruct]) -> str:
+    """``sensor_msgs::msg::dds_::LaserScan_`` -> ``sensor_msgs/msg/LaserScan``."""
+    package, kind, dds, name = cls.__idl_typename__.split("::")
+    assert (kind, dds) == ("msg", "dds_") and name.endswith("_")
+    return f"{package}/{kind}/{name[:-1]}"
+
+
+def to_rosbags(value: IdlStruct, typename: str) -> object:
+    """The same values as a rosbags message, field by field as rosbags' own definition of ``typename`` lists them
+    (its names, order and element types; only the values come from ``value``)."""
+    _, fields = STORE.fielddefs[typename]
+    assert [f.name for f in dataclasses.fields(value)] == [name for name, _ in fields], typename
+    kwargs = {}
+    for name, (node, spec) in fields:
+        item = getattr(value, name)
+        if node.name == "NAME":
+            kwargs[name] = to_rosbags(item, spec)
+        elif node.name == "BASE":
+            kwargs[name] = item
+        else:  # ARRAY or SEQUENCE
+            (element_node, element_spec), _size = spec
+            if element_node.name == "NAME":
+                kwargs[name] = [to_rosbags(element, element_spec) for element in item]
+            else:
+                kwargs[name] = np.array(item, dtype=getattr(np, element_spec[0]))
+    return STORE.types[typename](**kwargs)
+
+
+def rosbags_cdr(value: IdlStruct) -> bytes:
+    typename = msgtype(type(value))
+    return bytes(STORE.serialize_cdr(to_rosbags(value, typename), typename))
+
+
+def samples() -> dict[str, IdlStruct]:
+    """One of each type, from REI's builders where there is one, with awkward values: inf, nan, negative, odd
+    lengths (padding), empty sequences and strings, non-ASCII frame ids, extreme integers."""
+    scan = LaserScan(0.2, -math.pi, 2 * math.pi / 7, 0.12, 3.5, np.array([0.5, math.inf, 3.4, -math.inf, 1e-3, 7.0, 0.3]))
+    boxes = ((1.0, 1.0, 0.0, 0.5, 0.3), (2.5, 1.5, 0.7, 1.0, 0.2), (0.0, 1.0, 0.0, 0.1, 2.0))
+    odometry = m.odometry(12.3, Pose2D(-1.5, 2.25, -2.9), Twist2D(-0.2, 1.5), FRAMES)
+    odometry.pose.covariance = [float(i) - 17.5 for i in range(36)]
+    odometry.twist.covariance[35] = math.nan
+    return {
+        "time": t.Time(sec=-(2**31), nanosec=2**32 - 1),
+        "header": t.Header(stamp=t.Time(sec=2**31 - 1, nanosec=1), frame_id=""),
+        "header_odd": m.header(0.1, "base_scän/ü"),
+        "vector3": t.Vector3(x=-0.0, y=math.inf, z=-1e-308),
+        "point": t.Point(x=1.0, y=-2.0, z=3.5),
+        "quaternion": m.quaternion(-1.0),
+        "pose": t.Pose(position=t.Point(x=4.0), orientation=m.quaternion(3.0)),
+        "pose_with_covariance": t.PoseWithCovariance(covariance=[1e300 * (-1) ** i for i in range(36)]),
+        "twist": m.twist(Twist2D(0.26, -1.82)),
+        "twist_with_covariance": t.TwistWithCovariance(twist=m.twist(Twist2D(-0.1, 0.0))),
+        "transform": t.Transform(translation=t.Vector3(x=1.0, y=2.0), rotation=m.quaternion(0.5)),
+        "transform_stamped": m.transforms(0.3, Pose2D(1.0, 2.0, 0.3), FRAMES, with_map=False).transforms[0],
+        "odometry": odometry,
+        "map_meta_data": t.MapMetaData(map_load_time=m.stamp(0.0), resolution=0.05, width=7, height=3),
+        "occupancy_grid": m.occupancy_grid(StaticMap((0.0, 0.0, 3.0, 2.0), boxes, (0.3, 0.3)), FRAMES),
+        "occupancy_grid_odd": t.OccupancyGrid(header=m.header(1.0, "m"), data=[-1, 0, 100, 127, -128]),
+        "occupancy_grid_empty": t.OccupancyGrid(),
+        "laser_scan": m.laser_scan(scan, 0.1, FRAMES),
+        "laser_scan_intensities": t.LaserScan(header=m.header(0.0, "x"), ranges=[math.nan],
+                                              intensities=[1.0, -2.5, math.inf]),
+        "laser_scan_empty": t.LaserScan(),
+        "tf": m.transforms(4.5, Pose2D(-3.0, 0.5, 2.0), FRAMES, with_map=True),
+        "tf_empty": t.TFMessage(),
+        "clock": m.clock(0.3),
+    }
+
+
+def test_every_ros2_type_is_declared_and_named_as_rosidl_does() -> None:
+    for cls in ALL_TYPES:
+        assert msgtype(cls) in STORE.fielddefs
+        assert [f.name for f in dataclasses.fields(cls)] == [name for name, _ in STORE.fielddefs[msgtype(cls)][1]]
+    assert {type(value) for value in samples().values()} == set(ALL_TYPES)
+
+
+@pytest.mark.parametrize("name", list(samples()))
+def test_the_cdr_is_byte_for_byte_what_rosbags_writes(name: str) -> None:
+    value = samples()[name]
+    ours = value.serialize(endianness=Endianness.Little)
+    assert ours[:4] == b"\x00\x01\x00\x00"  # CDR_LE, XCDR1: what rmw_cyclonedds sends
+    assert ours == rosbags_cdr(value)
+    back = type(value).deserialize(ours)
+    assert back.serialize(endianness=Endianness.Little) == ours
+
+
+def test_rei_values_map_to_the_ros_fields() -> None:
+    assert m.stamp(0.3) == t.Time(sec=1000, nanosec=300_000_000) and m.nanoseconds(m.stamp(0.0)) == 1000 * 10**9
+    odom = m.odometry(1.0, Pose2D(1.0, 2.0, math.pi / 2), Twist2D(0.2, -0.5), FRAMES)
+    assert (odom.header.frame_id, odom.child_frame_id) == ("odom", "base_link")
+    assert m.yaw_of(odom.pose.pose.orientation) == pytest.approx(math.pi / 2)
+    assert m.command(odom.twist.twist) == Twist2D(0.2, -0.5) == m.command(m.twist(Twist2D(0.2, -0.5)))
+    tf = m.transforms(1.0, Pose2D(1.0, 2.0, 0.3), FRAMES, with_map=True)
+    assert [(e.header.frame_id, e.child_frame_id) for e in tf.transforms] == [("map", "odom"), ("odom", "base_link")]
+    scan = m.laser_scan(LaserScan(0.2, -1.0, 1.0, 0.12, 3.5, np.array([0.5, math.inf, 3.4])), 0.1, FRAMES)
+    assert (scan.angle_min, scan.angle_max, scan.header.frame_id) == (-1.0, 1.0, "base_scan")
+    assert math.isinf(scan.ranges[1])
+    grid = m.occupancy_grid(StaticMap((0.0, 0.0, 3.0, 2.0), ((1.0, 1.0, 0.0, 0.5, 0.3),), (0.3, 0.3)), FRAMES)
+    assert (grid.info.width, grid.info.height, grid.info.origin.position.x) == (80, 60, -0.5)
+    cells = np.array(grid.data).reshape(60, 80)
+    assert cells[30, 30] == 100 and cells[0, 0] == 0 and set(grid.data) == {0, 100}
+    assert {topic.dds_name for topic in m.TOPICS.values()} == {
+        "rt/clock", "rt/odom", "rt/tf", "rt/scan", "rt/map", "rt/cmd_vel"}
+
+
+# --- through DDS ---------------------------------------------------------------------------------------------
+
+def loopback_config(trace: str) -> str:
+    """Cyclone on the loopback interface only, unicast discovery to 127.0.0.1, no multicast; the trace (config
+    level) shows which interfaces it selected."""
+    return ("<CycloneDDS><Domain><General><Interfaces><NetworkInterface name=\"lo\"/></Interfaces>"
+            "<AllowMulticast>false</AllowMulticast></General><Discovery><ParticipantIndex>auto</ParticipantIndex>"
+            "<Peers><Peer address=\"127.0.0.1\"/></Peers></Discovery>"
+            f"<Tracing><Verbosity>config</Verbosity><OutputFile>{trace}</OutputFile></Tracing>"
+            "</Domain></CycloneDDS>")
+
+
+#: The receiving participant, in its own process: reads each topic with the bridge's QoS for it and prints what
+#: it got as CDR, one JSON line per sample; gives up after a few seconds.
+RECEIVER = """
+import json, sys, time
+from cyclonedds.domain import Domain, DomainParticipant
+from cyclonedds.idl._support import Endianness
+from cyclonedds.sub import DataReader
+from cyclonedds.topic import Topic
+from rei.sut.ros2 import messages as m
+domain_id, config, expected = int(sys.argv[1]), sys.argv[2], int(sys.argv[3])
+domain = Domain(domain_id, config)
+participant = DomainParticipant(domain_id)
+readers = {key: DataReader(participant, Topic(participant, spec.dds_name, spec.type), qos=spec.qos)
+           for key, spec in m.TOPICS.items()}
+print(json.dumps({"ready": True}), flush=True)
+got, deadline = 0, time.monotonic() + 8.0
+while got < expected and time.monotonic() < deadline:
+    for key, reader in readers.items():
+        for sample in reader.take(N=10):
+            got += 1
+            print(json.dumps({"topic": key, "cdr": sample.serialize(endianness=Endianness.Little).hex()}), flush=True)
+    time.sleep(0.005)
+"""
+
+
+def wait_until(condition, seconds: float) -> bool:  # type: ignore[no-untyped-def]
+    deadline = time.monotonic() + seconds
+    while not condition():
+        if time.monotonic() > deadline:
+            return False
+        time.sleep(0.01)
+    return True
+
+
+def test_each_topic_crosses_dds_between_two_participants_on_loopback(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    domain_id = os.getpid() % 200 + 17  # private: 17..216 (Cyclone's ports allow 0..232)
+    values = samples()
+    sent = {"clock": values["clock"], "odom": values["odometry"], "tf": values["tf"], "scan": values["laser_scan"],
+            "map": values["occupancy_grid"], "cmd_vel": values["twist"]}
+    assert set(sent) == set(m.TOPICS)
+    receiver = subprocess.Popen(
+        [sys.executable, "-c", RECEIVER, str(domain_id), loopback_config(str(tmp_path / "receiver.log")),
+         str(len(sent))], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        assert json.loads(receiver.stdout.readline()) == {"ready": True}
+        domain = Domain(domain_id, loopback_config(str(tmp_path / "sender.log")))  # noqa: F841 (kept alive)
+        participant = DomainParticipant(domain_id)
+        writers = {key: DataWriter(participant, Topic(participant, spec.dds_name, spec.type), qos=spec.qos)
+                   for key, spec in m.TOPICS.items()}
+        for key, writer in writers.items():
+            assert wait_until(lambda w=writer: w.get_publication_matched_status().current_count == 1, 5.0), key
+        for key, writer in writers.items():
+            writer.write(sent[key])
+        out, err = receiver.communicate(timeout=15)
+    finally:
+        if receiver.poll() is None:
+            receiver.kill()
+            receiver.wait()
+    received = {line["topic"]: bytes.fromhex(line["cdr"]) for line in map(json.loads, out.splitlines())}
+    assert received == {key: value.serialize(endianness=Endianness.Little) for key, value in sent.items()}, err
+    for log in ("sender.log", "receiver.log"):
+        trace = (tmp_path / log).read_text()
+        assert "selected interfaces: lo (" in trace and "eth" not in trace.split("selected interfaces:")[1][:80]
