@@ -8,7 +8,6 @@ plus ``TIME_OFFSET``: rospy takes time 0 for "no clock yet", so the run's t = 0 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 import rospy
@@ -22,23 +21,12 @@ from tf2_msgs.msg import TFMessage
 from rei.geometry import Pose2D, Twist2D
 from rei.sut.api import LaserScan, NavGoal, StaticMap
 from rei.sut.rasterize import MAP_RESOLUTION, rasterize
-
-TIME_OFFSET_NS = 1000 * 10**9
-
-
-@dataclass(frozen=True, slots=True)
-class Frames:
-    """Frame ids and topic names, with the ROS defaults (docs/ros.md)."""
-
-    map: str = "map"
-    odom: str = "odom"
-    base: str = "base_link"
-    laser: str = "base_scan"
+from rei.sut.ros_conventions import Frames, ros_nanoseconds
 
 
 def stamp(t: float) -> rospy.Time:
     """The ROS time of simulation time ``t`` (to the nanosecond, so a 10 Hz clock stays on a timer's grid)."""
-    return rospy.Time(nsecs=TIME_OFFSET_NS + round(t * 1e9))
+    return rospy.Time(nsecs=ros_nanoseconds(t))
 
 
 def clock(t: float) -> Clock:

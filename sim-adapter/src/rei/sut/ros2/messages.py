@@ -2,7 +2,7 @@
 """REI's values as ROS 2 messages on DDS (and back), mirroring ``rei.sut.ros1.messages``; ``TOPICS`` names each
 topic's DDS name, type and QoS.
 
-Times are simulation seconds plus ``TIME_OFFSET_NS``, as for ROS 1. ROS 2 has no "time 0 = no message" rule in its
+Times are simulation seconds plus ``rei.sut.ros_conventions.TIME_OFFSET_NS``, as for ROS 1. ROS 2 has no "time 0 = no message" rule in its
 messages, but rclcpp's ``Clock::started()`` (and code waiting for a valid sim time, such as tf2 buffers and nav2's
 servers) takes a zero ROS time for "no /clock yet"; the same offset also keeps both bridges' stamps identical.
 """
@@ -21,23 +21,12 @@ from rei.geometry import Pose2D, Twist2D
 from rei.sut.api import LaserScan, StaticMap
 from rei.sut.rasterize import MAP_RESOLUTION, rasterize
 from rei.sut.ros2 import types as t
-
-TIME_OFFSET_NS = 1000 * 10**9
-
-
-@dataclass(frozen=True, slots=True)
-class Frames:
-    """Frame ids, with the ROS defaults (docs/ros.md)."""
-
-    map: str = "map"
-    odom: str = "odom"
-    base: str = "base_link"
-    laser: str = "base_scan"
+from rei.sut.ros_conventions import Frames, ros_nanoseconds
 
 
 def stamp(t_sim: float) -> t.Time:
     """The ROS time of simulation time ``t_sim`` (to the nanosecond, so a 10 Hz clock stays on a timer's grid)."""
-    sec, nanosec = divmod(TIME_OFFSET_NS + round(t_sim * 1e9), 10**9)
+    sec, nanosec = divmod(ros_nanoseconds(t_sim), 10**9)
     return t.Time(sec=sec, nanosec=nanosec)
 
 
