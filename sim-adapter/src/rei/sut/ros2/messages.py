@@ -2,9 +2,9 @@
 """REI's values as ROS 2 messages on DDS (and back), mirroring ``rei.sut.ros1.messages``; ``TOPICS`` names each
 topic's DDS name, type and QoS.
 
-Times are simulation seconds plus ``rei.sut.ros_conventions.TIME_OFFSET_NS``, as for ROS 1. ROS 2 has no "time 0 = no message" rule in its
-messages, but rclcpp's ``Clock::started()`` (and code waiting for a valid sim time, such as tf2 buffers and nav2's
-servers) takes a zero ROS time for "no /clock yet"; the same offset also keeps both bridges' stamps identical.
+Times are simulation seconds plus ``rei.sut.ros_conventions.TIME_OFFSET_NS``, as for ROS 1: rclcpp's
+``Clock::started()`` (and code waiting for a valid sim time, such as tf2 buffers and nav2's servers) takes a zero
+ROS time for "no /clock yet", and one offset keeps both bridges' stamps identical.
 """
 
 from __future__ import annotations
