@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: EPL-2.0
 """The `rei` console script: one argparse parser, one module per subcommand.
 
-Each subcommand lives in `rei.cli.<name>` and exposes `register(subparsers)`, which adds its parser and sets
+Each subcommand lives in `rei.cli.<name>` (the command with underscores for dashes, and a trailing underscore for
+a Python keyword: `rei import` is `rei.cli.import_`) and exposes `register(subparsers)`, which adds its parser and sets
 `handler` (a function `Namespace -> int`) as a default. Adding a command is one module plus one entry in
 `COMMANDS`; no other command is touched. Modules are imported here only for their `register`; anything heavy
 (pybullet, the router) is imported inside the handler so `rei --help` stays fast.
@@ -19,7 +20,7 @@ from rei.cli.errors import EXIT_TOOLCHAIN, CommandError
 from rei.toolchain import ToolchainError
 
 #: Subcommand modules under `rei.cli`, in the order `rei --help` lists them.
-COMMANDS: tuple[str, ...] = ("validate", "generate", "sim", "run", "evaluate", "import_bag", "monitor", "report",
+COMMANDS: tuple[str, ...] = ("validate", "generate", "sim", "run", "evaluate", "import_", "monitor", "report",
                             "gen_rooms", "campaign", "view", "nav_sut", "ros1_bridge")
 
 
