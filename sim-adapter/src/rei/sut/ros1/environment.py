@@ -2,29 +2,50 @@
 """Where ROS 1 comes from and the environment its processes run in.
 
 ROS 1 is Debian's (``scripts/setup-ros1.sh``): its Python packages live in the system's dist-packages, which REI's
-own environment does not see. Both are CPython 3.11, so appending that folder to ``sys.path`` lets REI's interpreter
-import rospy; appended, not prepended, so REI's own (newer) numpy, yaml and autobahn still win.
+own environment does not see. Both are CPython 3.11, so REI's interpreter can import them, but not the whole
+folder: Debian's other packages there (an old pyOpenSSL, say) would be picked up by REI's own libraries wherever
+the environment lacks them, and break them. So only ROS's own top-level packages are importable from there, through
+a finder placed after the normal ones: REI's environment still wins for everything it has.
 """
 
 from __future__ import annotations
 
+import importlib.abc
+import importlib.machinery
 import os
 import sys
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
+from importlib.machinery import ModuleSpec
 from pathlib import Path
+from types import ModuleType
 
 DIST_PACKAGES = Path("/usr/lib/python3/dist-packages")
 SETUP_HINT = "ROS 1 is not installed: run scripts/setup-ros1.sh (Debian's ros-core, python3-rospy and messages)"
+#: What rospy, actionlib and rosbag import from dist-packages (besides every ``*_msgs``/``*_srvs`` package).
+ROS_PACKAGES = frozenset({
+    "rospy", "rosgraph", "roslib", "rospkg", "rosbag", "roslz4", "genpy", "genmsg", "catkin", "catkin_pkg",
+    "actionlib", "message_filters", "roscpp", "gnupg", "Cryptodome", "pyparsing", "distro", "dateutil", "defusedxml",
+})
 
 
 class RosUnavailableError(RuntimeError):
     """ROS 1 cannot be imported or started here; the message says how to install it."""
 
 
+class _RosPackages(importlib.abc.MetaPathFinder):
+    """Finds ROS's top-level packages in Debian's dist-packages, and nothing else there."""
+
+    def find_spec(self, name: str, path: Sequence[str] | None = None,
+                  target: ModuleType | None = None) -> ModuleSpec | None:
+        if path is not None or not (name in ROS_PACKAGES or name.endswith(("_msgs", "_srvs"))):
+            return None  # submodules come through their package's __path__
+        return importlib.machinery.PathFinder.find_spec(name, [str(DIST_PACKAGES)])
+
+
 def import_rospy() -> None:
-    """Make ``import rospy`` work (appending Debian's dist-packages once); RosUnavailableError if it cannot."""
-    if DIST_PACKAGES.is_dir() and str(DIST_PACKAGES) not in sys.path:
-        sys.path.append(str(DIST_PACKAGES))
+    """Make ``import rospy`` work (ROS's packages only, see the module docstring); RosUnavailableError if not."""
+    if DIST_PACKAGES.is_dir() and not any(isinstance(f, _RosPackages) for f in sys.meta_path):
+        sys.meta_path.append(_RosPackages())
     try:
         import actionlib  # noqa: F401
         import move_base_msgs.msg  # noqa: F401
