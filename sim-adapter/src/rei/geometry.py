@@ -29,3 +29,13 @@ class Twist2D:
 def wrap_angle(angle: float) -> float:
     """Angle wrapped to [-pi, pi)."""
     return (angle + math.pi) % (2.0 * math.pi) - math.pi
+
+
+def yaw_of_quaternion(x: float, y: float, z: float, w: float) -> float:
+    """The rotation about z of the orientation ``(x, y, z, w)``: a body's planar yaw (pybullet, ROS)."""
+    return math.atan2(2.0 * (w * z + x * y), 1.0 - 2.0 * (y * y + z * z))
+
+
+def quaternion_of_yaw(yaw: float) -> tuple[float, float, float, float]:
+    """``(x, y, z, w)`` of a rotation by ``yaw`` about z."""
+    return (0.0, 0.0, math.sin(yaw / 2), math.cos(yaw / 2))

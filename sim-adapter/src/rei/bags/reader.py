@@ -16,7 +16,7 @@ from typing import Any
 
 import numpy as np
 
-from rei.geometry import Pose2D, Twist2D
+from rei.geometry import Pose2D, Twist2D, yaw_of_quaternion
 from rei.sut.api import LaserScan
 
 #: Message types each role accepts (rosbags spells ROS 1 and ROS 2 types alike).
@@ -104,8 +104,7 @@ def _value(role: str, message: Any) -> Any:
                          ranges=np.asarray(message.ranges, dtype=np.float64))
     pose = message.pose.pose if hasattr(message.pose, "pose") else message.pose  # Odometry, PoseWithCov: .pose.pose
     q = pose.orientation
-    pose2d = Pose2D(float(pose.position.x), float(pose.position.y),
-                    math.atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z)))
+    pose2d = Pose2D(float(pose.position.x), float(pose.position.y), yaw_of_quaternion(q.x, q.y, q.z, q.w))
     if role == "odom":
         twist = message.twist.twist
         return pose2d, Twist2D(float(twist.linear.x), float(twist.angular.z))

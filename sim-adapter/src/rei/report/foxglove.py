@@ -14,6 +14,8 @@ from collections.abc import Sequence
 from importlib import resources
 from typing import Any
 
+from rei.geometry import quaternion_of_yaw
+
 WORLD_FRAME = "world"
 ROBOT_FRAME = "base_link"
 
@@ -43,7 +45,7 @@ def vector(x: float, y: float, z: float) -> dict[str, float]:
 
 
 def yaw_quaternion(yaw: float) -> dict[str, float]:
-    return {"x": 0.0, "y": 0.0, "z": math.sin(yaw / 2), "w": math.cos(yaw / 2)}
+    return dict(zip("xyzw", quaternion_of_yaw(yaw), strict=True))
 
 
 def pose(x: float, y: float, z: float, yaw: float = 0.0) -> dict[str, Any]:

@@ -26,6 +26,7 @@ from dataclasses import dataclass
 
 import pybullet as p
 
+from rei.geometry import yaw_of_quaternion
 from rei.sim.spline import Trajectory
 
 MAX_SPEED = 3.0
@@ -84,7 +85,7 @@ class Animator:
             p.resetBasePositionAndOrientation(
                 b.body,
                 (x, y, pos[2]),
-                p.getQuaternionFromEuler((0.0, 0.0, _yaw(orn))),
+                p.getQuaternionFromEuler((0.0, 0.0, yaw_of_quaternion(*orn))),
                 physicsClientId=self._client,
             )
             p.resetBaseVelocity(b.body, self._zero, self._zero, physicsClientId=self._client)
@@ -108,7 +109,7 @@ class Animator:
             vz = (b.height - pos[2]) / horizon + lift
             if abs(orn[0]) > _TILT or abs(orn[1]) > _TILT:
                 p.resetBasePositionAndOrientation(
-                    b.body, pos, p.getQuaternionFromEuler((0.0, 0.0, _yaw(orn))), physicsClientId=client
+                    b.body, pos, p.getQuaternionFromEuler((0.0, 0.0, yaw_of_quaternion(*orn))), physicsClientId=client
                 )
             if self._mode is DriveMode.VELOCITY:
                 p.resetBaseVelocity(b.body, (vx, vy, vz), self._zero, physicsClientId=client)
@@ -125,7 +126,3 @@ class Animator:
                     physicsClientId=client,
                 )
 
-
-def _yaw(orn: tuple[float, float, float, float]) -> float:
-    x, y, z, w = orn
-    return math.atan2(2.0 * (w * z + x * y), 1.0 - 2.0 * (y * y + z * z))

@@ -18,7 +18,7 @@ import pybullet as p
 
 from rei.artifacts.case import Case, read_case
 from rei.artifacts.world import Category
-from rei.geometry import Pose2D, Twist2D
+from rei.geometry import Pose2D, Twist2D, yaw_of_quaternion
 from rei.sim.animator import AnimatedBody, Animator, DriveMode
 from rei.sim.contacts import ContactSensor
 from rei.sim.drive import DiffDrive
@@ -264,8 +264,8 @@ class Simulation:
         return SimState(t=self.t, robot=robot, objects=objects, contacts=contacts)
 
     def _pose(self, body: int) -> tuple[float, float, float, float]:
-        (x, y, z), (qx, qy, qz, qw) = p.getBasePositionAndOrientation(body, physicsClientId=self._client)
-        return (x, y, z, math.atan2(2.0 * (qw * qz + qx * qy), 1.0 - 2.0 * (qy * qy + qz * qz)))
+        (x, y, z), orientation = p.getBasePositionAndOrientation(body, physicsClientId=self._client)
+        return (x, y, z, yaw_of_quaternion(*orientation))
 
     def _twist(self, body: int) -> tuple[float, float, float]:
         (vx, vy, _), (_, _, wz) = p.getBaseVelocity(body, physicsClientId=self._client)

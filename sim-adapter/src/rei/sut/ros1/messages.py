@@ -7,8 +7,6 @@ plus ``TIME_OFFSET``: rospy takes time 0 for "no clock yet", so the run's t = 0 
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import rospy
 from geometry_msgs.msg import Quaternion, TransformStamped, Twist
@@ -18,7 +16,7 @@ from rosgraph_msgs.msg import Clock
 from sensor_msgs.msg import LaserScan as RosLaserScan
 from tf2_msgs.msg import TFMessage
 
-from rei.geometry import Pose2D, Twist2D
+from rei.geometry import Pose2D, Twist2D, quaternion_of_yaw, yaw_of_quaternion
 from rei.sut.api import LaserScan, NavGoal, StaticMap
 from rei.sut.rasterize import MAP_RESOLUTION, rasterize
 from rei.sut.ros_conventions import Frames, ros_nanoseconds
@@ -34,11 +32,12 @@ def clock(t: float) -> Clock:
 
 
 def quaternion(yaw: float) -> Quaternion:
-    return Quaternion(x=0.0, y=0.0, z=math.sin(yaw / 2), w=math.cos(yaw / 2))
+    x, y, z, w = quaternion_of_yaw(yaw)
+    return Quaternion(x=x, y=y, z=z, w=w)
 
 
 def yaw_of(q: Quaternion) -> float:
-    return math.atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z))
+    return yaw_of_quaternion(q.x, q.y, q.z, q.w)
 
 
 def odometry(t: float, pose: Pose2D, twist: Twist2D, frames: Frames) -> Odometry:

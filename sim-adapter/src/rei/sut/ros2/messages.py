@@ -9,7 +9,6 @@ ROS time for "no /clock yet", and one offset keeps both bridges' stamps identica
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -17,7 +16,7 @@ from cyclonedds.core import Policy, Qos
 from cyclonedds.idl import IdlStruct
 from cyclonedds.util import duration
 
-from rei.geometry import Pose2D, Twist2D
+from rei.geometry import Pose2D, Twist2D, quaternion_of_yaw, yaw_of_quaternion
 from rei.sut.api import LaserScan, StaticMap
 from rei.sut.rasterize import MAP_RESOLUTION, rasterize
 from rei.sut.ros2 import types as t
@@ -39,11 +38,12 @@ def clock(t_sim: float) -> t.Clock:
 
 
 def quaternion(yaw: float) -> t.Quaternion:
-    return t.Quaternion(x=0.0, y=0.0, z=math.sin(yaw / 2), w=math.cos(yaw / 2))
+    x, y, z, w = quaternion_of_yaw(yaw)
+    return t.Quaternion(x=x, y=y, z=z, w=w)
 
 
 def yaw_of(q: t.Quaternion) -> float:
-    return math.atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z))
+    return yaw_of_quaternion(q.x, q.y, q.z, q.w)
 
 
 def header(t_sim: float, frame: str) -> t.Header:
