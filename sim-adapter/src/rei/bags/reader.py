@@ -7,6 +7,7 @@ type REI cannot read, with stamps that go backwards, or a bag that is corrupt or
 
 from __future__ import annotations
 
+import contextlib
 import heapq
 import math
 from collections.abc import Iterator, Mapping
@@ -44,33 +45,31 @@ class Sample:
 
 def read_samples(bag: Path, topics: Mapping[str, str]) -> Iterator[Sample]:
     """The samples of ``topics`` (role -> topic name) merged in stamp order."""
-    from rosbags.highlevel import AnyReader, AnyReaderError
-
-    try:
-        with AnyReader([bag]) as reader:
-            available = {c.topic: c.msgtype for c in reader.connections}
-            for role, topic in topics.items():
-                _check_topic(bag, role, topic, available)
-            streams = [_stream(bag, reader, role, topic) for role, topic in topics.items()]
-            yield from heapq.merge(*streams, key=lambda sample: sample.t)
-    except AnyReaderError as error:
-        raise BagError(f"{bag}: not a readable bag (corrupt or truncated?): {error}") from None
-    except BagError:
-        raise
-    except Exception as error:  # noqa: BLE001 - rosbags raises many kinds for a corrupt or truncated file
-        raise BagError(f"{bag}: not a readable bag (corrupt or truncated?): {type(error).__name__}: {error}") from None
+    with _opened(bag) as reader:
+        available = {c.topic: c.msgtype for c in reader.connections}
+        for role, topic in topics.items():
+            _check_topic(bag, role, topic, available)
+        streams = [_stream(bag, reader, role, topic) for role, topic in topics.items()]
+        yield from heapq.merge(*streams, key=lambda sample: sample.t)
 
 
 def topics_of(bag: Path) -> dict[str, str]:
     """topic -> message type of every connection in the bag."""
-    from rosbags.highlevel import AnyReader, AnyReaderError
+    with _opened(bag) as reader:
+        return {c.topic: c.msgtype for c in reader.connections}
+
+
+@contextlib.contextmanager
+def _opened(bag: Path) -> Iterator[Any]:
+    """rosbags' reader of ``bag``; whatever rosbags raises for a bad file becomes a BagError naming it."""
+    from rosbags.highlevel import AnyReader
 
     try:
         with AnyReader([bag]) as reader:
-            return {c.topic: c.msgtype for c in reader.connections}
-    except AnyReaderError as error:
-        raise BagError(f"{bag}: not a readable bag (corrupt or truncated?): {error}") from None
-    except Exception as error:  # noqa: BLE001 - see read_samples
+            yield reader
+    except BagError:
+        raise
+    except Exception as error:  # noqa: BLE001 - rosbags raises many kinds for a corrupt or truncated file
         raise BagError(f"{bag}: not a readable bag (corrupt or truncated?): {type(error).__name__}: {error}") from None
 
 

@@ -33,14 +33,13 @@ from typing import Any, NoReturn
 from rei.geometry import Pose2D, Twist2D
 from rei.sut.api import Controller, LaserScan, NavGoal, NavStatus, Observation, StaticMap
 from rei.sut.external import protocol
+from rei.sut.external.options import DEFAULT_JOIN_TIMEOUT
 
 #: Exit codes of a kit-based SUT: 1 a callback raised; 2 the run could not be served (not joined, lost, a
 #: malformed message from the simulation, a setting the SUT needs is missing such as the map).
 EXIT_CALLBACK = 1
 EXIT_CONNECTION = 2
 _ENVIRONMENT = ("REI_ROUTER_URL", "REI_RUN_ID")
-#: Seconds to keep calling ``hello`` while the simulation has not registered it yet (its --sut-join-timeout).
-JOIN_WINDOW = 60.0
 
 
 class SutConnectionError(RuntimeError):
@@ -213,9 +212,9 @@ def run(sut: SystemUnderTest, *, environ: Mapping[str, str] = os.environ, name: 
     try:
         for topic in protocol.FROM_SIMULATION:
             client.subscribe(protocol.uri(run_id, topic), _enqueue(inbox, topic))
-        # an attached SUT may be quicker than the simulation's registration: retry within the join window
+        # an attached SUT may be quicker than the simulation's registration: retry within the default join window
         hello = client.call_when_registered(protocol.uri(run_id, "hello"), {"name": name or type(sut).__name__},
-                                            timeout=JOIN_WINDOW)
+                                            timeout=DEFAULT_JOIN_TIMEOUT)
         _serve(sut, client, run_id, _read(Session.from_hello, hello, "hello's answer"), inbox)
     except WampError as error:
         raise SutConnectionError(str(error)) from None

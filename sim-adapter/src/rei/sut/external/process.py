@@ -72,9 +72,9 @@ def split_command(command: str) -> list[str]:
     return argv
 
 
-def bridged(command: str, out_dir: Path) -> list[str]:
-    """The argv REI starts for ``--sut``: the command, or its bridge with the command after ``--``."""
-    argv = split_command(command)
+def bridged(command: str, argv: list[str], out_dir: Path) -> list[str]:
+    """The argv REI starts for ``--sut`` (``argv``: the command split): the command, or its bridge with the command
+    after ``--``."""
     prefix = command.partition(":")[0]
     if prefix not in BRIDGES:
         return argv
@@ -103,8 +103,7 @@ def check_command(command: str, cwd: Path | None = None) -> list[str]:
 
 def start(command: str, connection: Connection, out_dir: Path, cwd: Path | None = None) -> ManagedProcess:
     """Start the SUT (or its bridge) in its own process group, in ``cwd``, with its output in ``out_dir/sut.log``."""
-    check_command(command, cwd)
-    argv = bridged(command, out_dir)
+    argv = bridged(command, check_command(command, cwd), out_dir)
     env = {**connection.environment(), "PATH": _search_path(os.environ), "PYTHONUNBUFFERED": "1"}
     try:
         return ManagedProcess("system under test", argv, out_dir / LOG_FILE, env=env, cwd=cwd)

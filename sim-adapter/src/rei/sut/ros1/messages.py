@@ -14,6 +14,7 @@ from move_base_msgs.msg import MoveBaseGoal
 from nav_msgs.msg import OccupancyGrid, Odometry
 from rosgraph_msgs.msg import Clock
 from sensor_msgs.msg import LaserScan as RosLaserScan
+from std_msgs.msg import Header
 from tf2_msgs.msg import TFMessage
 
 from rei.geometry import Pose2D, Twist2D, quaternion_of_yaw, yaw_of_quaternion
@@ -100,7 +101,5 @@ def command(message: Twist) -> Twist2D:
     return Twist2D(float(message.linear.x), float(message.angular.z))
 
 
-def _header(t: float, frame: str):  # type: ignore[no-untyped-def]
-    from std_msgs.msg import Header
-
+def _header(t: float, frame: str) -> Header:
     return Header(stamp=stamp(t), frame_id=frame)
