@@ -15,11 +15,11 @@ import tempfile
 import time
 from pathlib import Path
 
-from rei import toolchain
+from _examples import generate_example
+
 from rei.bags.importer import import_bag
 from rei.sut.ros1.environment import import_rospy
 
-REPO = Path(__file__).resolve().parents[1]
 TOPICS = {"pose": "/odom", "scan": "/scan"}
 
 
@@ -67,11 +67,7 @@ def main() -> None:
     parser.add_argument("--minutes", type=float, default=10.0)
     args = parser.parse_args()
     with tempfile.TemporaryDirectory(prefix="rei-bench-") as tmp:
-        bag, case = Path(tmp) / "run.bag", Path(tmp) / "case"
-        code = toolchain.run_jar(toolchain.find_jar("cli"), ["generate", str(REPO / "examples" / "simple_navigation.rei"),
-                                                             "-o", str(case), "--quiet"], java=toolchain.find_java())
-        if code != 0:
-            raise SystemExit(f"generation failed with exit code {code}")
+        bag, case = Path(tmp) / "run.bag", generate_example("simple_navigation", Path(tmp) / "case")
         written = write_bag(bag, args.minutes)
         started = time.perf_counter()
         floor = read_only(bag)

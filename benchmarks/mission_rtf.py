@@ -18,12 +18,11 @@ import tempfile
 import time
 from pathlib import Path
 
-from rei import toolchain
+from _examples import generate_example
+
 from rei.run import MissionRunOptions, run_mission
 from rei.wamp.client import WampClient
 from rei.wamp.router import Router
-
-REPO = Path(__file__).resolve().parents[1]
 
 
 def main() -> None:
@@ -35,12 +34,7 @@ def main() -> None:
     args = parser.parse_args()
 
     with tempfile.TemporaryDirectory(prefix="rei-bench-") as tmp:
-        case = Path(tmp) / "case"
-        code = toolchain.run_jar(toolchain.find_jar("cli"),
-                                 ["generate", str(REPO / "examples" / f"{args.example}.rei"), "-o", str(case),
-                                  "--quiet"], java=toolchain.find_java())
-        if code != 0:
-            raise SystemExit(f"generation failed with exit code {code}")
+        case = generate_example(args.example, Path(tmp) / "case")
         router = None if args.no_router else Router(run_dir=Path(tmp) / "router", auth=False).start()
         try:
             if hasattr(os, "sched_setaffinity"):

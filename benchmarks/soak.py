@@ -17,10 +17,9 @@ import tempfile
 import time
 from pathlib import Path
 
-from rei import toolchain
-from rei.run.pipeline import PipelineOptions, run_pipeline
+from _examples import generate_example
 
-REPO = Path(__file__).resolve().parents[1]
+from rei.run.pipeline import PipelineOptions, run_pipeline
 
 
 def open_fds() -> int:
@@ -88,11 +87,7 @@ def main() -> None:
     args = parser.parse_args()
 
     with tempfile.TemporaryDirectory(prefix="rei-soak-") as tmp:
-        case = Path(tmp) / "case"
-        code = toolchain.run_jar(toolchain.find_jar("cli"), ["generate", str(REPO / "examples" / f"{args.example}.rei"),
-                                                            "-o", str(case), "--quiet"], java=toolchain.find_java())
-        if code != 0:
-            raise SystemExit(f"generation failed with exit code {code}")
+        case = generate_example(args.example, Path(tmp) / "case")
         sim_args = () if args.humans else ("--no-humans",)
         options = PipelineOptions(sim_args=sim_args, humans=args.humans)
         start = sample()

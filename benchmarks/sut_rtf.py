@@ -20,13 +20,13 @@ import statistics
 import tempfile
 from pathlib import Path
 
-from rei import toolchain
+from _examples import REPO, generate_example
+
 from rei.run import MissionRunOptions, MissionRunResult, run_mission
 from rei.sut.external.options import SutOptions
 from rei.wamp.client import WampClient
 from rei.wamp.router import Router
 
-REPO = Path(__file__).resolve().parents[1]
 TARGET = 0.7
 
 
@@ -38,12 +38,7 @@ def main() -> None:
     args = parser.parse_args()
 
     with tempfile.TemporaryDirectory(prefix="rei-bench-") as tmp:
-        case = Path(tmp) / "case"
-        code = toolchain.run_jar(toolchain.find_jar("cli"),
-                                 ["generate", str(REPO / "examples" / f"{args.example}.rei"), "-o", str(case),
-                                  "--quiet"], java=toolchain.find_java())
-        if code != 0:
-            raise SystemExit(f"generation failed with exit code {code}")
+        case = generate_example(args.example, Path(tmp) / "case")
         with Router(run_dir=Path(tmp) / "router", run_id="bench") as router:  # the runs follow one another
             external = SutOptions(command=args.sut, offer_map=True, router_url=router.ws_url,
                                   auth_file=router.auth_file("sut"), cwd=REPO)
