@@ -100,6 +100,18 @@ def language_server_jar() -> Path:
 
 
 @pytest.fixture(scope="session")
+def monitor_jar() -> Path:
+    """`rei-monitor.jar`."""
+    return _jar("monitor")
+
+
+@pytest.fixture(scope="session")
+def sut_kit_jar() -> Path:
+    """`rei-sut-kit.jar`, the Java client kit of external SUTs."""
+    return _jar("sut-kit")
+
+
+@pytest.fixture(scope="session")
 def rei_script() -> Path:
     """The installed `rei` console script of the environment running the tests."""
     script = Path(sys.executable).parent / "rei"

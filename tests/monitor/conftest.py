@@ -3,20 +3,9 @@
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import pytest
 
 from rei import toolchain
-
-
-@pytest.fixture(scope="session")
-def monitor_jar(repo_root: Path) -> Path:
-    try:
-        return toolchain.find_jar("monitor", repo_root)
-    except toolchain.ToolchainError as error:
-        problem = str(error)
-    pytest.fail(problem, pytrace=False)
 
 
 @pytest.fixture(scope="session")

@@ -9,33 +9,22 @@ import shlex
 import subprocess
 from pathlib import Path
 
-import pytest
-
 from rei import toolchain
 
 EXAMPLE_SUT = "examples/sut/java/GoToGoalSut.java"
 
 
-@pytest.fixture(scope="session")
-def kit_jar(repo_root: Path) -> Path:
-    try:
-        return toolchain.find_jar("sut-kit", repo_root)
-    except toolchain.ToolchainError as error:
-        problem = str(error)
-    pytest.fail(problem, pytrace=False)
-
-
-def _example_command(java: toolchain.Java, kit_jar: Path, repo_root: Path, *args: str | Path) -> list[str]:
+def _example_command(java: toolchain.Java, sut_kit_jar: Path, repo_root: Path, *args: str | Path) -> list[str]:
     """`java -cp rei-sut-kit.jar GoToGoalSut.java ARGS...`: the example, compiled by the source launcher."""
-    return [str(java.executable), "-cp", str(kit_jar), str(repo_root / EXAMPLE_SUT), *map(str, args)]
+    return [str(java.executable), "-cp", str(sut_kit_jar), str(repo_root / EXAMPLE_SUT), *map(str, args)]
 
 
 def test_the_java_example_completes_the_simple_navigation_mission(
-    run_cli, repo_root: Path, tmp_path: Path, processes_mentioning, java: toolchain.Java, kit_jar: Path
+    run_cli, repo_root: Path, tmp_path: Path, processes_mentioning, java: toolchain.Java, sut_kit_jar: Path
 ) -> None:
     out = tmp_path / "out"
     # `out` as the program's (ignored) argument: a SUT left behind would name the run folder on its command line
-    sut = shlex.join(_example_command(java, kit_jar, repo_root, out))
+    sut = shlex.join(_example_command(java, sut_kit_jar, repo_root, out))
     result = run_cli("run", repo_root / "examples" / "simple_navigation.rei", "-o", out, "--sut", sut, timeout=300)
     assert result.returncode == 0, result.stdout + result.stderr
     summary = json.loads((out / "summary.json").read_text())
@@ -49,11 +38,11 @@ def test_the_java_example_completes_the_simple_navigation_mission(
 
 
 def test_the_java_kit_names_a_missing_variable_and_exits_2(
-    repo_root: Path, tmp_path: Path, java: toolchain.Java, kit_jar: Path
+    repo_root: Path, tmp_path: Path, java: toolchain.Java, sut_kit_jar: Path
 ) -> None:
     env = {k: v for k, v in os.environ.items() if not k.startswith("REI_")}
     env |= {"REI_ROUTER_URL": "ws://127.0.0.1:9/ws", "REI_REALM": "rei", "REI_AUTH_FILE": str(tmp_path / "none")}
-    result = subprocess.run(_example_command(java, kit_jar, repo_root), env=env, capture_output=True, text=True,
+    result = subprocess.run(_example_command(java, sut_kit_jar, repo_root), env=env, capture_output=True, text=True,
                             timeout=120, check=False)
     assert result.returncode == 2, result.stderr
     assert "REI_RUN_ID is not set" in result.stderr
