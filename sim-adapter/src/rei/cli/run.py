@@ -72,7 +72,8 @@ def run(args: argparse.Namespace) -> int:
             print(f"\rsim {progress.sim_time:7.1f} s  tasks {progress.tasks_done}/{progress.tasks}  "
                   f"utility {progress.utility:+.0f}   ", end="", file=sys.stderr, flush=True)
 
-    options = PipelineOptions(sim_args=tuple(mission_argv(args)), utilities=args.utilities,
+    options = PipelineOptions(sim_args=tuple(mission_argv(args)), external_sut=args.sut is not None or args.sut_attach,
+                              utilities=args.utilities,
                               humans=not args.no_humans, laser=args.laser != "none", view=args.view,
                               bind=args.bind, tls_cert=_path(args.tls_cert), tls_key=_path(args.tls_key),
                               patterns=patterns, declared=declared)

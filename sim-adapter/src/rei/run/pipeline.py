@@ -70,6 +70,7 @@ class PipelineOptions:
     """What `rei sim` gets, plus the evaluator's utility table."""
 
     sim_args: tuple[str, ...] = ()
+    external_sut: bool = False  # sim_args start or await an external SUT: it gets the sut role's credentials
     utilities: Path | None = None
     humans: bool = True  # without humans the human-trajectory requirement does not apply
     laser: bool = True  # without laser data the laser requirements do not apply
@@ -184,7 +185,7 @@ class _Run:
         if self.viewer is not None:
             _await_viewer(self.viewer)
         sut_args = ["--sut-router", router.ws_url, "--sut-auth-file", str(router.auth_file("sut"))] \
-            if _has_sut(options.sim_args) else []
+            if options.external_sut else []
         self.sim = ManagedProcess("simulation", [
             sys.executable, "-m", "rei.cli", "sim", str(self.case_dir), "-o", str(out), "--router", router.rs_url,
             "--auth-file", str(router.auth_file("simulation")), "--run-id", self.run_id, "--progress", "lines",
@@ -371,10 +372,6 @@ def _await_viewer(viewer: ViewServer) -> None:
         print(f"view:   waiting up to {VIEWER_WAIT:.0f} s for the page to connect...", flush=True)
         if not viewer.wait_for_viewer(VIEWER_WAIT):
             print("view:   no page connected; running anyway", flush=True)
-
-
-def _has_sut(sim_args: tuple[str, ...]) -> bool:
-    return "--sut" in sim_args or "--sut-attach" in sim_args
 
 
 def _on_sim_line(line: str, progress: dict[str, float]) -> None:
