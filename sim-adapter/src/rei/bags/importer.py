@@ -6,6 +6,8 @@ motion-capture pose); its twist is derived from consecutive poses. The odometry,
 robot's ``odom`` (its belief); the newest scan fills ``laser_min``. Times count from the first pose. States are
 sampled like a simulation's (20 per second, a full frame every second) by the same collector, so the monitor
 cannot tell an imported run from a simulated one. Humans of the case are not in a bag: an imported run has none.
+Goals and navigation results, when the bag has them, become the mission stream and ``OUT/mission_info.json``
+(rei.bags.mission); without them the mission's requirements on goals do not apply.
 
 Nothing partial is left behind that looks complete: the streams are written into a scratch folder and moved into
 ``OUT/streams`` only when the whole bag was read; ``OUT/sim.json`` is written last.
@@ -24,11 +26,14 @@ from pathlib import Path
 import numpy as np
 
 from rei.artifacts import read_case
-from rei.bags.reader import BagError, read_samples
+from rei.bags.mission import RecordedMission
+from rei.bags.reader import BagError, RecordedGoal, Sample, read_samples
 from rei.geometry import Pose2D, wrap_angle
+from rei.mission.executor import MISSION_INFO_FILE
 from rei.sim.state import RobotState, SimState
 from rei.wamp.codec import LaserMode
-from rei.wamp.collector import CollectorConfig, DataCollector
+from rei.wamp.collector import CollectorConfig, DataCollector, MissionPublisher
+from rei.wamp.recording import stream_path
 
 #: Metres a pose may lie outside the floors before the import refuses it (the robot's own size, localization noise).
 ROOM_MARGIN = 0.5
@@ -39,6 +44,8 @@ class ImportResult:
     duration: float
     messages: int
     states: int
+    goals: int
+    failed_tasks: int
     wall_time: float
 
     @property
@@ -51,7 +58,6 @@ def import_bag(bag: Path, out: Path, case_dir: Path, topics: Mapping[str, str], 
     """Write ``out/streams/state.msgpack`` and ``out/sim.json`` from the bag (topics: role -> topic)."""
     case = read_case(case_dir)
     world = case.world
-    xmin, ymin, xmax, ymax = world.bounds
     scratch = out / ".import"
     shutil.rmtree(scratch, ignore_errors=True)
     started = time.perf_counter()
@@ -64,10 +70,20 @@ def import_bag(bag: Path, out: Path, case_dir: Path, topics: Mapping[str, str], 
     odom: Pose2D | None = None
     scan_min, messages, next_progress = math.inf, 0, 0.0
     t = 0.0
+    early: list[Sample] = []  # goals and results stamped before the first pose, handled at t = 0
     try:
-        with DataCollector("import", scratch, config=config, world=world_json, monitor=monitor_json) as collector:
+        with (DataCollector("import", scratch, config=config, world=world_json, monitor=monitor_json) as collector,
+              MissionPublisher("import", scratch) as publisher):
+            mission = RecordedMission(case.mission, publisher)
             for sample in read_samples(bag, topics):
                 messages += 1
+                if sample.role in ("goal", "result"):
+                    if t0 is None:
+                        early.append(sample)
+                    else:
+                        _mission_sample(mission, sample, max(0.0, round(sample.t - t0, 6)), previous, bag, topics,
+                                        world.bounds)
+                    continue
                 if sample.role == "odom":
                     odom = sample.value[0]
                 elif sample.role == "scan":
@@ -75,11 +91,7 @@ def import_bag(bag: Path, out: Path, case_dir: Path, topics: Mapping[str, str], 
                 if sample.role != "pose":
                     continue
                 pose: Pose2D = sample.value
-                if not (xmin - ROOM_MARGIN <= pose.x <= xmax + ROOM_MARGIN
-                        and ymin - ROOM_MARGIN <= pose.y <= ymax + ROOM_MARGIN):
-                    raise BagError(f"{bag}: topic {topics['pose']} at {sample.t:.3f} s: pose ({pose.x:.2f}, "
-                                   f"{pose.y:.2f}) is outside the room of {case_dir.name} ({xmin:g}..{xmax:g} x "
-                                   f"{ymin:g}..{ymax:g} m): is it the right case, or the map frame?")
+                _check_inside(pose, world.bounds, bag, topics["pose"], sample.t, case_dir.name)
                 if t0 is None:
                     t0 = sample.t
                 # to the microsecond: stamps are whole nanoseconds, 1 ns off the 20 Hz grid would sample twice
@@ -88,22 +100,52 @@ def import_bag(bag: Path, out: Path, case_dir: Path, topics: Mapping[str, str], 
                     continue  # the same stamp again: nothing new to sample
                 twist = _twist(previous, (t, pose))
                 previous = (t, pose)
+                for waiting in early:
+                    _mission_sample(mission, waiting, 0.0, previous, bag, topics, world.bounds)
+                early.clear()
                 if collector.due(t):
                     collector.step(_state(world.robot.name, t, pose, twist, odom or pose, scan_min, laser))
                 if progress is not None and t >= next_progress:
                     progress(t)
                     next_progress += 10.0
+            if t0 is None:
+                raise BagError(f"{bag}: topic {topics['pose']} has no messages")
+            mission.end(t)
             states = collector.seq
-        if t0 is None:
-            raise BagError(f"{bag}: topic {topics['pose']} has no messages")
+        if not mission.goals:
+            stream_path(scratch, "mission").unlink(missing_ok=True)
         streams = out / "streams"
         shutil.rmtree(streams, ignore_errors=True)
         (scratch / "streams").replace(streams)
     finally:
         shutil.rmtree(scratch, ignore_errors=True)
-    result = ImportResult(duration=t, messages=messages, states=states, wall_time=time.perf_counter() - started)
+    info = out / MISSION_INFO_FILE
+    info.unlink(missing_ok=True)
+    if mission.goals:
+        info.write_text(json.dumps(mission.info(), indent=2) + "\n", encoding="utf-8")
+    result = ImportResult(duration=t, messages=messages, states=states, goals=mission.goals,
+                          failed_tasks=mission.failed, wall_time=time.perf_counter() - started)
     _write_summary(out, bag, topics, result, laser)
     return result
+
+
+def _check_inside(pose: Pose2D, bounds: tuple[float, float, float, float], bag: Path, topic: str, t: float,
+                  case: str) -> None:
+    xmin, ymin, xmax, ymax = bounds
+    if not (xmin - ROOM_MARGIN <= pose.x <= xmax + ROOM_MARGIN and ymin - ROOM_MARGIN <= pose.y <= ymax + ROOM_MARGIN):
+        raise BagError(f"{bag}: topic {topic} at {t:.3f} s: pose ({pose.x:.2f}, {pose.y:.2f}) is outside the room "
+                       f"of {case} ({xmin:g}..{xmax:g} x {ymin:g}..{ymax:g} m): is it the right case, or the map "
+                       "frame?")
+
+
+def _mission_sample(mission: RecordedMission, sample: Sample, t: float, robot: tuple[float, Pose2D] | None,
+                    bag: Path, topics: Mapping[str, str], bounds: tuple[float, float, float, float]) -> None:
+    if sample.role == "goal":
+        goal: RecordedGoal = sample.value
+        _check_inside(goal.pose, bounds, bag, topics["goal"], sample.t, "the case")
+        mission.goal(t, goal)
+    else:
+        mission.results(t, sample.value, robot[1] if robot is not None else None)
 
 
 def _twist(previous: tuple[float, Pose2D] | None, current: tuple[float, Pose2D]) -> tuple[float, float, float]:
@@ -131,9 +173,9 @@ def _write_summary(out: Path, bag: Path, topics: Mapping[str, str], result: Impo
     """What ``rei evaluate`` reads of a run (rei.run.reevaluate.RunSettings.from_run), and where it came from."""
     summary = {
         "run_id": "import", "source": {"bag": str(bag.resolve()), "topics": dict(topics)},
-        "options": {"humans": False, "laser": laser.value, "mission": False},
+        "options": {"humans": False, "laser": laser.value, "mission": result.goals > 0},
         "sim_time": result.duration, "wall_time": result.wall_time, "messages": {"state": result.states},
-        "bag_messages": result.messages,
+        "bag_messages": result.messages, "goals": result.goals,
     }
     (out / "sim.json").write_text(json.dumps(summary, indent=2) + "\n", encoding="utf-8")
 

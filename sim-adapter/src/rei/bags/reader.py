@@ -18,14 +18,19 @@ from typing import Any
 import numpy as np
 
 from rei.geometry import Pose2D, Twist2D, yaw_of_quaternion
-from rei.sut.api import LaserScan
+from rei.sut.api import LaserScan, NavStatus
+from rei.sut.ros_conventions import ACTION_MSGS_FINAL, ACTIONLIB_FINAL
 
-#: Message types each role accepts (rosbags spells ROS 1 and ROS 2 types alike).
+#: Message types each role accepts (rosbags spells ROS 1 and ROS 2 types alike). Goals: move_base's action goal
+#: (ROS 1) or a pose goal such as nav2's /goal_pose; results: move_base's action result (ROS 1) or an action's
+#: status array (ROS 2, e.g. /navigate_to_pose/_action/status).
 POSE_TYPES = ("nav_msgs/msg/Odometry", "geometry_msgs/msg/PoseStamped", "geometry_msgs/msg/PoseWithCovarianceStamped")
 ROLE_TYPES: Mapping[str, tuple[str, ...]] = {
     "pose": POSE_TYPES,
     "odom": ("nav_msgs/msg/Odometry",),
     "scan": ("sensor_msgs/msg/LaserScan",),
+    "goal": ("move_base_msgs/msg/MoveBaseActionGoal", "geometry_msgs/msg/PoseStamped"),
+    "result": ("move_base_msgs/msg/MoveBaseActionResult", "action_msgs/msg/GoalStatusArray"),
 }
 
 
@@ -35,12 +40,31 @@ class BagError(ValueError):
 
 @dataclass(frozen=True, slots=True)
 class Sample:
-    """One message of a role: ``t`` its header stamp (s), ``value`` a Pose2D (pose), (Pose2D, Twist2D) (odom) or a
-    LaserScan (scan)."""
+    """One message of a role: ``t`` its header stamp (s; the recording time for a message without one), ``value``
+    a Pose2D (pose), (Pose2D, Twist2D) (odom), a LaserScan (scan), a RecordedGoal (goal) or a tuple of
+    RecordedResult (result)."""
 
     t: float
     role: str
     value: Any
+
+
+@dataclass(frozen=True, slots=True)
+class RecordedGoal:
+    """A navigation goal; ``goal_id`` None for a pose goal, which has none."""
+
+    goal_id: str | None
+    pose: Pose2D
+
+
+@dataclass(frozen=True, slots=True)
+class RecordedResult:
+    """A goal's state: ``status`` its final state, None while it runs; ``text`` the server's (ROS 2 status arrays
+    carry none)."""
+
+    goal_id: str
+    status: NavStatus | None
+    text: str
 
 
 def read_samples(bag: Path, topics: Mapping[str, str]) -> Iterator[Sample]:
@@ -85,10 +109,9 @@ def _check_topic(bag: Path, role: str, topic: str, available: Mapping[str, str])
 def _stream(bag: Path, reader: Any, role: str, topic: str) -> Iterator[Sample]:
     connections = [c for c in reader.connections if c.topic == topic]
     last = -math.inf
-    for connection, _, raw in reader.messages(connections=connections):
+    for connection, recorded, raw in reader.messages(connections=connections):
         message = reader.deserialize(raw, connection.msgtype)
-        stamp = message.header.stamp
-        t = stamp.sec + stamp.nanosec * 1e-9
+        t = _stamp(message, recorded)
         if t < last:
             raise BagError(f"{bag}: topic {topic}: stamp {t:.6f} s comes after {last:.6f} s (stamps must not go "
                            "backwards)")
@@ -96,15 +119,37 @@ def _stream(bag: Path, reader: Any, role: str, topic: str) -> Iterator[Sample]:
         yield Sample(t, role, _value(role, message))
 
 
+def _stamp(message: Any, recorded_ns: int) -> float:
+    """The header's stamp; the recording time when there is no header or its stamp is zero (an action goal sent
+    without one)."""
+    header = getattr(message, "header", None)
+    if header is not None and (header.stamp.sec or header.stamp.nanosec):
+        return header.stamp.sec + header.stamp.nanosec * 1e-9
+    return recorded_ns * 1e-9
+
+
 def _value(role: str, message: Any) -> Any:
+    if role == "goal":
+        if hasattr(message, "goal_id"):  # MoveBaseActionGoal
+            return RecordedGoal(str(message.goal_id.id), _pose2d(message.goal.target_pose.pose))
+        return RecordedGoal(None, _pose2d(message.pose))
+    if role == "result":
+        if hasattr(message, "status_list"):  # action_msgs/GoalStatusArray: every goal the server knows
+            return tuple(RecordedResult(bytes(s.goal_info.goal_id.uuid).hex(), ACTION_MSGS_FINAL.get(s.status), "")
+                         for s in message.status_list)
+        status = message.status
+        return (RecordedResult(str(status.goal_id.id), ACTIONLIB_FINAL.get(status.status), str(status.text)),)
     if role == "scan":
         return LaserScan(t=0.0, angle_min=float(message.angle_min), angle_increment=float(message.angle_increment),
                          range_min=float(message.range_min), range_max=float(message.range_max),
                          ranges=np.asarray(message.ranges, dtype=np.float64))
-    pose = message.pose.pose if hasattr(message.pose, "pose") else message.pose  # Odometry, PoseWithCov: .pose.pose
-    q = pose.orientation
-    pose2d = Pose2D(float(pose.position.x), float(pose.position.y), yaw_of_quaternion(q.x, q.y, q.z, q.w))
+    pose2d = _pose2d(message.pose.pose if hasattr(message.pose, "pose") else message.pose)  # Odometry: .pose.pose
     if role == "odom":
         twist = message.twist.twist
         return pose2d, Twist2D(float(twist.linear.x), float(twist.angular.z))
     return pose2d
+
+
+def _pose2d(pose: Any) -> Pose2D:
+    q = pose.orientation
+    return Pose2D(float(pose.position.x), float(pose.position.y), yaw_of_quaternion(q.x, q.y, q.z, q.w))

@@ -2,10 +2,13 @@
 """`rei import BAG -o OUT --case CASE`: a recorded robot run (ROS 1 .bag, ROS 2 sqlite3 or MCAP) as a REI run.
 
 Writes OUT/streams/state.msgpack (the pose topic as the judged pose, the odometry as the robot's belief, the
-newest scan's minimum), OUT/case/ (CASE generated, when it is a .rei file) and OUT/sim.json, so that
+newest scan's minimum), OUT/streams/mission.msgpack and OUT/mission_info.json (the goals sent and the navigation's
+results, when the bag has them), OUT/case/ (CASE generated, when it is a .rei file) and OUT/sim.json, so that
 `rei evaluate OUT` judges the real run in the modelled room: signals, utilities, verdicts, report (docs/ros.md).
-Default topics: the pose from /amcl_pose if the bag has it, else /odom; /odom and /scan when present. Exit 0:
-imported; 2: bad arguments or a bag that cannot be imported (the message names the topic and time).
+Default topics: the pose from /amcl_pose if the bag has it, else /odom; /odom and /scan when present; goals and
+results from move_base's /move_base/goal and /move_base/result (ROS 1), else nav2's /goal_pose and
+/navigate_to_pose/_action/status (ROS 2), when present. Exit 0: imported; 2: bad arguments or a bag that cannot
+be imported (the message names the topic and time).
 """
 
 from __future__ import annotations
@@ -33,6 +36,11 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
                         "when present; 'none' to leave it out)")
     parser.add_argument("--scan-topic", metavar="T", help="sensor_msgs/LaserScan (default /scan when present; "
                         "'none' to leave it out)")
+    parser.add_argument("--goal-topic", metavar="T", help="goals sent: move_base_msgs/MoveBaseActionGoal or "
+                        "geometry_msgs/PoseStamped (default /move_base/goal, else /goal_pose, when present; 'none')")
+    parser.add_argument("--result-topic", metavar="T", help="the navigation's results: "
+                        "move_base_msgs/MoveBaseActionResult or action_msgs/GoalStatusArray (default "
+                        "/move_base/result, else /navigate_to_pose/_action/status, when present; 'none')")
     parser.set_defaults(handler=run)
 
 
@@ -57,8 +65,21 @@ def run(args: argparse.Namespace) -> int:
         raise CommandError(str(error)) from None
     print(f"{result.messages} messages, {result.duration:.1f} s of robot time, {result.states} states in "
           f"{result.wall_time:.1f} s ({result.messages_per_second:.0f} messages/s): {out / 'streams'}")
+    if "goal" in topics:
+        failed = f", {result.failed_tasks} failed" if result.failed_tasks else ""
+        print(f"mission: {result.goals} goal(s){failed}" if result.goals
+              else f"mission: no goals on {topics['goal']}: the mission's requirements on goals will not apply")
     print(f"judge it with: rei evaluate {out}")
     return EXIT_OK
+
+
+#: Topics each optional role is read from when the bag has them and no option names one, in order of preference.
+DEFAULT_TOPICS = {
+    "odom": ("/odom",),
+    "scan": ("/scan",),
+    "goal": ("/move_base/goal", "/goal_pose"),
+    "result": ("/move_base/result", "/navigate_to_pose/_action/status"),
+}
 
 
 def _topics(args: argparse.Namespace, available: dict[str, str]) -> dict[str, str]:
@@ -68,12 +89,14 @@ def _topics(args: argparse.Namespace, available: dict[str, str]) -> dict[str, st
         raise CommandError(f"{args.bag}: no /amcl_pose or /odom; name the pose topic with --pose-topic (the bag "
                            f"has: {', '.join(sorted(available)) or 'no topics'})")
     topics = {"pose": pose}
-    for role, default in (("odom", "/odom"), ("scan", "/scan")):
+    for role, defaults in DEFAULT_TOPICS.items():
         given = getattr(args, f"{role}_topic")
         if given is not None and given != "none":
             topics[role] = given
-        elif given is None and default in available and not (role == "odom" and pose == default):
-            topics[role] = default
+        elif given is None:
+            found = next((topic for topic in defaults if topic in available), None)
+            if found is not None and not (role == "odom" and pose == found):
+                topics[role] = found
     return topics
 
 

@@ -59,7 +59,7 @@ REQUIREMENTS: dict[str, str] = {
 }
 
 #: TASK_FAIL reasons (rei.mission.executor) that mean the robot's feedback was missing or wrong.
-_NO_FEEDBACK_REASONS = ("timeout", "false success")
+_NO_FEEDBACK_REASONS = ("timeout", "false success", "no result")  # the last: a bag's goal (rei.bags.mission)
 #: Distance within which two goals are the same place when their tolerance is unknown (mission.xml default).
 _DEFAULT_GOAL_TOLERANCE = 0.25
 

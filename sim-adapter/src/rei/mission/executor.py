@@ -88,17 +88,8 @@ class MissionExecutor:
         assert self._task is not None
         goal = self.mission.goals[self._task]
         status = self.controller.status
-        if status is NavStatus.SUCCEEDED:
-            distance = true_pose.distance_to(goal.pose)
-            if distance <= goal.tolerance:
-                self._finish(t, None)
-            else:
-                self._finish(t, f"false success: the planner reported success but the robot is {distance:.2f} m "
-                                f"from the goal (tolerance {goal.tolerance:g} m)")
-        elif status is NavStatus.ABORTED:
-            self._finish(t, _with_detail("planner failure: the navigation aborted", self.controller.status_text))
-        elif status is NavStatus.CANCELLED:
-            self._finish(t, _with_detail("the controller cancelled the goal", self.controller.status_text))
+        if status in FINAL_STATUSES:
+            self._finish(t, task_outcome(status, self.controller.status_text, true_pose, goal.pose, goal.tolerance))
         elif t - self._task_start > goal.timeout:
             self.controller.cancel()
             self._finish(t, f"timeout: the goal was not reached within {goal.timeout:g} s")
@@ -132,8 +123,34 @@ class MissionExecutor:
         self.sink(MissionEvent(t, kind, index, goal, reason))
 
 
+#: The navigation's states that end a task.
+FINAL_STATUSES = (NavStatus.SUCCEEDED, NavStatus.ABORTED, NavStatus.CANCELLED)
+
+
+def task_outcome(status: NavStatus, status_text: str, true_pose: Pose2D, goal: Pose2D,
+                 tolerance: float) -> str | None:
+    """How a task ends on a final ``status``: None when it succeeded, else the TASK_FAIL reason. Success is judged
+    on the true pose, so a planner's success short of the goal is a failure (used for recorded runs too)."""
+    if status is NavStatus.SUCCEEDED:
+        distance = true_pose.distance_to(goal)
+        if distance <= tolerance:
+            return None
+        return (f"false success: the planner reported success but the robot is {distance:.2f} m from the goal "
+                f"(tolerance {tolerance:g} m)")
+    if status is NavStatus.ABORTED:
+        return _with_detail("planner failure: the navigation aborted", status_text)
+    if status is NavStatus.CANCELLED:
+        return _with_detail("the controller cancelled the goal", status_text)
+    raise ValueError(f"{status.value} does not end a task")
+
+
 def _with_detail(message: str, detail: str) -> str:
     return f"{message}: {detail}" if detail else message
+
+
+#: A run whose mission is not its case's (an imported bag's goals) records the one it had here, in the run folder,
+#: as ``mission_info`` gives it; re-evaluation prefers it to the case's.
+MISSION_INFO_FILE = "mission_info.json"
 
 
 def mission_info(mission: MissionSpec) -> dict[str, Any]:

@@ -121,6 +121,7 @@ def reevaluate(out: Path, case_dir: Path | None = None, *, utilities: Path | Non
         replay,
     )
     from rei.mission import mission_info
+    from rei.mission.executor import MISSION_INFO_FILE
 
     case_dir = case_dir or out / "case"
     if not (case_dir / "world.json").is_file():
@@ -143,8 +144,10 @@ def reevaluate(out: Path, case_dir: Path | None = None, *, utilities: Path | Non
     with RecordingWriter(stream_path(out, "signal")) as recording:  # the report and the mcap read this copy
         for signal in signals:
             recording.write(signal)
+    recorded_mission = out / MISSION_INFO_FILE
     evaluator = Evaluator(out, utilities=table,
-                          mission_info=mission_info(read_case(case_dir).mission),
+                          mission_info=(_json(recorded_mission) if recorded_mission.is_file()
+                                        else mission_info(read_case(case_dir).mission)),
                           monitor_config=_json(case_dir / "monitor.json"), world=_json(case_dir / "world.json"),
                           settings=VerdictSettings(humans=settings.humans, laser=settings.laser,
                                                                    mission=settings.mission))

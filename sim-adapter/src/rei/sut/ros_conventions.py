@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: EPL-2.0
-"""What REI's ROS 1 and ROS 2 mappings agree on (docs/ros.md): frame ids and the clock's offset.
+"""What REI's ROS 1 and ROS 2 mappings agree on (docs/ros.md): frame ids, the clock's offset, what a navigation
+action's final status means.
 
 Simulation time t is ROS time ``TIME_OFFSET_NS + t``: rospy and rclcpp both take time 0 for "no clock yet", and
 one offset keeps the two bridges' stamps identical.
@@ -8,6 +9,8 @@ one offset keeps the two bridges' stamps identical.
 from __future__ import annotations
 
 from dataclasses import dataclass
+
+from rei.sut.api import NavStatus
 
 TIME_OFFSET_NS = 1000 * 10**9
 
@@ -25,3 +28,11 @@ class Frames:
     odom: str = "odom"
     base: str = "base_link"
     laser: str = "base_scan"
+
+
+#: actionlib_msgs/GoalStatus codes (ROS 1 move_base) that end a goal: PREEMPTED, SUCCEEDED, ABORTED, REJECTED,
+#: RECALLED, LOST.
+ACTIONLIB_FINAL: dict[int, NavStatus] = {2: NavStatus.CANCELLED, 3: NavStatus.SUCCEEDED, 4: NavStatus.ABORTED,
+                                         5: NavStatus.ABORTED, 8: NavStatus.CANCELLED, 9: NavStatus.ABORTED}
+#: action_msgs/GoalStatus codes (ROS 2, nav2's NavigateToPose) that end a goal: SUCCEEDED, CANCELED, ABORTED.
+ACTION_MSGS_FINAL: dict[int, NavStatus] = {4: NavStatus.SUCCEEDED, 5: NavStatus.CANCELLED, 6: NavStatus.ABORTED}

@@ -38,6 +38,7 @@ from rei.sut.client import (
     run,
 )
 from rei.sut.ros1.environment import RosUnavailableError, import_rospy, ros_environment
+from rei.sut.ros_conventions import ACTIONLIB_FINAL
 
 #: Wall seconds the bridge waits for the move_base action server once the map is out (the stack's start-up).
 SERVER_TIMEOUT = 60.0
@@ -182,10 +183,7 @@ class Ros1Bridge(SystemUnderTest):
             self._outcome[goal_id] = (NavStatus.ACTIVE, f"move_base at ({position.x:.2f}, {position.y:.2f})")
 
     def _on_done(self, goal_id: int, state: int, result: Any) -> None:  # a rospy thread
-        from actionlib_msgs.msg import GoalStatus
-
-        status = {GoalStatus.SUCCEEDED: NavStatus.SUCCEEDED, GoalStatus.PREEMPTED: NavStatus.CANCELLED,
-                  GoalStatus.RECALLED: NavStatus.CANCELLED}.get(state, NavStatus.ABORTED)
+        status = ACTIONLIB_FINAL.get(state, NavStatus.ABORTED)
         text = self._action.get_goal_status_text()  # what the server gave set_aborted(text=...) and the like
         with self._lock:
             self._outcome[goal_id] = (status, f"{self.settings.action}: {text}" if text else self.settings.action)
