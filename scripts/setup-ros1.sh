@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: EPL-2.0
 #
 # Installs ROS 1 from Debian's packages for the ROS bridge (`--sut "ros1:COMMAND"`, docs/ros.md) and its tests
-# (tests/ros1): the master (rosmaster, rosout), rospy, the message packages the bridge speaks, actionlib and
+# (tests/ros): the master (rosmaster, rosout), rospy, the message packages the bridge speaks, actionlib and
 # move_base_msgs, rosbag. REI itself does not need ROS: only runs with a ROS stack do.
 #
 # Why Debian's: it is the ROS 1 this machine's package registry has (ros_comm 1.15, BSD licensed), installed in

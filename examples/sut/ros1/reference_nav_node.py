@@ -40,8 +40,9 @@ from nav_msgs.msg import OccupancyGrid, Odometry
 from sensor_msgs.msg import LaserScan as RosLaserScan
 
 from rei.geometry import Pose2D, Twist2D
-from rei.sut.api import LaserScan, NavGoal, NavStatus, Observation, StaticMap
+from rei.sut.api import LaserScan, NavGoal, NavStatus, Observation
 from rei.sut.nav import NavController
+from rei.sut.rasterize import static_map_of_grid
 
 
 def yaw_of(q: Quaternion) -> float:
@@ -57,38 +58,6 @@ def ros_pose(pose: Pose2D) -> Pose:
     out.position.x, out.position.y = pose.x, pose.y
     out.orientation.z, out.orientation.w = math.sin(0.5 * pose.yaw), math.cos(0.5 * pose.yaw)
     return out
-
-
-def static_map_from_grid(grid: OccupancyGrid, robot_size: tuple[float, float], occupied: int = 65) -> StaticMap:
-    """The grid's occupied cells as rectangles: runs of cells along a row, merged with identical runs in the rows
-    above (a wall becomes one rectangle, not one per cell). ``bounds`` is the grid's extent."""
-    info = grid.info
-    res, width, height = info.resolution, info.width, info.height
-    cells = np.asarray(grid.data, dtype=np.int8).reshape(height, width) >= occupied
-    edges = np.diff(np.pad(cells, ((0, 0), (1, 1))).astype(np.int8), axis=1)
-    rows, starts = np.nonzero(edges == 1)
-    ends = np.nonzero(edges == -1)[1]  # exclusive; pairs with starts (both in row-major order)
-    blocks: list[tuple[int, int, int, int]] = []  # (first row, last row, first column, end column)
-    open_blocks: dict[tuple[int, int], tuple[int, int]] = {}  # (start, end) -> (first row, last row)
-    for row, start, end in zip(rows.tolist(), starts.tolist(), ends.tolist(), strict=True):
-        first, last = open_blocks.get((start, end), (row, row - 1))
-        if last != row - 1:  # a gap: that block is finished
-            blocks.append((first, last, start, end))
-            first = row
-        open_blocks[(start, end)] = (first, row)
-    blocks += [(first, last, start, end) for (start, end), (first, last) in open_blocks.items()]
-
-    o = info.origin
-    ox, oy, yaw = o.position.x, o.position.y, yaw_of(o.orientation)
-    c, s = math.cos(yaw), math.sin(yaw)
-    obstacles = []
-    for first, last, start, end in blocks:
-        lx, ly = 0.5 * (start + end) * res, 0.5 * (first + last + 1) * res
-        obstacles.append((ox + c * lx - s * ly, oy + s * lx + c * ly, yaw, (end - start) * res,
-                          (last + 1 - first) * res))
-    corners = [(ox + c * x - s * y, oy + s * x + c * y) for x in (0.0, width * res) for y in (0.0, height * res)]
-    xs, ys = [p[0] for p in corners], [p[1] for p in corners]
-    return StaticMap((min(xs), min(ys), max(xs), max(ys)), tuple(obstacles), robot_size)
 
 
 def run_on_sim_clock(tick: Callable[[rospy.Time], None], period: rospy.Duration) -> None:
@@ -164,7 +133,9 @@ class ReferenceNavNode:
 
     def on_map(self, msg: OccupancyGrid) -> None:
         started = time.perf_counter()
-        static_map = static_map_from_grid(msg, self.footprint, self.occupied)
+        info = msg.info
+        static_map = static_map_of_grid(msg.data, info.width, info.height, info.resolution,
+                                        pose2d_of(info.origin), self.footprint, self.occupied)
         nav = NavController(self.max_linear, self.max_angular, self.footprint)
         odom = self.odom
         nav.reset(static_map, pose2d_of(odom.pose.pose) if odom else Pose2D(0.0, 0.0))

@@ -11,6 +11,7 @@ import os
 import subprocess
 import sys
 import time
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -19,32 +20,58 @@ from cyclonedds.idl import IdlStruct
 from cyclonedds.idl._support import Endianness
 from cyclonedds.pub import DataWriter
 from cyclonedds.topic import Topic
-from rosbags.typesys import Stores, get_typestore
+from rosbags.typesys import Stores, get_types_from_msg, get_typestore
 
 from rei.geometry import Pose2D, Twist2D
-from rei.sut.api import LaserScan, StaticMap
+from rei.sut.api import LaserScan, NavGoal, StaticMap
 from rei.sut.ros2 import messages as m
 from rei.sut.ros2 import types as t
+from rei.sut.ros2.action import new_goal_id
+from rei.sut.ros2.environment import cyclone_config
 
 STORE = get_typestore(Stores.ROS2_HUMBLE)
+#: What rosbags' Humble store lacks, from nav2_msgs/action/NavigateToPose.action (Humble) and action_msgs/srv/
+#: CancelGoal.srv; a service's request or response is registered as a message of its fields.
+EXTRA = {
+    "nav2_msgs/action/NavigateToPose_Goal": "geometry_msgs/PoseStamped pose\nstring behavior_tree",
+    "nav2_msgs/action/NavigateToPose_SendGoal_Request": "unique_identifier_msgs/UUID goal_id\n"
+                                                        "nav2_msgs/NavigateToPose_Goal goal",
+    "nav2_msgs/action/NavigateToPose_SendGoal_Response": "bool accepted\nbuiltin_interfaces/Time stamp",
+    "action_msgs/srv/CancelGoal_Request": "action_msgs/GoalInfo goal_info",
+    "action_msgs/srv/CancelGoal_Response": "int8 return_code\naction_msgs/GoalInfo[] goals_canceling",
+}
+for _name, _text in EXTRA.items():  # registered under msg names, as a .msg file's fields resolve them
+    _package, _, _type = _name.split("/")
+    STORE.register(get_types_from_msg(_text, f"{_package}/msg/{_type}"))
 FRAMES = m.Frames()
+SERVICE_TYPES = [t.NavigateToPose_SendGoal_Request, t.NavigateToPose_SendGoal_Response, t.CancelGoal_Request,
+                 t.CancelGoal_Response]
 ALL_TYPES = [t.Time, t.Header, t.Vector3, t.Point, t.Quaternion, t.Pose, t.PoseWithCovariance, t.Twist,
              t.TwistWithCovariance, t.Transform, t.TransformStamped, t.Odometry, t.MapMetaData, t.OccupancyGrid,
-             t.LaserScan, t.TFMessage, t.Clock]
+             t.LaserScan, t.TFMessage, t.Clock, t.Duration, t.PoseStamped, t.UUID, t.GoalInfo, t.GoalStatus,
+             t.GoalStatusArray, t.NavigateToPose_Goal, *SERVICE_TYPES]
+#: rmw_cyclonedds's request header before a service's fields: not a ROS field.
+RMW_HEADER = ("rmw_client", "rmw_sequence")
 
 
 def msgtype(cls: type[IdlStruct]) -> str:
-    """``sensor_msgs::msg::dds_::LaserScan_`` -> ``sensor_msgs/msg/LaserScan``."""
+    """``sensor_msgs::msg::dds_::LaserScan_`` -> ``sensor_msgs/msg/LaserScan`` (actions' and services' parts:
+    the msg name they are registered under here)."""
     package, kind, dds, name = cls.__idl_typename__.split("::")
-    assert (kind, dds) == ("msg", "dds_") and name.endswith("_")
-    return f"{package}/{kind}/{name[:-1]}"
+    assert kind in ("msg", "action", "srv") and dds == "dds_" and name.endswith("_")
+    assert kind == "msg" or f"{package}/{kind}/{name[:-1]}" in EXTRA
+    return f"{package}/msg/{name[:-1]}"
+
+
+def ros_fields(value: IdlStruct | type[IdlStruct]) -> list[str]:
+    return [f.name for f in dataclasses.fields(value) if f.name not in RMW_HEADER]
 
 
 def to_rosbags(value: IdlStruct, typename: str) -> object:
     """The same values as a rosbags message, field by field as rosbags' own definition of ``typename`` lists them
     (its names, order and element types; only the values come from ``value``)."""
     _, fields = STORE.fielddefs[typename]
-    assert [f.name for f in dataclasses.fields(value)] == [name for name, _ in fields], typename
+    assert ros_fields(value) == [name for name, _ in fields], typename
     kwargs = {}
     for name, (node, spec) in fields:
         item = getattr(value, name)
@@ -58,6 +85,8 @@ def to_rosbags(value: IdlStruct, typename: str) -> object:
                 kwargs[name] = [to_rosbags(element, element_spec) for element in item]
             else:
                 kwargs[name] = np.array(item, dtype=getattr(np, element_spec[0]))
+        if node.name == "BASE" and spec[0] == "bool":
+            kwargs[name] = bool(item)
     return STORE.types[typename](**kwargs)
 
 
@@ -74,6 +103,8 @@ def samples() -> dict[str, IdlStruct]:
     odometry = m.odometry(12.3, Pose2D(-1.5, 2.25, -2.9), Twist2D(-0.2, 1.5), FRAMES)
     odometry.pose.covariance = [float(i) - 17.5 for i in range(36)]
     odometry.twist.covariance[35] = math.nan
+    goal_id = new_goal_id()
+    navigate = m.navigate_goal(4.2, NavGoal(1, Pose2D(5.5, 3.5, -1.0), 0.25), FRAMES)
     return {
         "time": t.Time(sec=-(2**31), nanosec=2**32 - 1),
         "header": t.Header(stamp=t.Time(sec=2**31 - 1, nanosec=1), frame_id=""),
@@ -99,13 +130,32 @@ def samples() -> dict[str, IdlStruct]:
         "tf": m.transforms(4.5, Pose2D(-3.0, 0.5, 2.0), FRAMES, with_map=True),
         "tf_empty": t.TFMessage(),
         "clock": m.clock(0.3),
+        "duration": t.Duration(sec=-3, nanosec=999_999_999),
+        "pose_stamped": t.PoseStamped(header=m.header(2.0, "map"), pose=t.Pose(orientation=m.quaternion(1.0))),
+        "uuid": goal_id,
+        "goal_info": t.GoalInfo(goal_id=goal_id, stamp=m.stamp(3.0)),
+        "goal_status": t.GoalStatus(goal_info=t.GoalInfo(goal_id=goal_id), status=-1),
+        "goal_status_array": t.GoalStatusArray(status_list=[
+            t.GoalStatus(goal_info=t.GoalInfo(goal_id=goal_id), status=4), t.GoalStatus(status=2)]),
+        "goal_status_array_empty": t.GoalStatusArray(),
+        "navigate_to_pose_goal": navigate,
+        "navigate_to_pose_goal_tree": t.NavigateToPose_Goal(behavior_tree="/bt/ü.xml"),
+        "send_goal_request": t.NavigateToPose_SendGoal_Request(rmw_client=2**64 - 1, rmw_sequence=-(2**63),
+                                                                goal_id=goal_id, goal=navigate),
+        "send_goal_response": t.NavigateToPose_SendGoal_Response(rmw_client=7, rmw_sequence=1, accepted=True,
+                                                                  stamp=m.stamp(0.1)),
+        "cancel_goal_request": t.CancelGoal_Request(rmw_client=7, rmw_sequence=2,
+                                                    goal_info=t.GoalInfo(goal_id=goal_id)),
+        "cancel_goal_response": t.CancelGoal_Response(rmw_client=7, rmw_sequence=2, return_code=-3,
+                                                      goals_canceling=[t.GoalInfo(goal_id=goal_id), t.GoalInfo()]),
+        "cancel_goal_response_empty": t.CancelGoal_Response(),
     }
 
 
 def test_every_ros2_type_is_declared_and_named_as_rosidl_does() -> None:
     for cls in ALL_TYPES:
         assert msgtype(cls) in STORE.fielddefs
-        assert [f.name for f in dataclasses.fields(cls)] == [name for name, _ in STORE.fielddefs[msgtype(cls)][1]]
+        assert ros_fields(cls) == [name for name, _ in STORE.fielddefs[msgtype(cls)][1]]
     assert {type(value) for value in samples().values()} == set(ALL_TYPES)
 
 
@@ -114,7 +164,11 @@ def test_the_cdr_is_byte_for_byte_what_rosbags_writes(name: str) -> None:
     value = samples()[name]
     ours = value.serialize(endianness=Endianness.Little)
     assert ours[:4] == b"\x00\x01\x00\x00"  # CDR_LE, XCDR1: what rmw_cyclonedds sends
-    assert ours == rosbags_cdr(value)
+    if type(value) in SERVICE_TYPES:  # rmw_cyclonedds's header (8-aligned: the fields align as without it)
+        header = value.rmw_client.to_bytes(8, "little") + value.rmw_sequence.to_bytes(8, "little", signed=True)
+        assert ours == ours[:4] + header + rosbags_cdr(value)[4:]
+    else:
+        assert ours == rosbags_cdr(value)
     back = type(value).deserialize(ours)
     assert back.serialize(endianness=Endianness.Little) == ours
 
@@ -140,14 +194,10 @@ def test_rei_values_map_to_the_ros_fields() -> None:
 
 # --- through DDS ---------------------------------------------------------------------------------------------
 
-def loopback_config(trace: str) -> str:
-    """Cyclone on the loopback interface only, unicast discovery to 127.0.0.1, no multicast; the trace (config
-    level) shows which interfaces it selected."""
-    return ("<CycloneDDS><Domain><General><Interfaces><NetworkInterface name=\"lo\"/></Interfaces>"
-            "<AllowMulticast>false</AllowMulticast></General><Discovery><ParticipantIndex>auto</ParticipantIndex>"
-            "<Peers><Peer address=\"127.0.0.1\"/></Peers></Discovery>"
-            f"<Tracing><Verbosity>config</Verbosity><OutputFile>{trace}</OutputFile></Tracing>"
-            "</Domain></CycloneDDS>")
+def loopback_config(trace: str, tag: str = "rei-test") -> str:
+    """The bridge's Cyclone configuration (loopback only, unicast discovery, the run's tag), with a trace that
+    shows which interfaces it selected."""
+    return cyclone_config(tag, Path(trace))
 
 
 #: The receiving participant, in its own process: reads each topic with the bridge's QoS for it and prints what
@@ -159,13 +209,13 @@ from cyclonedds.idl._support import Endianness
 from cyclonedds.sub import DataReader
 from cyclonedds.topic import Topic
 from rei.sut.ros2 import messages as m
-domain_id, config, expected = int(sys.argv[1]), sys.argv[2], int(sys.argv[3])
+domain_id, config, expected, wait = int(sys.argv[1]), sys.argv[2], int(sys.argv[3]), float(sys.argv[4])
 domain = Domain(domain_id, config)
 participant = DomainParticipant(domain_id)
 readers = {key: DataReader(participant, Topic(participant, spec.dds_name, spec.type), qos=spec.qos)
            for key, spec in m.TOPICS.items()}
 print(json.dumps({"ready": True}), flush=True)
-got, deadline = 0, time.monotonic() + 8.0
+got, deadline = 0, time.monotonic() + wait
 while got < expected and time.monotonic() < deadline:
     for key, reader in readers.items():
         for sample in reader.take(N=10):
@@ -192,7 +242,7 @@ def test_each_topic_crosses_dds_between_two_participants_on_loopback(tmp_path) -
     assert set(sent) == set(m.TOPICS)
     receiver = subprocess.Popen(
         [sys.executable, "-c", RECEIVER, str(domain_id), loopback_config(str(tmp_path / "receiver.log")),
-         str(len(sent))], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+         str(len(sent)), "8"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     try:
         assert json.loads(receiver.stdout.readline()) == {"ready": True}
         domain = Domain(domain_id, loopback_config(str(tmp_path / "sender.log")))  # noqa: F841 (kept alive)
@@ -213,3 +263,25 @@ def test_each_topic_crosses_dds_between_two_participants_on_loopback(tmp_path) -
     for log in ("sender.log", "receiver.log"):
         trace = (tmp_path / log).read_text()
         assert "selected interfaces: lo (" in trace and "eth" not in trace.split("selected interfaces:")[1][:80]
+
+
+def test_a_participant_with_another_runs_discovery_tag_is_not_matched(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    """Two runs on one domain (a campaign's workers) never see each other's topics."""
+    domain_id = os.getpid() % 200 + 17
+    receiver = subprocess.Popen(
+        [sys.executable, "-c", RECEIVER, str(domain_id), loopback_config(str(tmp_path / "r.log"), "rei-other-run"),
+         "1", "4"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        assert json.loads(receiver.stdout.readline()) == {"ready": True}
+        domain = Domain(domain_id, loopback_config(str(tmp_path / "s.log"), "rei-this-run"))  # noqa: F841
+        participant = DomainParticipant(domain_id)
+        spec = m.TOPICS["clock"]
+        writer = DataWriter(participant, Topic(participant, spec.dds_name, spec.type), qos=spec.qos)
+        assert not wait_until(lambda: writer.get_publication_matched_status().current_count > 0, 2.5)
+        writer.write(m.clock(1.0))
+        out, _ = receiver.communicate(timeout=15)
+    finally:
+        if receiver.poll() is None:
+            receiver.kill()
+            receiver.wait()
+    assert out.splitlines() == []  # after "ready": nothing received

@@ -55,7 +55,7 @@ class Connection:
 
 
 #: ``--sut "PREFIX:COMMAND"``: COMMAND speaks a middleware, reached through REI's bridge for it (docs/ros.md).
-BRIDGES = {"ros1": ["rei", "ros1-bridge"]}
+BRIDGES = {"ros1": ["rei", "ros1-bridge"], "ros2": ["rei", "ros2-bridge"]}
 
 
 def split_command(command: str) -> list[str]:

@@ -17,7 +17,7 @@ from cyclonedds.idl import IdlStruct
 from cyclonedds.util import duration
 
 from rei.geometry import Pose2D, Twist2D, quaternion_of_yaw, yaw_of_quaternion
-from rei.sut.api import LaserScan, StaticMap
+from rei.sut.api import LaserScan, NavGoal, StaticMap
 from rei.sut.rasterize import MAP_RESOLUTION, rasterize
 from rei.sut.ros2 import types as t
 from rei.sut.ros_conventions import Frames, ros_nanoseconds
@@ -94,6 +94,14 @@ def occupancy_grid(static_map: StaticMap, frames: Frames, resolution: float = MA
             map_load_time=stamp(0.0), resolution=float(resolution), width=raster.width, height=raster.height,
             origin=t.Pose(position=t.Point(x=float(raster.x0), y=float(raster.y0)))),
         data=raster.occupancy().tolist())
+
+
+def navigate_goal(t_sim: float, goal: NavGoal, frames: Frames) -> t.NavigateToPose_Goal:
+    """A mission goal as nav2's NavigateToPose goal, in the map frame (the navigator's default tree)."""
+    pose = goal.pose
+    return t.NavigateToPose_Goal(pose=t.PoseStamped(
+        header=header(t_sim, frames.map),
+        pose=t.Pose(position=t.Point(x=float(pose.x), y=float(pose.y)), orientation=quaternion(pose.yaw))))
 
 
 def twist(command: Twist2D) -> t.Twist:

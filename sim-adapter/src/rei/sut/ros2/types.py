@@ -3,14 +3,26 @@
 
 Each struct is ``final`` (the default) with the .msg fields in order, so its XCDR1 serialization is the CDR a ROS 2
 node sends (tests/sut/test_ros2_cdr.py compares every one byte for byte with rosbags' serializer). Field defaults
-are the ROS defaults (zeros, empty strings and sequences, the identity quaternion). No ``from __future__ import
+are the ROS defaults (zeros, empty strings and sequences, the identity quaternion). The services of nav2's
+NavigateToPose action (send_goal, cancel_goal) carry rmw_cyclonedds's request header before the ROS fields. No ``from __future__ import
 annotations`` here: cyclonedds resolves string annotations in this module's namespace, where ``str`` is not.
 """
 
 from dataclasses import dataclass, field
 
 from cyclonedds.idl import IdlStruct
-from cyclonedds.idl.types import array, float32, float64, int8, int32, sequence, uint32
+from cyclonedds.idl.types import (
+    array,
+    float32,
+    float64,
+    int8,
+    int32,
+    int64,
+    sequence,
+    uint8,
+    uint32,
+    uint64,
+)
 
 
 @dataclass
@@ -134,3 +146,84 @@ class TFMessage(IdlStruct, typename="tf2_msgs::msg::dds_::TFMessage_"):
 @dataclass
 class Clock(IdlStruct, typename="rosgraph_msgs::msg::dds_::Clock_"):
     clock: Time = field(default_factory=Time)
+
+
+@dataclass
+class Duration(IdlStruct, typename="builtin_interfaces::msg::dds_::Duration_"):
+    sec: int32 = 0
+    nanosec: uint32 = 0
+
+
+@dataclass
+class PoseStamped(IdlStruct, typename="geometry_msgs::msg::dds_::PoseStamped_"):
+    header: Header = field(default_factory=Header)
+    pose: Pose = field(default_factory=Pose)
+
+
+def _uuid() -> list[int]:
+    return [0] * 16
+
+
+@dataclass
+class UUID(IdlStruct, typename="unique_identifier_msgs::msg::dds_::UUID_"):
+    uuid: array[uint8, 16] = field(default_factory=_uuid)
+
+
+@dataclass
+class GoalInfo(IdlStruct, typename="action_msgs::msg::dds_::GoalInfo_"):
+    goal_id: UUID = field(default_factory=UUID)
+    stamp: Time = field(default_factory=Time)
+
+
+@dataclass
+class GoalStatus(IdlStruct, typename="action_msgs::msg::dds_::GoalStatus_"):
+    goal_info: GoalInfo = field(default_factory=GoalInfo)
+    status: int8 = 0
+
+
+@dataclass
+class GoalStatusArray(IdlStruct, typename="action_msgs::msg::dds_::GoalStatusArray_"):
+    status_list: sequence[GoalStatus] = field(default_factory=list)
+
+
+@dataclass
+class NavigateToPose_Goal(IdlStruct, typename="nav2_msgs::action::dds_::NavigateToPose_Goal_"):
+    pose: PoseStamped = field(default_factory=PoseStamped)
+    behavior_tree: str = ""
+
+
+# -- services, as rmw_cyclonedds writes them: ``cdds_request_header_t`` (the client's 64-bit id and the request's
+# sequence number, echoed in the reply) before the request's or response's fields
+
+
+@dataclass
+class NavigateToPose_SendGoal_Request(
+        IdlStruct, typename="nav2_msgs::action::dds_::NavigateToPose_SendGoal_Request_"):
+    rmw_client: uint64 = 0
+    rmw_sequence: int64 = 0
+    goal_id: UUID = field(default_factory=UUID)
+    goal: NavigateToPose_Goal = field(default_factory=NavigateToPose_Goal)
+
+
+@dataclass
+class NavigateToPose_SendGoal_Response(
+        IdlStruct, typename="nav2_msgs::action::dds_::NavigateToPose_SendGoal_Response_"):
+    rmw_client: uint64 = 0
+    rmw_sequence: int64 = 0
+    accepted: bool = False
+    stamp: Time = field(default_factory=Time)
+
+
+@dataclass
+class CancelGoal_Request(IdlStruct, typename="action_msgs::srv::dds_::CancelGoal_Request_"):
+    rmw_client: uint64 = 0
+    rmw_sequence: int64 = 0
+    goal_info: GoalInfo = field(default_factory=GoalInfo)
+
+
+@dataclass
+class CancelGoal_Response(IdlStruct, typename="action_msgs::srv::dds_::CancelGoal_Response_"):
+    rmw_client: uint64 = 0
+    rmw_sequence: int64 = 0
+    return_code: int8 = 0
+    goals_canceling: sequence[GoalInfo] = field(default_factory=list)
