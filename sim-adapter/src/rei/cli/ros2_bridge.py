@@ -52,6 +52,12 @@ def _domain(maximum: int) -> Any:
 
 def run(args: argparse.Namespace) -> int:
     from rei.cli.errors import CommandError
+
+    try:
+        import cyclonedds  # noqa: F401
+    except ImportError:
+        raise CommandError("the ROS 2 bridge needs Cyclone DDS's Python binding: pip install 'rei[ros2]' "
+                           "(./rei installs it)") from None
     from rei.sut.ros2.bridge import Ros2BridgeSettings, main
     from rei.sut.ros2.environment import DEFAULT_DOMAIN, MAX_DOMAIN, run_tag
 
