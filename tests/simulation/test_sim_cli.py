@@ -45,3 +45,17 @@ def test_bad_arguments_exit_two_before_anything_runs(run_cli, repo_root: Path, t
     assert fault.returncode == 2 and "laser:rate=lots" in fault.stderr
     missing = run_cli("sim", tmp_path / "nope.rei", "-o", tmp_path / "c")
     assert missing.returncode == 2 and "nope.rei" in missing.stderr
+
+
+def test_a_run_of_a_generated_folder_is_replayed_without_naming_the_case_again(
+    run_cli, repo_root: Path, tmp_path: Path
+) -> None:
+    generated = run_cli("generate", repo_root / "examples" / "simple_navigation.rei", "-o", tmp_path / "gen")
+    assert generated.returncode == 0, generated.stderr
+    sim = run_cli("sim", tmp_path / "gen", "-o", tmp_path / "out", "--no-router", "--no-humans")
+    assert sim.returncode == 0, sim.stderr
+    assert not (tmp_path / "out" / "case").exists()  # the case stayed where it was generated ...
+    assert json.loads((tmp_path / "out" / "sim.json").read_text())["case"] == str((tmp_path / "gen").resolve())
+    replay = run_cli("monitor", "--replay", tmp_path / "out")  # ... and sim.json says where
+    assert replay.returncode == 0, replay.stderr
+    assert "SIG_MISSION_END" in replay.stdout

@@ -22,18 +22,22 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
                                    description=__doc__.split("\n\n", 1)[1] if __doc__ else None)
     parser.add_argument("--replay", required=True, metavar="OUT", type=Path,
                         help="a run folder (with streams/ and case/) or a state.msgpack recording")
-    parser.add_argument("--case", metavar="DIR", type=Path, help="generated case folder (default: OUT/case)")
+    parser.add_argument("--case", metavar="DIR", type=Path,
+                        help="generated case folder (default: OUT/case, else the case OUT/sim.json names)")
     parser.set_defaults(handler=run)
 
 
 def run(args: argparse.Namespace) -> int:
+    from rei.run.patterns import PatternSelection
+    from rei.run.reevaluate import case_of_run
+
     replay: Path = args.replay
-    case = args.case or (replay / "case" if replay.is_dir() else None)
     if not replay.exists():
         raise CommandError(f"{replay}: no such run folder or recording", EXIT_USAGE)
+    case = args.case or (case_of_run(replay) if replay.is_dir() else None)
     if case is None or not (case / "world.json").is_file():
-        raise CommandError(f"no generated case found (expected {case or 'OUT/case'}/world.json); give --case DIR")
-    from rei.run.patterns import PatternSelection
+        expected = f"{case}/world.json" if case is not None else f"{replay}/case/world.json or a case named in sim.json"
+        raise CommandError(f"no generated case found (expected {expected}); give --case DIR")
 
     patterns = PatternSelection.recorded(replay) if replay.is_dir() else PatternSelection()
     java = toolchain.find_java()

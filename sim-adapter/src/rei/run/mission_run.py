@@ -153,7 +153,7 @@ def run_mission(
             state_messages=collector.seq, mission_messages=missions.seq, cut_off=error is None and not done,
             error=error,
             sut=None if external is None else external.stats.to_json())
-    _write_summary(out_dir, options, result)
+    _write_summary(out_dir, case_dir, options, result)
     return result
 
 
@@ -173,9 +173,10 @@ def _json(path: Path) -> dict:
     return json.loads(path.read_text(encoding="utf-8"))
 
 
-def _write_summary(out_dir: Path, options: MissionRunOptions, result: MissionRunResult) -> None:
+def _write_summary(out_dir: Path, case_dir: Path, options: MissionRunOptions, result: MissionRunResult) -> None:
     summary = {
         "run_id": result.run_id,
+        "case": str(Path(case_dir).resolve()),  # where the generated case is (rei.run.reevaluate.case_of_run)
         "options": {**{k: v for k, v in asdict(options).items() if k not in ("collector", "sut")},
                     **({"sut": _sut_options(options.sut)} if options.sut is not None else {}),
                     "laser": options.collector.laser.value},  # what the verdicts need to know (rei.run.reevaluate)

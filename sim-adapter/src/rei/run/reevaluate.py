@@ -59,6 +59,19 @@ class RunSettings:
                    mission=bool(options.get("mission", True)), run_id=str(sim.get("run_id", "replay")), sim_duration=sim.get("sim_time"))
 
 
+def case_of_run(out: Path) -> Path | None:
+    """The generated case a run was made from: ``OUT/case`` (rei run, campaigns, rei import), else the folder
+    ``OUT/sim.json`` names (rei sim GEN -o OUT simulates a case that lives elsewhere); None when neither exists."""
+    if (out / "case" / "world.json").is_file():
+        return out / "case"
+    sim = out / "sim.json"
+    if sim.is_file():
+        recorded = _json(sim).get("case")
+        if isinstance(recorded, str) and (Path(recorded) / "world.json").is_file():
+            return Path(recorded)
+    return None
+
+
 def replay_monitor(out: Path, case_dir: Path, *, patterns: PatternSelection | None = None,
                    timeout: float = REPLAY_TIMEOUT) -> tuple[JvmResult, list[Any]]:
     """Run the monitor jar over the run's recorded streams; returns its result and the signals it emitted.
@@ -123,7 +136,7 @@ def reevaluate(out: Path, case_dir: Path | None = None, *, utilities: Path | Non
     from rei.mission import mission_info
     from rei.mission.executor import MISSION_INFO_FILE
 
-    case_dir = case_dir or out / "case"
+    case_dir = case_dir or case_of_run(out) or out / "case"
     if not (case_dir / "world.json").is_file():
         raise ReevaluationError(f"no generated case in {case_dir} (world.json missing)")
     settings = settings or RunSettings.from_run(out)
@@ -164,4 +177,5 @@ def _json(path: Path) -> Mapping[str, Any]:
     return json.loads(path.read_text(encoding="utf-8"))
 
 
-__all__ = ["LIVE_EVENTS_FILE", "SIGNALS_FILE", "Reevaluation", "ReevaluationError", "RunSettings", "read_signals", "reevaluate", "replay_monitor"]
+__all__ = ["LIVE_EVENTS_FILE", "SIGNALS_FILE", "Reevaluation", "ReevaluationError", "RunSettings", "case_of_run",
+           "read_signals", "reevaluate", "replay_monitor"]
