@@ -50,7 +50,7 @@ def read_monitor(path: Path | str) -> MonitorSpec:
     root = load_json(path, MONITOR_FORMAT)
     thresholds = root.child("thresholds")
     close = thresholds.number("close", positive=True)
-    collision = thresholds.number("collision", non_negative=True)
+    collision = thresholds.number("collision", positive=True)  # 0 < collision < close, as the DSL requires
     if collision >= close:
         raise thresholds.error(f"must be below close ({close}), got {collision}", "collision")
     requirements = root.child("requirements")

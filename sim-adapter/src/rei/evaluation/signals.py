@@ -71,9 +71,14 @@ class SignalError(ValueError):
     """A signal message that does not have the documented shape; the message says which field."""
 
 
+#: The fields of a signal message, in order (contract/vocabulary.json ``signal_record``).
+SIGNAL_RECORD = ("seq", "t", "signal", "subject", "object", "distance")
+
+
 @dataclass(frozen=True, slots=True)
 class Signal:
-    """One message of ``rei.run.<id>.signal``: ``{seq, t, signal, subject, object, distance}``."""
+    """One message of ``rei.run.<id>.signal``: ``{seq, t, signal, subject, object, distance}``. ``object`` is empty
+    when no object is concerned (a robot-level transition with nothing near: the monitor's RobotFact)."""
 
     seq: int
     t: float
@@ -93,9 +98,9 @@ class Signal:
         if not math.isfinite(t):
             raise SignalError(f"signal field 't' must be finite, got {t!r}")
         distance = _real(message, "distance")
-        texts = [message.get(key) for key in ("signal", "subject", "object")]
-        for key, value in zip(("signal", "subject", "object"), texts, strict=True):
-            if not isinstance(value, str) or not value:
+        texts = [message.get(key) for key in SIGNAL_RECORD[2:5]]
+        for key, value in zip(SIGNAL_RECORD[2:5], texts, strict=True):
+            if not isinstance(value, str) or (not value and key != "object"):
                 raise SignalError(f"signal field {key!r} must be a non-empty string, got {value!r}")
         return cls(seq, t, texts[0], texts[1], texts[2], distance)  # type: ignore[arg-type]
 

@@ -6,8 +6,13 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-#: Run ids become one URI component; Crossbar's (loose) URI rules forbid dots, '#' and whitespace there.
-_RUN_ID = re.compile(r"[A-Za-z0-9_-]{1,64}")
+#: Run ids become one URI component; Crossbar's (loose) URI rules forbid dots, '#' and whitespace there
+#: (contract/vocabulary.json, as every fact below).
+RUN_ID_PATTERN = r"[A-Za-z0-9_-]{1,64}"
+_RUN_ID = re.compile(RUN_ID_PATTERN)
+#: A run's URIs; ``name`` is one of TOPIC_NAMES, or ``sut.<name>`` for the external SUT's (rei.sut.external).
+TOPIC_TEMPLATE = "rei.run.{run_id}.{name}"
+TOPIC_NAMES = ("state", "mission", "mission_info", "signal", "config", "snapshot")
 
 
 @dataclass(frozen=True, slots=True)
@@ -21,7 +26,7 @@ class Topics:
             raise ValueError(f"run id {self.run_id!r} must be 1-64 characters of [A-Za-z0-9_-]")
 
     def _uri(self, name: str) -> str:
-        return f"rei.run.{self.run_id}.{name}"
+        return TOPIC_TEMPLATE.format(run_id=self.run_id, name=name)
 
     @property
     def state(self) -> str:

@@ -24,7 +24,8 @@ from rei.geometry import Pose2D, Twist2D
 from rei.sut.api import LaserScan, NavGoal, NavStatus, Observation, StaticMap
 
 PROTOCOL_VERSION = 1
-#: The URIs' last components, ``rei.run.<run_id>.sut.<name>``.
+#: The URIs' last components, ``rei.run.<run_id>.sut.<name>`` (contract/vocabulary.json ``sut``).
+URI_TEMPLATE = "rei.run.{run_id}.sut.{name}"
 FROM_SIMULATION = ("tick", "goal", "cancel", "end")
 FROM_SUT = ("command", "status")
 PROCEDURES = ("hello",)
@@ -43,7 +44,7 @@ def uri(run_id: str, name: str) -> str:
     """``rei.run.<run_id>.sut.<name>`` for one of the protocol's names."""
     if name not in (*FROM_SIMULATION, *FROM_SUT, *PROCEDURES):
         raise ValueError(f"no SUT URI named {name!r}")
-    return f"rei.run.{run_id}.sut.{name}"
+    return URI_TEMPLATE.format(run_id=run_id, name=name)
 
 
 @dataclass(frozen=True, slots=True)

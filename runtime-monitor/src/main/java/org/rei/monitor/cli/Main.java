@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.Map;
 
 import org.rei.monitor.config.CaseReader;
+import org.rei.monitor.config.MonitorSpec;
 import org.rei.monitor.engine.DrlSources;
 import org.rei.monitor.engine.PatternRules;
 import org.rei.monitor.model.Snapshots;
@@ -283,7 +284,7 @@ public final class Main {
 			if (o.router != null && !runGiven) {
 				throw new IllegalArgumentException("live mode needs --run ID");
 			}
-			if (!o.run.matches("[A-Za-z0-9_-]{1,64}")) {
+			if (!o.run.matches(MonitorSpec.RUN_ID_PATTERN)) {
 				throw new IllegalArgumentException("run id must be 1-64 characters of [A-Za-z0-9_-]: " + o.run);
 			}
 			if (o.replay != null && o.caseDir == null) {

@@ -70,8 +70,23 @@ public final class CaseReader {
 					c.path("shape").asText("BOX"), doubles(c.path("size"), 3), c.path("mass").asDouble(0)));
 		}
 		JsonNode th = n.path("thresholds");
-		return new MonitorSpec(text(n, "testcase"), text(n, "robot"), th.path("close").asDouble(0.25),
-				th.path("collision").asDouble(0.01), topics, catalogue);
+		double collision = threshold(th, "collision");
+		double close = threshold(th, "close");
+		if (close <= collision) { // 0 < collision < close, as the DSL and rei.artifacts.monitor require
+			throw new IllegalArgumentException("monitor.json thresholds.close must be above thresholds.collision ("
+					+ collision + " m), got " + close);
+		}
+		return new MonitorSpec(text(n, "testcase"), text(n, "robot"), close, collision, topics, catalogue);
+	}
+
+	/** A threshold in metres: present, finite and above 0 (a missing one is an error, never a default). */
+	private static double threshold(JsonNode thresholds, String name) {
+		JsonNode v = thresholds.get(name);
+		if (v == null || !v.isNumber() || !Double.isFinite(v.asDouble()) || v.asDouble() <= 0) {
+			throw new IllegalArgumentException("monitor.json thresholds." + name + " must be a number of metres above 0, got "
+					+ (v == null ? "nothing" : v.toString()));
+		}
+		return v.asDouble();
 	}
 
 	private static void format(JsonNode n, String expected) {

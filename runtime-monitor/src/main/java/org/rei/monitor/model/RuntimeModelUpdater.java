@@ -38,6 +38,7 @@ import org.rei.runtime.RuntimeModel;
 import org.rei.runtime.TaskState;
 import org.rei.runtime.TaskStatus;
 import org.rei.runtime.Twist;
+import org.rei.vepl.runtime.MissionEvent;
 
 /**
  * Keeps the EMF runtime model (thesis 5.1.5.1) in step with the wire: the concrete environment is set up from
@@ -273,8 +274,8 @@ public final class RuntimeModelUpdater {
 	public void applyMission(MissionMessage m) {
 		MissionState s = model.getOwnedMissionState();
 		switch (m.event()) {
-		case "BEGIN" -> s.setBegun(true);
-		case "END" -> s.setEnded(true);
+		case MissionEvent.BEGIN -> s.setBegun(true);
+		case MissionEvent.END -> s.setEnded(true);
 		default -> {
 			TaskState task = task(s, m.taskIndex());
 			if (m.goal() != null) {
@@ -285,8 +286,8 @@ public final class RuntimeModelUpdater {
 				task.setGoal(g);
 			}
 			task.setStatus(switch (m.event()) {
-			case "TASK_START" -> TaskStatus.ACTIVE;
-			case "TASK_SUCCESS" -> TaskStatus.SUCCEEDED;
+			case MissionEvent.TASK_START -> TaskStatus.ACTIVE;
+			case MissionEvent.TASK_SUCCESS -> TaskStatus.SUCCEEDED;
 			default -> TaskStatus.FAILED;
 			});
 			if (m.reason() != null) {

@@ -13,6 +13,7 @@ import org.msgpack.core.MessageFormat;
 import org.msgpack.core.MessagePack;
 import org.msgpack.core.MessageUnpacker;
 import org.msgpack.value.ValueType;
+import org.rei.vepl.runtime.MissionEvent;
 
 /**
  * Decodes state and mission messages straight from msgpack bytes (no intermediate tree: this runs for every
@@ -25,7 +26,7 @@ public final class WireDecoder {
 	// array headers come from the wire: a few bytes may claim billions of elements, so never allocate by them
 	private static final int CAPACITY = 1024;
 	private static final int MAX_REALS = 1 << 16;
-	private static final Set<String> EVENTS = Set.of("BEGIN", "TASK_START", "TASK_SUCCESS", "TASK_FAIL", "END");
+	private static final Set<String> EVENTS = Set.copyOf(MissionEvent.KINDS);
 
 	private WireDecoder() {
 	}

@@ -32,14 +32,14 @@ import org.rei.vepl.vepl.QueryEvent;
 import org.rei.vepl.vepl.Rule;
 import org.rei.vepl.vepl.Signal;
 import org.rei.vepl.vepl.VeplPackage.Literals;
+import org.rei.vepl.runtime.MissionEvent;
 import org.rei.vepl.vepl.Window;
 
 /** The rules a pattern file must follow before it is compiled; one check per rule, codes in {@link VeplIssueCodes}. */
 public class VeplValidator extends AbstractVeplValidator {
 
 	/** The events of the mission topic (docs/protocol.md). */
-	public static final List<String> MISSION_EVENTS = List.of("BEGIN", "TASK_START", "TASK_SUCCESS", "TASK_FAIL",
-			"END");
+	public static final List<String> MISSION_EVENTS = MissionEvent.KINDS;
 
 	@Check
 	public void checkUniqueNames(PatternFile file) {

@@ -102,7 +102,7 @@ final class Dispatcher {
 			throw new SutException(SutClient.EXIT_CALLBACK, "onTick returned null" + where + ": return a Command");
 		}
 		publishStatus(); // before the command: the simulation reads it from the next tick on
-		outbox.publish("command", Messages.command(m.tick(), command[0]));
+		outbox.publish(SutClient.COMMAND, Messages.command(m.tick(), command[0]));
 	}
 
 	private void publishStatus() {
@@ -112,7 +112,7 @@ final class Dispatcher {
 		}
 		sentStatus = g.status();
 		sentText = g.text();
-		outbox.publish("status", Messages.status(g.id(), sentStatus, sentText));
+		outbox.publish(SutClient.STATUS, Messages.status(g.id(), sentStatus, sentText));
 	}
 
 	private interface Callback {

@@ -55,7 +55,14 @@ public final class SutClient {
 	public static final String ENV_RUN_ID = "REI_RUN_ID";
 	public static final String ENV_AUTH_FILE = "REI_AUTH_FILE";
 
-	private static final List<String> TOPICS = List.of("tick", "goal", "cancel", "end");
+	/** The protocol's URIs, {@code name} one of the lists below (docs/sut.md; contract/vocabulary.json). */
+	public static final String URI_TEMPLATE = "rei.run.{run_id}.sut.{name}";
+	public static final String COMMAND = "command";
+	public static final String STATUS = "status";
+	public static final String HELLO = "hello";
+	public static final List<String> FROM_SIMULATION = List.of("tick", "goal", "cancel", "end");
+	public static final List<String> FROM_SUT = List.of(COMMAND, STATUS);
+	public static final List<String> PROCEDURES = List.of(HELLO);
 	/** Connecting, joining and hello's answer; REI's own --sut-join-timeout defaults to the same. */
 	private static final long JOIN_MILLIS = 60_000;
 	/** Between two hello calls while the simulation has not registered it yet. */
@@ -151,7 +158,7 @@ public final class SutClient {
 
 	/** The full URI of one of the protocol's names ({@code tick}, {@code hello}, ...). */
 	public String uri(String name) {
-		return "rei.run." + runId + ".sut." + name;
+		return URI_TEMPLATE.replace("{run_id}", runId).replace("{name}", name);
 	}
 
 	/**
@@ -219,7 +226,7 @@ public final class SutClient {
 			} else if (m instanceof Connected) {
 				connected = true;
 				joining = "subscribing";
-				for (String topic : TOPICS) {
+				for (String topic : FROM_SIMULATION) {
 					client.makeSubscription(uri(topic)).subscribe(
 							ev -> inbox.add(new Event(topic, first(ev.arguments()))),
 							e -> inbox.add(new Failure("cannot subscribe to " + uri(topic) + ": " + describe(e))));
@@ -234,7 +241,7 @@ public final class SutClient {
 							+ " as '" + credentials.authid() + "': " + describe(d.reason())
 							+ (refused ? " (is " + ENV_AUTH_FILE + " the sut credentials of this run?)" : ""));
 				} // else the state before open()
-			} else if (m instanceof Subscribed && ++subscribed == TOPICS.size()) {
+			} else if (m instanceof Subscribed && ++subscribed == FROM_SIMULATION.size()) {
 				joining = "waiting for hello's answer";
 				callHello(client, inbox, sutName);
 			} else if (m instanceof HelloAnswer a) {
@@ -278,7 +285,7 @@ public final class SutClient {
 			call.put("name", name);
 		}
 		ArrayNode args = JsonNodeFactory.instance.arrayNode().add(call);
-		client.call(uri("hello"), args, null).subscribe(
+		client.call(uri(HELLO), args, null).subscribe(
 				reply -> inbox.add(new HelloAnswer(first(reply.arguments()))),
 				e -> inbox.add(new HelloRefused(e)));
 	}

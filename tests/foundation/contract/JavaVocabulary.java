@@ -1,0 +1,39 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+import org.rei.monitor.config.MonitorSpec;
+import org.rei.monitor.signals.Signal;
+import org.rei.sut.kit.SutClient;
+import org.rei.vepl.runtime.MissionEvent;
+import org.rei.vepl.validation.VeplValidator;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+
+/**
+ * The Java copies of contract/vocabulary.json's facts, read from the built jars' constants and printed as JSON for
+ * test_vocabulary_contract.py ({@code java -cp rei-monitor.jar:rei-sut-kit.jar JavaVocabulary.java}).
+ */
+public final class JavaVocabulary {
+	public static void main(String[] args) throws Exception {
+		Map<String, Object> facts = new LinkedHashMap<>();
+		facts.put("run_id_pattern", MonitorSpec.RUN_ID_PATTERN);
+		facts.put("topic_template", MonitorSpec.TOPIC_TEMPLATE);
+		facts.put("mission_events", MissionEvent.KINDS);
+		facts.put("vepl_mission_events", VeplValidator.MISSION_EVENTS);
+		facts.put("signal_record", Arrays.stream(Signal.class.getRecordComponents()).map(c -> c.getName()).toList());
+		facts.put("signal_payload", List.copyOf(new Signal(0, 0, "S", "robot", "", 0).payload().keySet()));
+		facts.put("sut_uri_template", SutClient.URI_TEMPLATE);
+		facts.put("sut_from_simulation", SutClient.FROM_SIMULATION);
+		facts.put("sut_from_sut", SutClient.FROM_SUT);
+		facts.put("sut_procedures", SutClient.PROCEDURES);
+		facts.put("sut_environment", List.of(SutClient.ENV_ROUTER_URL, SutClient.ENV_REALM, SutClient.ENV_RUN_ID,
+				SutClient.ENV_AUTH_FILE));
+		System.out.println(new ObjectMapper().writeValueAsString(facts));
+	}
+}

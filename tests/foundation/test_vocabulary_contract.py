@@ -1,0 +1,141 @@
+# SPDX-License-Identifier: EPL-2.0
+"""The contract test: every language's copy of a shared fact equals contract/vocabulary.json, the one source.
+
+Java's copies are read from the built jars' constants (contract/JavaVocabulary.java), Python's from the modules,
+TypeScript's from the viewer's source; the threshold rules are checked by behaviour in the DSL's validator, the
+Python reader and the Java monitor, which disagreed once (0 was accepted by two, a missing threshold defaulted
+in one).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import re
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from rei.artifacts import ArtifactError
+from rei.artifacts.monitor import read_monitor
+from rei.evaluation.signals import SIGNAL_RECORD, Signal
+from rei.mission.executor import MissionEventKind
+from rei.sut.external import protocol
+from rei.sut.external.process import Connection
+from rei.wamp.topics import RUN_ID_PATTERN, TOPIC_NAMES, TOPIC_TEMPLATE, Topics
+
+HERE = Path(__file__).parent
+
+
+@pytest.fixture(scope="module")
+def contract(repo_root: Path) -> dict:
+    return json.loads((repo_root / "contract" / "vocabulary.json").read_text(encoding="utf-8"))
+
+
+@pytest.fixture(scope="module")
+def java_facts(java, monitor_jar: Path, sut_kit_jar: Path) -> dict:
+    result = subprocess.run([java.executable, "-cp", f"{monitor_jar}:{sut_kit_jar}",
+                             str(HERE / "contract" / "JavaVocabulary.java")],
+                            capture_output=True, text=True, timeout=120, check=False)
+    assert result.returncode == 0, result.stderr
+    return json.loads(result.stdout)
+
+
+def test_python_copies(contract: dict) -> None:
+    assert RUN_ID_PATTERN == contract["run_id_pattern"]
+    assert TOPIC_TEMPLATE == contract["topic_template"]
+    assert TOPIC_NAMES == tuple(contract["topics"])
+    topics = Topics("r1")
+    assert [getattr(topics, name) for name in TOPIC_NAMES] == [
+        contract["topic_template"].format(run_id="r1", name=name) for name in contract["topics"]]
+    assert [kind.value for kind in MissionEventKind] == contract["mission_events"]
+    assert SIGNAL_RECORD == tuple(contract["signal_record"]) == tuple(f.name for f in dataclasses.fields(Signal))
+    sut = contract["sut"]
+    assert protocol.URI_TEMPLATE == sut["uri_template"]
+    assert (protocol.FROM_SIMULATION, protocol.FROM_SUT, protocol.PROCEDURES) == (
+        tuple(sut["from_simulation"]), tuple(sut["from_sut"]), tuple(sut["procedures"]))
+    env = Connection("ws://x", "rei", "r1", Path("auth"), "rs://x").environment()
+    assert list(env) == sut["environment"] + sut["optional_environment"]
+
+
+def test_java_copies(contract: dict, java_facts: dict) -> None:
+    assert java_facts["run_id_pattern"] == contract["run_id_pattern"]
+    assert java_facts["topic_template"] == contract["topic_template"].removesuffix("{name}")
+    assert java_facts["mission_events"] == java_facts["vepl_mission_events"] == contract["mission_events"]
+    assert java_facts["signal_record"] == java_facts["signal_payload"] == contract["signal_record"]
+    sut = contract["sut"]
+    assert java_facts["sut_uri_template"] == sut["uri_template"]
+    assert (java_facts["sut_from_simulation"], java_facts["sut_from_sut"], java_facts["sut_procedures"]) == (
+        sut["from_simulation"], sut["from_sut"], sut["procedures"])
+    assert java_facts["sut_environment"] == sut["environment"]
+
+
+def test_typescript_copies(contract: dict, repo_root: Path) -> None:
+    source = (repo_root / "viewer" / "src" / "config.ts").read_text(encoding="utf-8")
+    union = re.search(r"export type MissionEvent = ([^;]+);", source)
+    assert union is not None, "viewer/src/config.ts: no `export type MissionEvent = ...;`"
+    assert re.findall(r'"([A-Z_]+)"', union[1]) == contract["mission_events"]
+    fields = re.search(r"export interface SignalMessage \{([^}]*)\}", source)
+    assert fields is not None, "viewer/src/config.ts: no `export interface SignalMessage`"
+    assert re.findall(r"readonly (\w+)", fields[1]) == contract["signal_record"]
+
+
+def test_the_generated_monitor_config_names_the_contracts_topics(contract: dict, repo_root: Path) -> None:
+    template = (repo_root / "generators" / "org.rei.generator" / "src" / "main" / "resources" / "org" / "rei"
+                / "generator" / "templates" / "monitor.json.egl").read_text(encoding="utf-8")
+    uris = dict(re.findall(r'"(\w+)": "(rei\.run\.[^"]+)"', template))
+    names = {"missionInfo" if name == "mission_info" else name: name for name in contract["topics"]}
+    assert uris == {key: contract["topic_template"].format(run_id="{run_id}", name=name)
+                    for key, name in names.items()}
+
+
+# -- the threshold rules, by behaviour ------------------------------------------------------------------------
+
+BAD_THRESHOLDS = {
+    "collision zero": ({"close": 0.25, "collision": 0.0}, "collision"),
+    "close not above collision": ({"close": 0.1, "collision": 0.1}, "close" ),
+    "missing": ({"close": 0.25}, "collision"),
+}
+
+
+def _case_with(thresholds: dict, generated: Path, into: Path) -> Path:
+    """A copy of a generated case whose monitor.json has ``thresholds``."""
+    into.mkdir(parents=True)
+    for path in generated.iterdir():
+        if path.is_file():
+            (into / path.name).write_bytes(path.read_bytes())
+    monitor = json.loads((into / "monitor.json").read_text())
+    monitor["thresholds"] = thresholds
+    (into / "monitor.json").write_text(json.dumps(monitor))
+    return into
+
+
+@pytest.fixture(scope="module")
+def generated(run_cli, repo_root: Path, tmp_path_factory) -> Path:
+    out = tmp_path_factory.mktemp("gen") / "case"
+    result = run_cli("generate", repo_root / "examples" / "simple_navigation.rei", "-o", out)
+    assert result.returncode == 0, result.stderr
+    return out
+
+
+@pytest.mark.parametrize("problem", list(BAD_THRESHOLDS))
+def test_python_and_java_refuse_the_thresholds_the_dsl_refuses(problem: str, generated: Path, java,
+                                                              monitor_jar: Path, write_rei, run_cli,
+                                                              tmp_path: Path) -> None:
+    thresholds, field = BAD_THRESHOLDS[problem]
+    case = _case_with(thresholds, generated, tmp_path / "case")
+    with pytest.raises(ArtifactError, match=field):
+        read_monitor(case / "monitor.json")
+    replay = subprocess.run([java.executable, "-jar", str(monitor_jar), "--replay", str(tmp_path / "none.msgpack"),
+                             "--case", str(case)], capture_output=True, text=True, timeout=120, check=False)
+    assert replay.returncode != 0 and f"thresholds.{field}" in replay.stderr, replay.stderr
+    if "missing" not in problem:  # the DSL has defaults; it refuses the values
+        source = write_rei("bad.rei", f"""testcase T {{
+  room R size 3 x 3 {{ robot r : Waffle on F_0_0 }}
+  mission M {{ goto F_2_2 }}
+  monitor {{ close {thresholds['close']} collision {thresholds['collision']} }}
+}}
+""")
+        validated = run_cli("validate", source)
+        assert validated.returncode != 0 and "threshold" in validated.stdout + validated.stderr
