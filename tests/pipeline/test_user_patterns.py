@@ -6,7 +6,10 @@ from __future__ import annotations
 
 import csv
 import json
+import subprocess
 from pathlib import Path
+
+import pytest
 
 #: A new signal on every task start, worth what its pattern declares (simple_navigation has two goals).
 USER_PATTERN = """\
@@ -69,3 +72,38 @@ def test_invalid_patterns_fail_with_file_line_and_column_before_anything_starts(
     assert result.stderr.startswith("rei: error: --patterns "), result.stderr
     assert not out.exists()  # no run folder, no router, no simulation
     assert processes_mentioning(bad) == [] and processes_mentioning(out) == []
+
+
+@pytest.mark.parametrize("text, where, message", [
+    ("", ":1:1: The file declares no event, signal or rule", "emptyFile"),
+    ("package org.example.patterns\nimport-queries org.example.queries.*\n", ":1:1: The file declares no event",
+     "emptyFile"),
+    ("queryEvent far() as robotFar lost\ncomplexEvent e() { as far }\nrule r on e {\n  println(\"x\")\n}\n",
+     ":3:13: A rule in REI publishes signals instead of running an action block", "actionBlock"),
+])
+def test_patterns_viatra_cep_users_write_get_one_positioned_error_and_no_crash(
+    text: str, where: str, message: str, run_cli, repo_root: Path, tmp_path: Path
+) -> None:
+    folder = tmp_path / "patterns"
+    folder.mkdir()
+    (folder / "mine.vepl").write_text(text)
+    result = run_cli("run", repo_root / "examples" / "simple_navigation.rei", "-o", tmp_path / "out",
+                     "--patterns", folder, timeout=120)
+    assert result.returncode == 2, result.stdout + result.stderr
+    assert f"{folder / 'mine.vepl'}{where}" in result.stderr and message in result.stderr, result.stderr
+    assert "Exception" not in result.stderr and result.stderr.count("mine.vepl:") == 1, result.stderr
+
+
+def test_a_users_file_named_like_a_default_pattern_file_compiles_beside_it(java, monitor_jar: Path,
+                                                                          tmp_path: Path) -> None:
+    folder = tmp_path / "patterns"
+    folder.mkdir()
+    (folder / "geometry.vepl").write_text("queryEvent nearSomething as robotClose found\nsignal SIG_USER_NEAR\n"
+                                          "rule \"near\" on nearSomething emits SIG_USER_NEAR\n")
+    utilities = tmp_path / "utilities.json"
+    result = subprocess.run([str(java.executable), "-jar", str(monitor_jar), "--compile-only", "--patterns", str(folder),
+                             "--utilities-out", str(utilities)], capture_output=True, text=True, timeout=120,
+                            check=False)
+    assert result.returncode == 0, result.stderr
+    declared = json.loads(utilities.read_text())
+    assert "SIG_USER_NEAR" in declared and declared["SIG_GEOM_FAR_TRANSIT_CLOSE"] == -2.0

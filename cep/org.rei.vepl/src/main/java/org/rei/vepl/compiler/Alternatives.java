@@ -11,6 +11,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 
+import org.rei.vepl.validation.KnownQueries;
 import org.rei.vepl.vepl.And;
 import org.rei.vepl.vepl.AtomicEvent;
 import org.rei.vepl.vepl.Bounded;
@@ -185,7 +186,7 @@ public final class Alternatives {
 
 	static Type type(Event e) {
 		if (e instanceof QueryEvent q) {
-			return new Type(q.getQuery(), q.getKind().getName().toUpperCase(), null);
+			return new Type(KnownQueries.resolve(q.getQuery()), q.getKind().getName().toUpperCase(), null);
 		}
 		if (e instanceof AtomicEvent a) {
 			return new Type(null, null, a.getMission());

@@ -31,6 +31,7 @@ import org.eclipse.xtext.validation.IResourceValidator;
 import org.eclipse.xtext.validation.Issue;
 import org.rei.vepl.VeplStandaloneSetup;
 import org.rei.vepl.validation.KnownQueries;
+import org.rei.vepl.validation.VeplIssueCodes;
 import org.rei.vepl.vepl.Element;
 import org.rei.vepl.vepl.Event;
 import org.rei.vepl.vepl.PatternFile;
@@ -90,8 +91,10 @@ public final class VeplLoader {
 		XtextResourceSet set = injector().getInstance(XtextResourceSet.class);
 		KnownQueries.attach(set, knownQueries);
 		List<VeplCompiler.Unit> units = new ArrayList<>();
-		for (Source s : sources) {
-			Resource r = set.createResource(URI.createURI("vepl:/" + VeplCompiler.baseName(s.name()) + ".vepl"));
+		for (int i = 0; i < sources.size(); i++) {
+			Source s = sources.get(i);
+			// one URI per source: a user's geometry.vepl beside the packaged one is another resource
+			Resource r = set.createResource(URI.createURI("vepl:/" + i + "/" + VeplCompiler.baseName(s.name()) + ".vepl"));
 			try {
 				r.load(new ByteArrayInputStream(s.text().getBytes(StandardCharsets.UTF_8)), null);
 			} catch (IOException e) {
@@ -104,6 +107,11 @@ public final class VeplLoader {
 		IResourceValidator validator = injector().getInstance(IResourceValidator.class);
 		List<String> errors = new ArrayList<>();
 		for (int i = 0; i < units.size(); i++) {
+			if (units.get(i).model() == null) { // nothing but whitespace and comments: no root to validate
+				errors.add(sources.get(i).name() + ":1:1: The file declares no event, signal or rule [" +
+						VeplIssueCodes.EMPTY_FILE + "]");
+				continue;
+			}
 			XtextResource r = (XtextResource) set.getResources().get(i);
 			for (Issue issue : validator.validate(r, CheckMode.ALL, CancelIndicator.NullImpl)) {
 				if (issue.getSeverity() == Severity.ERROR) {
@@ -112,7 +120,9 @@ public final class VeplLoader {
 				}
 			}
 		}
-		errors.addAll(crossFileDuplicates(units));
+		if (errors.isEmpty()) { // names are only compared once every file parsed and validated
+			errors.addAll(crossFileDuplicates(units));
+		}
 		if (!errors.isEmpty()) {
 			throw new VeplException("pattern files do not validate:\n  " + String.join("\n  ", errors));
 		}

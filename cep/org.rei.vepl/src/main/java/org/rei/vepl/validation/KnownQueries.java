@@ -8,6 +8,7 @@ import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Map;
 import java.util.Set;
 import java.util.TreeSet;
 import java.util.regex.Matcher;
@@ -27,6 +28,18 @@ import org.eclipse.emf.ecore.resource.ResourceSet;
 public final class KnownQueries extends AdapterImpl {
 
 	private static final Pattern QUERY = Pattern.compile("(?m)^\\s*query\\s+([A-Za-z_$][\\w$]*)");
+
+	/**
+	 * The query names of the thesis's own patterns (9.2.2.1) and REI's state queries they stand for
+	 * (queries/robot-state.drl), so the appendix compiles as printed.
+	 */
+	public static final Map<String, String> THESIS_NAMES = Map.of("findFarObject", "robotFar", "findCloseToObject",
+			"robotClose", "findCollisionToObject", "robotInCollision");
+
+	/** The query a query event names: itself, or REI's for one of the thesis's names. */
+	public static String resolve(String name) {
+		return THESIS_NAMES.getOrDefault(name, name);
+	}
 
 	private final Set<String> names;
 

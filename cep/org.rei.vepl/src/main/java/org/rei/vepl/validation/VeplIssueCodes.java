@@ -18,4 +18,7 @@ public interface VeplIssueCodes {
 	String EMPTY_MATCH = PREFIX + "emptyMatch";
 	String CYCLIC_EVENT = PREFIX + "cyclicEvent";
 	String SECOND_RULE = PREFIX + "secondRule";
+	String EMPTY_FILE = PREFIX + "emptyFile";
+	String IGNORED_HEADER = PREFIX + "ignoredHeader";
+	String ACTION_BLOCK = PREFIX + "actionBlock";
 }

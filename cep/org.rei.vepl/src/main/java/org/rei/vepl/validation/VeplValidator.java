@@ -17,6 +17,7 @@ import org.eclipse.emf.ecore.util.EcoreUtil;
 import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
 import org.eclipse.xtext.validation.Check;
 import org.rei.vepl.compiler.Alternatives;
+import org.rei.vepl.runtime.MissionEvent;
 import org.rei.vepl.vepl.AtomicEvent;
 import org.rei.vepl.vepl.Bounded;
 import org.rei.vepl.vepl.ComplexEvent;
@@ -32,7 +33,6 @@ import org.rei.vepl.vepl.QueryEvent;
 import org.rei.vepl.vepl.Rule;
 import org.rei.vepl.vepl.Signal;
 import org.rei.vepl.vepl.VeplPackage.Literals;
-import org.rei.vepl.runtime.MissionEvent;
 import org.rei.vepl.vepl.Window;
 
 /** The rules a pattern file must follow before it is compiled; one check per rule, codes in {@link VeplIssueCodes}. */
@@ -58,9 +58,39 @@ public class VeplValidator extends AbstractVeplValidator {
 	}
 
 	@Check
+	public void checkDeclaresSomething(PatternFile file) {
+		if (file.getElements().isEmpty()) {
+			error("The file declares no event, signal or rule (queryEvent, atomicEvent, complexEvent, signal, rule)",
+					file, null, VeplIssueCodes.EMPTY_FILE);
+		}
+	}
+
+	@Check
+	public void checkHeader(PatternFile file) {
+		if (file.getPackage() != null) {
+			warning("REI ignores VIATRA-CEP's package: events, signals and rules are global across the loaded files",
+					file, Literals.PATTERN_FILE__PACKAGE, VeplIssueCodes.IGNORED_HEADER);
+		}
+		for (var i : file.getImports()) {
+			warning("REI ignores imports: queries are found by name among the loaded DRL queries (queries/)", i,
+					null, VeplIssueCodes.IGNORED_HEADER);
+		}
+	}
+
+	@Check
+	public void checkNoActionBlock(Rule rule) {
+		if (rule.getAction() != null) {
+			error("A rule in REI publishes signals instead of running an action block: write 'rule \"" + rule.getName()
+					+ "\" on " + (rule.getEvent() != null && !rule.getEvent().eIsProxy() ? rule.getEvent().getName()
+							: "EVENT") + " emits SIG_NAME' with a 'signal SIG_NAME' declaration (docs/vepl.md)",
+					rule, Literals.RULE__ACTION, VeplIssueCodes.ACTION_BLOCK);
+		}
+	}
+
+	@Check
 	public void checkQueryIsKnown(QueryEvent e) {
 		Set<String> known = KnownQueries.of(e.eResource());
-		if (known != null && e.getQuery() != null && !known.contains(e.getQuery())) {
+		if (known != null && e.getQuery() != null && !known.contains(KnownQueries.resolve(e.getQuery()))) {
 			error("Unknown query '" + e.getQuery() + "': the loaded queries are " + String.join(", ", known), e,
 					Literals.QUERY_EVENT__QUERY, VeplIssueCodes.UNKNOWN_QUERY);
 		}

@@ -94,6 +94,49 @@ class ThesisListingsTest {
 		}
 	}
 
+	// thesis 9.2.2.1 as printed (the thesis's query names), under the header every VIATRA-CEP file starts with
+	static final String PRELIMINARIES = """
+			package org.rei.patterns
+
+			import-queries org.rei.queries.*
+			import "http://www.rei.org/runtime/1.0"
+
+			queryEvent atomicFarFromObject() as findFarObject found
+			queryEvent notAtomicFarFromObject() as findFarObject lost
+
+			queryEvent atomicCloseToObject() as findCloseToObject found
+			queryEvent notAtomicCloseToObject() as findCloseToObject lost
+
+			queryEvent atomicCollisionToObject() as findCollisionToObject found
+			queryEvent notAtomicCollisionToObject() as findCollisionToObject lost
+			""";
+
+	@Test
+	void theAppendixCompilesVerbatimIncludingItsPreliminariesAndHeader() throws Exception {
+		String vepl = PRELIMINARIES + "\n" + String.join("\n\n", LISTINGS) + "\n" + RULES;
+		try (Cep cep = new Cep(vepl)) {
+			cep.at(0).at(100, "-robotFar", "+robotClose").at(600, "+robotInCollision", "-robotClose")
+					.at(900, "-robotInCollision", "+robotClose").at(2000, "+robotFar", "-robotClose");
+			assertEquals(List.of("FAR_CLOSE@100:robotClose", "CLOSE_COLLISION@600:robotInCollision",
+					"COLLISION_CLOSE@900:robotClose", "CLOSE_FAR@2000:robotFar"), cep.signals());
+		}
+	}
+
+	@Test
+	void eventsWithoutParenthesesAsInViatraCep() throws Exception {
+		String vepl = """
+				atomicEvent begun as mission BEGIN
+				queryEvent near as robotClose found
+				complexEvent startsNear() { as (begun -> near)[1000] }
+				signal STARTS_NEAR
+				rule startsNear on startsNear emits STARTS_NEAR
+				""";
+		try (Cep cep = new Cep(vepl)) {
+			cep.at(0, "!BEGIN").at(100, "-robotFar", "+robotClose");
+			assertEquals(List.of("STARTS_NEAR@100:robotClose"), cep.signals());
+		}
+	}
+
 	@Test
 	void theDefaultPatternsCompile() throws VeplLoader.VeplException {
 		try (Cep cep = new Cep(DefaultPatterns.sources())) {
