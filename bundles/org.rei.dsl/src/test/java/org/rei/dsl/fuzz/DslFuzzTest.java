@@ -12,6 +12,7 @@ import java.util.List;
 import org.eclipse.xtext.validation.Issue;
 import org.junit.jupiter.api.Test;
 import org.rei.dsl.validation.ReiIssueCodes;
+import org.rei.fuzz.TextFuzzer;
 
 /** A short, seeded campaign of {@link DslFuzzer}: no crash, no hang, every issue placed inside the input. */
 class DslFuzzTest {
@@ -20,7 +21,7 @@ class DslFuzzTest {
 	void mutatedTestCasesNeverCrashOrHang() throws IOException {
 		try (DslFuzzer fuzzer = new DslFuzzer(DslFuzzer.defaultSeeds(), 10_000)) {
 			// a fixed number of inputs keeps it deterministic; the time box only guards a slow machine
-			DslFuzzer.Result r = fuzzer.run(20261122L, 300, 60);
+			TextFuzzer.Result r = fuzzer.run(20261122L, 300, 60);
 			System.out.println("DSL fuzz: " + r.inputs() + " inputs, " + r.valid() + " valid, by mutation "
 					+ r.byMutation());
 			assertTrue(r.failures().isEmpty(), () -> r.failures().size() + " failures " + r.failures() + ", first: "

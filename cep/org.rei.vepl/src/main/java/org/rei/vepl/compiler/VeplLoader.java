@@ -90,6 +90,16 @@ public final class VeplLoader {
 	public static List<VeplCompiler.Unit> load(List<Source> sources, Set<String> knownQueries) throws VeplException {
 		XtextResourceSet set = injector().getInstance(XtextResourceSet.class);
 		KnownQueries.attach(set, knownQueries);
+		List<String> tooDeep = new ArrayList<>();
+		for (Source s : sources) {
+			String where = tooDeep(s.text());
+			if (where != null) {
+				tooDeep.add(s.name() + ":" + where);
+			}
+		}
+		if (!tooDeep.isEmpty()) { // the parser recurses per bracket: it would overflow the stack, not report
+			throw new VeplException("pattern files do not validate:\n  " + String.join("\n  ", tooDeep));
+		}
 		List<VeplCompiler.Unit> units = new ArrayList<>();
 		for (int i = 0; i < sources.size(); i++) {
 			Source s = sources.get(i);
@@ -127,6 +137,41 @@ public final class VeplLoader {
 			throw new VeplException("pattern files do not validate:\n  " + String.join("\n  ", errors));
 		}
 		return units;
+	}
+
+	/** Brackets nested deeper than any pattern needs; the parser recurses once per level. */
+	public static final int MAX_NESTING = 100;
+
+	/** "line:column: message [code]" of the first bracket beyond {@link #MAX_NESTING}, or null. */
+	static String tooDeep(String text) {
+		int depth = 0;
+		int line = 1;
+		int column = 0;
+		for (int i = 0; i < text.length(); i++) {
+			char c = text.charAt(i);
+			column++;
+			if (c == '\n') {
+				line++;
+				column = 0;
+			} else if (c == '/' && i + 1 < text.length() && text.charAt(i + 1) == '/') {
+				while (i + 1 < text.length() && text.charAt(i + 1) != '\n') {
+					i++;
+				}
+			} else if (c == '"') { // a rule's name; an unterminated one ends at the line's end
+				while (i + 1 < text.length() && text.charAt(i + 1) != '"' && text.charAt(i + 1) != '\n') {
+					i++;
+					column++;
+				}
+			} else if (c == '(' || c == '{' || c == '[') {
+				if (++depth > MAX_NESTING) {
+					return line + ":" + column + ": brackets nested deeper than " + MAX_NESTING + " levels ["
+							+ VeplIssueCodes.TOO_DEEP + "]";
+				}
+			} else if ((c == ')' || c == '}' || c == ']') && depth > 0) {
+				depth--;
+			}
+		}
+		return null;
 	}
 
 	/** Names of events, signals and rules are global across the loaded files. */

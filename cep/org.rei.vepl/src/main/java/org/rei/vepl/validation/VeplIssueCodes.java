@@ -21,4 +21,5 @@ public interface VeplIssueCodes {
 	String EMPTY_FILE = PREFIX + "emptyFile";
 	String IGNORED_HEADER = PREFIX + "ignoredHeader";
 	String ACTION_BLOCK = PREFIX + "actionBlock";
+	String TOO_DEEP = PREFIX + "tooDeep";
 }
