@@ -3,7 +3,7 @@
 
 Unlike :class:`rei.sut.api.Observation` (what the robot knows), this holds ground truth: true poses and twists of
 the robot and of every moving object, and the physical contacts. Poses are ``(x, y, z, yaw)`` and twists
-``(vx, vy, wz)`` in the world frame, as on the wire (ARCHITECTURE.md, ``rei.run.<run_id>.state``).
+``(vx, vy, wz)`` in the world frame, as on the wire (docs/protocol.md, ``rei.run.<run_id>.state``).
 """
 
 from __future__ import annotations
