@@ -19,7 +19,8 @@ import pytest
 
 from rei.artifacts import ArtifactError
 from rei.artifacts.monitor import read_monitor
-from rei.evaluation.signals import SIGNAL_RECORD, Signal
+from rei.evaluation import DEFAULT_UTILITIES, load_declared_transitions, load_declared_utilities
+from rei.evaluation.signals import DEFAULT_TRANSITIONS, SIGNAL_RECORD, Signal
 from rei.mission.executor import MissionEventKind
 from rei.sut.external import protocol
 from rei.sut.external.process import Connection
@@ -88,6 +89,23 @@ def test_the_generated_monitor_config_names_the_contracts_topics(contract: dict,
     names = {"missionInfo" if name == "mission_info" else name: name for name in contract["topics"]}
     assert uris == {key: contract["topic_template"].format(run_id="{run_id}", name=name)
                     for key, name in names.items()}
+
+
+def test_pythons_default_utilities_and_transitions_are_what_the_default_patterns_declare(
+    java, monitor_jar: Path, tmp_path: Path
+) -> None:
+    """The VEPL declarations are the source of signals; Python's defaults (used where a run has no declarations,
+    e.g. hand-written rules) must say the same, value for value."""
+    declared = tmp_path / "utilities.json"
+    result = subprocess.run([java.executable, "-jar", str(monitor_jar), "--compile-only", "--utilities-out",
+                             str(declared)], capture_output=True, text=True, timeout=120, check=False)
+    assert result.returncode == 0, result.stderr
+    utilities = load_declared_utilities(declared)
+    for signal, utility in utilities.items():
+        assert DEFAULT_UTILITIES[signal] == (utility if utility is not None else 0.0), signal
+    assert set(DEFAULT_UTILITIES) - set(utilities) == {"SIG_MONITOR_DATA_GAP"}  # the monitor's own, no pattern's
+    assert load_declared_transitions(declared) == dict(DEFAULT_TRANSITIONS)
+    assert set(json.loads(declared.read_text())) >= set(DEFAULT_TRANSITIONS)  # every default is declared
 
 
 # -- the threshold rules, by behaviour ------------------------------------------------------------------------

@@ -45,7 +45,7 @@ def test_a_users_signal_is_scored_with_its_declared_utility_live_and_replayed(
     assert summary["status"] == "COMPLETED" and summary["total_utility"] == total
     assert summary["utilities"] == f"Table 3 + patterns (defaults + {out / 'patterns'})"
     assert summary["unknown_signals"] == {} and summary["counts"]["SIG_USER_TASK_STARTED"] == 2
-    assert json.loads((out / "utilities.json").read_text())["SIG_USER_TASK_STARTED"] == 7.0
+    assert json.loads((out / "utilities.json").read_text())["SIG_USER_TASK_STARTED"] == {"utility": 7.0}
     assert (out / "patterns" / "tasks.vepl").read_text() == USER_PATTERN
     # judged again from the recording: the replay runs the kept patterns and scores them the same way
     again = run_cli("evaluate", out, timeout=300)
@@ -106,4 +106,4 @@ def test_a_users_file_named_like_a_default_pattern_file_compiles_beside_it(java,
                             check=False)
     assert result.returncode == 0, result.stderr
     declared = json.loads(utilities.read_text())
-    assert "SIG_USER_NEAR" in declared and declared["SIG_GEOM_FAR_TRANSIT_CLOSE"] == -2.0
+    assert "SIG_USER_NEAR" in declared and declared["SIG_GEOM_FAR_TRANSIT_CLOSE"]["utility"] == -2.0

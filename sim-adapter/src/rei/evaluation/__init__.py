@@ -3,8 +3,9 @@
 
 Semantics and file formats: docs/evaluation.md. Typical use (``rei run``)::
 
-    declared = load_declared_utilities(out / "utilities.json")  # what the monitor's patterns declare
-    evaluator = Evaluator(out, utilities=load_utilities(path, declared), mission_info=None,
+    declared = out / "utilities.json"  # what the monitor's patterns declare of their signals
+    evaluator = Evaluator(out, utilities=load_utilities(path, load_declared_utilities(declared)),
+                          transitions=load_declared_transitions(declared), mission_info=None,
                           monitor_config=monitor_json, world=world_json)
     attach(client, run_id, evaluator)              # live; or replay(signals, evaluator) offline
     ...                                            # evaluator.total for progress
@@ -24,6 +25,7 @@ from rei.evaluation.utilities import (
     UtilityError,
     UtilityTable,
     default_utilities,
+    load_declared_transitions,
     load_declared_utilities,
     load_utilities,
 )
@@ -55,6 +57,7 @@ __all__ = [
     "attach",
     "default_utilities",
     "judge",
+    "load_declared_transitions",
     "load_declared_utilities",
     "load_utilities",
     "replay",

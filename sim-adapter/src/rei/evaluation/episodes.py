@@ -13,11 +13,11 @@ inconsistent; it is recorded (and the verdicts that depend on zones become error
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 
 from rei.evaluation.outcome import Evidence
-from rei.evaluation.signals import Signal, Source, Zone, transition
+from rei.evaluation.signals import Signal, Source, Transition, Zone
 
 
 @dataclass(slots=True)
@@ -46,13 +46,14 @@ class Timeline:
         return self.episodes.get((source, level), [])
 
 
-def build_timeline(signals: Iterable[Signal]) -> Timeline:
+def build_timeline(signals: Iterable[Signal], transitions: Mapping[str, Transition]) -> Timeline:
+    """The episodes of the zone changes among ``signals``; ``transitions``: what each signal declares."""
     timeline = Timeline({(s, z): [] for s in Source for z in (Zone.CLOSE, Zone.COLLISION)},
                         {s: [] for s in Source})
     zone = dict.fromkeys(Source, Zone.FAR)
     open_: dict[tuple[Source, Zone], Episode | None] = dict.fromkeys(timeline.episodes, None)
     for signal in signals:
-        step = transition(signal.signal)
+        step = transitions.get(signal.signal)
         if step is None:
             continue
         source, before, after = step.source, zone[step.source], step.after

@@ -32,12 +32,14 @@ from rei.evaluation.log import EventLog, format_number
 from rei.evaluation.mission_info import MissionInfo, MissionInfoError
 from rei.evaluation.outcome import Evidence
 from rei.evaluation.signals import (
+    DEFAULT_TRANSITIONS,
     SIG_MISSION_END,
     SIG_MISSION_TASK_FAIL,
     SIG_MISSION_TASK_START,
     SIG_MISSION_TASK_SUCCESS,
     Signal,
     SignalError,
+    Transition,
 )
 from rei.evaluation.summary import Summary, TaskRecord
 from rei.evaluation.trace import Trace
@@ -60,6 +62,7 @@ class Evaluator:
     """
 
     def __init__(self, out_dir: str | os.PathLike[str], *, utilities: Mapping[str, float] | None = None,
+                 transitions: Mapping[str, Transition] | None = None,
                  mission_info: Mapping[str, Any] | MissionInfo | None = None,
                  monitor_config: Mapping[str, Any] | None = None, world: Mapping[str, Any] | None = None,
                  settings: VerdictSettings | None = None) -> None:
@@ -70,6 +73,8 @@ class Evaluator:
         if not isinstance(utilities, UtilityTable):
             utilities = UtilityTable(utilities, "given")
         self.utilities = utilities
+        # the zone change each signal declares (load_declared_transitions); the defaults' when none is given
+        self.transitions: Mapping[str, Transition] = transitions if transitions is not None else DEFAULT_TRANSITIONS
         self._mission: MissionInfo | None = None
         if mission_info is not None:  # parsed first: a bad one raises before any file is opened
             self._mission = (mission_info if isinstance(mission_info, MissionInfo)
@@ -250,7 +255,7 @@ class Evaluator:
                 problems.append(Evidence(f"{self._problem_count - len(problems)} more stream problem(s)"))
             trace = Trace(signals, max(duration or 0.0, last), status == "COMPLETED", reason,
                           dict(self._task_reasons), dict(self._task_goals), tuple(problems),
-                          mission_recorded=self.settings.mission)
+                          mission_recorded=self.settings.mission, transitions=self.transitions)
             context = CaseContext.from_configs(self._mission, self.monitor_config, self.world, self.settings)
             verdicts = judge(trace, context)
             testcase = (self._mission.testcase if self._mission and self._mission.testcase

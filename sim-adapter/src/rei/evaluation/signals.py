@@ -12,6 +12,7 @@ import math
 import re
 from collections.abc import Mapping
 from dataclasses import dataclass
+from types import MappingProxyType
 from typing import Any
 
 SIG_MISSION_BEGIN = "SIG_MISSION_BEGIN"
@@ -40,31 +41,38 @@ class Zone(enum.IntEnum):
     COLLISION = 2
 
 
-#: The transitions the monitor emits (Table 2): FAR<->CLOSE<->COLLISION, for geometry and laser.
-_STEPS = ((Zone.FAR, Zone.CLOSE), (Zone.CLOSE, Zone.FAR), (Zone.CLOSE, Zone.COLLISION),
-          (Zone.COLLISION, Zone.CLOSE))
-TRANSITION_SIGNALS = tuple(
-    f"SIG_{source}_{a.name}_TRANSIT_{b.name}" for source in Source for a, b in _STEPS
-)
-KNOWN_SIGNALS: frozenset[str] = frozenset((*MISSION_SIGNALS, *TRANSITION_SIGNALS, SIG_MONITOR_DATA_GAP))
-
-_TRANSITION = re.compile(r"SIG_(GEOM|LASER)_(FAR|CLOSE|COLLISION)_TRANSIT_(FAR|CLOSE|COLLISION)")
-_TASK_OBJECT = re.compile(r"task_(\d+)")
-
-
 @dataclass(frozen=True, slots=True)
 class Transition:
+    """A change of the robot's zone, as a pattern declares it for its signal (``signal SIG_X transition geometry
+    FAR -> CLOSE``, docs/vepl.md): the evaluator judges zones from these declarations, never from signal names."""
+
     source: Source
     before: Zone
     after: Zone
 
+    @classmethod
+    def from_json(cls, value: Any) -> Transition:
+        """``{"source": "GEOM", "from": "FAR", "to": "CLOSE"}`` as the monitor writes it; ValueError otherwise."""
+        if not isinstance(value, Mapping):
+            raise ValueError(f"a transition must be a map of source, from and to, got {value!r}")  # noqa: TRY004 - one error type for callers
+        try:
+            return cls(Source(value.get("source")), Zone[str(value.get("from"))], Zone[str(value.get("to"))])
+        except (KeyError, ValueError):
+            raise ValueError(f"a transition needs source GEOM or LASER and zones FAR, CLOSE or COLLISION, got "
+                             f"{dict(value)!r}") from None
 
-def transition(signal: str) -> Transition | None:
-    """The zone change a ``SIG_<GEOM|LASER>_<A>_TRANSIT_<B>`` signal stands for; None for other signals."""
-    match = _TRANSITION.fullmatch(signal)
-    if match is None:
-        return None
-    return Transition(Source(match[1]), Zone[match[2]], Zone[match[3]])
+
+#: The transitions the default patterns declare (Table 2): FAR<->CLOSE<->COLLISION, for geometry and laser. They
+#: stand in for declarations where a run has none (hand-written rules); the contract test checks them against
+#: cep/patterns.
+_STEPS = ((Zone.FAR, Zone.CLOSE), (Zone.CLOSE, Zone.FAR), (Zone.CLOSE, Zone.COLLISION),
+          (Zone.COLLISION, Zone.CLOSE))
+DEFAULT_TRANSITIONS: Mapping[str, Transition] = MappingProxyType({
+    f"SIG_{source}_{a.name}_TRANSIT_{b.name}": Transition(source, a, b) for source in Source for a, b in _STEPS
+})
+TRANSITION_SIGNALS = tuple(DEFAULT_TRANSITIONS)
+KNOWN_SIGNALS: frozenset[str] = frozenset((*MISSION_SIGNALS, *TRANSITION_SIGNALS, SIG_MONITOR_DATA_GAP))
+_TASK_OBJECT = re.compile(r"task_(\d+)")
 
 
 class SignalError(ValueError):

@@ -10,7 +10,14 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 from rei.evaluation.outcome import Evidence
-from rei.evaluation.signals import SIG_MISSION_BEGIN, SIG_MISSION_END, SIG_MONITOR_DATA_GAP, Signal
+from rei.evaluation.signals import (
+    DEFAULT_TRANSITIONS,
+    SIG_MISSION_BEGIN,
+    SIG_MISSION_END,
+    SIG_MONITOR_DATA_GAP,
+    Signal,
+    Transition,
+)
 
 
 @dataclass(frozen=True, slots=True)
@@ -33,6 +40,8 @@ class Trace:
     stream_problems: tuple[Evidence, ...] = ()
     #: False for a run that recorded no mission (an imported bag): it is complete without SIG_MISSION_END.
     mission_recorded: bool = True
+    #: The zone change each signal stands for, as its pattern declares it (rei.evaluation.utilities).
+    transitions: Mapping[str, Transition] = field(default_factory=lambda: DEFAULT_TRANSITIONS)
 
     @property
     def began(self) -> bool:

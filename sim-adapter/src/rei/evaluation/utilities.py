@@ -27,10 +27,11 @@ import os
 from collections.abc import Iterator, Mapping
 from pathlib import Path
 from types import MappingProxyType
+from typing import Any
 
 import yaml
 
-from rei.evaluation.signals import KNOWN_SIGNALS
+from rei.evaluation.signals import DEFAULT_TRANSITIONS, KNOWN_SIGNALS, Transition
 
 #: Table 3 of the thesis, plus the documented defaults for the signals it does not list.
 DEFAULT_UTILITIES: Mapping[str, float] = MappingProxyType({
@@ -129,11 +130,37 @@ def load_utilities(path: str | os.PathLike[str] | None = None,
 
 
 def load_declared_utilities(path: str | os.PathLike[str]) -> dict[str, float | None]:
-    """The monitor's ``--utilities-out`` file: ``{"SIG_X": -2.0, "SIG_Y": null, ...}`` (null: no utility declared).
+    """The utilities of the monitor's ``--utilities-out`` file (what the patterns declare of each signal:
+    ``{"SIG_X": {"utility": -2.0, "transition": {...}}, "SIG_Y": {"utility": null}}``; null: none declared). A file
+    of the earlier shape, ``{"SIG_X": -2.0}``, is read too.
 
     Raises UtilityError naming the file for anything else.
     """
     path = Path(path)
+    out: dict[str, float | None] = {}
+    for key, value in _declarations(path).items():
+        utility = value.get("utility") if isinstance(value, dict) else value
+        if utility is not None and not _is_number(utility):
+            raise UtilityError(f"{path}: {key}: the utility must be a finite number or null, got {utility!r}")
+        out[key] = None if utility is None else float(utility)
+    return out
+
+
+def load_declared_transitions(path: str | os.PathLike[str]) -> dict[str, Transition]:
+    """The zone changes the patterns declare in the monitor's ``--utilities-out`` file (``signal SIG_X transition
+    geometry FAR -> CLOSE``), over the defaults: the evaluator judges zones from these, never from signal names."""
+    path = Path(path)
+    out = dict(DEFAULT_TRANSITIONS)
+    for key, value in _declarations(path).items():
+        if isinstance(value, dict) and value.get("transition") is not None:
+            try:
+                out[key] = Transition.from_json(value["transition"])
+            except ValueError as error:
+                raise UtilityError(f"{path}: {key}: {error}") from None
+    return out
+
+
+def _declarations(path: Path) -> dict[str, Any]:
     try:
         data = json.loads(path.read_text(encoding="utf-8"))
     except OSError as error:
@@ -141,11 +168,8 @@ def load_declared_utilities(path: str | os.PathLike[str]) -> dict[str, float | N
     except ValueError as error:
         raise UtilityError(f"{path}: not valid JSON: {error}") from None
     if not isinstance(data, dict):
-        raise UtilityError(f"{path}: expected a JSON object 'SIGNAL: utility', got {type(data).__name__}")
-    for key, value in data.items():
-        if value is not None and not _is_number(value):
-            raise UtilityError(f"{path}: {key}: the utility must be a finite number or null, got {value!r}")
-    return {key: None if value is None else float(value) for key, value in data.items()}
+        raise UtilityError(f"{path}: expected a JSON object 'SIGNAL: declaration', got {type(data).__name__}")
+    return data
 
 
 def _declared(declared: Mapping[str, float | None]) -> dict[str, float]:

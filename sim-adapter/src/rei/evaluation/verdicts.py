@@ -25,6 +25,7 @@ seen, a false success) still makes it ``fail``.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 from rei.evaluation.context import CaseContext
@@ -36,8 +37,8 @@ from rei.evaluation.signals import (
     SIG_MISSION_TASK_SUCCESS,
     Signal,
     Source,
+    Transition,
     Zone,
-    transition,
 )
 from rei.evaluation.trace import Trace
 
@@ -66,8 +67,8 @@ _DEFAULT_GOAL_TOLERANCE = 0.25
 
 def judge(trace: Trace, context: CaseContext) -> tuple[Verdict, ...]:
     """All Table 4 verdicts, in REQUIREMENTS order."""
-    timeline = build_timeline(trace.signals)
-    collisions = _collisions(trace.signals)
+    timeline = build_timeline(trace.signals, trace.transitions)
+    collisions = _collisions(trace.signals, trace.transitions)
     return (
         _laser(GEOM_CLOSE_LASER_CORRECT, Zone.CLOSE, trace, timeline, context),
         _laser(GEOM_COLLISION_LASER_CORRECT, Zone.COLLISION, trace, timeline, context),
@@ -196,7 +197,7 @@ class _Collision:
                         self.signal.signal, self.signal.object, self.task)
 
 
-def _collisions(signals: tuple[Signal, ...]) -> list[_Collision]:
+def _collisions(signals: tuple[Signal, ...], transitions: Mapping[str, Transition]) -> list[_Collision]:
     """Geometric entries into COLLISION, each with the task running then (by the mission signals)."""
     found: list[_Collision] = []
     task: int | None = None
@@ -205,7 +206,7 @@ def _collisions(signals: tuple[Signal, ...]) -> list[_Collision]:
             task = s.task_index
         elif s.signal in (SIG_MISSION_TASK_SUCCESS, SIG_MISSION_TASK_FAIL):
             task = None
-        step = transition(s.signal)
+        step = transitions.get(s.signal)
         if step is not None and step.source == Source.GEOM and step.after == Zone.COLLISION:
             found.append(_Collision(s, task))
     return found

@@ -156,7 +156,7 @@ class _Run:
 
     def start(self) -> None:
         """Router, view, the evaluator's client, monitor, evaluator, simulation - in that order (module docstring)."""
-        from rei.evaluation import attach, load_declared_utilities, load_utilities
+        from rei.evaluation import attach, load_declared_transitions, load_declared_utilities, load_utilities
 
         out, options = self.out, self.options
         self.patterns = record_patterns(options.patterns, out)  # so a replay runs the patterns the live monitor ran
@@ -180,7 +180,7 @@ class _Run:
         # the monitor wrote what its patterns declare before it answered; signals only come once the simulation
         # runs, so subscribing here still sees the first one
         self.evaluator = self._evaluator(load_utilities(options.utilities, load_declared_utilities(
-            out / UTILITIES_FILE), patterns=self.patterns.describe()))
+            out / UTILITIES_FILE), patterns=self.patterns.describe()), load_declared_transitions(out / UTILITIES_FILE))
         attach(client, self.run_id, self.evaluator, also=self.signals.write)
         if self.viewer is not None:
             _await_viewer(self.viewer)
@@ -278,10 +278,11 @@ class _Run:
                                         wall_time=time.perf_counter() - self.started, run_id=self.run_id)
         return PipelineResult(status, reason, summary)
 
-    def _evaluator(self, utilities: Any) -> Any:
+    def _evaluator(self, utilities: Any, transitions: Any = None) -> Any:
         from rei.evaluation import Evaluator, VerdictSettings
 
-        return Evaluator(self.out, utilities=utilities, mission_info=None, monitor_config=self.monitor_config,
+        return Evaluator(self.out, utilities=utilities, transitions=transitions, mission_info=None,
+                         monitor_config=self.monitor_config,
                          world=self.world, settings=VerdictSettings(humans=self.options.humans,
                                                                     laser=self.options.laser))
 

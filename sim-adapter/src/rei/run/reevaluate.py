@@ -129,6 +129,7 @@ def reevaluate(out: Path, case_dir: Path | None = None, *, utilities: Path | Non
         Evaluator,
         UtilityError,
         VerdictSettings,
+        load_declared_transitions,
         load_declared_utilities,
         load_utilities,
         replay,
@@ -145,6 +146,7 @@ def reevaluate(out: Path, case_dir: Path | None = None, *, utilities: Path | Non
     started = time.perf_counter()
     declared_file = out / UTILITIES_FILE  # missing only when the replay failed before compiling its rules
     try:
+        transitions = load_declared_transitions(declared_file) if declared_file.is_file() else None
         table = load_utilities(utilities, load_declared_utilities(declared_file) if declared_file.is_file() else None,
                                patterns=patterns.describe())
     except UtilityError as error:
@@ -158,7 +160,7 @@ def reevaluate(out: Path, case_dir: Path | None = None, *, utilities: Path | Non
         for signal in signals:
             recording.write(signal)
     recorded_mission = out / MISSION_INFO_FILE
-    evaluator = Evaluator(out, utilities=table,
+    evaluator = Evaluator(out, utilities=table, transitions=transitions,
                           mission_info=(_json(recorded_mission) if recorded_mission.is_file()
                                         else mission_info(read_case(case_dir).mission)),
                           monitor_config=_json(case_dir / "monitor.json"), world=_json(case_dir / "world.json"),

@@ -23,8 +23,9 @@ import org.rei.monitor.signals.SignalFile;
 import org.rei.monitor.signals.SignalPublisher;
 import org.rei.monitor.signals.UtilitiesFile;
 import org.rei.monitor.wamp.LiveMonitor;
-import org.rei.wamp.auth.RouterCredentials;
+import org.rei.vepl.compiler.CompiledRules;
 import org.rei.vepl.compiler.VeplLoader;
+import org.rei.wamp.auth.RouterCredentials;
 
 /**
  * {@code java -jar rei-monitor.jar}: live ({@code --router URL --run ID}) or replay ({@code --replay FILE|DIR}), or
@@ -47,7 +48,8 @@ public final class Main {
 			  --patterns DIR       .vepl patterns compiled at start, added to the default patterns (cep/patterns/)
 			  --no-default-patterns  only the patterns of --patterns DIR
 			  --rules DIR          hand-written .drl transition rules instead of any VEPL patterns
-			  --utilities-out FILE write the utilities the patterns in use declare, as JSON {"SIG_X": -2.0, ...},
+			  --utilities-out FILE write what the patterns in use declare of their signals, as JSON {"SIG_X":
+			                       {"utility": -2.0, "transition": {"source": "GEOM", "from": "FAR", "to": "CLOSE"}}},
 			                       once the rules are compiled, before any message ({} with --rules)
 			  --compile-only       compile the queries and rules (and write --utilities-out), then exit
 			  --snapshot-out FILE  write the runtime model as XMI on exit (live default: runtime-<run>.xmi)
@@ -87,7 +89,8 @@ public final class Main {
 	}
 
 	/** The session's DRL (queries, then transition rules) and the utilities the patterns declare. */
-	record Rules(List<DrlSources.Source> drl, Map<String, Double> utilities) {
+	record Rules(List<DrlSources.Source> drl, Map<String, Double> utilities,
+			Map<String, CompiledRules.Transition> transitions) {
 	}
 
 	/** Compiles the rules and writes {@code --utilities-out} at once, before any message is processed. */
@@ -96,6 +99,7 @@ public final class Main {
 				: DrlSources.packaged(DrlSources.QUERIES);
 		List<DrlSources.Source> drl = new ArrayList<>(queries);
 		Map<String, Double> utilities = Map.of(); // hand-written DRL declares none
+		Map<String, CompiledRules.Transition> transitions = Map.of();
 		if (o.rules != null) {
 			drl.addAll(DrlSources.folder(o.rules));
 		} else {
@@ -104,11 +108,12 @@ public final class Main {
 					.compileWithUtilities(PatternRules.select(!o.noDefaultPatterns, o.patterns), queries);
 			drl.addAll(patterns.drl());
 			utilities = patterns.utilities();
+			transitions = patterns.transitions();
 		}
 		if (o.utilitiesOut != null) {
-			UtilitiesFile.write(o.utilitiesOut, utilities);
+			UtilitiesFile.write(o.utilitiesOut, utilities, transitions);
 		}
-		return new Rules(drl, utilities);
+		return new Rules(drl, utilities, transitions);
 	}
 
 	private static int compileOnly(Options o, PrintStream err) throws Exception {

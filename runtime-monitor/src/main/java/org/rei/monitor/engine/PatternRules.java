@@ -71,10 +71,12 @@ public final class PatternRules {
 	/**
 	 * The DRL of {@link #compile} and the utility every loaded pattern declares for its signals.
 	 *
-	 * @param drl       the generated rule files
-	 * @param utilities signal -> declared utility, in declaration order; null for a signal declared without one
+	 * @param drl         the generated rule files
+	 * @param utilities   signal -> declared utility, in declaration order; null for a signal declared without one
+	 * @param transitions signal -> the zone change it declares ({@code transition geometry FAR -> CLOSE})
 	 */
-	public record Compiled(List<DrlSources.Source> drl, Map<String, Double> utilities) {
+	public record Compiled(List<DrlSources.Source> drl, Map<String, Double> utilities,
+			Map<String, CompiledRules.Transition> transitions) {
 	}
 
 	/** As {@link #compile}, keeping the declared utilities (the evaluator scores signals with them). */
@@ -90,6 +92,7 @@ public final class PatternRules {
 			out.add(new DrlSources.Source("patterns/" + f.name(), f.text()));
 		}
 		// a copy that keeps the order and the nulls (Map.copyOf would reject the nulls)
-		return new Compiled(List.copyOf(out), Collections.unmodifiableMap(new LinkedHashMap<>(compiled.utilities())));
+		return new Compiled(List.copyOf(out), Collections.unmodifiableMap(new LinkedHashMap<>(compiled.utilities())),
+				Collections.unmodifiableMap(new LinkedHashMap<>(compiled.transitions())));
 	}
 }

@@ -9,15 +9,20 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.util.LinkedHashMap;
 import java.util.Map;
+
+import org.rei.vepl.compiler.CompiledRules;
 
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.ObjectMapper;
 
 /**
- * {@code --utilities-out FILE}: the utility each signal's pattern declares ({@code signal SIG_X utility -2},
- * docs/vepl.md) as one JSON object {@code {"SIG_X": -2.0, "SIG_Y": null}}, null for a signal declared without a
- * utility. The evaluator scores with it, so a user's own signal is worth what its pattern says.
+ * {@code --utilities-out FILE}: what each signal's pattern declares (docs/vepl.md), as one JSON object with a member
+ * per signal in declaration order: {@code {"SIG_X": {"utility": -2.0, "transition": {"source": "GEOM", "from":
+ * "FAR", "to": "CLOSE"}}, "SIG_Y": {"utility": null}}} - a null utility for a signal declared without one, a
+ * transition only for a signal declared with one. The evaluator scores with the utilities and judges the
+ * requirements on zones from the transitions, so a user's own signal counts as its pattern says.
  */
 public final class UtilitiesFile {
 
@@ -27,20 +32,31 @@ public final class UtilitiesFile {
 	}
 
 	/** The JSON text, keys in the order given (declaration order). */
-	public static String json(Map<String, Double> utilities) {
+	public static String json(Map<String, Double> utilities, Map<String, CompiledRules.Transition> transitions) {
+		Map<String, Object> out = new LinkedHashMap<>();
+		utilities.forEach((signal, utility) -> {
+			Map<String, Object> declared = new LinkedHashMap<>();
+			declared.put("utility", utility);
+			CompiledRules.Transition t = transitions.get(signal);
+			if (t != null) {
+				declared.put("transition", Map.of("source", t.source(), "from", t.from(), "to", t.to()));
+			}
+			out.put(signal, declared);
+		});
 		try {
-			return JSON.writeValueAsString(utilities) + "\n";
+			return JSON.writeValueAsString(out) + "\n";
 		} catch (JsonProcessingException e) {
-			throw new IllegalStateException(e); // a map of strings to doubles always serialises
+			throw new IllegalStateException(e); // maps of strings, doubles and nulls always serialise
 		}
 	}
 
 	/** Writes {@code file} atomically: a reader never sees half of it. */
-	public static void write(Path file, Map<String, Double> utilities) throws IOException {
+	public static void write(Path file, Map<String, Double> utilities, Map<String, CompiledRules.Transition> transitions)
+			throws IOException {
 		Path dir = file.toAbsolutePath().getParent();
 		Path tmp = Files.createTempFile(dir, file.getFileName().toString(), ".tmp");
 		try {
-			Files.writeString(tmp, json(utilities), StandardCharsets.UTF_8);
+			Files.writeString(tmp, json(utilities, transitions), StandardCharsets.UTF_8);
 			Files.move(tmp, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
 		} finally {
 			Files.deleteIfExists(tmp);

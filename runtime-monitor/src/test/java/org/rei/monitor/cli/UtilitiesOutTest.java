@@ -48,10 +48,12 @@ class UtilitiesOutTest {
 		Outcome o = run("--compile-only", "--patterns", dir.toString(), "--utilities-out", file.toString());
 		assertEquals(0, o.code(), o.err());
 		String json = Files.readString(file);
-		assertTrue(json.startsWith("{\"SIG_GEOM_FAR_TRANSIT_CLOSE\":-2.0,"), json); // declaration order
-		assertTrue(json.contains("\"SIG_MISSION_TASK_FAIL\":-100.0"), json);
-		assertTrue(json.contains("\"SIG_LASER_FAR_TRANSIT_CLOSE\":null"), json);
-		assertTrue(json.endsWith("\"SIG_USER_TASK_STARTED\":7.0,\"SIG_USER_UNSCORED\":null}\n"), json);
+		// declaration order, with the zone change the default patterns declare
+		assertTrue(json.startsWith("{\"SIG_GEOM_FAR_TRANSIT_CLOSE\":{\"utility\":-2.0,\"transition\":{"), json);
+		assertTrue(json.contains("\"SIG_MISSION_TASK_FAIL\":{\"utility\":-100.0}"), json);
+		assertTrue(json.contains("\"SIG_LASER_FAR_TRANSIT_CLOSE\":{\"utility\":null,\"transition\":{"), json);
+		assertTrue(json.endsWith("\"SIG_USER_TASK_STARTED\":{\"utility\":7.0},\"SIG_USER_UNSCORED\":{\"utility\":null}}\n"),
+				json);
 	}
 
 	@Test
@@ -62,7 +64,8 @@ class UtilitiesOutTest {
 		Outcome o = run("--compile-only", "--patterns", dir.toString(), "--no-default-patterns", "--utilities-out",
 				file.toString());
 		assertEquals(0, o.code(), o.err());
-		assertEquals("{\"SIG_USER_TASK_STARTED\":7.0,\"SIG_USER_UNSCORED\":null}\n", Files.readString(file));
+		assertEquals("{\"SIG_USER_TASK_STARTED\":{\"utility\":7.0},\"SIG_USER_UNSCORED\":{\"utility\":null}}\n",
+				Files.readString(file));
 	}
 
 	@Test
@@ -102,7 +105,12 @@ class UtilitiesOutTest {
 		Map<String, Double> m = new LinkedHashMap<>();
 		m.put("SIG_B", 1.5);
 		m.put("SIG_A", null);
-		assertEquals("{\"SIG_B\":1.5,\"SIG_A\":null}\n", UtilitiesFile.json(m));
-		assertEquals("{}\n", UtilitiesFile.json(Map.of()));
+		Map<String, org.rei.vepl.compiler.CompiledRules.Transition> t = Map.of("SIG_A",
+				new org.rei.vepl.compiler.CompiledRules.Transition("LASER", "CLOSE", "FAR"));
+		String json = UtilitiesFile.json(m, t);
+		assertTrue(json.startsWith("{\"SIG_B\":{\"utility\":1.5},\"SIG_A\":{\"utility\":null,\"transition\":{"), json);
+		assertTrue(json.contains("\"source\":\"LASER\"") && json.contains("\"from\":\"CLOSE\"")
+				&& json.contains("\"to\":\"FAR\""), json);
+		assertEquals("{}\n", UtilitiesFile.json(Map.of(), Map.of()));
 	}
 }

@@ -9,9 +9,15 @@ import java.util.Map;
 
 /**
  * The DRL compiled from a set of .vepl files: a prologue that declares the events and the bookkeeping facts, then
- * one DRL file per .vepl file (same base name); and the utility of every declared signal.
+ * one DRL file per .vepl file (same base name); the utility of every declared signal (null: none declared), and the
+ * zone change of every signal declared with a {@code transition}.
  */
-public record CompiledRules(List<DrlFile> files, Map<String, Double> utilities, long retentionMillis) {
+public record CompiledRules(List<DrlFile> files, Map<String, Double> utilities, Map<String, Transition> transitions,
+		long retentionMillis) {
+
+	/** A change of the robot's zone: {@code source} GEOM or LASER, {@code from}/{@code to} FAR, CLOSE, COLLISION. */
+	public record Transition(String source, String from, String to) {
+	}
 
 	/** One generated .drl file. */
 	public record DrlFile(String name, String text) {

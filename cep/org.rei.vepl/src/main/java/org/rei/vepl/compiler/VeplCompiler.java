@@ -40,6 +40,7 @@ public final class VeplCompiler {
 	public static CompiledRules compile(List<Unit> units, DrlTarget target) {
 		long retention = MIN_RETENTION_MILLIS;
 		Map<String, Double> utilities = new LinkedHashMap<>();
+		Map<String, CompiledRules.Transition> transitions = new LinkedHashMap<>();
 		for (Unit u : units) {
 			for (var it = EcoreUtil.<EObject>getAllContents(u.model(), true); it.hasNext();) {
 				if (it.next() instanceof Window w) {
@@ -49,6 +50,10 @@ public final class VeplCompiler {
 			for (var e : u.model().getElements()) {
 				if (e instanceof Signal s) {
 					utilities.put(s.getName(), s.isHasUtility() ? s.getUtility() : null);
+					if (s.isTransition()) {
+						transitions.put(s.getName(), new CompiledRules.Transition(s.getSource().getName(),
+								s.getFrom().getName(), s.getTo().getName()));
+					}
 				}
 			}
 		}
@@ -57,7 +62,7 @@ public final class VeplCompiler {
 		for (Unit u : units) {
 			files.add(new CompiledRules.DrlFile(baseName(u.name()) + ".drl", file(u, target)));
 		}
-		return new CompiledRules(List.copyOf(files), utilities, retention);
+		return new CompiledRules(List.copyOf(files), utilities, transitions, retention);
 	}
 
 	static String baseName(String fileName) {

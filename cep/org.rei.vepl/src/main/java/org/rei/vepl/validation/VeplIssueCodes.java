@@ -22,4 +22,5 @@ public interface VeplIssueCodes {
 	String IGNORED_HEADER = PREFIX + "ignoredHeader";
 	String ACTION_BLOCK = PREFIX + "actionBlock";
 	String TOO_DEEP = PREFIX + "tooDeep";
+	String TRANSITION_STEP = PREFIX + "transitionStep";
 }

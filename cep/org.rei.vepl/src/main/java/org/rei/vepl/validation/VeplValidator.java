@@ -88,6 +88,16 @@ public class VeplValidator extends AbstractVeplValidator {
 	}
 
 	@Check
+	public void checkTransitionIsOneStep(Signal s) {
+		if (s.isTransition() && Math.abs(s.getFrom().getValue() - s.getTo().getValue()) != 1) {
+			error("A transition is one step between neighbouring zones (FAR <-> CLOSE <-> COLLISION), got "
+					+ s.getFrom().getName() + " -> " + s.getTo().getName()
+					+ ": a jump over CLOSE is two signals at the same time", s, Literals.SIGNAL__TO,
+					VeplIssueCodes.TRANSITION_STEP);
+		}
+	}
+
+	@Check
 	public void checkQueryIsKnown(QueryEvent e) {
 		Set<String> known = KnownQueries.of(e.eResource());
 		if (known != null && e.getQuery() != null && !known.contains(KnownQueries.resolve(e.getQuery()))) {
