@@ -297,6 +297,26 @@ def test_human_collisions_below_n_collision_pass_and_at_it_fail() -> None:
         (12.5, "walker", "SIG_GEOM_CLOSE_TRANSIT_COLLISION")]
 
 
+def test_a_human_bumping_a_robot_that_already_touches_a_wall_is_counted_from_the_per_object_episodes() -> None:
+    """The robot-level state stays COLLISION from the wall on: Table 2 has no new signal for the human, the
+    per-object signals have one (thesis 5.1.6.2's single zone would undercount)."""
+    b = TraceBuilder().begin()
+    b.geom(5.0, "FAR_TRANSIT_CLOSE", "W_0_0_bottom").geom(5.5, "CLOSE_TRANSIT_COLLISION", "W_0_0_bottom")
+    b.at(5.5, "OBJECT_COLLISION_BEGIN", "W_0_0_bottom")
+    b.at(6.0, "OBJECT_COLLISION_BEGIN", "walker").at(6.8, "OBJECT_COLLISION_END", "walker")
+    b.at(8.0, "OBJECT_COLLISION_END", "W_0_0_bottom").geom(8.0, "COLLISION_TRANSIT_CLOSE", "W_0_0_bottom")
+    b.geom(9.0, "CLOSE_TRANSIT_FAR", "W_0_0_bottom")
+    verdicts = judge_trace(b.task(10.0, 0).end(20.0).messages)
+    human = verdicts["MISSION_WITH_HUMAN_TRAJECTORY"]
+    assert human.status == Status.FAIL, human
+    assert [(e.t, e.object, e.signal) for e in human.evidence] == [(6.0, "walker", "SIG_OBJECT_COLLISION_BEGIN")]
+    simple = verdicts["MISSION_SIMPLE"]  # Table 2's robot-level count: one collision, with the wall
+    assert simple.message.startswith("1 collision(s), first with W_0_0_bottom at t=5.500"), simple.message
+    # without per-object signals (hand-written rules) the robot-level collisions are all there is: none with a human
+    robot_level = [m for m in b.messages if "OBJECT_COLLISION" not in m["signal"]]
+    assert judge_trace(robot_level)["MISSION_WITH_HUMAN_TRAJECTORY"].status == Status.PASS
+
+
 def test_collisions_with_other_objects_do_not_count_against_humans() -> None:
     verdict = judge_trace(nominal(collision_with="table1").messages)["MISSION_WITH_HUMAN_TRAJECTORY"]
     assert verdict.status == Status.PASS

@@ -54,7 +54,7 @@ def build_timeline(signals: Iterable[Signal], transitions: Mapping[str, Transiti
     open_: dict[tuple[Source, Zone], Episode | None] = dict.fromkeys(timeline.episodes, None)
     for signal in signals:
         step = transitions.get(signal.signal)
-        if step is None:
+        if step is None or step.per_object:  # the robot's own zone only: objects have episodes of their own
             continue
         source, before, after = step.source, zone[step.source], step.after
         if step.before != before:

@@ -49,14 +49,17 @@ class Transition:
     source: Source
     before: Zone
     after: Zone
+    per_object: bool = False  # the zone of the signal's object, not the robot's single zone (``per object``)
 
     @classmethod
     def from_json(cls, value: Any) -> Transition:
-        """``{"source": "GEOM", "from": "FAR", "to": "CLOSE"}`` as the monitor writes it; ValueError otherwise."""
+        """``{"source": "GEOM", "from": "FAR", "to": "CLOSE", "per_object": true}`` as the monitor writes it (the
+        last key only when true); ValueError otherwise."""
         if not isinstance(value, Mapping):
             raise ValueError(f"a transition must be a map of source, from and to, got {value!r}")  # noqa: TRY004 - one error type for callers
         try:
-            return cls(Source(value.get("source")), Zone[str(value.get("from"))], Zone[str(value.get("to"))])
+            return cls(Source(value.get("source")), Zone[str(value.get("from"))], Zone[str(value.get("to"))],
+                       value.get("per_object") is True)
         except (KeyError, ValueError):
             raise ValueError(f"a transition needs source GEOM or LASER and zones FAR, CLOSE or COLLISION, got "
                              f"{dict(value)!r}") from None
@@ -67,8 +70,12 @@ class Transition:
 #: cep/patterns.
 _STEPS = ((Zone.FAR, Zone.CLOSE), (Zone.CLOSE, Zone.FAR), (Zone.CLOSE, Zone.COLLISION),
           (Zone.COLLISION, Zone.CLOSE))
+SIG_OBJECT_COLLISION_BEGIN = "SIG_OBJECT_COLLISION_BEGIN"
+SIG_OBJECT_COLLISION_END = "SIG_OBJECT_COLLISION_END"
 DEFAULT_TRANSITIONS: Mapping[str, Transition] = MappingProxyType({
-    f"SIG_{source}_{a.name}_TRANSIT_{b.name}": Transition(source, a, b) for source in Source for a, b in _STEPS
+    **{f"SIG_{source}_{a.name}_TRANSIT_{b.name}": Transition(source, a, b) for source in Source for a, b in _STEPS},
+    SIG_OBJECT_COLLISION_BEGIN: Transition(Source.GEOM, Zone.CLOSE, Zone.COLLISION, per_object=True),
+    SIG_OBJECT_COLLISION_END: Transition(Source.GEOM, Zone.COLLISION, Zone.CLOSE, per_object=True),
 })
 TRANSITION_SIGNALS = tuple(DEFAULT_TRANSITIONS)
 KNOWN_SIGNALS: frozenset[str] = frozenset((*MISSION_SIGNALS, *TRANSITION_SIGNALS, SIG_MONITOR_DATA_GAP))

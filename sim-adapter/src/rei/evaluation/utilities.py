@@ -13,6 +13,8 @@ signals out; their defaults are chosen here (docs/evaluation.md, "Utilities"):
   scores the laser only at the collision boundary, where the sensor's own view is a presage of damage.
 - ``SIG_MONITOR_DATA_GAP``: 0. A lost message is a fault of the test harness, not behaviour of the robot; it
   makes the affected verdicts ``error`` instead (rei.evaluation.verdicts).
+- ``SIG_OBJECT_COLLISION_BEGIN`` / ``_END``: 0. Collisions per object are counted for the human requirement; the
+  score stays that of Table 2's robot-level transitions.
 
 A signal that is in no table at run time is worth 0 and counted by the evaluator (summary
 ``unknown_signals``). A signal a pattern declares without a utility is known: it falls through to the defaults,
@@ -49,6 +51,8 @@ DEFAULT_UTILITIES: Mapping[str, float] = MappingProxyType({
     "SIG_LASER_FAR_TRANSIT_CLOSE": 0.0,
     "SIG_LASER_CLOSE_TRANSIT_FAR": 0.0,
     "SIG_MONITOR_DATA_GAP": 0.0,
+    "SIG_OBJECT_COLLISION_BEGIN": 0.0,
+    "SIG_OBJECT_COLLISION_END": 0.0,
 })
 assert set(DEFAULT_UTILITIES) == KNOWN_SIGNALS
 

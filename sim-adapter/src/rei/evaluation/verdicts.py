@@ -207,8 +207,32 @@ def _collisions(signals: tuple[Signal, ...], transitions: Mapping[str, Transitio
         elif s.signal in (SIG_MISSION_TASK_SUCCESS, SIG_MISSION_TASK_FAIL):
             task = None
         step = transitions.get(s.signal)
-        if step is not None and step.source == Source.GEOM and step.after == Zone.COLLISION:
+        if step is not None and not step.per_object and step.source == Source.GEOM and step.after == Zone.COLLISION:
             found.append(_Collision(s, task))
+    return found
+
+
+def _object_collisions(signals: tuple[Signal, ...], transitions: Mapping[str, Transition]) -> list[_Collision] | None:
+    """Geometric entries into COLLISION per object (a second object while the robot already collides counts too),
+    with the task running then; None when the run's rules publish no per-object signal (hand-written rules)."""
+    if not any(s.signal in transitions and transitions[s.signal].per_object for s in signals):
+        return None
+    found: list[_Collision] = []
+    task: int | None = None
+    colliding: set[str] = set()
+    for s in signals:
+        if s.signal == SIG_MISSION_TASK_START:
+            task = s.task_index
+        elif s.signal in (SIG_MISSION_TASK_SUCCESS, SIG_MISSION_TASK_FAIL):
+            task = None
+        step = transitions.get(s.signal)
+        if step is None or not step.per_object or step.source != Source.GEOM:
+            continue
+        if step.after == Zone.COLLISION and s.object not in colliding:
+            colliding.add(s.object)
+            found.append(_Collision(s, task))
+        elif step.after < Zone.COLLISION:
+            colliding.discard(s.object)
     return found
 
 
@@ -256,7 +280,8 @@ def _human_trajectory(trace: Trace, timeline: Timeline, context: CaseContext,
     n = context.n_collision
     if n is None:
         return Verdict(requirement, Status.ERROR, f"cannot judge: {context.n_collision_problem}")
-    hits = [c for c in collisions if c.signal.object in context.humans]
+    per_object = _object_collisions(trace.signals, trace.transitions)
+    hits = [c for c in (per_object if per_object is not None else collisions) if c.signal.object in context.humans]
     humans = ", ".join(sorted(context.humans))
     return _decide(
         requirement, violations=[c.evidence("human collision") for c in hits] if len(hits) >= n else [],

@@ -39,7 +39,14 @@ public final class UtilitiesFile {
 			declared.put("utility", utility);
 			CompiledRules.Transition t = transitions.get(signal);
 			if (t != null) {
-				declared.put("transition", Map.of("source", t.source(), "from", t.from(), "to", t.to()));
+				Map<String, Object> transition = new LinkedHashMap<>();
+				transition.put("source", t.source());
+				transition.put("from", t.from());
+				transition.put("to", t.to());
+				if (t.perObject()) {
+					transition.put("per_object", true);
+				}
+				declared.put("transition", transition);
 			}
 			out.put(signal, declared);
 		});

@@ -48,8 +48,11 @@ class UtilitiesOutTest {
 		Outcome o = run("--compile-only", "--patterns", dir.toString(), "--utilities-out", file.toString());
 		assertEquals(0, o.code(), o.err());
 		String json = Files.readString(file);
-		// declaration order, with the zone change the default patterns declare
-		assertTrue(json.startsWith("{\"SIG_GEOM_FAR_TRANSIT_CLOSE\":{\"utility\":-2.0,\"transition\":{"), json);
+		// declaration order (files by name: contacts.vepl first), with the zone changes the default patterns declare
+		assertTrue(json.startsWith("{\"SIG_OBJECT_COLLISION_BEGIN\":{\"utility\":0.0,\"transition\":{"), json);
+		assertTrue(json.contains("\"per_object\":true"), json);
+		assertTrue(json.contains("\"SIG_GEOM_FAR_TRANSIT_CLOSE\":{\"utility\":-2.0,\"transition\":{\"source\":\"GEOM\","
+				+ "\"from\":\"FAR\",\"to\":\"CLOSE\"}}"), json);
 		assertTrue(json.contains("\"SIG_MISSION_TASK_FAIL\":{\"utility\":-100.0}"), json);
 		assertTrue(json.contains("\"SIG_LASER_FAR_TRANSIT_CLOSE\":{\"utility\":null,\"transition\":{"), json);
 		assertTrue(json.endsWith("\"SIG_USER_TASK_STARTED\":{\"utility\":7.0},\"SIG_USER_UNSCORED\":{\"utility\":null}}\n"),
@@ -106,7 +109,7 @@ class UtilitiesOutTest {
 		m.put("SIG_B", 1.5);
 		m.put("SIG_A", null);
 		Map<String, org.rei.vepl.compiler.CompiledRules.Transition> t = Map.of("SIG_A",
-				new org.rei.vepl.compiler.CompiledRules.Transition("LASER", "CLOSE", "FAR"));
+				new org.rei.vepl.compiler.CompiledRules.Transition("LASER", "CLOSE", "FAR", false));
 		String json = UtilitiesFile.json(m, t);
 		assertTrue(json.startsWith("{\"SIG_B\":{\"utility\":1.5},\"SIG_A\":{\"utility\":null,\"transition\":{"), json);
 		assertTrue(json.contains("\"source\":\"LASER\"") && json.contains("\"from\":\"CLOSE\"")

@@ -53,7 +53,7 @@ class WireFuzzTest {
 		try (TestRuns run = new TestRuns()) {
 			valid.forEach(b -> run.monitor.onStateBytes(b, 0, b.length));
 			clean = signalsOf(run);
-			assertEquals(8, clean.size());
+			assertEquals(10, clean.size()); // Table 2's 8 + the wall's per-object collision begin and end
 		}
 		Random random = new Random(7);
 		try (WireFuzzer fuzzer = new WireFuzzer(5_000); TestRuns run = new TestRuns()) {
@@ -111,7 +111,7 @@ class WireFuzzTest {
 				run.monitor.onStateBytes(good, 0, good.length);
 			}
 			assertEquals(Map.of("bad-field", (long) trace.size()), run.monitor.guard().problems());
-			assertEquals(8, run.signals.size());
+			assertEquals(10, run.signals.size());
 		}
 	}
 

@@ -52,7 +52,7 @@ class BadInputTest {
 			assertEquals(3L, problems.get("undecodable-state"));
 			assertEquals(3L, problems.get("empty"));
 			assertEquals(problems.size(), run.log.size(), "one log line per kind: " + run.log);
-			assertEquals(8, run.signals.size(), "the good messages still give every transition");
+			assertEquals(10, run.signals.size(), "the good messages still give every transition (8 + the wall's per-object 2)");
 			assertEquals(281, run.monitor.statesProcessed());
 		}
 	}
@@ -91,7 +91,7 @@ class BadInputTest {
 			}
 			assertEquals(3L, run.monitor.guard().count("out-of-order-state"));
 			assertEquals(281, run.monitor.statesProcessed());
-			assertEquals(8, run.signals.size());
+			assertEquals(10, run.signals.size()); // Table 2's 8 + the wall's per-object collision begin and end
 		}
 	}
 
@@ -109,7 +109,7 @@ class BadInputTest {
 			assertEquals(104 * 0.05, gaps.get(0).t(), 1e-9);
 			assertEquals("state", gaps.get(0).object());
 			assertEquals(4.0, gaps.get(0).distance(), 0);
-			assertEquals(9, run.signals.size());
+			assertEquals(11, run.signals.size()); // 10 + the data gap
 			for (int i = 0; i < run.signals.size(); i++) {
 				assertEquals(i, run.signals.get(i).seq());
 			}

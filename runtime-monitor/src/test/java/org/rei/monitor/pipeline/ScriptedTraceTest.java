@@ -83,7 +83,7 @@ class ScriptedTraceTest {
 			List<Double> times = run.of("SIG_LASER_").stream().map(Signal::t).toList();
 			assertEquals(List.of(8.05, 9.25, 10.10, 11.70), times.stream().map(t -> Math.round(t * 100) / 100.0).toList());
 			assertTrue(run.of("SIG_LASER_").stream().allMatch(s -> s.object().equals("laser")));
-			assertEquals(8, run.signals.size(), run.signals.toString());
+			assertEquals(10, run.signals.size(), run.signals.toString()); // + the wall's per-object begin and end
 		}
 	}
 
@@ -91,7 +91,8 @@ class ScriptedTraceTest {
 	void transitionsFireByRuleNameOncePerChange() {
 		try (TestRuns run = run(Traces.wallApproach())) {
 			assertEquals(List.of("Robot goes from far to close", "Robot goes from close to collision",
-					"Robot goes from collision to close", "Robot goes from close to far"),
+					"Robot starts colliding with an object", "Robot goes from collision to close",
+					"Robot stops colliding with an object", "Robot goes from close to far"),
 					run.firedRules.stream().filter(r -> r.startsWith("Robot")).toList());
 			assertEquals(List.of("Laser starts sensing closeness", "Laser goes from closeness to collision",
 					"Laser goes from collision to closeness", "Laser stops sensing closeness"),
@@ -143,6 +144,23 @@ class ScriptedTraceTest {
 			double collisionFound = run.queryEvents.stream().filter(e -> e.getQuery().equals("collisionWithObject"))
 					.findFirst().orElseThrow().getT();
 			assertEquals(geom.get(1).t(), collisionFound, 0);
+		}
+	}
+
+	@Test
+	void aHumanBumpingARobotThatTouchesAWallIsAPerObjectCollisionAndNoNewRobotLevelOne() {
+		// the human's circle (r 0.25) reaches the robot's west face (x = 6 - 0.281) within the collision threshold
+		DoubleUnaryOperator gap = t -> 6.0 - 2 * Traces.HALF_X - (Traces.bumpingHumanX(t) + 0.25);
+		try (TestRuns run = run(Traces.humanBumpsRobotAtWall())) {
+			// Table 2: the robot is in COLLISION (with the wall) from its first message, and stays there
+			assertEquals(List.of("SIG_GEOM_FAR_TRANSIT_CLOSE", "SIG_GEOM_CLOSE_TRANSIT_COLLISION"), run.names("SIG_GEOM_"));
+			List<Signal> perObject = run.of("SIG_OBJECT_");
+			assertEquals(List.of("SIG_OBJECT_COLLISION_BEGIN wall_east", "SIG_OBJECT_COLLISION_BEGIN h1",
+					"SIG_OBJECT_COLLISION_END h1"), perObject.stream().map(s -> s.signal() + " " + s.object()).toList());
+			List<double[]> exact = crossings(gap, 8); // FAR->CLOSE->COLLISION->CLOSE->FAR of the human alone
+			assertEquals(4, exact.size());
+			assertWithinOneSample(exact.get(1)[0], perObject.get(1));
+			assertWithinOneSample(exact.get(2)[0], perObject.get(2));
 		}
 	}
 

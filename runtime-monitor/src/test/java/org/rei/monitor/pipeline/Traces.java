@@ -95,6 +95,30 @@ final class Traces {
 		return out;
 	}
 
+	/** Human h1's x at time t in {@link #humanBumpsRobotAtWall()}: walks +x along y = 1 to x = 5.6 and back. */
+	static double bumpingHumanX(double t) {
+		return t <= 4 ? 4.0 + 0.4 * t : 5.6 - 0.4 * (t - 4);
+	}
+
+	/**
+	 * The robot stands against the east wall (touching it, a contact as the simulator reports it) for 8 s while
+	 * human h1 walks up to it, bumps it and walks away: the robot is in COLLISION all along, with the wall.
+	 */
+	static List<StateMessage> humanBumpsRobotAtWall() {
+		List<StateMessage> out = new ArrayList<>();
+		double x = 6.0 - HALF_X;
+		for (int k = 0; k <= 160; k++) {
+			double t = k * DT;
+			RobotState robot = new RobotState("tb3", x, 1.0, 0, 0, 0, 0, 0, null, Double.NaN, null, null);
+			double hx = bumpingHumanX(t);
+			ObjectState human = new ObjectState("h1", "HUMAN", hx, 1.0, 0.85, 0, t <= 4 ? 0.4 : -0.4, 0, 0);
+			List<String[]> contacts = new ArrayList<>();
+			contacts.add(new String[] { "tb3", "wall_east" });
+			out.add(new StateMessage(k, t, k == 0, List.of(human), robot, contacts));
+		}
+		return out;
+	}
+
 	// ---- an independent oracle: footprint distances from vertex-to-rectangle distances (convex, disjoint) ----
 
 	/** Distance from point (px, py) to a rectangle of half extents (hx, hy) at (cx, cy) turned by yaw. */

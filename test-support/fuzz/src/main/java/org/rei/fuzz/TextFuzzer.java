@@ -160,7 +160,7 @@ public final class TextFuzzer implements AutoCloseable {
 		if (message == null || message.isBlank()) {
 			throw new AssertionError("an error without a message: " + issue);
 		}
-		int lines = 1 + (int) text.chars().filter(c -> c == '\n').count();
+		int lines = text.split("\r\n|\r|\n", -1).length; // line breaks as Xtext and editors count them
 		if (line == null || line < 1 || line > lines) {
 			throw new AssertionError("error line " + line + " outside 1.." + lines + ": " + issue);
 		}
@@ -171,10 +171,8 @@ public final class TextFuzzer implements AutoCloseable {
 
 	private static int longestLine(String text) {
 		int best = 0;
-		int run = 0;
-		for (int i = 0; i < text.length(); i++) {
-			run = text.charAt(i) == '\n' ? 0 : run + 1;
-			best = Math.max(best, run);
+		for (String line : text.split("\r\n|\r|\n", -1)) {
+			best = Math.max(best, line.length());
 		}
 		return best;
 	}

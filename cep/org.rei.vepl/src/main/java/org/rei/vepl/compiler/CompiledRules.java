@@ -15,8 +15,11 @@ import java.util.Map;
 public record CompiledRules(List<DrlFile> files, Map<String, Double> utilities, Map<String, Transition> transitions,
 		long retentionMillis) {
 
-	/** A change of the robot's zone: {@code source} GEOM or LASER, {@code from}/{@code to} FAR, CLOSE, COLLISION. */
-	public record Transition(String source, String from, String to) {
+	/**
+	 * A change of zone: {@code source} GEOM or LASER, {@code from}/{@code to} FAR, CLOSE, COLLISION; the robot's
+	 * single zone, or {@code perObject} the zone of the signal's object.
+	 */
+	public record Transition(String source, String from, String to, boolean perObject) {
 	}
 
 	/** One generated .drl file. */

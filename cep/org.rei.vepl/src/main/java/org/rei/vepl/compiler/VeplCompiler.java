@@ -52,7 +52,7 @@ public final class VeplCompiler {
 					utilities.put(s.getName(), s.isHasUtility() ? s.getUtility() : null);
 					if (s.isTransition()) {
 						transitions.put(s.getName(), new CompiledRules.Transition(s.getSource().getName(),
-								s.getFrom().getName(), s.getTo().getName()));
+								s.getFrom().getName(), s.getTo().getName(), s.isPerObject()));
 					}
 				}
 			}

@@ -38,7 +38,7 @@ import org.rei.vepl.runtime.QueryEvent;
 public final class Cep implements AutoCloseable {
 
 	static final Set<String> QUERIES = Set.of("a", "b", "c", "d", "robotFar", "robotClose", "robotInCollision",
-			"laserSensesNothingClose", "laserSensesCloseness", "laserSensesCollision");
+			"laserSensesNothingClose", "laserSensesCloseness", "laserSensesCollision", "collisionWithObject");
 
 	final CompiledRules rules;
 	final KieSession session;
