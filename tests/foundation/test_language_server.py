@@ -194,3 +194,47 @@ def test_diagnostics_completion_and_clean_exit(language_server: LspClient, tmp_p
     assert "table1" not in offered and "tb3" not in offered, "only floors stand after 'on'"
 
     assert language_server.stop() == 0
+
+
+HOVER_TEXT = """\
+testcase Hovering {
+  room Lab size 3 x 2 {
+    object table1 : Table on F_1_0
+    robot tb3 : Waffle on F_0_0
+  }
+  mission Go { goto F_2_1 }
+  monitor { close 0.3 collision 0.02 maxHumanCollisions 2 }
+}
+"""
+
+
+def test_hover_tells_where_a_floor_is_what_a_type_measures_and_what_the_thresholds_mean(
+    language_server: LspClient, tmp_path: Path
+) -> None:
+    path = tmp_path / "hovering.rei"
+    path.write_text(HOVER_TEXT, encoding="utf-8")
+    uri = path.as_uri()
+    language_server.request("initialize", {"processId": None, "rootUri": tmp_path.as_uri(), "capabilities": {}},
+                            timeout=START_TIMEOUT_S)
+    language_server.notify("initialized", {})
+    language_server.notify("textDocument/didOpen",
+                           {"textDocument": {"uri": uri, "languageId": "rei", "version": 1, "text": HOVER_TEXT}})
+    lines = HOVER_TEXT.splitlines()
+
+    def hover(line: int, word: str) -> str:
+        character = lines[line].index(word) + 1
+        result = language_server.request("textDocument/hover", {"textDocument": {"uri": uri},
+                                                                "position": {"line": line, "character": character}},
+                                          timeout=START_TIMEOUT_S)
+        assert result is not None, f"no hover on {word!r}"
+        contents = result["contents"]
+        return contents["value"] if isinstance(contents, dict) else str(contents)
+
+    assert "x 2..3 m, y 1..2 m, centre (2.50, 1.50)" in hover(5, "F_2_1")
+    table = hover(2, "Table")
+    assert "Table" in table and "1.2 x 0.8 x 0.75 m" in table and "20 kg" in table, table
+    waffle = hover(3, "Waffle")
+    assert "rad/s" in waffle and "lidar" in waffle, waffle
+    thresholds = hover(6, "close")
+    assert "below `close` 0.3 m" in thresholds and "below `collision` 0.02 m" in thresholds, thresholds
+    assert language_server.stop() == 0

@@ -5,6 +5,7 @@
 package org.rei.dsl;
 
 import org.eclipse.xtext.conversion.IValueConverterService;
+import org.eclipse.xtext.documentation.IEObjectDocumentationProvider;
 import org.eclipse.xtext.validation.CompositeEValidator;
 
 import com.google.inject.Binder;
@@ -13,10 +14,13 @@ import org.eclipse.xtext.linking.ILinkingDiagnosticMessageProvider;
 import org.eclipse.xtext.resource.DerivedStateAwareResource;
 import org.eclipse.xtext.resource.DerivedStateAwareResourceDescriptionManager;
 import org.eclipse.xtext.resource.IDerivedStateComputer;
+import org.eclipse.xtext.resource.ILocationInFileProvider;
 import org.eclipse.xtext.resource.IResourceDescription;
 import org.eclipse.xtext.resource.XtextResource;
 import org.rei.dsl.conversion.ReiValueConverters;
 import org.rei.dsl.derived.RoomDerivedStateComputer;
+import org.rei.dsl.documentation.ReiDocumentationProvider;
+import org.rei.dsl.documentation.ReiLocationInFileProvider;
 import org.rei.dsl.scoping.ReiLinkingDiagnosticMessageProvider;
 
 /** Guice bindings of the REI language (runtime, standalone and language server alike). */
@@ -49,5 +53,14 @@ public class ReiRuntimeModule extends AbstractReiRuntimeModule {
 
 	public Class<? extends ILinkingDiagnosticMessageProvider> bindILinkingDiagnosticMessageProvider() {
 		return ReiLinkingDiagnosticMessageProvider.class;
+	}
+
+	// What an editor's hover shows: floors' places, object types' sizes and masses, the thresholds' meaning.
+	public Class<? extends IEObjectDocumentationProvider> bindIEObjectDocumentationProvider() {
+		return ReiDocumentationProvider.class;
+	}
+
+	public Class<? extends ILocationInFileProvider> bindILocationInFileProvider() {
+		return ReiLocationInFileProvider.class;
 	}
 }

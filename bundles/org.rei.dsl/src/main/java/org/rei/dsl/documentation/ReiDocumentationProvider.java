@@ -1,0 +1,130 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.dsl.documentation;
+
+import java.util.Locale;
+import java.util.Optional;
+
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.xtext.documentation.IEObjectDocumentationProvider;
+import org.rei.catalogue.Lidar;
+import org.rei.catalogue.ObjectType;
+import org.rei.catalogue.RobotType;
+import org.rei.context.ControlPoint;
+import org.rei.context.Environment;
+import org.rei.context.Floor;
+import org.rei.context.Human;
+import org.rei.context.MonitorSpec;
+import org.rei.context.SimulationObject;
+import org.rei.context.StaticObject;
+import org.rei.context.Trajectory;
+import org.rei.context.Wall;
+import org.rei.context.layout.FloorLayout;
+
+/**
+ * What an editor's hover shows (Markdown; the language server sends it as the hover's contents): where a floor
+ * is, what an object type measures and weighs, what a robot type can do, what the monitor's thresholds mean, when
+ * a human passes where. Derived from the model and the catalogue, never stored text.
+ */
+public class ReiDocumentationProvider implements IEObjectDocumentationProvider {
+
+	@Override
+	public String getDocumentation(EObject o) {
+		if (o instanceof Floor f) {
+			return floor(f);
+		}
+		if (o instanceof Wall w) {
+			return "**Wall " + w.getName() + "**" + type(w.getType());
+		}
+		if (o instanceof RobotType r) {
+			return robotType(r);
+		}
+		if (o instanceof ObjectType t) {
+			return objectType(t);
+		}
+		if (o instanceof Human h) {
+			return human(h);
+		}
+		if (o instanceof SimulationObject s) {
+			String where = s instanceof StaticObject so && so.getFloor() != null ? " on " + floorLine(so.getFloor()) : "";
+			return "**" + s.getName() + "**" + where + type(s.getType());
+		}
+		if (o instanceof MonitorSpec m) {
+			return monitor(m);
+		}
+		return null;
+	}
+
+	private static String floor(Floor f) {
+		return "**Floor " + f.getName() + "**: " + floorLine(f);
+	}
+
+	/** "x 2..3 m, y 1..2 m, centre (2.50, 1.50)" from the room's layout, or why it has no place. */
+	static String floorLine(Floor f) {
+		if (!(f.eContainer() instanceof Environment env)) {
+			return "not in a room";
+		}
+		FloorLayout layout = FloorLayout.compute(env);
+		Optional<?> cell = layout.cellOf(f);
+		if (cell.isEmpty()) {
+			return "no place in the room's layout (see the layout errors)";
+		}
+		double[] c = layout.centreOf(f);
+		double h = layout.floorSize() / 2;
+		return String.format(Locale.ROOT, "x %s..%s m, y %s..%s m, centre (%.2f, %.2f)", num(c[0] - h), num(c[0] + h),
+				num(c[1] - h), num(c[1] + h), c[0], c[1]);
+	}
+
+	private static String type(ObjectType t) {
+		return t == null || t.eIsProxy() ? "" : "\n\n" + objectType(t);
+	}
+
+	private static String objectType(ObjectType t) {
+		return String.format(Locale.ROOT, "**%s** (%s): %s %s x %s x %s m, %s kg", t.getName(),
+				t.getCategory().getLiteral(), t.getShape().getLiteral().toLowerCase(Locale.ROOT), num(t.getSizeX()),
+				num(t.getSizeY()), num(t.getSizeZ()), num(t.getMass()));
+	}
+
+	private static String robotType(RobotType r) {
+		StringBuilder b = new StringBuilder(objectType(r));
+		b.append(String.format(Locale.ROOT, "; at most %s m/s and %s rad/s", num(r.getMaxLinearVelocity()),
+				num(r.getMaxAngularVelocity())));
+		Lidar l = r.getLidar();
+		if (l != null) {
+			b.append(String.format(Locale.ROOT, "; lidar %d beams, %s..%s m, %s Hz", l.getBeams(), num(l.getRangeMin()),
+					num(l.getRangeMax()), num(l.getRate())));
+		}
+		return b.toString();
+	}
+
+	private static String human(Human h) {
+		StringBuilder b = new StringBuilder("**Human " + h.getName() + "**");
+		Trajectory t = h.getOwnedTrajectory();
+		if (t != null) {
+			b.append(t.isLoop() ? ", walking in a loop (Catmull-Rom through the points):" : ", walking once:");
+			for (ControlPoint p : t.getOwnedControlPoints()) {
+				if (p.getFloor() != null && !p.getFloor().eIsProxy()) {
+					b.append("\n- at ").append(num(p.getTime())).append(" s on ").append(p.getFloor().getName())
+							.append(": ").append(floorLine(p.getFloor()));
+				}
+			}
+		}
+		return b.append(type(h.getType())).toString();
+	}
+
+	private static String monitor(MonitorSpec m) {
+		return String.format(Locale.ROOT, """
+				**Monitor thresholds** (thesis 5.1.6.2), distances between footprints:
+				- FAR: %s m or more
+				- CLOSE: below `close` %s m
+				- COLLISION: below `collision` %s m, or a contact the simulator reports
+				- MISSION_WITH_HUMAN_TRAJECTORY passes with fewer than `maxHumanCollisions` = %d collisions with humans""",
+				num(m.getEpsClose()), num(m.getEpsClose()), num(m.getEpsCollision()), m.getMaxHumanCollisions());
+	}
+
+	private static String num(double v) {
+		return v == Math.rint(v) && Math.abs(v) < 1e15 ? String.valueOf((long) v) : String.valueOf(v);
+	}
+}
