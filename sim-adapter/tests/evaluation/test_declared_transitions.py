@@ -64,3 +64,14 @@ def test_a_bad_declared_transition_names_the_file_and_the_signal(tmp_path: Path)
                                                                         "to": "CLOSE"}}}))
     with pytest.raises(UtilityError, match=f"{path}: SIG_X: a transition needs source GEOM or LASER"):
         load_declared_transitions(path)
+
+
+def test_a_signal_about_no_object_is_valid_and_one_without_a_subject_is_not() -> None:
+    """The monitor publishes an empty ``object`` when nothing is near (contract/vocabulary.json); the evaluator
+    once refused it as malformed, which turned the verdicts into errors."""
+    from rei.evaluation import Signal, SignalError
+
+    base = {"seq": 0, "t": 1.0, "signal": "SIG_GEOM_CLOSE_TRANSIT_FAR", "subject": "tb3", "distance": 0.3}
+    assert Signal.from_message({**base, "object": ""}).object == ""
+    with pytest.raises(SignalError, match="'subject' must be a non-empty string"):
+        Signal.from_message({**base, "object": "", "subject": ""})
