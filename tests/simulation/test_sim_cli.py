@@ -43,6 +43,8 @@ def test_bad_arguments_exit_two_before_anything_runs(run_cli, repo_root: Path, t
     assert "teleport" in unknown.stderr and "nav" in unknown.stderr
     fault = run_cli("sim", example, "-o", tmp_path / "b", "--fault", "laser:rate=lots")
     assert fault.returncode == 2 and "laser:rate=lots" in fault.stderr
+    animation = run_cli("sim", example, "-o", tmp_path / "d", "--animation", "sideways")
+    assert animation.returncode == 2 and "--animation" in animation.stderr and "force" in animation.stderr
     missing = run_cli("sim", tmp_path / "nope.rei", "-o", tmp_path / "c")
     assert missing.returncode == 2 and "nope.rei" in missing.stderr
 
@@ -52,10 +54,16 @@ def test_a_run_of_a_generated_folder_is_replayed_without_naming_the_case_again(
 ) -> None:
     generated = run_cli("generate", repo_root / "examples" / "simple_navigation.rei", "-o", tmp_path / "gen")
     assert generated.returncode == 0, generated.stderr
-    sim = run_cli("sim", tmp_path / "gen", "-o", tmp_path / "out", "--no-router", "--no-humans")
+    sim = run_cli("sim", tmp_path / "gen", "-o", tmp_path / "out", "--no-router", "--animation", "force")
     assert sim.returncode == 0, sim.stderr
     assert not (tmp_path / "out" / "case").exists()  # the case stayed where it was generated ...
-    assert json.loads((tmp_path / "out" / "sim.json").read_text())["case"] == str((tmp_path / "gen").resolve())
+    summary = json.loads((tmp_path / "out" / "sim.json").read_text())
+    assert summary["case"] == str((tmp_path / "gen").resolve())
+    # the human walked, pushed by forces through the contact solver instead of given velocities
+    assert summary["options"]["animation"] == "force"
+    walker = [o["pose"][0] for m in read_recording(tmp_path / "out" / "streams" / "state.msgpack")
+              for o in m["objects"] if o["name"] == "walker"]
+    assert len(walker) > 100 and max(walker) - min(walker) > 2.0, (min(walker), max(walker))
     replay = run_cli("monitor", "--replay", tmp_path / "out")  # ... and sim.json says where
     assert replay.returncode == 0, replay.stderr
     assert "SIG_MISSION_END" in replay.stdout

@@ -17,6 +17,10 @@ def add_mission_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--no-humans", action="store_true", help="leave the humans out of the world")
     parser.add_argument("--fault", metavar="SPEC", help="inject a fault, e.g. laser:1%%, laser:10%% or "
                         "laser:rate=0.01,gain=0.5,width=3")
+    parser.add_argument("--animation", choices=("velocity", "force"), default="velocity",
+                        help="how humans and moving objects follow their trajectories: velocity (default) sets "
+                        "their velocity each step; force pushes them with F = m dv/dt through the contact solver, "
+                        "so what stands in their way (the robot) is pushed and pushes back")
     parser.add_argument("--realtime", action="store_true", help="pace the simulation at wall-clock speed")
     parser.add_argument("--state-rate", type=float, default=20.0, metavar="HZ",
                         help="state messages per simulated second (default 20)")
@@ -89,6 +93,8 @@ def mission_argv(args: argparse.Namespace) -> list[str]:
         argv += ["--fault", args.fault]
     if args.realtime:
         argv.append("--realtime")
+    if args.animation != "velocity":
+        argv += ["--animation", args.animation]
     if args.sut is not None:
         argv += ["--sut", args.sut]
     if args.sut_attach:

@@ -81,7 +81,7 @@ def run(args: argparse.Namespace) -> int:
     try:
         options = MissionRunOptions(
             controller=args.controller, seed=args.seed, humans=not args.no_humans, fault=args.fault,
-            realtime=args.realtime,
+            animation=args.animation, realtime=args.realtime,
             collector=CollectorConfig(rate_hz=args.state_rate, laser=LaserMode(args.laser)))
     except ValueError as error:
         raise CommandError(str(error)) from None

@@ -43,6 +43,7 @@ class MissionRunOptions:
     seed: int = 0
     humans: bool = True
     fault: str | None = None
+    animation: str = "velocity"  # rei.sim.animator.DriveMode: how humans and moving objects are driven
     realtime: bool = False
     control_rate: float = 10.0
     physics_rate: float = 240.0
@@ -109,7 +110,8 @@ def run_mission(
     executor: MissionExecutor | None = None
     with contextlib.ExitStack() as stack:
         sim = stack.enter_context(Simulation(case, seed=options.seed, physics_rate=options.physics_rate,
-                                             humans=options.humans, fault=options.fault))
+                                             humans=options.humans, fault=options.fault,
+                                             animation_mode=options.animation))
         collector = stack.enter_context(DataCollector(
             run_id, out_dir, config=options.collector, client=client, monitor=_json(case_dir / "monitor.json"),
             world=_json(case_dir / "world.json")))
