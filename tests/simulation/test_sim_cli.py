@@ -45,6 +45,10 @@ def test_bad_arguments_exit_two_before_anything_runs(run_cli, repo_root: Path, t
     assert fault.returncode == 2 and "laser:rate=lots" in fault.stderr
     animation = run_cli("sim", example, "-o", tmp_path / "d", "--animation", "sideways")
     assert animation.returncode == 2 and "--animation" in animation.stderr and "force" in animation.stderr
+    settings = tmp_path / "collector.yaml"
+    settings.write_text("rate_hz: 20\nlaser: some\n")
+    collector = run_cli("sim", example, "-o", tmp_path / "e", "--collector", settings)
+    assert collector.returncode == 2 and f"{settings}:2:8: laser must be full | min | none" in collector.stderr
     missing = run_cli("sim", tmp_path / "nope.rei", "-o", tmp_path / "c")
     assert missing.returncode == 2 and "nope.rei" in missing.stderr
 
@@ -54,16 +58,22 @@ def test_a_run_of_a_generated_folder_is_replayed_without_naming_the_case_again(
 ) -> None:
     generated = run_cli("generate", repo_root / "examples" / "simple_navigation.rei", "-o", tmp_path / "gen")
     assert generated.returncode == 0, generated.stderr
-    sim = run_cli("sim", tmp_path / "gen", "-o", tmp_path / "out", "--no-router", "--animation", "force")
+    collector = tmp_path / "collector.yaml"
+    collector.write_text("rate_hz: 10\nlaser: none\nodometry: false\n")
+    sim = run_cli("sim", tmp_path / "gen", "-o", tmp_path / "out", "--no-router", "--animation", "force",
+                  "--collector", collector)
     assert sim.returncode == 0, sim.stderr
     assert not (tmp_path / "out" / "case").exists()  # the case stayed where it was generated ...
     summary = json.loads((tmp_path / "out" / "sim.json").read_text())
     assert summary["case"] == str((tmp_path / "gen").resolve())
     # the human walked, pushed by forces through the contact solver instead of given velocities
     assert summary["options"]["animation"] == "force"
-    walker = [o["pose"][0] for m in read_recording(tmp_path / "out" / "streams" / "state.msgpack")
-              for o in m["objects"] if o["name"] == "walker"]
+    states = read_recording(tmp_path / "out" / "streams" / "state.msgpack")
+    walker = [o["pose"][0] for m in states for o in m["objects"] if o["name"] == "walker"]
     assert len(walker) > 100 and max(walker) - min(walker) > 2.0, (min(walker), max(walker))
+    # the collector's settings came from the file: 10 states per simulated second, no laser, no odometry
+    assert abs(len(states) - 10 * summary["sim_time"]) <= 2
+    assert not any("laser_min" in m["robot"] or "odom" in m["robot"] for m in states)
     replay = run_cli("monitor", "--replay", tmp_path / "out")  # ... and sim.json says where
     assert replay.returncode == 0, replay.stderr
     assert "SIG_MISSION_END" in replay.stdout

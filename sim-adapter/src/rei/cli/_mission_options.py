@@ -4,10 +4,12 @@
 from __future__ import annotations
 
 import argparse
+import dataclasses
 from pathlib import Path
 
 from rei.cli.errors import CommandError
 from rei.sut.external.options import DEFAULT_DEADLINE, DEFAULT_JOIN_TIMEOUT, SutOptions
+from rei.wamp.collector import CollectorConfig
 
 
 def add_mission_options(parser: argparse.ArgumentParser) -> None:
@@ -22,10 +24,13 @@ def add_mission_options(parser: argparse.ArgumentParser) -> None:
                         "their velocity each step; force pushes them with F = m dv/dt through the contact solver, "
                         "so what stands in their way (the robot) is pushed and pushes back")
     parser.add_argument("--realtime", action="store_true", help="pace the simulation at wall-clock speed")
-    parser.add_argument("--state-rate", type=float, default=20.0, metavar="HZ",
-                        help="state messages per simulated second (default 20)")
-    parser.add_argument("--laser", choices=("min", "full", "none"), default="min",
+    parser.add_argument("--state-rate", type=float, metavar="HZ",
+                        help="state messages per simulated second (default 20, or the --collector file's)")
+    parser.add_argument("--laser", choices=("min", "full", "none"),
                         help="laser data in state messages: the minimum only (default), every range, or none")
+    parser.add_argument("--collector", type=Path, metavar="FILE",
+                        help="the data collector's settings (YAML: rate_hz, laser, contacts, odometry, nav_state, "
+                        "full_frame_period; docs/protocol.md); --state-rate and --laser override them")
     sut = parser.add_argument_group("external system under test (docs/sut.md)")
     how = sut.add_mutually_exclusive_group()
     how.add_argument("--sut", metavar="COMMAND", help="start COMMAND as the system under test (instead of "
@@ -55,8 +60,25 @@ def check_mission_options(args: argparse.Namespace) -> None:
         create_controller(args.controller)
     except (ValueError, UnknownControllerError) as error:
         raise CommandError(str(error)) from None
-    if not args.state_rate > 0:
+    if args.state_rate is not None and not args.state_rate > 0:
         raise CommandError(f"--state-rate must be positive, got {args.state_rate}")
+    collector_config(args)
+
+
+def collector_config(args: argparse.Namespace) -> CollectorConfig:
+    """The collector's settings: the --collector file's (or the defaults), then --state-rate and --laser."""
+    from rei.wamp.codec import LaserMode
+    from rei.wamp.collector_settings import CollectorSettingsError, load_collector_settings
+
+    try:
+        config = load_collector_settings(args.collector) if args.collector is not None else CollectorConfig()
+    except CollectorSettingsError as error:
+        raise CommandError(str(error)) from None
+    if args.state_rate is not None:
+        config = dataclasses.replace(config, rate_hz=args.state_rate)
+    if args.laser is not None:
+        config = dataclasses.replace(config, laser=LaserMode(args.laser))
+    return config
 
 
 def sut_options(args: argparse.Namespace, *, router_url: str | None = None,
@@ -85,8 +107,13 @@ def sut_options(args: argparse.Namespace, *, router_url: str | None = None,
 
 def mission_argv(args: argparse.Namespace) -> list[str]:
     """The same options as arguments for a `rei sim` child process."""
-    argv = ["--controller", args.controller, "--seed", str(args.seed), "--state-rate", str(args.state_rate),
-            "--laser", args.laser]
+    argv = ["--controller", args.controller, "--seed", str(args.seed)]
+    if args.state_rate is not None:
+        argv += ["--state-rate", str(args.state_rate)]
+    if args.laser is not None:
+        argv += ["--laser", args.laser]
+    if args.collector is not None:
+        argv += ["--collector", str(args.collector.resolve())]
     if args.no_humans:
         argv.append("--no-humans")
     if args.fault:

@@ -16,7 +16,12 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from rei.cli._case import case_folder, prepare_output, valid_run_id
-from rei.cli._mission_options import add_mission_options, check_mission_options, mission_argv
+from rei.cli._mission_options import (
+    add_mission_options,
+    check_mission_options,
+    collector_config,
+    mission_argv,
+)
 from rei.cli._outcome import print_verdicts, write_views
 from rei.cli._router_options import add_router_options, check_router_options
 from rei.cli.errors import CommandError
@@ -74,7 +79,7 @@ def run(args: argparse.Namespace) -> int:
 
     options = PipelineOptions(sim_args=tuple(mission_argv(args)), external_sut=args.sut is not None or args.sut_attach,
                               utilities=args.utilities,
-                              humans=not args.no_humans, laser=args.laser != "none", view=args.view,
+                              humans=not args.no_humans, laser=collector_config(args).laser.value != "none", view=args.view,
                               bind=args.bind, tls_cert=_path(args.tls_cert), tls_key=_path(args.tls_key),
                               patterns=patterns, declared=declared)
     result = run_pipeline(case_dir, out, options,

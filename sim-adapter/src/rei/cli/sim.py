@@ -20,7 +20,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from rei.cli._case import case_folder, prepare_output, valid_run_id
-from rei.cli._mission_options import add_mission_options, check_mission_options, sut_options
+from rei.cli._mission_options import add_mission_options, check_mission_options, collector_config, sut_options
 from rei.cli._router_options import add_router_options, check_router_options
 from rei.cli.errors import EXIT_INVALID, EXIT_OK, EXIT_RUN_ERROR, CommandError
 from rei.lifetime import sigterm_unwinds
@@ -71,9 +71,6 @@ def run(args: argparse.Namespace) -> int:
     # Heavy imports here, so `rei --help` stays fast.
     from rei.artifacts import ArtifactError
     from rei.run import MissionRunOptions, run_mission
-    from rei.wamp.codec import LaserMode
-    from rei.wamp.collector import CollectorConfig
-
     check_mission_options(args)
     _check_router_options(args)
     out = Path(args.output).resolve()  # children and the router run in other working directories
@@ -81,8 +78,7 @@ def run(args: argparse.Namespace) -> int:
     try:
         options = MissionRunOptions(
             controller=args.controller, seed=args.seed, humans=not args.no_humans, fault=args.fault,
-            animation=args.animation, realtime=args.realtime,
-            collector=CollectorConfig(rate_hz=args.state_rate, laser=LaserMode(args.laser)))
+            animation=args.animation, realtime=args.realtime, collector=collector_config(args))
     except ValueError as error:
         raise CommandError(str(error)) from None
     case_dir = case_folder(Path(args.case), out)

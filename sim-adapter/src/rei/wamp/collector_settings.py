@@ -1,0 +1,81 @@
+# SPDX-License-Identifier: EPL-2.0
+"""Collector settings from a YAML file (thesis 5.1.4: which fields, at which rate): ``rei sim|run --collector
+FILE``. Every key is optional; what is left out keeps its default::
+
+    rate_hz: 20            # state messages per simulated second (0: every physics step)
+    laser: min             # min | full | none
+    contacts: true         # the simulator's contact pairs
+    odometry: true         # the robot's odometry pose
+    nav_state: true        # the navigation's state (IDLE, ACTIVE, ...)
+    full_frame_period: 1.0 # seconds between full frames (every static object again); 0: the first only
+
+A problem names the file, the line and column, and what was expected: a typo must not silently run with a
+default.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+from rei.wamp.codec import LaserMode
+from rei.wamp.collector import CollectorConfig
+
+
+class CollectorSettingsError(ValueError):
+    """The file cannot be used; the message names it, the line and column, and what was expected."""
+
+
+_KINDS: dict[str, str] = {"rate_hz": "number", "laser": "laser", "contacts": "bool", "odometry": "bool",
+                          "nav_state": "bool", "full_frame_period": "number"}
+
+
+def load_collector_settings(path: Path) -> CollectorConfig:
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError as error:
+        raise CollectorSettingsError(f"{path}: cannot read the collector settings: {error.strerror or error}") \
+            from None
+    try:
+        root = yaml.compose(text)
+    except yaml.YAMLError as error:
+        raise CollectorSettingsError(f"{path}: not valid YAML: {error}") from None
+    if root is None:
+        return CollectorConfig()
+    if not isinstance(root, yaml.MappingNode):
+        raise CollectorSettingsError(f"{_at(path, root)}: expected a mapping of settings ({', '.join(_KINDS)})")
+    values: dict[str, Any] = {}
+    for key_node, value_node in root.value:
+        key = key_node.value
+        if key not in _KINDS:
+            raise CollectorSettingsError(f"{_at(path, key_node)}: unknown setting {key!r} (expected one of "
+                                         f"{', '.join(_KINDS)})")
+        values[key] = _value(path, key, value_node)
+    try:
+        return CollectorConfig(**values)
+    except ValueError as error:
+        raise CollectorSettingsError(f"{path}: {error}") from None
+
+
+def _value(path: Path, key: str, node: yaml.Node) -> Any:
+    value = yaml.safe_load(yaml.serialize(node)) if isinstance(node, yaml.ScalarNode) else None
+    kind = _KINDS[key]
+    if kind == "bool" and isinstance(value, bool):
+        return value
+    if kind == "number" and isinstance(value, int | float) and not isinstance(value, bool) \
+            and math.isfinite(value) and value >= 0:
+        return float(value)
+    if kind == "laser" and value in {mode.value for mode in LaserMode}:
+        return LaserMode(value)
+    expected = {"bool": "true or false", "number": "a finite number >= 0",
+                "laser": " | ".join(mode.value for mode in LaserMode)}[kind]
+    got = repr(node.value) if isinstance(node, yaml.ScalarNode) else \
+        "a list" if isinstance(node, yaml.SequenceNode) else "a mapping"
+    raise CollectorSettingsError(f"{_at(path, node)}: {key} must be {expected}, got {got}")
+
+
+def _at(path: Path, node: yaml.Node) -> str:
+    return f"{path}:{node.start_mark.line + 1}:{node.start_mark.column + 1}"
