@@ -16,8 +16,7 @@ import os
 from pathlib import Path
 from typing import Any
 
-#: Wall seconds a tick waits for the stack's /cmd_vel (the default of Ros2BridgeSettings.cmd_wait).
-CMD_WAIT = 0.25
+from rei.sut.ros_conventions import CMD_WAIT
 
 
 def register(subparsers: argparse._SubParsersAction[Any]) -> None:

@@ -13,6 +13,8 @@ from dataclasses import dataclass
 from rei.sut.api import NavStatus
 
 TIME_OFFSET_NS = 1000 * 10**9
+#: Wall seconds a bridge's tick waits for the stack's /cmd_vel (--cmd-wait of both bridges).
+CMD_WAIT = 0.25
 
 
 def ros_nanoseconds(t: float) -> int:

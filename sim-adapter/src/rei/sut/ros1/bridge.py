@@ -1,9 +1,8 @@
 # SPDX-License-Identifier: EPL-2.0
 """The bridge node: REI's external SUT on one side, the robot a ROS 1 navigation stack expects on the other.
 
-Per control period (REI's tick) it publishes /odom, /tf and (when new) /scan stamped with the tick's time, then
-/clock, and waits up to ``cmd_wait`` wall seconds for the stack's next /cmd_vel, which answers the tick (without
-one, the last command stays, as on a robot base). The stack runs on ``use_sim_time``, so its timers advance only
+Per control period (REI's tick, rei.sut.ros_bridge) it publishes /odom, /tf and (when new) /scan stamped with the
+tick's time, then /clock, and waits for the stack's next /cmd_vel. The stack runs on ``use_sim_time``, so its timers advance only
 with this clock: simulation and stack move in lockstep, as fast as the stack answers. REI's goals become goals of
 the ``move_base`` action, whose feedback and result become the goal status REI judges.
 
@@ -25,33 +24,24 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from rei.geometry import Twist2D
 from rei.processes import ManagedProcess
 from rei.sut.api import NavGoal, NavStatus
-from rei.sut.client import (
-    EXIT_CALLBACK,
-    EXIT_CONNECTION,
-    Session,
-    SutConnectionError,
-    SystemUnderTest,
-    Tick,
-    run,
-)
+from rei.sut.client import EXIT_CONNECTION, Session, SutConnectionError, Tick
 from rei.sut.ros1.environment import RosUnavailableError, import_rospy, ros_environment
-from rei.sut.ros_conventions import ACTIONLIB_FINAL
-
-#: Wall seconds the bridge waits for the move_base action server once the map is out (the stack's start-up).
-SERVER_TIMEOUT = 60.0
-#: Wall seconds a new goal may take to become ACTIVE before the next /clock goes out anyway.
-ACCEPT_TIMEOUT = 1.0
-#: Simulation seconds before t = 0 of the clock the stack starts with (one control period).
-PRE_START = 0.1
-STACK_LOG = "stack.log"
+from rei.sut.ros_bridge import (
+    ACCEPT_TIMEOUT,
+    PRE_START,
+    SERVER_TIMEOUT,
+    STACK_LOG,
+    RosBridge,
+    run_bridge,
+)
+from rei.sut.ros_conventions import ACTIONLIB_FINAL, CMD_WAIT
 
 
 @dataclass(frozen=True, slots=True)
 class BridgeSettings:
-    cmd_wait: float = 0.25  # wall seconds a tick waits for the stack's /cmd_vel (rei.cli.ros1_bridge.CMD_WAIT)
+    cmd_wait: float = CMD_WAIT  # wall seconds a tick waits for the stack's /cmd_vel
     action: str = "move_base"
     scan_topic: str = "/scan"
     odom_topic: str = "/odom"
@@ -59,25 +49,19 @@ class BridgeSettings:
     map_topic: str = "/map"
 
 
-class Ros1Bridge(SystemUnderTest):
+class Ros1Bridge(RosBridge):
     """The SUT callbacks in ROS terms; ``stack`` is the started navigation stack (watched each tick)."""
 
     def __init__(self, settings: BridgeSettings, stack: ManagedProcess | None) -> None:
-        super().__init__()
+        super().__init__(settings.cmd_wait, stack)
         import_rospy()
         from rei.sut.ros1 import messages
 
         self.m = messages
         self.settings = settings
         self.frames = messages.Frames()
-        self.stack = stack
-        self._lock = threading.Condition()
-        self._command: Twist2D | None = None  # the latest /cmd_vel
-        self._commands = 0  # /cmd_vel messages received
-        self._outcome: dict[int, tuple[NavStatus, str]] = {}  # goal id -> what the action reported last
         self._with_map = False
         self._scan_time = 0.1
-        self._t = 0.0  # the current tick's time: goals are stamped with it
 
     # -- SystemUnderTest ---------------------------------------------------------------------------------------
 
@@ -119,23 +103,14 @@ class Ros1Bridge(SystemUnderTest):
         self._action.cancel_goal()
         self.report(NavStatus.CANCELLED, "cancelled by the client")
 
-    def on_tick(self, tick: Tick) -> Twist2D:
-        self._check_stack()
-        self._t = tick.t
+    def publish_sensors(self, tick: Tick) -> None:
         self._odom.publish(self.m.odometry(tick.t, tick.odom, tick.observation.odom_twist, self.frames))
         self._tf.publish(self.m.transforms(tick.t, tick.odom, self.frames, with_map=self._with_map))
         if tick.new_scan and tick.scan is not None:
             self._scan.publish(self.m.laser_scan(tick.scan, self._scan_time, self.frames))
-        with self._lock:
-            seen = self._commands
-        self._clock.publish(self.m.clock(tick.t))
-        with self._lock:
-            self._lock.wait_for(lambda: self._commands > seen, timeout=self.settings.cmd_wait)
-            command = self._command
-            outcome = self._outcome.get(self.goal.index) if self.goal is not None else None
-        if outcome is not None and self.status is NavStatus.ACTIVE:
-            self.report(*outcome)
-        return command if command is not None else Twist2D()
+
+    def publish_clock(self, t: float) -> None:
+        self._clock.publish(self.m.clock(t))
 
     def on_end(self, reason: str) -> None:
         with contextlib.suppress(Exception):
@@ -160,33 +135,22 @@ class Ros1Bridge(SystemUnderTest):
         waiter.start()
         deadline = time.monotonic() + SERVER_TIMEOUT
         while not found.wait(0.1):
-            self._check_stack()
+            self.check_stack()
             if time.monotonic() > deadline:
                 raise SutConnectionError(f"no {self.settings.action} action server within {SERVER_TIMEOUT:g} s: the "
                                          "stack must serve move_base_msgs/MoveBaseAction")
 
-    def _check_stack(self) -> None:
-        stack = self.stack
-        if stack is not None and stack.poll() is not None:
-            raise SutConnectionError(f"the ROS {stack.describe_exit()}; last lines of {stack.log}:\n"
-                                     f"{stack.log_tail(10)}")
-
     def _on_cmd_vel(self, message: Any) -> None:  # a rospy thread
-        with self._lock:
-            self._command = self.m.command(message)
-            self._commands += 1
-            self._lock.notify_all()
+        self.command_received(self.m.command(message))
 
-    def _on_feedback(self, goal_id: int, feedback: Any) -> None:  # a rospy thread
+    def _on_feedback(self, goal_index: int, feedback: Any) -> None:  # a rospy thread
         position = feedback.base_position.pose.position
-        with self._lock:
-            self._outcome[goal_id] = (NavStatus.ACTIVE, f"move_base at ({position.x:.2f}, {position.y:.2f})")
+        self.outcome_received(goal_index, NavStatus.ACTIVE, f"move_base at ({position.x:.2f}, {position.y:.2f})")
 
-    def _on_done(self, goal_id: int, state: int, result: Any) -> None:  # a rospy thread
+    def _on_done(self, goal_index: int, state: int, result: Any) -> None:  # a rospy thread
         status = ACTIONLIB_FINAL.get(state, NavStatus.ABORTED)
         text = self._action.get_goal_status_text()  # what the server gave set_aborted(text=...) and the like
-        with self._lock:
-            self._outcome[goal_id] = (status, f"{self.settings.action}: {text}" if text else self.settings.action)
+        self.outcome_received(goal_index, status, f"{self.settings.action}: {text}" if text else self.settings.action)
 
 
 def main(command: list[str], *, ros_home: Path, master_uri: str | None, settings: BridgeSettings) -> int:
@@ -220,13 +184,4 @@ def _bridge(command: list[str], home: Path, master_uri: str | None, settings: Br
                   flush=True)
             bridge.stack = ManagedProcess("navigation stack", command, home / STACK_LOG, env=env)
             stack.callback(bridge.stack.stop, 5.0)
-        try:
-            run(bridge, name=f"rei ros1-bridge {shlex.join(command)}")
-        except SutConnectionError:
-            raise
-        except Exception:  # noqa: BLE001 - the bridge's own bug: say where
-            import traceback
-
-            traceback.print_exc()
-            return EXIT_CALLBACK
-    return 0
+        return run_bridge(bridge, "rei ros1-bridge", command)

@@ -2,9 +2,8 @@
 """The ROS 2 bridge node: REI's external SUT on one side, on the other the robot a ROS 2 navigation stack (Nav2 on
 rmw_cyclonedds) expects, on plain DDS - no ROS 2 installation is needed on REI's side.
 
-Per control period (REI's tick) it publishes /odom, /tf and (when new) /scan stamped with the tick's time, then
-/clock, and waits up to ``cmd_wait`` wall seconds for the stack's next /cmd_vel, which answers the tick (without
-one, the last command stays, as on a robot base). The stack's nodes run with ``use_sim_time``, so their timers
+Per control period (REI's tick, rei.sut.ros_bridge) it publishes /odom, /tf and (when new) /scan stamped with the
+tick's time, then /clock, and waits for the stack's next /cmd_vel. The stack's nodes run with ``use_sim_time``, so their timers
 advance only with this clock: simulation and stack move in lockstep. REI's goals become goals of nav2's
 NavigateToPose action (``rei.sut.ros2.action``); their final state on the action's status topic becomes the goal
 status REI judges. Until the action server is there, the start clock is repeated (a volatile /clock reaches only
@@ -20,50 +19,43 @@ import contextlib
 import os
 import shlex
 import sys
-import threading
 import time
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from rei.geometry import Twist2D
 from rei.processes import ManagedProcess
 from rei.sut.api import NavGoal, NavStatus
-from rei.sut.client import (
-    EXIT_CALLBACK,
-    EXIT_CONNECTION,
-    Session,
-    SutConnectionError,
-    SystemUnderTest,
-    Tick,
-    run,
+from rei.sut.client import EXIT_CONNECTION, Session, SutConnectionError, Tick
+from rei.sut.ros_bridge import (
+    ACCEPT_TIMEOUT,
+    PRE_START,
+    SERVER_TIMEOUT,
+    STACK_LOG,
+    RosBridge,
+    run_bridge,
 )
-from rei.sut.ros_conventions import Frames
+from rei.sut.ros_conventions import CMD_WAIT, Frames
 
-#: Wall seconds the bridge waits for the NavigateToPose server once the map is out (the stack's start-up).
-SERVER_TIMEOUT = 60.0
-#: Wall seconds a new goal may take to be accepted before the next /clock goes out anyway.
-ACCEPT_TIMEOUT = 1.0
-#: Simulation seconds before t = 0 of the clock the stack starts with (one control period).
-PRE_START = 0.1
 #: Wall seconds between repetitions of the start clock while the stack comes up.
 START_CLOCK_PERIOD = 0.2
-STACK_LOG = "stack.log"
 
 
 @dataclass(frozen=True, slots=True)
 class Ros2BridgeSettings:
-    cmd_wait: float = 0.25  # wall seconds a tick waits for the stack's /cmd_vel (rei.cli.ros2_bridge.CMD_WAIT)
+    cmd_wait: float = CMD_WAIT  # wall seconds a tick waits for the stack's /cmd_vel
     action: str = "navigate_to_pose"
     domain: int = 0
     tag: str = "rei"  # Cyclone's discovery tag: the run's own (rei.sut.ros2.environment.run_tag)
 
 
-class Ros2Bridge(SystemUnderTest):
+class Ros2Bridge(RosBridge):
     """The SUT callbacks in ROS 2 terms over DDS; ``stack`` is the started navigation stack (watched each tick)."""
 
+    middleware = "ROS 2"
+
     def __init__(self, settings: Ros2BridgeSettings, participant: Any, stack: ManagedProcess | None = None) -> None:
-        super().__init__()
+        super().__init__(settings.cmd_wait, stack)
         from cyclonedds.pub import DataWriter
         from cyclonedds.topic import Topic
 
@@ -72,16 +64,11 @@ class Ros2Bridge(SystemUnderTest):
         self.m = messages
         self.settings = settings
         self.frames = Frames()
-        self.stack = stack
         self._participant = participant
-        self._lock = threading.Condition()
-        self._command: Twist2D | None = None  # the latest /cmd_vel
-        self._commands = 0  # /cmd_vel messages received
         self._goals: dict[int, bytes] = {}  # REI's goal index -> the action's goal id
-        self._outcome: dict[bytes, tuple[NavStatus, str]] = {}  # goal id -> final state
+        self._index_of: dict[bytes, int] = {}  # and back, for the status topic's DDS thread
         self._with_map = False
         self._scan_time = 0.1
-        self._t = 0.0  # the current tick's time: goals are stamped with it
         self._writers = {key: DataWriter(participant, Topic(participant, topic.dds_name, topic.type), qos=topic.qos)
                          for key, topic in messages.TOPICS.items() if topic.to_stack}
         self._writers["clock"].write(messages.clock(-PRE_START))
@@ -110,6 +97,7 @@ class Ros2Bridge(SystemUnderTest):
 
         goal_id = new_goal_id()
         self._goals[goal.index] = bytes(goal_id.uuid)
+        self._index_of[bytes(goal_id.uuid)] = goal.index
         accepted = self._action.send(goal_id, self.m.navigate_goal(self._t, goal, self.frames), ACCEPT_TIMEOUT)
         if accepted is False:
             self.report(NavStatus.ABORTED, f"{self.settings.action} rejected the goal")
@@ -121,25 +109,15 @@ class Ros2Bridge(SystemUnderTest):
         self._cancel(goal.index)
         self.report(NavStatus.CANCELLED, "cancelled by the client")
 
-    def on_tick(self, tick: Tick) -> Twist2D:
-        self._check_stack()
-        self._t = tick.t
+    def publish_sensors(self, tick: Tick) -> None:
         w, m = self._writers, self.m
         w["odom"].write(m.odometry(tick.t, tick.odom, tick.observation.odom_twist, self.frames))
         w["tf"].write(m.transforms(tick.t, tick.odom, self.frames, with_map=self._with_map))
         if tick.new_scan and tick.scan is not None:
             w["scan"].write(m.laser_scan(tick.scan, self._scan_time, self.frames))
-        with self._lock:
-            seen = self._commands
-        w["clock"].write(m.clock(tick.t))
-        with self._lock:
-            self._lock.wait_for(lambda: self._commands > seen, timeout=self.settings.cmd_wait)
-            command = self._command
-            goal_id = self._goals.get(self.goal.index) if self.goal is not None else None
-            outcome = self._outcome.get(goal_id) if goal_id is not None else None
-        if outcome is not None and self.status is NavStatus.ACTIVE:
-            self.report(*outcome)
-        return command if command is not None else Twist2D()
+
+    def publish_clock(self, t: float) -> None:
+        self._writers["clock"].write(self.m.clock(t))
 
     def on_end(self, reason: str) -> None:
         if self.goal is not None and self.status is NavStatus.ACTIVE:
@@ -159,7 +137,7 @@ class Ros2Bridge(SystemUnderTest):
         """Until the stack's NavigateToPose server is discovered, in wall time, repeating the start clock."""
         deadline = time.monotonic() + SERVER_TIMEOUT
         while not self._action.server_ready():
-            self._check_stack()
+            self.check_stack()
             if time.monotonic() > deadline:
                 raise SutConnectionError(
                     f"no {self.settings.action} action server within {SERVER_TIMEOUT:g} s: the stack must serve "
@@ -168,23 +146,15 @@ class Ros2Bridge(SystemUnderTest):
             self._writers["clock"].write(self.m.clock(-PRE_START))
             time.sleep(START_CLOCK_PERIOD)
 
-    def _check_stack(self) -> None:
-        stack = self.stack
-        if stack is not None and stack.poll() is not None:
-            raise SutConnectionError(f"the ROS 2 {stack.describe_exit()}; last lines of {stack.log}:\n"
-                                     f"{stack.log_tail(10)}")
-
     def _on_cmd_vel(self, reader: Any) -> None:  # a DDS thread
         commands = [self.m.command(message) for message in reader.take(N=64) if hasattr(message, "linear")]
         if commands:
-            with self._lock:
-                self._command = commands[-1]
-                self._commands += len(commands)
-                self._lock.notify_all()
+            self.command_received(commands[-1], len(commands))
 
     def _on_final(self, goal_id: bytes, status: NavStatus) -> None:  # a DDS thread
-        with self._lock:
-            self._outcome[goal_id] = (status, self.settings.action)
+        index = self._index_of.get(goal_id)
+        if index is not None:  # else a goal of another client of the same server
+            self.outcome_received(index, status, self.settings.action)
 
 
 def main(command: list[str], *, ros_home: Path, settings: Ros2BridgeSettings) -> int:
@@ -213,14 +183,6 @@ def _bridge(command: list[str], home: Path, settings: Ros2BridgeSettings) -> int
             env = ros2_environment(settings.domain, config, home, os.environ)
             bridge.stack = ManagedProcess("navigation stack", command, home / STACK_LOG, env=env)
             stack.callback(bridge.stack.stop, 5.0)
-        try:
-            run(bridge, name=f"rei ros2-bridge {shlex.join(command)}")
-        except SutConnectionError:
-            raise
-        except Exception:  # noqa: BLE001 - the bridge's own bug: say where
-            import traceback
-
-            traceback.print_exc()
-            return EXIT_CALLBACK
+        code = run_bridge(bridge, "rei ros2-bridge", command)
     del participant, domain
-    return 0
+    return code
