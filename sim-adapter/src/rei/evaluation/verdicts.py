@@ -197,26 +197,11 @@ class _Collision:
                         self.signal.signal, self.signal.object, self.task)
 
 
-def _collisions(signals: tuple[Signal, ...], transitions: Mapping[str, Transition]) -> list[_Collision]:
-    """Geometric entries into COLLISION, each with the task running then (by the mission signals)."""
-    found: list[_Collision] = []
-    task: int | None = None
-    for s in signals:
-        if s.signal == SIG_MISSION_TASK_START:
-            task = s.task_index
-        elif s.signal in (SIG_MISSION_TASK_SUCCESS, SIG_MISSION_TASK_FAIL):
-            task = None
-        step = transitions.get(s.signal)
-        if step is not None and not step.per_object and step.source == Source.GEOM and step.after == Zone.COLLISION:
-            found.append(_Collision(s, task))
-    return found
-
-
-def _object_collisions(signals: tuple[Signal, ...], transitions: Mapping[str, Transition]) -> list[_Collision] | None:
-    """Geometric entries into COLLISION per object (a second object while the robot already collides counts too),
-    with the task running then; None when the run's rules publish no per-object signal (hand-written rules)."""
-    if not any(s.signal in transitions and transitions[s.signal].per_object for s in signals):
-        return None
+def _collisions(signals: tuple[Signal, ...], transitions: Mapping[str, Transition], *,
+                per_object: bool = False) -> list[_Collision]:
+    """Geometric entries into COLLISION, each with the task running then (by the mission signals): the robot's
+    (Table 2), or with ``per_object`` each object's, where a second object while the robot already collides counts
+    too and an object's repeated entry does not."""
     found: list[_Collision] = []
     task: int | None = None
     colliding: set[str] = set()
@@ -226,14 +211,21 @@ def _object_collisions(signals: tuple[Signal, ...], transitions: Mapping[str, Tr
         elif s.signal in (SIG_MISSION_TASK_SUCCESS, SIG_MISSION_TASK_FAIL):
             task = None
         step = transitions.get(s.signal)
-        if step is None or not step.per_object or step.source != Source.GEOM:
+        if step is None or step.per_object != per_object or step.source != Source.GEOM:
             continue
-        if step.after == Zone.COLLISION and s.object not in colliding:
+        if step.after == Zone.COLLISION and not (per_object and s.object in colliding):
             colliding.add(s.object)
             found.append(_Collision(s, task))
         elif step.after < Zone.COLLISION:
             colliding.discard(s.object)
     return found
+
+
+def _object_collisions(signals: tuple[Signal, ...], transitions: Mapping[str, Transition]) -> list[_Collision] | None:
+    """The per-object collisions; None when the run's rules publish no per-object signal (hand-written rules)."""
+    if not any(s.signal in transitions and transitions[s.signal].per_object for s in signals):
+        return None
+    return _collisions(signals, transitions, per_object=True)
 
 
 def _no_collision(requirement: str, trace: Trace, timeline: Timeline, collisions: list[_Collision],
