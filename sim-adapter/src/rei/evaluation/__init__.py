@@ -3,9 +3,9 @@
 
 Semantics and file formats: docs/evaluation.md. Typical use (``rei run``)::
 
-    declared = out / "utilities.json"  # what the monitor's patterns declare of their signals
-    evaluator = Evaluator(out, utilities=load_utilities(path, load_declared_utilities(declared)),
-                          transitions=load_declared_transitions(declared), mission_info=None,
+    declared = load_declared(out / "utilities.json")  # what the monitor's patterns declare of their signals
+    evaluator = Evaluator(out, utilities=load_utilities(path, declared.utilities),
+                          transitions=declared.transitions, mission_info=None,
                           monitor_config=monitor_json, world=world_json)
     attach(client, run_id, evaluator)              # live; or replay(signals, evaluator) offline
     ...                                            # evaluator.total for progress
@@ -22,9 +22,11 @@ from rei.evaluation.signals import KNOWN_SIGNALS, Signal, SignalError
 from rei.evaluation.summary import Summary, TaskRecord
 from rei.evaluation.utilities import (
     DEFAULT_UTILITIES,
+    Declared,
     UtilityError,
     UtilityTable,
     default_utilities,
+    load_declared,
     load_declared_transitions,
     load_declared_utilities,
     load_utilities,
@@ -40,6 +42,7 @@ __all__ = [
     "SUMMARY_FILE",
     "VERDICTS_FILE",
     "Attachment",
+    "Declared",
     "Evaluator",
     "EventLog",
     "Evidence",
@@ -57,6 +60,7 @@ __all__ = [
     "attach",
     "default_utilities",
     "judge",
+    "load_declared",
     "load_declared_transitions",
     "load_declared_utilities",
     "load_utilities",

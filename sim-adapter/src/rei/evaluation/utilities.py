@@ -27,6 +27,7 @@ import json
 import math
 import os
 from collections.abc import Iterator, Mapping
+from dataclasses import dataclass
 from pathlib import Path
 from types import MappingProxyType
 from typing import Any
@@ -133,35 +134,46 @@ def load_utilities(path: str | os.PathLike[str] | None = None,
     return UtilityTable(values, source=" + ".join((*sources, str(path))) if declared is not None else str(path))
 
 
-def load_declared_utilities(path: str | os.PathLike[str]) -> dict[str, float | None]:
-    """The utilities of the monitor's ``--utilities-out`` file (what the patterns declare of each signal:
-    ``{"SIG_X": {"utility": -2.0, "transition": {...}}, "SIG_Y": {"utility": null}}``; null: none declared). A file
-    of the earlier shape, ``{"SIG_X": -2.0}``, is read too.
+@dataclass(frozen=True, slots=True)
+class Declared:
+    """What the patterns in use declare of their signals (the monitor's ``--utilities-out`` file): each signal's
+    utility (None: none declared), and the zone changes over the defaults' (DEFAULT_TRANSITIONS)."""
 
-    Raises UtilityError naming the file for anything else.
+    utilities: dict[str, float | None]
+    transitions: dict[str, Transition]
+
+
+def load_declared(path: str | os.PathLike[str]) -> Declared:
+    """The monitor's ``--utilities-out`` file, ``{"SIG_X": {"utility": -2.0, "transition": {...}}, "SIG_Y":
+    {"utility": null}}``, read once. A file of the earlier shape, ``{"SIG_X": -2.0}``, is read too. The evaluator
+    judges zones from the transitions, never from signal names.
+
+    Raises UtilityError naming the file (and the signal) for anything else.
     """
     path = Path(path)
-    out: dict[str, float | None] = {}
+    utilities: dict[str, float | None] = {}
+    transitions = dict(DEFAULT_TRANSITIONS)
     for key, value in _declarations(path).items():
         utility = value.get("utility") if isinstance(value, dict) else value
         if utility is not None and not _is_number(utility):
             raise UtilityError(f"{path}: {key}: the utility must be a finite number or null, got {utility!r}")
-        out[key] = None if utility is None else float(utility)
-    return out
+        utilities[key] = None if utility is None else float(utility)
+        if isinstance(value, dict) and value.get("transition") is not None:
+            try:
+                transitions[key] = Transition.from_json(value["transition"])
+            except ValueError as error:
+                raise UtilityError(f"{path}: {key}: {error}") from None
+    return Declared(utilities, transitions)
+
+
+def load_declared_utilities(path: str | os.PathLike[str]) -> dict[str, float | None]:
+    """The utilities of :func:`load_declared`."""
+    return load_declared(path).utilities
 
 
 def load_declared_transitions(path: str | os.PathLike[str]) -> dict[str, Transition]:
-    """The zone changes the patterns declare in the monitor's ``--utilities-out`` file (``signal SIG_X transition
-    geometry FAR -> CLOSE``), over the defaults: the evaluator judges zones from these, never from signal names."""
-    path = Path(path)
-    out = dict(DEFAULT_TRANSITIONS)
-    for key, value in _declarations(path).items():
-        if isinstance(value, dict) and value.get("transition") is not None:
-            try:
-                out[key] = Transition.from_json(value["transition"])
-            except ValueError as error:
-                raise UtilityError(f"{path}: {key}: {error}") from None
-    return out
+    """The zone changes of :func:`load_declared`, over the defaults."""
+    return load_declared(path).transitions
 
 
 def _declarations(path: Path) -> dict[str, Any]:

@@ -156,7 +156,7 @@ class _Run:
 
     def start(self) -> None:
         """Router, view, the evaluator's client, monitor, evaluator, simulation - in that order (module docstring)."""
-        from rei.evaluation import attach, load_declared_transitions, load_declared_utilities, load_utilities
+        from rei.evaluation import attach, load_declared, load_utilities
 
         out, options = self.out, self.options
         self.patterns = record_patterns(options.patterns, out)  # so a replay runs the patterns the live monitor ran
@@ -179,8 +179,9 @@ class _Run:
         _await_monitor(client, self.topics, monitor)
         # the monitor wrote what its patterns declare before it answered; signals only come once the simulation
         # runs, so subscribing here still sees the first one
-        self.evaluator = self._evaluator(load_utilities(options.utilities, load_declared_utilities(
-            out / UTILITIES_FILE), patterns=self.patterns.describe()), load_declared_transitions(out / UTILITIES_FILE))
+        declared = load_declared(out / UTILITIES_FILE)
+        self.evaluator = self._evaluator(load_utilities(options.utilities, declared.utilities,
+                                                        patterns=self.patterns.describe()), declared.transitions)
         attach(client, self.run_id, self.evaluator, also=self.signals.write)
         if self.viewer is not None:
             _await_viewer(self.viewer)

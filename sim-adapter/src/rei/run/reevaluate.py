@@ -129,8 +129,7 @@ def reevaluate(out: Path, case_dir: Path | None = None, *, utilities: Path | Non
         Evaluator,
         UtilityError,
         VerdictSettings,
-        load_declared_transitions,
-        load_declared_utilities,
+        load_declared,
         load_utilities,
         replay,
     )
@@ -146,8 +145,9 @@ def reevaluate(out: Path, case_dir: Path | None = None, *, utilities: Path | Non
     started = time.perf_counter()
     declared_file = out / UTILITIES_FILE  # missing only when the replay failed before compiling its rules
     try:
-        transitions = load_declared_transitions(declared_file) if declared_file.is_file() else None
-        table = load_utilities(utilities, load_declared_utilities(declared_file) if declared_file.is_file() else None,
+        declared = load_declared(declared_file) if declared_file.is_file() else None
+        transitions = declared.transitions if declared is not None else None
+        table = load_utilities(utilities, declared.utilities if declared is not None else None,
                                patterns=patterns.describe())
     except UtilityError as error:
         raise ReevaluationError(str(error)) from None
