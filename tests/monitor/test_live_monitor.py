@@ -190,6 +190,7 @@ def test_snapshots_served_over_wamp_reload_into_emf(live_run: LiveRun, java_run,
     assert end["runId"] == RUN_ID and end["time"] == last["t"]
     assert end["robot"]["pose"] == pytest.approx(last["robot"]["pose"], abs=1e-12)
     assert end["robot"]["laserMin"] == pytest.approx(last["robot"]["laser_min"], abs=1e-12)
+    assert end["robot"]["laserClearance"] == pytest.approx(last["robot"]["laser_clearance"], abs=1e-12)
     assert end["missionBegun"] and end["missionEnded"]
     assert [t["status"] for t in end["tasks"]] == ["SUCCEEDED"] * len(end["tasks"]) and end["tasks"]
     # after END nothing changes: the RPC's model is the one written on exit

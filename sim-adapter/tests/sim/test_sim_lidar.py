@@ -57,6 +57,9 @@ def test_initial_scan_reads_the_walls(sim: Simulation) -> None:
     assert scan.ranges[0] == math.inf  # right wall at 4.95 m is beyond range_max 3.5
     assert np.all(scan.ranges[np.isfinite(scan.ranges)] > 0.3)  # the robot does not see itself
     assert sim.state().robot.laser_min == pytest.approx(0.95, abs=0.01)
+    # the nearest walls face the robot's sides: its clearance is the range less the half width or length
+    size_x, size_y = sim.case.world.robot.size[:2]
+    assert sim.state().robot.laser_clearance == pytest.approx(0.95 - max(size_x, size_y) / 2, abs=0.01)
 
 
 def test_scan_sees_the_human_cylinder(sim: Simulation) -> None:

@@ -19,6 +19,7 @@ class FakeRobot:
     odom: Pose2D
     laser_min: float
     laser_ranges: np.ndarray | None
+    laser_clearance: float
 
 
 @dataclass(frozen=True)
@@ -49,6 +50,7 @@ def make_state(step: int, dt: float = 1.0 / 240.0, beams: int = 8) -> FakeState:
         Pose2D(0.5 + 0.19 * t, 0.5, 0.1 * t),
         float(ranges.min()),
         ranges,
+        float(ranges.min()) - 0.14,
     )
     human = FakeObject("h1", "HUMAN", (3.0 + math.cos(t), 3.5, 0.85, t), (-math.sin(t), 0.0, 1.0))
     contacts = (("tb3", "h1"),) if step % 50 == 0 else ()

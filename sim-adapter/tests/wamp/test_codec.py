@@ -16,7 +16,8 @@ from .fakes import make_state
 def test_default_message_has_the_wire_protocol_fields_in_order():
     message = encode_state(make_state(0), 0, nav_state="ACTIVE")
     assert list(message) == ["seq", "t", "objects", "robot", "contacts"]
-    assert list(message["robot"]) == ["name", "pose", "twist", "odom", "laser_min", "nav_state"]
+    assert list(message["robot"]) == ["name", "pose", "twist", "odom", "laser_min", "laser_clearance",
+                                      "nav_state"]
     assert message["objects"] == [
         {"name": "h1", "type": "HUMAN", "pose": [4.0, 3.5, 0.85, 0.0], "twist": [-0.0, 0.0, 1.0]}
     ]
@@ -28,13 +29,14 @@ def test_default_message_has_the_wire_protocol_fields_in_order():
     [
         (LaserMode.FULL, True, True, "IDLE", set()),
         (LaserMode.MIN, True, True, "IDLE", {"laser_ranges"}),
-        (LaserMode.NONE, False, False, None, {"laser_min", "laser_ranges", "odom", "nav_state", "contacts"}),
+        (LaserMode.NONE, False, False, None,
+         {"laser_min", "laser_clearance", "laser_ranges", "odom", "nav_state", "contacts"}),
     ],
 )
 def test_optional_fields_follow_the_configuration(laser, contacts, odometry, nav, absent):
     message = encode_state(make_state(1), 1, laser=laser, contacts=contacts, odometry=odometry, nav_state=nav)
     present = set(message) | set(message["robot"])
-    everything = {"laser_min", "laser_ranges", "odom", "nav_state", "contacts"}
+    everything = {"laser_min", "laser_clearance", "laser_ranges", "odom", "nav_state", "contacts"}
     assert everything - present == absent
     assert "full" not in message
 

@@ -30,6 +30,7 @@ class Robot:
     twist: tuple[float, float, float]
     odom: tuple[float, float, float]
     laser_min: float
+    laser_clearance: float
     laser_ranges: None = None
 
 
@@ -60,7 +61,10 @@ def main(case_dir: Path, out_dir: Path) -> None:
             t = k * DT
             x, vx = robot_x(t)
             contacts = [("tb3", "wall_east")] if 6.0 - (x + HALF_X) <= 0 else []
-            robot = Robot("tb3", (x, 1.0, 0.0, 0.0), (vx, 0.0, 0.0), (x, 1.0, 0.0), 6.0 - x)
+            # facing the wall, the beam straight ahead gives the clearance: the range less the half length (the
+            # Java twin sends only the range and lets the monitor subtract the inscribed radius, the same here)
+            robot = Robot("tb3", (x, 1.0, 0.0, 0.0), (vx, 0.0, 0.0), (x, 1.0, 0.0), 6.0 - x,
+                          max(0.0, (6.0 - x) - HALF_X))
             full = statics if k % 20 == 0 else None  # a full frame every simulated second
             states.write(encode_state(State(t, robot, [], contacts), k, laser=LaserMode.MIN,
                                       nav_state="ACTIVE", full_frame_objects=full))

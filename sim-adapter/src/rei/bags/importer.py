@@ -30,6 +30,7 @@ from rei.bags.mission import RecordedMission
 from rei.bags.reader import BagError, RecordedGoal, Sample, read_samples
 from rei.geometry import Pose2D, wrap_angle
 from rei.mission.executor import MISSION_INFO_FILE
+from rei.sim.clearance import FootprintClearance
 from rei.sim.state import RobotState, SimState
 from rei.wamp.codec import LaserMode
 from rei.wamp.collector import CollectorConfig, DataCollector, MissionPublisher
@@ -68,7 +69,8 @@ def import_bag(bag: Path, out: Path, case_dir: Path, topics: Mapping[str, str], 
     t0: float | None = None
     previous: tuple[float, Pose2D] | None = None
     odom: Pose2D | None = None
-    scan_min, messages, next_progress = math.inf, 0, 0.0
+    scan_min, scan_clearance, messages, next_progress = math.inf, math.inf, 0, 0.0
+    clearance = FootprintClearance(world.robot.size[0], world.robot.size[1])
     t = 0.0
     early: list[Sample] = []  # goals and results stamped before the first pose, handled at t = 0
     try:
@@ -87,7 +89,10 @@ def import_bag(bag: Path, out: Path, case_dir: Path, topics: Mapping[str, str], 
                 if sample.role == "odom":
                     odom = sample.value[0]
                 elif sample.role == "scan":
-                    scan_min = _laser_min(sample.value.ranges, sample.value.range_min, sample.value.range_max)
+                    scan = sample.value
+                    ranges = _valid_ranges(scan.ranges, scan.range_min, scan.range_max)
+                    scan_min = float(ranges.min()) if len(ranges) else math.inf
+                    scan_clearance = clearance(ranges, scan.angle_min, scan.angle_increment)
                 if sample.role != "pose":
                     continue
                 pose: Pose2D = sample.value
@@ -104,7 +109,8 @@ def import_bag(bag: Path, out: Path, case_dir: Path, topics: Mapping[str, str], 
                     _mission_sample(mission, waiting, 0.0, previous, bag, topics, world.bounds)
                 early.clear()
                 if collector.due(t):
-                    collector.step(_state(world.robot.name, t, pose, twist, odom or pose, scan_min, laser))
+                    collector.step(_state(world.robot.name, t, pose, twist, odom or pose, (scan_min, scan_clearance),
+                                          laser))
                 if progress is not None and t >= next_progress:
                     progress(t)
                     next_progress += 10.0
@@ -157,15 +163,18 @@ def _twist(previous: tuple[float, Pose2D] | None, current: tuple[float, Pose2D])
     return ((b.x - a.x) / dt, (b.y - a.y) / dt, wrap_angle(b.yaw - a.yaw) / dt)
 
 
-def _laser_min(ranges: np.ndarray, range_min: float, range_max: float) -> float:
-    valid = ranges[(ranges >= range_min) & (ranges <= range_max)]
-    return float(valid.min()) if len(valid) else math.inf
+def _valid_ranges(ranges: np.ndarray, range_min: float, range_max: float) -> np.ndarray:
+    """The ranges with readings outside [range_min, range_max] (ROS's "no valid return") as ``inf``."""
+    ranges = np.asarray(ranges, dtype=float)
+    return np.where((ranges >= range_min) & (ranges <= range_max), ranges, math.inf)
 
 
-def _state(name: str, t: float, pose: Pose2D, twist: tuple[float, float, float], odom: Pose2D, laser_min: float,
-           laser: LaserMode) -> SimState:
+def _state(name: str, t: float, pose: Pose2D, twist: tuple[float, float, float], odom: Pose2D,
+           laser_values: tuple[float, float], laser: LaserMode) -> SimState:
+    """``laser_values``: the newest scan's minimum and clearance (the sensor taken at the footprint's centre)."""
+    laser_min, clearance = laser_values if laser is not LaserMode.NONE else (math.inf, math.inf)
     robot = RobotState(name=name, pose=(pose.x, pose.y, 0.0, pose.yaw), twist=twist, odom=odom,
-                       laser_min=laser_min if laser is not LaserMode.NONE else math.inf, laser_ranges=None)
+                       laser_min=laser_min, laser_ranges=None, laser_clearance=clearance)
     return SimState(t=t, robot=robot, objects=(), contacts=())
 
 

@@ -21,11 +21,8 @@ class VerdictSettings:
     ``tolerance``: seconds by which the laser may lag or lead the geometry and still count as the same event.
     The lidar scans at 10 Hz and the state is sampled at 20 Hz; the monitor's laser distance only reaches
     the collision threshold once the robot presses on (0.45 s after the geometric contact when the scripted
-    robot rams the table at 0.26 m/s), so 1 s.
-    ``grace``: a geometric episode shorter than this that the laser did not confirm is reported but not
-    judged (see ``rei.evaluation.verdicts``): the monitor's laser distance (laser_min minus the footprint's
-    inscribed radius) can not see the footprint's corners, which reach up to circumradius - inscribed radius
-    (6.7 cm for the Waffle) closer, so a turn near a wall grazes CLOSE without any laser reading there.
+    robot rams the table at 0.26 m/s), so 1 s. Every episode is judged: the monitor's laser distance is the
+    scan's per-beam distance to the footprint (rei.sim.clearance), so a corner that grazes CLOSE is seen too.
     ``laser``: the run published laser data (``--laser none`` runs: False, the laser verdicts do not apply).
     ``humans``: the humans of world.json are in the simulation (``--no-humans`` runs: False).
     ``mission``: the run recorded its mission (an imported bag without goals: False): then the mission's
@@ -33,14 +30,13 @@ class VerdictSettings:
     """
 
     tolerance: float = 1.0
-    grace: float = 1.0
     laser: bool = True
     humans: bool = True
     mission: bool = True
 
     def __post_init__(self) -> None:
-        if not (self.tolerance >= 0 and self.grace >= 0):
-            raise ValueError(f"tolerance and grace must be >= 0 s, got {self.tolerance}, {self.grace}")
+        if not self.tolerance >= 0:
+            raise ValueError(f"tolerance must be >= 0 s, got {self.tolerance}")
 
 
 @dataclass(frozen=True, slots=True)

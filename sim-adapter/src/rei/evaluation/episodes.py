@@ -27,7 +27,6 @@ class Episode:
     start: float
     object: str  # what the monitor named at entry (geometry: the nearest / colliding obstacle; laser: laser)
     end: float | None = None
-    deepest: Zone = Zone.CLOSE
 
     def end_or(self, run_end: float) -> float:
         return self.end if self.end is not None else max(run_end, self.start)
@@ -66,12 +65,9 @@ def build_timeline(signals: Iterable[Signal], transitions: Mapping[str, Transiti
             open_[(source, Zone.CLOSE)] = episode
             timeline.episodes[(source, Zone.CLOSE)].append(episode)
         if after == Zone.COLLISION and before < Zone.COLLISION:
-            episode = Episode(source, Zone.COLLISION, signal.t, signal.object, deepest=Zone.COLLISION)
+            episode = Episode(source, Zone.COLLISION, signal.t, signal.object)
             open_[(source, Zone.COLLISION)] = episode
             timeline.episodes[(source, Zone.COLLISION)].append(episode)
-            proximity = open_[(source, Zone.CLOSE)]
-            if proximity is not None:
-                proximity.deepest = Zone.COLLISION
         if before == Zone.COLLISION and after < Zone.COLLISION:
             _close(open_, (source, Zone.COLLISION), signal.t)
         if after == Zone.FAR and before >= Zone.CLOSE:

@@ -6,9 +6,8 @@ The precise semantics are in docs/evaluation.md; in short:
 
 - GEOM_CLOSE_LASER_CORRECT / GEOM_COLLISION_LASER_CORRECT: every geometric episode in CLOSE (or COLLISION)
   must overlap a laser episode in the same zone or be at most ``tolerance`` seconds apart from one, and
-  every laser episode must be so matched by a geometric one (else it is a false alarm). Unconfirmed geometric
-  episodes shorter than ``grace`` (and, for CLOSE, not reaching COLLISION) are reported but not judged;
-  episodes that start in the last ``tolerance`` seconds of the run are undecided.
+  every laser episode must be so matched by a geometric one (else it is a false alarm); episodes that start
+  in the last ``tolerance`` seconds of the run are undecided.
 - MISSION_SIMPLE: no geometric collision (SIG_GEOM_*_TRANSIT_COLLISION) during the mission, on any leg.
 - MISSION_SEQUENCE: every goal got its final state from the robot: TASK_START then exactly one TASK_SUCCESS
   or TASK_FAIL, in goal order, before SIG_MISSION_END; a timeout (the robot gave no feedback) or a "false
@@ -144,11 +143,6 @@ def _laser(requirement: str, level: Zone, trace: Trace, timeline: Timeline, cont
         elif g.start + tol > end:
             notes.append(Evidence(f"geometry {zone} with {g.object} {span} began in the last {tol:g} s of "
                                   f"the run: undecided, not judged", g.start, entry, g.object))
-        elif g.end is not None and g.end - g.start < settings.grace and g.deepest <= level:
-            notes.append(Evidence(
-                f"geometry {zone} with {g.object} {span} lasted {g.end - g.start:.3f} s < grace "
-                f"{settings.grace:g} s without a laser {zone}: too brief to judge (laser model bias)",
-                g.start, entry, g.object))
         else:
             violations.append(Evidence(
                 f"missed: geometry {zone} with {g.object} {span}, but the laser did not reach {zone} "

@@ -20,6 +20,7 @@ from rei.artifacts.case import Case, read_case
 from rei.artifacts.world import Category
 from rei.geometry import Pose2D, Twist2D, yaw_of_quaternion
 from rei.sim.animator import AnimatedBody, Animator, DriveMode
+from rei.sim.clearance import FootprintClearance
 from rei.sim.contacts import ContactSensor
 from rei.sim.drive import DiffDrive
 from rei.sim.faults import LaserFault, LaserFaultInjector, parse_fault
@@ -87,6 +88,7 @@ class Simulation:
         self._scans = 0
         self._scan: LaserScan | None = None
         self._laser_min = math.inf
+        self._laser_clearance = math.inf
         with quiet_native_output():
             self._client = p.connect(p.DIRECT)
         self._closed = False
@@ -132,6 +134,7 @@ class Simulation:
             rng=np.random.default_rng(odom_seed) if odom_noise > 0 else None,
         )
         self._lidar = Lidar(client, body, robot_spec.lidar)
+        self._clearance = FootprintClearance(robot_spec.size[0], robot_spec.size[1])
         lidar = robot_spec.lidar
         self._fault = (
             LaserFaultInjector(
@@ -214,6 +217,7 @@ class Simulation:
             ranges=ranges,
         )
         self._laser_min = float(ranges.min())
+        self._laser_clearance = self._clearance(ranges, 0.0, self._lidar.angle_increment)
 
     # --- what the controller sees -----------------------------------------------------------------------------
     def observation(self) -> Observation:
@@ -260,6 +264,7 @@ class Simulation:
             odom=self._odometry.pose,
             laser_min=self._laser_min,
             laser_ranges=scan.ranges if scan is not None else None,
+            laser_clearance=self._laser_clearance,
         )
         return SimState(t=self.t, robot=robot, objects=objects, contacts=contacts)
 

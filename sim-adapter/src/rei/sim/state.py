@@ -8,6 +8,7 @@ the robot and of every moving object, and the physical contacts. Poses are ``(x,
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -22,6 +23,7 @@ Twist3 = tuple[float, float, float]
 class RobotState:
     """``odom`` is the robot's own estimate; ``laser_min``/``laser_ranges`` are the last scan as the sensor
     reported it (faults included), ``inf`` / ``None`` before any hit / scan. The array is read-only.
+    ``laser_clearance`` is that scan's distance to the footprint (rei.sim.clearance), ``inf`` likewise.
 
     Equality compares the ranges element-wise (a dataclass's generated ``==`` would fail on an array).
     """
@@ -32,6 +34,7 @@ class RobotState:
     odom: Pose2D
     laser_min: float
     laser_ranges: np.ndarray | None
+    laser_clearance: float = math.inf
 
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, RobotState):
@@ -40,12 +43,14 @@ class RobotState:
         same_ranges = (mine is None and theirs is None) or (
             mine is not None and theirs is not None and np.array_equal(mine, theirs)
         )
-        return same_ranges and (self.name, self.pose, self.twist, self.odom, self.laser_min) == (
+        mine_fields = (self.name, self.pose, self.twist, self.odom, self.laser_min, self.laser_clearance)
+        return same_ranges and mine_fields == (
             other.name,
             other.pose,
             other.twist,
             other.odom,
             other.laser_min,
+            other.laser_clearance,
         )
 
     __hash__ = None  # type: ignore[assignment]

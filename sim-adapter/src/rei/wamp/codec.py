@@ -57,6 +57,9 @@ class RobotStateLike(Protocol):
     @property
     def laser_ranges(self) -> np.ndarray | Sequence[float] | None: ...
 
+    @property
+    def laser_clearance(self) -> float: ...
+
 
 class ObjectStateLike(Protocol):
     """A moving object (human or dynamic body) of a snapshot."""
@@ -149,8 +152,8 @@ def encode_state(
 ) -> dict[str, Any]:
     """The state message for ``state``; ``full_frame_objects`` (even empty) makes it a full frame.
 
-    Optional keys appear exactly when: ``full`` - a full frame; ``odom`` - ``odometry``; ``laser_min`` - laser
-    mode FULL or MIN; ``laser_ranges`` - mode FULL and the snapshot has ranges; ``nav_state`` - given;
+    Optional keys appear exactly when: ``full`` - a full frame; ``odom`` - ``odometry``; ``laser_min`` and
+    ``laser_clearance`` - laser mode FULL or MIN; ``laser_ranges`` - mode FULL and the snapshot has ranges; ``nav_state`` - given;
     ``contacts`` - ``contacts`` (possibly an empty list).
     """
     if seq < 0:
@@ -171,6 +174,7 @@ def encode_state(
         wire_robot["odom"] = _odom(robot.odom)
     if laser is not LaserMode.NONE:
         wire_robot["laser_min"] = float(robot.laser_min)
+        wire_robot["laser_clearance"] = float(robot.laser_clearance)
         if laser is LaserMode.FULL and robot.laser_ranges is not None:
             wire_robot["laser_ranges"] = np.asarray(robot.laser_ranges, dtype=np.float64).tolist()
     if nav_state is not None:

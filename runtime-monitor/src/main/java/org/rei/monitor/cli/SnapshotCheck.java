@@ -71,6 +71,7 @@ public final class SnapshotCheck {
 				body.getPose().getYaw()));
 		robot.put("standsOn", body.getStandsOn() == null ? null : body.getStandsOn().getName());
 		robot.put("laserMin", model.getOwnedRobot().getLaserMin());
+		robot.put("laserClearance", model.getOwnedRobot().getLaserClearance());
 		robot.put("navigationState", String.valueOf(model.getOwnedRobot().getNavigationState()));
 		s.put("robot", robot);
 		s.put("missionBegun", model.getOwnedMissionState().isBegun());

@@ -202,7 +202,13 @@ public final class RuntimeModelUpdater {
 		odom.setYaw(world.robot().pose()[3]);
 		r.setOdometry(odom);
 		r.setLaserMin(Double.POSITIVE_INFINITY);
+		r.setLaserClearance(Double.POSITIVE_INFINITY);
 		return r;
+	}
+
+	/** The laser's distance to the footprint as the monitor judges it (it knows the robot's shape). */
+	public void applyLaserClearance(double clearance) {
+		model.getOwnedRobot().setLaserClearance(clearance);
 	}
 
 	/** Applies one decoded state message: poses, twists, floors, robot belief and sensors. */
@@ -240,6 +246,7 @@ public final class RuntimeModelUpdater {
 		if (r.hasLaser()) {
 			d.setLaserMin(r.laserMin());
 		}
+
 		if (r.laserRanges() != null) {
 			d.getLaserRanges().clear();
 			for (double v : r.laserRanges()) {

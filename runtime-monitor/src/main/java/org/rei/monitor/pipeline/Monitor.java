@@ -26,6 +26,7 @@ import org.rei.monitor.signals.SignalPublisher;
 import org.rei.monitor.wire.MalformedMessageException;
 import org.rei.monitor.wire.MissionMessage;
 import org.rei.monitor.wire.ObjectState;
+import org.rei.monitor.wire.RobotState;
 import org.rei.monitor.wire.StateMessage;
 import org.rei.monitor.wire.StaticEntryCache;
 import org.rei.monitor.wire.WireDecoder;
@@ -227,10 +228,23 @@ public final class Monitor implements AutoCloseable {
 			}
 		}
 		if (r.hasLaser()) {
-			// the laser sits at the robot's centre: subtract the footprint's inscribed radius to compare with gaps
-			engine.laser(Math.max(0, r.laserMin() - robotShape.inscribedRadius()));
+			double gap = laserGap(r);
+			model.applyLaserClearance(gap);
+			engine.laser(gap);
 		}
 		engine.endStep(nearest[0], best[0]);
+	}
+
+	/**
+	 * The laser's distance to the footprint, comparable with the geometry's gaps: the collector's per-beam
+	 * clearance; a producer that sends only the minimum range gets the sensor at the centre less the inscribed
+	 * radius, which under-reads nothing but over-reads towards the corners.
+	 */
+	private double laserGap(RobotState r) {
+		if (!Double.isNaN(r.laserClearance())) {
+			return r.laserClearance();
+		}
+		return Math.max(0, r.laserMin() - robotShape.inscribedRadius());
 	}
 
 	/** One decoded mission message. */

@@ -174,6 +174,7 @@ public final class WireDecoder {
 		double[] twist = new double[3];
 		double[] odom = null;
 		double laserMin = Double.NaN;
+		double laserClearance = Double.NaN;
 		double[] ranges = null;
 		String nav = null;
 		for (int k = 0; k < m; k++) {
@@ -194,6 +195,8 @@ public final class WireDecoder {
 				}
 			}
 			case "laser_min" -> laserMin = in.getNextFormat() == MessageFormat.NIL ? nilNaN(in) : real(in, "laser_min");
+			case "laser_clearance" -> laserClearance = in.getNextFormat() == MessageFormat.NIL ? nilNaN(in)
+					: real(in, "laser_clearance");
 			case "laser_ranges" -> ranges = realArray(in, "laser_ranges");
 			case "nav_state" -> nav = in.getNextFormat() == MessageFormat.NIL ? nilNull(in) : string(in, "nav_state");
 			default -> in.skipValue();
@@ -201,7 +204,7 @@ public final class WireDecoder {
 		}
 		require(name != null && pose != null, "missing-field", "robot without name or pose");
 		return new RobotState(name, pose[0], pose[1], pose[2], pose[3], twist[0], twist[1], twist[2], odom, laserMin,
-				ranges, nav);
+				ranges, nav, laserClearance);
 	}
 
 	private static double nilNaN(MessageUnpacker in) throws IOException {

@@ -122,7 +122,7 @@ class StaticFramesTest {
 			// the same through a message decoded elsewhere (no bytes known): the cache forgets the table
 			StateMessage moved = new StateMessage(3, 0.15, false,
 					List.of(new ObjectState("table1", "STATIC", 1.5, 2.2, 0.375, 0, 0, 0, 0)),
-					new RobotState("tb3", 1.5, 1.5, 0, 0, 0, 0, 0, null, Double.NaN, null, null), null);
+					new RobotState("tb3", 1.5, 1.5, 0, 0, 0, 0, 0, null, Double.NaN, null, null, Double.NaN), null);
 			run.monitor.onState(moved);
 			assertEquals(2.2, tableY(run), 0);
 			feed(run, frame(4, true, statics(TABLE)));

@@ -40,7 +40,7 @@ final class Traces {
 				contacts.add(new String[] { "tb3", "wall_east" });
 			}
 			RobotState r = new RobotState("tb3", x, 1.0, 0, 0, vx, 0, 0, new double[] { x, 1.0, 0 }, 6.0 - x, null,
-					"ACTIVE");
+					"ACTIVE", Double.NaN);
 			out.add(new StateMessage(k, t, k == 0, List.of(), r, contacts));
 		}
 		return out;
@@ -67,7 +67,7 @@ final class Traces {
 			double t = k * DT;
 			double[] p = circlePose(t);
 			double yaw = Math.atan2(Math.sin(p[2]), Math.cos(p[2]));
-			RobotState r = new RobotState("tb3", p[0], p[1], 0, yaw, 0, 0, 0.2 / 0.95, null, Double.NaN, null, null);
+			RobotState r = new RobotState("tb3", p[0], p[1], 0, yaw, 0, 0, 0.2 / 0.95, null, Double.NaN, null, null, Double.NaN);
 			out.add(new StateMessage(k, t, false, List.of(), r, List.of()));
 		}
 		return out;
@@ -88,7 +88,7 @@ final class Traces {
 			double t = k * DT;
 			double[] r = crossingRobot(t);
 			double[] h = crossingHuman(t);
-			RobotState robot = new RobotState("tb3", r[0], r[1], 0, 0, 0.2, 0, 0, null, Double.NaN, null, null);
+			RobotState robot = new RobotState("tb3", r[0], r[1], 0, 0, 0.2, 0, 0, null, Double.NaN, null, null, Double.NaN);
 			ObjectState human = new ObjectState("h1", "HUMAN", h[0], h[1], 0.85, -Math.PI / 2, 0, -1.0, 0);
 			out.add(new StateMessage(k, t, false, List.of(human), robot, null));
 		}
@@ -109,7 +109,7 @@ final class Traces {
 		double x = 6.0 - HALF_X;
 		for (int k = 0; k <= 160; k++) {
 			double t = k * DT;
-			RobotState robot = new RobotState("tb3", x, 1.0, 0, 0, 0, 0, 0, null, Double.NaN, null, null);
+			RobotState robot = new RobotState("tb3", x, 1.0, 0, 0, 0, 0, 0, null, Double.NaN, null, null, Double.NaN);
 			double hx = bumpingHumanX(t);
 			ObjectState human = new ObjectState("h1", "HUMAN", hx, 1.0, 0.85, 0, t <= 4 ? 0.4 : -0.4, 0, 0);
 			List<String[]> contacts = new ArrayList<>();
