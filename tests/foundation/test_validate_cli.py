@@ -87,3 +87,16 @@ def test_generate_of_a_broken_file_exits_1_and_writes_nothing(
     assert result.returncode == 1, result.stderr
     assert diagnostics(result.stderr, path)
     assert not (out / "world.json").exists()
+
+
+def test_a_case_reports_the_errors_of_the_catalogue_it_imports_in_that_file(
+    run_cli: Callable[..., Any], write_rei: Callable[..., Path]
+) -> None:
+    catalogue = write_rei("furniture.rei", 'catalogue F {\n  type Sofa : object box 1.1 x 0.8 x -0.8\n}\n')
+    case = write_rei("with_sofa.rei", 'import "furniture.rei"\n' + VALID.replace("table1 : Table", "sofa : Sofa"))
+    result = run_cli("validate", case)
+    assert result.returncode == 1
+    assert diagnostics(result.stderr, catalogue) == [(2, 38, "The height must be above 0 [org.rei.dsl.nonPositive]")]
+    assert diagnostics(result.stderr, case) == []
+    generated = run_cli("generate", case, "-o", case.parent / "out")
+    assert generated.returncode == 1 and not (case.parent / "out" / "world.json").exists()

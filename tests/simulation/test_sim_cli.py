@@ -77,3 +77,21 @@ def test_a_run_of_a_generated_folder_is_replayed_without_naming_the_case_again(
     replay = run_cli("monitor", "--replay", tmp_path / "out")  # ... and sim.json says where
     assert replay.returncode == 0, replay.stderr
     assert "SIG_MISSION_END" in replay.stdout
+
+
+def test_the_user_catalogue_example_runs_with_its_own_robot_and_furniture(
+    run_cli, repo_root: Path, tmp_path: Path
+) -> None:
+    out = tmp_path / "out"
+    result = run_cli("sim", repo_root / "examples" / "own_types.rei", "-o", out, "--no-router", "--laser", "full")
+    assert result.returncode == 0, result.stderr
+    assert "mission succeeded" in result.stdout
+    world = json.loads((out / "case" / "world.json").read_text())
+    robot = world["robot"]
+    assert (robot["type"], robot["size"], robot["lidar"]["rate"]) == ("Burger", [0.138, 0.178, 0.192], 5.0)
+    assert {o["type"] for o in world["objects"] if o["category"] == "STATIC"} == {"Sofa", "Pillar", "Plant", "Table"}
+    # the Burger's lidar scans 5 times a second: a new scan every 4th state at 20 Hz
+    states = read_recording(out / "streams" / "state.msgpack")
+    scans = [m["robot"]["laser_ranges"] for m in states[:41] if "laser_ranges" in m["robot"]]
+    changes = sum(a != b for a, b in zip(scans, scans[1:], strict=False))
+    assert 9 <= changes <= 10, changes

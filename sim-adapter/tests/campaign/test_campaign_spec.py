@@ -98,3 +98,29 @@ def test_a_variant_is_either_in_process_or_external() -> None:
     with pytest.raises(SpecError, match="either 'controller' .* or 'sut'"):
         parse_spec(spec(variants=[{"name": "v", "controller": "nav", "sut": {"command": "rei nav-sut"}}]),
                    base=EXAMPLES)
+
+
+def test_rooms_furnished_from_a_user_catalogue_import_it_from_the_rooms_folder(tmp_path: Path) -> None:
+    parsed = parse_spec(spec(groups=[{"name": "own", "rooms": {"size": "small", "count": 1, "seed": 3,
+                                                              "catalogue": "catalogues/office.rei"}}]), base=EXAMPLES)
+    (case,) = plan_campaign(parsed, tmp_path).cases
+    rooms = tmp_path.resolve() / "rooms"
+    imported = (rooms / case.text.splitlines()[2].split('"')[1]).resolve()  # after the two header comments
+    assert imported == (EXAMPLES / "catalogues" / "office.rei").resolve()
+    assert "robot tb3 : Burger on" in case.text
+    with pytest.raises(SpecError, match=r"groups\[0\]: rooms: 'robot' picks a robot type of 'catalogue'"):
+        parse_spec(spec(groups=[{"name": "g", "rooms": {"size": "small", "robot": "Burger"}}]), base=EXAMPLES)
+    with pytest.raises(SpecError, match=r"groups\[0\]: rooms: cannot read catalogue .*nope.rei: no such file"):
+        parse_spec(spec(groups=[{"name": "g", "rooms": {"size": "small", "catalogue": "nope.rei"}}]), base=EXAMPLES)
+
+
+def test_a_case_is_generated_again_when_the_catalogue_it_imports_changed(tmp_path: Path) -> None:
+    from rei.campaign.prepare import source_digest
+
+    (tmp_path / "office.rei").write_text("catalogue A { type Sofa : object box 1 x 1 x 1 }\n", encoding="utf-8")
+    case = tmp_path / "case.rei"
+    case.write_text('// a test case\nimport "office.rei"\ntestcase T { }\n', encoding="utf-8")
+    before = source_digest(case)
+    (tmp_path / "office.rei").write_text("catalogue A { type Sofa : object box 1 x 0.9 x 1 }\n", encoding="utf-8")
+    assert source_digest(case) != before
+    assert source_digest(case) == source_digest(case)

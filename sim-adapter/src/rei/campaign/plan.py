@@ -82,8 +82,8 @@ def plan_campaign(spec: Spec, out: Path) -> Plan:
         sources: list[CaseSource] = []
         if group.rooms is not None:
             r = group.rooms
-            for room in generate_rooms(r.size, r.density, r.humans, r.seed, r.count):
-                sources.append(CaseSource(room.stem, group.name, None, render(room, r.count)))
+            for room in generate_rooms(r.size, r.density, r.humans, r.seed, r.count, r.types):
+                sources.append(CaseSource(room.stem, group.name, None, render(room, r.count, out / "rooms")))
         else:
             for path in group.cases:
                 stem = path.stem if path.suffix == ".rei" else path.name

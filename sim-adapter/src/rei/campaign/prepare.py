@@ -2,12 +2,14 @@
 """Generate every test case of a campaign once, before its runs: ``OUT/cases/<case>/`` (world.json, ...).
 
 Generated rooms are first written to ``OUT/rooms/<case>.rei``. A case folder records the SHA-256 of the
-``.rei`` text it came from; on resume an unchanged case is not generated again (one JVM start less per case).
+``.rei`` text it came from and of the catalogues it imports; on resume an unchanged case is not generated again
+(one JVM start less per case).
 """
 
 from __future__ import annotations
 
 import hashlib
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -34,9 +36,9 @@ def prepare_case(source: CaseSource, out: Path) -> Prepared:
         if not rei.is_file() or rei.read_text(encoding="utf-8") != source.text:
             rei.write_text(source.text, encoding="utf-8")
     try:
-        digest = hashlib.sha256(rei.read_bytes()).hexdigest()
+        digest = source_digest(rei)
     except OSError as error:
-        return Prepared(source.key, f"cannot read {rei}: {error.strerror or error}", 0.0, False)
+        return Prepared(source.key, f"cannot read {error.filename}: {error.strerror or error}", 0.0, False)
     target = source.case_dir(out)
     stamp = target / STAMP
     if stamp.is_file() and stamp.read_text(encoding="utf-8").strip() == digest and (target / "world.json").is_file():
@@ -49,3 +51,19 @@ def prepare_case(source: CaseSource, out: Path) -> Prepared:
                         result.cpu, True)
     stamp.write_text(digest + "\n", encoding="utf-8")
     return Prepared(source.key, None, result.cpu, True)
+
+
+#: A test case's catalogue imports (docs/language.md); only read to notice a changed catalogue on resume.
+_IMPORT = re.compile(r'^\s*import\s+"((?:[^"\\]|\\.)*)"', re.MULTILINE)
+
+
+def source_digest(rei: Path) -> str:
+    """SHA-256 of the test case's text and of every catalogue it imports: a case is generated again when its
+    catalogue changed."""
+    text = rei.read_bytes()
+    digest = hashlib.sha256(text)
+    for path in _IMPORT.findall(text.decode("utf-8", errors="replace")):
+        imported = rei.parent / path.replace('\\"', '"').replace("\\\\", "\\")
+        if imported.is_file():  # a missing one fails the generation with the validator's message
+            digest.update(b"\0" + imported.read_bytes())
+    return digest.hexdigest()

@@ -16,7 +16,7 @@ run 17 of 23 an hour later. Format (docs/campaigns.md)::
     variants: [{name: base}]    # default variants: name, humans (true), fault (null), controller, sut
     groups:
       - name: small
-        rooms: {size: small, density: dense, humans: 0, count: 7, seed: 1}
+        rooms: {size: small, density: dense, humans: 0, count: 7, seed: 1}  # catalogue: FILE, robot: NAME
         variants: [{name: base}, {name: fault1, fault: "laser:1%"}]
       - name: examples
         cases: [../simple_navigation.rei]      # relative to the spec file
@@ -34,6 +34,7 @@ from typing import Any
 
 import yaml
 
+from rei.rooms.model import DEFAULT_TYPES, RoomTypes
 from rei.sut.external.options import DEFAULT_DEADLINE, DEFAULT_JOIN_TIMEOUT
 
 MODES = ("replay", "pipeline")
@@ -82,6 +83,7 @@ class RoomSettings:
     humans: int | None = None
     count: int = 1
     seed: int = 0
+    types: RoomTypes = DEFAULT_TYPES  # a user catalogue's furniture and robot (``catalogue``, ``robot``)
 
 
 @dataclass(frozen=True, slots=True)
@@ -163,19 +165,25 @@ def _group(r: _Reader, base: Path, controller: str, sut: ExternalSut | None, var
         if len(set(stems)) != len(stems):
             raise SpecError(f"{r.where}: two cases have the same name; give each file its own name")
     else:
-        rooms = _rooms(_Reader(rooms_raw, f"{r.where}: rooms"))
+        rooms = _rooms(_Reader(rooms_raw, f"{r.where}: rooms"), base)
     return Group(name, cases, rooms, _variants(r, "variants", controller, variants, base, sut),
                  r.int("repetitions", repetitions, minimum=1))
 
 
-def _rooms(r: _Reader) -> RoomSettings:
+def _rooms(r: _Reader, base: Path) -> RoomSettings:
     from rei.rooms import generate_room
+    from rei.rooms.catalogue import room_types
 
-    r.only("size", "density", "humans", "count", "seed")
-    settings = RoomSettings(size=r.str("size", None), density=r.get("density"), humans=r.get("humans"),
-                            count=r.int("count", 1, minimum=1), seed=r.int("seed", 0, minimum=0))
+    r.only("size", "density", "humans", "count", "seed", "catalogue", "robot")
+    catalogue, robot = r.get("catalogue"), r.get("robot")
+    if robot is not None and catalogue is None:
+        raise SpecError(f"{r.where}: 'robot' picks a robot type of 'catalogue': give the catalogue too")
     try:
-        generate_room(settings.size, settings.density, settings.humans, settings.seed, 1)  # checks the settings
+        types = DEFAULT_TYPES if catalogue is None else room_types((base / str(catalogue)).resolve(),
+                                                                    None if robot is None else str(robot))
+        settings = RoomSettings(size=r.str("size", None), density=r.get("density"), humans=r.get("humans"),
+                                count=r.int("count", 1, minimum=1), seed=r.int("seed", 0, minimum=0), types=types)
+        generate_room(settings.size, settings.density, settings.humans, settings.seed, 1, types)  # checks them
     except (ValueError, TypeError) as error:
         raise SpecError(f"{r.where}: {error}") from None
     return settings

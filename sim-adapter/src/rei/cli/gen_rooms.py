@@ -1,12 +1,15 @@
 # SPDX-License-Identifier: EPL-2.0
-"""`rei gen-rooms --size S [--density D] [--humans N] --count K --seed S -o DIR`: procedural test rooms.
+"""`rei gen-rooms --size S [--density D] [--humans N] --count K --seed S [--catalogue FILE] -o DIR`: procedural
+test rooms.
 
 Writes K `.rei` test cases (thesis 7.4): a grid of floors with walls, furniture from the catalogue, humans
 walking lanes of free floors, the robot on the left wall and a mission whose first goal is on the right wall.
 The same settings and seed always give the same files. Sizes: small 7 x 5 m (dense: 10 objects), medium
 10 x 7 m (sparse: 9 objects, one walking human), large 15 x 10 m (sparse: 20 objects, two humans); see
-docs/campaigns.md. Every leg of every mission is checked with the reference navigation's planner
-(`--no-check` skips it). Exit 0: written; 1: a room failed the check; 2: bad arguments.
+docs/campaigns.md. `--catalogue FILE` furnishes the rooms with a user catalogue's object types instead (equally
+frequent, at most 1.2 x 1.2 m each) and gives the robot its robot type (`--robot NAME` when it has several); the
+rooms import it. Every leg of every mission is checked with the reference navigation's planner (`--no-check`
+skips it). Exit 0: written; 1: a room failed the check; 2: bad arguments or an invalid catalogue.
 """
 
 from __future__ import annotations
@@ -29,18 +32,25 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
     parser.add_argument("--humans", type=int, metavar="N", help="walking humans (default: the class's)")
     parser.add_argument("--count", type=int, default=1, metavar="K", help="rooms to write (default 1)")
     parser.add_argument("--seed", type=int, default=0, metavar="S", help="seed (default 0)")
+    parser.add_argument("--catalogue", type=Path, metavar="FILE",
+                        help="furnish the rooms from this user catalogue (docs/language.md, 'Catalogues')")
+    parser.add_argument("--robot", metavar="NAME", help="the catalogue's robot type to use (default: its only one)")
     parser.add_argument("-o", "--output", required=True, type=Path, metavar="DIR", help="output folder")
     parser.add_argument("--no-check", action="store_true", help="do not check the missions with the planner")
     parser.set_defaults(handler=run)
 
 
 def run(args: argparse.Namespace) -> int:
-    from rei.rooms import GenerationError, write_rooms
+    from rei.rooms import DEFAULT_TYPES, GenerationError, write_rooms
+    from rei.rooms.catalogue import room_types
 
     if args.count < 1:
         raise CommandError(f"--count must be at least 1, got {args.count}")
+    if args.robot is not None and args.catalogue is None:
+        raise CommandError("--robot picks a robot type of --catalogue FILE: give the catalogue too")
     try:
-        written = write_rooms(args.output, args.size, args.density, args.humans, args.seed, args.count)
+        types = DEFAULT_TYPES if args.catalogue is None else room_types(args.catalogue, args.robot)
+        written = write_rooms(args.output, args.size, args.density, args.humans, args.seed, args.count, types)
     except (ValueError, GenerationError) as error:
         raise CommandError(str(error)) from None
     except OSError as error:

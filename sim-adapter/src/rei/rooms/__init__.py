@@ -10,24 +10,25 @@ from pathlib import Path
 
 from rei.rooms.classes import DENSITIES, MAX_HUMANS, ROOM_CLASSES, SIZES, RoomClass, room_class
 from rei.rooms.generator import GenerationError, generate_room, generate_rooms
-from rei.rooms.model import FURNITURE, Furniture, Goal, Room, Walker
+from rei.rooms.model import DEFAULT_TYPES, FURNITURE, Furniture, Goal, Room, RoomTypes, Walker
 from rei.rooms.render import render
 
 
 def write_rooms(out: Path, size: str, density: str | None = None, humans: int | None = None, seed: int = 0,
-                count: int = 1) -> list[tuple[Room, Path]]:
+                count: int = 1, types: RoomTypes = DEFAULT_TYPES) -> list[tuple[Room, Path]]:
     """Generate ``count`` rooms into ``out`` as ``<stem>.rei``; an existing file of the same name is replaced
     (it holds the same room: generation is deterministic)."""
     out.mkdir(parents=True, exist_ok=True)
     written = []
-    for room in generate_rooms(size, density, humans, seed, count):
+    for room in generate_rooms(size, density, humans, seed, count, types):
         path = out / f"{room.stem}.rei"
-        path.write_text(render(room, count), encoding="utf-8")
+        path.write_text(render(room, count, out), encoding="utf-8")
         written.append((room, path))
     return written
 
 
 __all__ = [
+    "DEFAULT_TYPES",
     "DENSITIES",
     "FURNITURE",
     "MAX_HUMANS",
@@ -38,6 +39,7 @@ __all__ = [
     "Goal",
     "Room",
     "RoomClass",
+    "RoomTypes",
     "Walker",
     "generate_room",
     "generate_rooms",

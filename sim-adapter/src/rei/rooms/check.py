@@ -18,7 +18,6 @@ from rei.sut.nav.config import NavConfig
 from rei.sut.nav.global_planner import PlanningError, plan
 from rei.sut.nav.grid import CostGrid
 
-WAFFLE = (0.281, 0.306)
 _WALL = (1.1 * FLOOR, 0.1)
 
 
@@ -35,7 +34,7 @@ def static_map(room: Room) -> StaticMap:
     for item in room.furniture:
         hx, hy = item.half_extents()
         obstacles.append((*floor_centre(item.cell), 0.0, 2 * hx, 2 * hy))
-    return StaticMap(bounds=(0.0, 0.0, w, h), obstacles=tuple(obstacles), robot_size=WAFFLE)
+    return StaticMap(bounds=(0.0, 0.0, w, h), obstacles=tuple(obstacles), robot_size=room.types.robot_size)
 
 
 def unplannable_legs(room: Room, config: NavConfig | None = None) -> list[str]:

@@ -27,10 +27,8 @@ from collections import deque
 from collections.abc import Iterable
 
 from rei.rooms.classes import MAX_HUMANS, RoomClass, room_class
-from rei.rooms.model import FURNITURE, Cell, Furniture, Goal, Room, Walker
+from rei.rooms.model import DEFAULT_TYPES, Cell, Furniture, Goal, Room, RoomTypes, Walker
 
-#: Relative frequency of each furniture type.
-WEIGHTS: dict[str, int] = {"Box": 3, "Chair": 3, "Table": 2, "Shelf": 2, "Bin": 2}
 #: Wall half thickness plus the gap kept between furniture and a wall, in metres.
 WALL_CLEARANCE = 0.05 + 0.03
 #: Smallest gap between two pieces of furniture, and how close one may come to a reserved floor's edge.
@@ -46,8 +44,9 @@ class GenerationError(RuntimeError):
 
 
 def generate_room(size: str, density: str | None = None, humans: int | None = None, seed: int = 0,
-                  index: int = 1) -> Room:
-    """Room ``index`` (from 1) of ``rei gen-rooms --size SIZE --density D --humans N --seed SEED``."""
+                  index: int = 1, types: RoomTypes = DEFAULT_TYPES) -> Room:
+    """Room ``index`` (from 1) of ``rei gen-rooms --size SIZE --density D --humans N --seed SEED``; ``types``:
+    what it is furnished from (``--catalogue``)."""
     cls = room_class(size)
     density = density or cls.default_density
     humans = cls.default_humans if humans is None else humans
@@ -58,7 +57,7 @@ def generate_room(size: str, density: str | None = None, humans: int | None = No
         raise ValueError(f"seed must be >= 0 and index >= 1, got {seed}, {index}")
     for attempt in range(MAX_ATTEMPTS):
         rng = random.Random(f"rei-rooms/1/{size}/{density}/{humans}/{seed}/{index}/{attempt}")
-        room = _attempt(rng, cls, density, humans, seed, index)
+        room = _attempt(rng, cls, density, humans, seed, index, types)
         if room is not None:
             return room
     raise GenerationError(f"no {size} {density} room with {humans} humans for seed {seed} index {index} "
@@ -66,11 +65,12 @@ def generate_room(size: str, density: str | None = None, humans: int | None = No
 
 
 def generate_rooms(size: str, density: str | None = None, humans: int | None = None, seed: int = 0,
-                   count: int = 1) -> list[Room]:
-    return [generate_room(size, density, humans, seed, i) for i in range(1, count + 1)]
+                   count: int = 1, types: RoomTypes = DEFAULT_TYPES) -> list[Room]:
+    return [generate_room(size, density, humans, seed, i, types) for i in range(1, count + 1)]
 
 
-def _attempt(rng: random.Random, cls: RoomClass, density: str, humans: int, seed: int, index: int) -> Room | None:
+def _attempt(rng: random.Random, cls: RoomClass, density: str, humans: int, seed: int, index: int,
+             types: RoomTypes) -> Room | None:
     w, h = cls.width, cls.height
     start = (0, rng.randrange(h))
     goals = _goals(rng, cls, start)
@@ -88,12 +88,12 @@ def _attempt(rng: random.Random, cls: RoomClass, density: str, humans: int, seed
         if len(placed) == wanted:
             break
         for _ in range(3):
-            kind = rng.choices(list(WEIGHTS), weights=list(WEIGHTS.values()))[0]
-            sx, sy = FURNITURE[kind]
-            item = Furniture("", kind, cell, rng.choice((0, 90)) if sx != sy else 0)
+            kind = rng.choices(list(types.weights), weights=list(types.weights.values()))[0]
+            sx, sy = types.furniture[kind]
+            item = Furniture("", kind, cell, rng.choice((0, 90)) if sx != sy else 0, (sx, sy))
             if _fits(item, placed, reserved, w, h) and _still_navigable(cell, placed, robot_cells, w, h):
                 counters[kind] = counters.get(kind, 0) + 1
-                placed[cell] = Furniture(f"{kind.lower()}{counters[kind]}", kind, cell, item.yaw)
+                placed[cell] = Furniture(f"{kind.lower()}{counters[kind]}", kind, cell, item.yaw, item.size)
                 break
     if len(placed) < wanted:
         return None
@@ -101,7 +101,7 @@ def _attempt(rng: random.Random, cls: RoomClass, density: str, humans: int, seed
     timeouts = [_timeout(a, b) for a, b in zip((start, *goals), goals, strict=False)]
     return Room(name, cls.size, density, seed, index, w, h, start,
                 tuple(Goal(c, t) for c, t in zip(goals, timeouts, strict=True)),
-                tuple(placed.values()), tuple(walkers))
+                tuple(placed.values()), tuple(walkers), types)
 
 
 def _goals(rng: random.Random, cls: RoomClass, start: Cell) -> list[Cell]:
@@ -204,5 +204,3 @@ def _timeout(a: Cell, b: Cell) -> int:
     """Time for a task: 30 s plus 6 s per metre of the way on the grid, rounded up to 5 s."""
     return int(5 * math.ceil((30 + 6 * _manhattan(a, b)) / 5))
 
-
-assert set(WEIGHTS) == set(FURNITURE)

@@ -7,7 +7,9 @@ check read one small model, and a test can build a room by hand.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
 
 Cell = tuple[int, int]
 
@@ -20,8 +22,42 @@ FURNITURE: dict[str, tuple[float, float]] = {
     "Shelf": (1.0, 0.4),
     "Bin": (0.4, 0.4),
 }
+#: Relative frequency of each default furniture type.
+WEIGHTS: dict[str, int] = {"Box": 3, "Chair": 3, "Table": 2, "Shelf": 2, "Bin": 2}
+#: The default catalogue's robot type and its footprint.
+WAFFLE = ("Waffle", (0.281, 0.306))
 #: Edge of a floor block; the generator only writes grid rooms of the default size.
 FLOOR = 1.0
+#: The largest footprint edge a piece of furniture may have: it reaches at most 0.1 m into a neighbouring floor,
+#: which keeps every lane between two pieces wide enough for the reference navigation (rei.rooms.generator).
+MAX_FURNITURE = 1.2
+
+
+@dataclass(frozen=True, slots=True)
+class RoomTypes:
+    """What a room is furnished from: furniture types with their footprints (x, y) and relative frequencies,
+    the robot's type and footprint, and the user catalogue that declares them (None: the default catalogue)."""
+
+    furniture: Mapping[str, tuple[float, float]] = field(default_factory=lambda: dict(FURNITURE))
+    weights: Mapping[str, int] = field(default_factory=lambda: dict(WEIGHTS))
+    robot: str = WAFFLE[0]
+    robot_size: tuple[float, float] = WAFFLE[1]
+    catalogue: Path | None = None
+
+    def __hash__(self) -> int:  # the mappings are never changed after construction
+        return hash((tuple(self.furniture.items()), tuple(self.weights.items()), self.robot, self.robot_size,
+                     self.catalogue))
+
+    def __post_init__(self) -> None:
+        if not self.furniture or set(self.weights) != set(self.furniture):
+            raise ValueError("room types need furniture, each with a weight")
+        for name, (sx, sy) in self.furniture.items():
+            if not (0 < sx <= MAX_FURNITURE and 0 < sy <= MAX_FURNITURE):
+                raise ValueError(f"type {name} ({sx:g} x {sy:g} m) does not fit a generated room's floor: "
+                                 f"furniture of at most {MAX_FURNITURE:g} x {MAX_FURNITURE:g} m is placed")
+
+
+DEFAULT_TYPES = RoomTypes()
 
 
 @dataclass(frozen=True, slots=True)
@@ -30,10 +66,11 @@ class Furniture:
     type: str
     cell: Cell
     yaw: int  # 0 or 90 degrees
+    size: tuple[float, float]  # the type's footprint (x, y)
 
     def half_extents(self) -> tuple[float, float]:
         """Half the footprint along x and y once turned by ``yaw``."""
-        sx, sy = FURNITURE[self.type]
+        sx, sy = self.size
         return (sy / 2, sx / 2) if self.yaw == 90 else (sx / 2, sy / 2)
 
 
@@ -73,6 +110,7 @@ class Room:
     goals: tuple[Goal, ...]
     furniture: tuple[Furniture, ...]
     walkers: tuple[Walker, ...]
+    types: RoomTypes = DEFAULT_TYPES
 
     @property
     def stem(self) -> str:

@@ -13,6 +13,7 @@ import java.util.List;
 import org.eclipse.emf.common.util.URI;
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.EStructuralFeature;
+import org.eclipse.emf.ecore.resource.Resource;
 import org.eclipse.xtext.nodemodel.INode;
 import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
 import org.eclipse.xtext.resource.XtextResource;
@@ -21,6 +22,8 @@ import org.eclipse.xtext.util.CancelIndicator;
 import org.eclipse.xtext.validation.CheckMode;
 import org.eclipse.xtext.validation.IResourceValidator;
 import org.eclipse.xtext.validation.Issue;
+import org.rei.catalogue.Catalogue;
+import org.rei.catalogue.ObjectType;
 import org.rei.context.TestCase;
 import org.rei.context.layout.LayoutProblem;
 import org.rei.dsl.ReiStandaloneSetup;
@@ -63,9 +66,14 @@ public final class HeadlessGenerator {
 		if (diagnostics.stream().anyMatch(Diagnostic::isError)) {
 			return new Result(diagnostics, List.of());
 		}
+		if (!(resource.getContents().get(0) instanceof TestCase testCase)) {
+			return new Result(List.of(new Diagnostic(file, 1, 1, Diagnostic.Severity.ERROR, "This file is a catalogue: "
+					+ "nothing to generate; a test case uses its types with 'import \"" + file.getFileName() + "\"'",
+					null)), List.of());
+		}
 		Files.createDirectories(outputDir);
 		try {
-			return new Result(diagnostics, generator.generate((TestCase) resource.getContents().get(0), outputDir));
+			return new Result(diagnostics, generator.generate(testCase, outputDir));
 		} catch (GenerationException e) {
 			List<Diagnostic> all = new ArrayList<>(diagnostics);
 			if (e.problems().isEmpty()) {
@@ -78,12 +86,83 @@ public final class HeadlessGenerator {
 		}
 	}
 
+	/**
+	 * Validates a catalogue file and describes its types as JSON for tools that furnish rooms with them
+	 * ({@code rei gen-rooms --catalogue}): name, category, shape, size [x, y, height], mass, colour.
+	 */
+	public CatalogueResult describeCatalogue(Path file) {
+		XtextResource resource = load(file);
+		List<Diagnostic> diagnostics = diagnostics(file, resource);
+		if (diagnostics.stream().anyMatch(Diagnostic::isError)) {
+			return new CatalogueResult(diagnostics, null);
+		}
+		if (!(resource.getContents().get(0) instanceof Catalogue catalogue)) {
+			return new CatalogueResult(List.of(new Diagnostic(file, 1, 1, Diagnostic.Severity.ERROR,
+					"Expected a catalogue ('catalogue NAME { ... }'), this is a test case", null)), null);
+		}
+		StringBuilder json = new StringBuilder("{\"name\": ").append(quote(catalogue.getName())).append(", \"types\": [");
+		String separator = "";
+		for (ObjectType type : catalogue.getOwnedTypes()) {
+			json.append(separator).append("\n  {\"name\": ").append(quote(type.getName()))
+					.append(", \"category\": ").append(quote(type.getCategory().getName()))
+					.append(", \"shape\": ").append(quote(type.getShape().getName()))
+					.append(", \"size\": [").append(type.getSizeX()).append(", ").append(type.getSizeY()).append(", ")
+					.append(type.getSizeZ()).append("], \"mass\": ").append(type.getMass())
+					.append(", \"colour\": ").append(quote(type.getColour())).append('}');
+			separator = ",";
+		}
+		return new CatalogueResult(diagnostics, json.append("\n]}").toString());
+	}
+
+	/** Diagnostics of a catalogue file and, when it is valid, its types as JSON. */
+	public record CatalogueResult(List<Diagnostic> diagnostics, String json) {
+	}
+
+	private static String quote(String text) {
+		if (text == null) {
+			return "null";
+		}
+		StringBuilder out = new StringBuilder("\"");
+		for (char c : text.toCharArray()) {
+			if (c == '"' || c == '\\') {
+				out.append('\\').append(c);
+			} else if (c < 0x20) {
+				out.append(String.format("\\u%04x", (int) c));
+			} else {
+				out.append(c);
+			}
+		}
+		return out.append('"').toString();
+	}
+
 	private XtextResource load(Path file) {
 		XtextResourceSet resourceSet = injector.getInstance(XtextResourceSet.class);
 		return (XtextResource) resourceSet.getResource(URI.createFileURI(file.toAbsolutePath().toString()), true);
 	}
 
+	/** The file's problems, then those of the catalogues it imports, each with its own file and position. */
 	private List<Diagnostic> diagnostics(Path file, XtextResource resource) {
+		List<Diagnostic> result = issues(file, resource);
+		if (result.isEmpty() && resource.getContents().isEmpty()) {
+			result.add(new Diagnostic(file, 1, 1, Diagnostic.Severity.ERROR,
+					"Expected a test case ('testcase NAME { ... }') or a catalogue ('catalogue NAME { ... }')", null));
+		}
+		for (Resource other : List.copyOf(resource.getResourceSet().getResources())) {
+			if (other != resource && other instanceof XtextResource imported && other.getURI().isFile()
+					&& !imported.getContents().isEmpty() && imported.getContents().get(0) instanceof Catalogue) {
+				result.addAll(issues(asGiven(Path.of(other.getURI().toFileString())), imported));
+			}
+		}
+		return result;
+	}
+
+	/** A path under the working directory as a relative one, as a user would have typed it. */
+	private static Path asGiven(Path absolute) {
+		Path here = Path.of("").toAbsolutePath();
+		return absolute.startsWith(here) ? here.relativize(absolute) : absolute;
+	}
+
+	private static List<Diagnostic> issues(Path file, XtextResource resource) {
 		IResourceValidator validator = resource.getResourceServiceProvider().getResourceValidator();
 		List<Diagnostic> result = new ArrayList<>();
 		for (Issue issue : validator.validate(resource, CheckMode.ALL, CancelIndicator.NullImpl)) {
@@ -96,9 +175,6 @@ public final class HeadlessGenerator {
 				result.add(new Diagnostic(file, orOne(issue.getLineNumber()), orOne(issue.getColumn()), severity,
 						issue.getMessage(), issue.getCode()));
 			}
-		}
-		if (result.isEmpty() && resource.getContents().isEmpty()) {
-			result.add(new Diagnostic(file, 1, 1, Diagnostic.Severity.ERROR, "Expected a test case: 'testcase NAME { ... }'", null));
 		}
 		return result;
 	}

@@ -13,7 +13,8 @@ import java.util.List;
 import java.util.Locale;
 
 /**
- * {@code rei-cli validate FILE...} and {@code rei-cli generate FILE -o DIR [--templates DIR]}.
+ * {@code rei-cli validate FILE...}, {@code rei-cli generate FILE -o DIR [--templates DIR]} and
+ * {@code rei-cli types CATALOGUE} (a user catalogue's types as JSON on standard output).
  * Exit codes: 0 fine, 1 the test case has errors, 2 the command itself is wrong or a file cannot be read or written.
  */
 public final class Main {
@@ -25,6 +26,7 @@ public final class Main {
 	private static final String USAGE_TEXT = """
 			usage: rei-cli validate FILE.rei [FILE.rei ...] [--quiet] [--repeat N]
 			       rei-cli generate FILE.rei -o OUTDIR [--templates DIR] [--quiet] [--repeat N]
+			       rei-cli types CATALOGUE.rei   (its object and robot types as JSON)
 			  --templates DIR  EGL templates in DIR replace the built-in ones of the same name
 			  --repeat N       run N times in one process and print each run's time (for benchmarks)
 			  --quiet          print diagnostics only
@@ -62,6 +64,15 @@ public final class Main {
 			}
 		}
 		HeadlessGenerator generator = new HeadlessGenerator(options.templates);
+		if (options.command.equals("types")) {
+			HeadlessGenerator.CatalogueResult result = generator.describeCatalogue(options.files.get(0));
+			result.diagnostics().forEach(err::println);
+			if (result.json() == null) {
+				return INVALID;
+			}
+			out.println(result.json());
+			return OK;
+		}
 		int status = OK;
 		for (int iteration = 1; iteration <= options.repeat; iteration++) {
 			long start = System.nanoTime();
@@ -99,7 +110,7 @@ public final class Main {
 		}
 		if (report && !options.quiet && status == OK && options.command.equals("validate")) {
 			out.println(options.files.size() == 1 ? options.files.get(0) + " is valid"
-					: options.files.size() + " test cases are valid");
+					: options.files.size() + " files are valid");
 		}
 		return status;
 	}
@@ -138,9 +149,9 @@ public final class Main {
 			if (o.help) {
 				return o;
 			}
-			if (o.command == null || !(o.command.equals("validate") || o.command.equals("generate"))) {
+			if (o.command == null || !List.of("validate", "generate", "types").contains(o.command)) {
 				throw new IllegalArgumentException(o.command == null ? "expected a command"
-						: "unknown command '" + o.command + "': expected validate or generate");
+						: "unknown command '" + o.command + "': expected validate, generate or types");
 			}
 			if (o.files.isEmpty()) {
 				throw new IllegalArgumentException("expected a .rei file");
@@ -149,6 +160,9 @@ public final class Main {
 				if (!file.toString().endsWith(".rei")) {
 					throw new IllegalArgumentException("expected a .rei file, got " + file);
 				}
+			}
+			if (o.command.equals("types") && o.files.size() != 1) {
+				throw new IllegalArgumentException("types takes one catalogue file");
 			}
 			if (o.command.equals("generate")) {
 				if (o.output == null) {

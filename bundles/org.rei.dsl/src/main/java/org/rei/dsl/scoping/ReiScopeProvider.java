@@ -16,17 +16,19 @@ import org.eclipse.xtext.scoping.Scopes;
 import org.eclipse.xtext.scoping.impl.MapBasedScope;
 import org.eclipse.xtext.util.IResourceScopeCache;
 import org.eclipse.xtext.util.Tuples;
+import org.rei.catalogue.Catalogue;
 import org.rei.catalogue.CataloguePackage;
 import org.rei.catalogue.util.Catalogues;
 import org.rei.context.ContextPackage;
 import org.rei.context.Environment;
 import org.rei.context.TestCase;
+import org.rei.dsl.catalogue.CatalogueImports;
 
 import com.google.inject.Inject;
 
 /**
  * Floors and walls are found by their simple name anywhere in the test case (the mission names floors of the
- * room); object types come from the catalogue. Scopes are hashed and cached per resource, because a generated
+ * room); object types come from the catalogues the test case imports, then the default one. Scopes are hashed and cached per resource, because a generated
  * room may have ten thousand floors and as many references to them.
  */
 public class ReiScopeProvider extends AbstractReiScopeProvider {
@@ -43,10 +45,23 @@ public class ReiScopeProvider extends AbstractReiScopeProvider {
 					() -> blocksScope(context, target));
 		}
 		if (resource != null && CataloguePackage.Literals.OBJECT_TYPE.isSuperTypeOf(target)) {
-			return cache.get(ReiScopeProvider.class, resource, () -> MapBasedScope.createScope(IScope.NULLSCOPE,
-					Scopes.scopedElementsFor(Catalogues.loadDefault(resource.getResourceSet()).getOwnedTypes())));
+			return cache.get(ReiScopeProvider.class, resource, () -> typesScope(context, resource));
 		}
 		return super.getScope(context, reference);
+	}
+
+	/** The imported catalogues' types first, in import order, then the default catalogue's. */
+	private static IScope typesScope(EObject context, Resource resource) {
+		IScope scope = MapBasedScope.createScope(IScope.NULLSCOPE,
+				Scopes.scopedElementsFor(Catalogues.loadDefault(resource.getResourceSet()).getOwnedTypes()));
+		TestCase testCase = EcoreUtil2.getContainerOfType(context, TestCase.class);
+		if (testCase != null) {
+			List<Catalogue> imported = CatalogueImports.catalogues(testCase);
+			for (int i = imported.size() - 1; i >= 0; i--) {
+				scope = MapBasedScope.createScope(scope, Scopes.scopedElementsFor(imported.get(i).getOwnedTypes()));
+			}
+		}
+		return scope;
 	}
 
 	private static IScope blocksScope(EObject context, EClass target) {

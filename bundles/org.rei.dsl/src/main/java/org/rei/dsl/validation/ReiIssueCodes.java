@@ -25,4 +25,9 @@ public interface ReiIssueCodes {
 	String GOAL_UNREACHABLE = PREFIX + "goalUnreachable";
 	String GOAL_OCCUPIED = PREFIX + "goalOccupied";
 	String THRESHOLD_ORDER = PREFIX + "thresholdOrder";
+	String CATALOGUE_IMPORT = PREFIX + "catalogueImport";
+	String CATALOGUE_INVALID = PREFIX + "catalogueInvalid";
+	String CYLINDER_SIZE = PREFIX + "cylinderSize";
+	String COLOUR = PREFIX + "colour";
+	String OUT_OF_RANGE = PREFIX + "outOfRange";
 }

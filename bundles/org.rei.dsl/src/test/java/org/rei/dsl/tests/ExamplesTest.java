@@ -23,7 +23,7 @@ import org.junit.jupiter.params.provider.MethodSource;
 
 import com.google.inject.Inject;
 
-/** The shipped examples are clean: no error and no warning. */
+/** The shipped examples and their catalogues are clean: no error and no warning. */
 @ExtendWith(InjectionExtension.class)
 @InjectWith(ReiInjectorProvider.class)
 class ExamplesTest {
@@ -32,7 +32,9 @@ class ExamplesTest {
 	private ReiFiles files;
 
 	static Stream<Path> examples() throws IOException {
-		return Files.list(ReiFiles.repository().resolve("examples")).filter(p -> p.toString().endsWith(".rei")).sorted();
+		Path examples = ReiFiles.repository().resolve("examples");
+		return Stream.concat(Files.list(examples), Files.list(examples.resolve("catalogues")))
+				.filter(p -> p.toString().endsWith(".rei")).sorted();
 	}
 
 	@Test
