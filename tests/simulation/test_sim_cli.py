@@ -95,3 +95,22 @@ def test_the_user_catalogue_example_runs_with_its_own_robot_and_furniture(
     scans = [m["robot"]["laser_ranges"] for m in states[:41] if "laser_ranges" in m["robot"]]
     changes = sum(a != b for a, b in zip(scans, scans[1:], strict=False))
     assert 9 <= changes <= 10, changes
+
+
+def test_the_collector_publishes_only_the_objects_its_settings_name(run_cli, repo_root: Path, tmp_path: Path) -> None:
+    example = repo_root / "examples" / "simple_navigation.rei"
+    settings = tmp_path / "collector.yaml"
+    settings.write_text("objects: [DYNAMIC]\n")  # the example's only moving object is the human walker
+    out = tmp_path / "out"
+    sim = run_cli("sim", example, "-o", out, "--no-router", "--collector", settings)
+    assert sim.returncode == 0, sim.stderr
+    states = read_recording(out / "streams" / "state.msgpack")
+    assert len(states) > 100 and not any(o["type"] == "HUMAN" for m in states for o in m["objects"])
+    assert any(o["type"] == "WALL" for o in states[0]["objects"])  # full frames still carry the statics
+    replay = run_cli("monitor", "--replay", out)
+    assert replay.returncode == 0, replay.stderr
+    settings.write_text("objects: [walkr]\n")
+    typo = run_cli("sim", example, "-o", tmp_path / "typo", "--no-router", "--collector", settings)
+    assert typo.returncode == 2
+    assert f"{settings}: collector objects: 'walkr' is neither a moving object of the case (walker)" in typo.stderr
+    assert not (tmp_path / "typo" / "streams").exists()

@@ -109,3 +109,22 @@ def test_config_is_validated(bad):
 def test_run_id_must_fit_in_one_uri_component(tmp_path: Path):
     with pytest.raises(ValueError, match="run id"):
         DataCollector("a.b", tmp_path)
+
+
+@pytest.mark.parametrize(("objects", "published"), [(None, {"h1"}), (("HUMAN",), {"h1"}), (("h1",), {"h1"}),
+                                                    (("DYNAMIC",), set()), ((), set())])
+def test_objects_select_the_moving_objects_in_every_message(tmp_path: Path, world, objects, published):
+    messages = _run(tmp_path, CollectorConfig(rate_hz=20.0, objects=objects), 480, world)
+    assert {o["name"] for m in messages for o in m["objects"] if o["type"] in ("HUMAN", "DYNAMIC")} == published
+    full = [m for m in messages if m.get("full")]
+    assert len(full) == 2 and all(o["type"] in ("WALL", "STATIC") or o["name"] in published
+                                  for m in full for o in m["objects"])
+    with DataCollector("run1", tmp_path / "c", config=CollectorConfig(objects=objects), world=world) as collector:
+        wire = collector.serve_config()["collector"]["objects"]
+    assert wire == (None if objects is None else list(objects))
+
+
+def test_objects_must_name_a_moving_object_or_a_category(tmp_path: Path, world):
+    with pytest.raises(ValueError, match=r"'table1' is neither a moving object of the case \(h1\) nor a category "
+                                         r"\(DYNAMIC, HUMAN\)"):
+        DataCollector("run1", tmp_path, config=CollectorConfig(objects=("table1",)), world=world)

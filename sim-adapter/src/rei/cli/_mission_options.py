@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import argparse
 import dataclasses
+import json
 from pathlib import Path
 
 from rei.cli.errors import CommandError
@@ -79,6 +80,17 @@ def collector_config(args: argparse.Namespace) -> CollectorConfig:
     if args.laser is not None:
         config = dataclasses.replace(config, laser=LaserMode(args.laser))
     return config
+
+
+def check_collector_objects(args: argparse.Namespace, case_dir: Path) -> None:
+    """The collector's ``objects`` name moving objects or categories of the generated case (CommandError if not)."""
+    config = collector_config(args)
+    if config.objects is None:
+        return
+    try:
+        config.observed(json.loads((case_dir / "world.json").read_text(encoding="utf-8")))
+    except (OSError, ValueError) as error:
+        raise CommandError(f"{args.collector}: {error}") from None
 
 
 def sut_options(args: argparse.Namespace, *, router_url: str | None = None,

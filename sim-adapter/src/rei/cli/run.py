@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING, Any
 from rei.cli._case import case_folder, prepare_output, valid_run_id
 from rei.cli._mission_options import (
     add_mission_options,
+    check_collector_objects,
     check_mission_options,
     collector_config,
     mission_argv,
@@ -71,6 +72,7 @@ def run(args: argparse.Namespace) -> int:
     out = Path(args.output).resolve()  # children and the router run in other working directories
     prepare_output(out)
     case_dir = case_folder(Path(args.case), out)
+    check_collector_objects(args, case_dir)
 
     def show(progress: Progress) -> None:
         if sys.stderr.isatty():

@@ -20,7 +20,13 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from rei.cli._case import case_folder, prepare_output, valid_run_id
-from rei.cli._mission_options import add_mission_options, check_mission_options, collector_config, sut_options
+from rei.cli._mission_options import (
+    add_mission_options,
+    check_collector_objects,
+    check_mission_options,
+    collector_config,
+    sut_options,
+)
 from rei.cli._router_options import add_router_options, check_router_options
 from rei.cli.errors import EXIT_INVALID, EXIT_OK, EXIT_RUN_ERROR, CommandError
 from rei.lifetime import sigterm_unwinds
@@ -82,6 +88,7 @@ def run(args: argparse.Namespace) -> int:
     except ValueError as error:
         raise CommandError(str(error)) from None
     case_dir = case_folder(Path(args.case), out)
+    check_collector_objects(args, case_dir)
     run_id = args.run_id or secrets.token_hex(6)
     if not valid_run_id(run_id):
         raise CommandError(f"--run-id {run_id!r}: expected letters, digits, '_' or '-' (it becomes part of topic URIs)")

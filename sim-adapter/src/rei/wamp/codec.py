@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import enum
 import math
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Collection, Iterable, Mapping, Sequence
 from typing import Any, Protocol
 
 import msgpack
@@ -149,8 +149,10 @@ def encode_state(
     odometry: bool = True,
     nav_state: str | enum.Enum | None = None,
     full_frame_objects: Sequence[Mapping[str, Any]] | None = None,
+    observed: Collection[str] | None = None,
 ) -> dict[str, Any]:
-    """The state message for ``state``; ``full_frame_objects`` (even empty) makes it a full frame.
+    """The state message for ``state``; ``full_frame_objects`` (even empty) makes it a full frame; ``observed``:
+    the names of the moving objects to include (None: all).
 
     Optional keys appear exactly when: ``full`` - a full frame; ``odom`` - ``odometry``; ``laser_min`` and
     ``laser_clearance`` - laser mode FULL or MIN; ``laser_ranges`` - mode FULL and the snapshot has ranges; ``nav_state`` - given;
@@ -159,7 +161,8 @@ def encode_state(
     if seq < 0:
         raise ValueError(f"seq must be >= 0, got {seq}")
     message: dict[str, Any] = {"seq": int(seq), "t": float(state.t)}
-    objects = [encode_object(o.name, o.category, o.pose, o.twist) for o in state.objects]
+    objects = [encode_object(o.name, o.category, o.pose, o.twist) for o in state.objects
+               if observed is None or o.name in observed]
     if full_frame_objects is not None:
         message["full"] = True
         objects.extend(dict(o) for o in full_frame_objects)

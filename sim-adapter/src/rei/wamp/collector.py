@@ -38,6 +38,8 @@ from rei.wamp.recording import RecordingWriter, stream_path
 from rei.wamp.topics import Topics
 
 _EPS = 1e-9  # tolerance of sim-time schedules against t = n * dt rounding
+#: Categories of the objects a state message carries (the others never move; docs/protocol.md).
+MOVING_CATEGORIES = frozenset({"HUMAN", "DYNAMIC"})
 
 
 @dataclass(frozen=True, slots=True)
@@ -45,7 +47,9 @@ class CollectorConfig:
     """What the collector publishes and how often (times in simulation seconds).
 
     ``rate_hz`` 0 publishes every step offered. ``full_frame_period`` 0 makes only the first message a full
-    frame. Every message costs the router ~150 us of CPU: rate and laser mode are a budget.
+    frame. ``objects``: the moving objects published, by name or category (``HUMAN``, ``DYNAMIC``); None: all of
+    them. One left out is not in any message, full frames included, and the monitor does not judge it. Every
+    message costs the router ~150 us of CPU: rate, laser mode and objects are a budget.
     """
 
     rate_hz: float = 20.0
@@ -54,8 +58,13 @@ class CollectorConfig:
     odometry: bool = True
     nav_state: bool = True
     full_frame_period: float = 1.0
+    objects: tuple[str, ...] | None = None
 
     def __post_init__(self) -> None:
+        if self.objects is not None:
+            object.__setattr__(self, "objects", tuple(self.objects))
+            if not all(isinstance(o, str) and o for o in self.objects):
+                raise ValueError(f"objects must be names or categories, got {list(self.objects)}")
         if not math.isfinite(self.rate_hz) or self.rate_hz < 0:
             raise ValueError(f"rate_hz must be finite and >= 0, got {self.rate_hz}")
         if not math.isfinite(self.full_frame_period) or self.full_frame_period < 0:
@@ -72,7 +81,24 @@ class CollectorConfig:
             "odometry": self.odometry,
             "nav_state": self.nav_state,
             "full_frame_period": float(self.full_frame_period),
+            "objects": list(self.objects) if self.objects is not None else None,
         }
+
+    def observed(self, world: Mapping[str, Any] | None) -> frozenset[str] | None:
+        """The names of the moving objects of ``world`` that are published; None: all (no selection).
+
+        Raises ValueError for an entry that is neither a moving object of the world nor a category."""
+        if self.objects is None or world is None:
+            return None
+        moving = {str(o.get("name")): str(o.get("category")) for o in world.get("objects", ())
+                  if o.get("category") in MOVING_CATEGORIES}
+        for entry in self.objects:
+            if entry not in moving and entry not in MOVING_CATEGORIES:
+                raise ValueError(f"collector objects: {entry!r} is neither a moving object of the case "
+                                 f"({', '.join(sorted(moving)) or 'it has none'}) nor a category "
+                                 f"({', '.join(sorted(MOVING_CATEGORIES))})")
+        return frozenset(name for name, category in moving.items()
+                         if name in self.objects or category in self.objects)
 
 
 class _SimClock:
@@ -122,6 +148,7 @@ class DataCollector:
             _SimClock(self.config.full_frame_period) if self.config.full_frame_period > 0 else None
         )
         self._static = static_objects(world)
+        self._observed = self.config.observed(world)
         self._served = _check_packable(
             "config",
             {
@@ -169,6 +196,7 @@ class DataCollector:
             odometry=self.config.odometry,
             nav_state=nav_state if self.config.nav_state else None,
             full_frame_objects=self._static if full else None,
+            observed=self._observed,
         )
         self._recording.write(message)
         if self._client is not None:

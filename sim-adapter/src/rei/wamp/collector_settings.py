@@ -8,6 +8,7 @@ FILE``. Every key is optional; what is left out keeps its default::
     odometry: true         # the robot's odometry pose
     nav_state: true        # the navigation's state (IDLE, ACTIVE, ...)
     full_frame_period: 1.0 # seconds between full frames (every static object again); 0: the first only
+    objects: [walker, DYNAMIC]  # the moving objects published, by name or category (default: all)
 
 A problem names the file, the line and column, and what was expected: a typo must not silently run with a
 default.
@@ -30,7 +31,7 @@ class CollectorSettingsError(ValueError):
 
 
 _KINDS: dict[str, str] = {"rate_hz": "number", "laser": "laser", "contacts": "bool", "odometry": "bool",
-                          "nav_state": "bool", "full_frame_period": "number"}
+                          "nav_state": "bool", "full_frame_period": "number", "objects": "names"}
 
 
 def load_collector_settings(path: Path) -> CollectorConfig:
@@ -61,8 +62,14 @@ def load_collector_settings(path: Path) -> CollectorConfig:
 
 
 def _value(path: Path, key: str, node: yaml.Node) -> Any:
-    value = yaml.safe_load(yaml.serialize(node)) if isinstance(node, yaml.ScalarNode) else None
     kind = _KINDS[key]
+    if kind == "names" and isinstance(node, yaml.SequenceNode):
+        for item in node.value:
+            if not (isinstance(item, yaml.ScalarNode) and item.tag == "tag:yaml.org,2002:str" and item.value):
+                raise CollectorSettingsError(f"{_at(path, item)}: {key} must list object names or categories "
+                                             f"(HUMAN, DYNAMIC), got {item.value!r}")
+        return tuple(item.value for item in node.value)
+    value = yaml.safe_load(yaml.serialize(node)) if isinstance(node, yaml.ScalarNode) else None
     if kind == "bool" and isinstance(value, bool):
         return value
     if kind == "number" and isinstance(value, int | float) and not isinstance(value, bool) \
@@ -71,7 +78,8 @@ def _value(path: Path, key: str, node: yaml.Node) -> Any:
     if kind == "laser" and value in {mode.value for mode in LaserMode}:
         return LaserMode(value)
     expected = {"bool": "true or false", "number": "a finite number >= 0",
-                "laser": " | ".join(mode.value for mode in LaserMode)}[kind]
+                "laser": " | ".join(mode.value for mode in LaserMode),
+                "names": "a list of object names or categories, e.g. [walker, HUMAN]"}[kind]
     got = repr(node.value) if isinstance(node, yaml.ScalarNode) else \
         "a list" if isinstance(node, yaml.SequenceNode) else "a mapping"
     raise CollectorSettingsError(f"{_at(path, node)}: {key} must be {expected}, got {got}")

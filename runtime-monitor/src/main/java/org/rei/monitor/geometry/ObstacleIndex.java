@@ -43,6 +43,11 @@ public final class ObstacleIndex {
 		moving.put(footprint.name(), footprint);
 	}
 
+	/** Takes a moving obstacle out (it is not observed); its footprint, or null when it was not in. */
+	public Footprint removeMoving(String name) {
+		return moving.remove(name);
+	}
+
 	/** The footprint currently known for {@code name}, or null. */
 	public Footprint get(String name) {
 		Footprint f = moving.get(name);

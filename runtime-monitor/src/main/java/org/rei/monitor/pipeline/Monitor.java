@@ -4,8 +4,11 @@
  */
 package org.rei.monitor.pipeline;
 
+import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import java.util.function.Consumer;
 
@@ -61,6 +64,9 @@ public final class Monitor implements AutoCloseable {
 	private long states;
 	private long missions;
 	private Footprint robotFootprint;
+	private final List<String> movingObstacles = new ArrayList<>();
+	/** Moving obstacles the collector does not publish, with their last footprint, until one appears again. */
+	private final Map<String, Footprint> unobserved = new HashMap<>();
 
 	/**
 	 * @param queryEventLog receives every query event (tests), or null
@@ -88,6 +94,7 @@ public final class Monitor implements AutoCloseable {
 			Footprint f = Footprint.place(o.name(), s, o.pose()[0], o.pose()[1], o.pose()[3]);
 			if (o.moves()) {
 				index.putMoving(f);
+				movingObstacles.add(o.name());
 			} else {
 				index.putStatic(f);
 			}
@@ -171,9 +178,15 @@ public final class Monitor implements AutoCloseable {
 
 	private void step(StateMessage m) {
 		model.applyState(m);
+		if (m.full()) {
+			parkUnobserved(m);
+		}
 		for (ObjectState o : m.objects()) {
 			Footprint old = index.get(o.name());
-			if (old == null) {
+			Footprint parked = old == null ? unobserved.remove(o.name()) : null;
+			if (parked != null) {
+				index.putMoving(Footprint.place(o.name(), parked.shape(), o.x(), o.y(), o.yaw()));
+			} else if (old == null) {
 				guard.problem("unknown-object", "object " + o.name() + " is not in world.json (no footprint)");
 			} else if (!old.isAt(o.x(), o.y(), o.yaw())) {
 				Footprint f = Footprint.place(o.name(), old.shape(), o.x(), o.y(), o.yaw());
@@ -233,6 +246,26 @@ public final class Monitor implements AutoCloseable {
 			engine.laser(gap);
 		}
 		engine.endStep(nearest[0], best[0]);
+	}
+
+	/**
+	 * A full frame lists every object the collector observes (docs/protocol.md): a moving obstacle of world.json
+	 * that it leaves out is not published (the collector's {@code objects} setting), so its last known place says
+	 * nothing; it is not judged until a message brings it again.
+	 */
+	private void parkUnobserved(StateMessage m) {
+		Set<String> present = new HashSet<>();
+		for (ObjectState o : m.objects()) {
+			present.add(o.name());
+		}
+		for (String name : movingObstacles) {
+			if (!present.contains(name)) {
+				Footprint f = index.removeMoving(name);
+				if (f != null) {
+					unobserved.put(name, f);
+				}
+			}
+		}
 	}
 
 	/**

@@ -164,6 +164,23 @@ class ScriptedTraceTest {
 		}
 	}
 
+	@Test
+	void aMovingObjectLeftOutOfTheFullFramesIsNotJudgedUntilItAppears() {
+		try (TestRuns run = run(Traces.unpublishedHuman(Double.POSITIVE_INFINITY))) {
+			// h1 stands in world.json where the robot drives through; unpublished, its place there says nothing
+			assertEquals(List.of(), run.names("SIG_GEOM_"));
+			assertEquals(List.of(), run.of("SIG_OBJECT_"));
+		}
+		try (TestRuns run = run(Traces.unpublishedHuman(7.0))) {
+			// from t = 7 the collector publishes it again: the robot (x = 3.4, reaching 3.54) is then inside it
+			List<Signal> geom = run.of("SIG_GEOM_");
+			assertEquals(List.of("SIG_GEOM_FAR_TRANSIT_CLOSE", "SIG_GEOM_CLOSE_TRANSIT_COLLISION"),
+					geom.stream().limit(2).map(Signal::signal).toList());
+			assertEquals(7.0, geom.get(0).t(), 1e-9);
+			assertEquals("h1", geom.get(1).object());
+		}
+	}
+
 	private static List<String> kinds(TestRuns run, String query) {
 		return run.queryEvents.stream().filter(e -> "h1".equals(e.getTarget()) && e.getQuery().equals(query))
 				.map(e -> e.getKind().name()).toList();

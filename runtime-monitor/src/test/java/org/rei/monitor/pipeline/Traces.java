@@ -95,6 +95,24 @@ final class Traces {
 		return out;
 	}
 
+	/**
+	 * The robot drives along y = 3.5 through human h1's place in world.json (3.5, 3.5) while the collector does not
+	 * publish h1: full frames every second leave it out, until h1 appears there from {@code appearsAt} on.
+	 */
+	static List<StateMessage> unpublishedHuman(double appearsAt) {
+		List<StateMessage> out = new ArrayList<>();
+		for (int k = 0; k <= 200; k++) {
+			double t = k * DT;
+			RobotState robot = new RobotState("tb3", 2.0 + 0.2 * t, 3.5, 0, 0, 0.2, 0, 0, null, Double.NaN, null, null,
+					Double.NaN);
+			List<ObjectState> objects = t >= appearsAt
+					? List.of(new ObjectState("h1", "HUMAN", 3.5, 3.5, 0.85, 0, 0, 0, 0))
+					: List.of();
+			out.add(new StateMessage(k, t, k % 20 == 0, objects, robot, List.of()));
+		}
+		return out;
+	}
+
 	/** Human h1's x at time t in {@link #humanBumpsRobotAtWall()}: walks +x along y = 1 to x = 5.6 and back. */
 	static double bumpingHumanX(double t) {
 		return t <= 4 ? 4.0 + 0.4 * t : 5.6 - 0.4 * (t - 4);
