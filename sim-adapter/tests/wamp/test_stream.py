@@ -108,6 +108,7 @@ def test_config_and_mission_info_rpcs_answer(router: Router, tmp_path: Path, wor
             "odometry": True,
             "nav_state": True,
             "full_frame_period": 1.0,
+            "objects": None,
         }
         assert served["monitor"] == monitor and served["world"] == world
         assert monitor_client.call("rei.run.rpc1.mission_info") == info
