@@ -32,9 +32,8 @@ class ExamplesTest {
 	private ReiFiles files;
 
 	static Stream<Path> examples() throws IOException {
-		Path examples = ReiFiles.repository().resolve("examples");
-		return Stream.concat(Files.list(examples), Files.list(examples.resolve("catalogues")))
-				.filter(p -> p.toString().endsWith(".rei")).sorted();
+		return Files.walk(ReiFiles.repository().resolve("examples")).filter(p -> p.toString().endsWith(".rei"))
+				.sorted();
 	}
 
 	@Test
