@@ -25,10 +25,10 @@ def test_every_setting_is_read(tmp_path: Path) -> None:
 
 
 @pytest.mark.parametrize(("text", "where", "message"), [
-    ("objects: walker\n", "1:10", "objects must be a list of object names or categories, e.g. [walker, HUMAN], "
-                                  "got 'walker'"),
-    ("rate_hz: 20\nobjects: [walker, 3]\n", "2:19", "objects must list object names or categories (HUMAN, "
-                                                    "DYNAMIC), got '3'"),
+    ("objects: walker\n", "1:10", ("objects must be a list of object names or categories, e.g. [walker, HUMAN], "
+                                  "got 'walker'")),
+    ("rate_hz: 20\nobjects: [walker, 3]\n", "2:19", ("objects must list object names or categories (HUMAN, "
+                                                    "DYNAMIC), got '3'")),
     ("objects:\n  - {name: walker}\n", "2:5", "objects must list object names"),
     ("object: [walker]\n", "1:1", "unknown setting 'object'"),
 ])
