@@ -238,3 +238,50 @@ def test_hover_tells_where_a_floor_is_what_a_type_measures_and_what_the_threshol
     thresholds = hover(6, "close")
     assert "below `close` 0.3 m" in thresholds and "below `collision` 0.02 m" in thresholds, thresholds
     assert language_server.stop() == 0
+
+
+VEPL_TEXT = """\
+queryEvent closeFound as robotClose found
+queryEvent thesisFar() as findFarObject found
+atomicEvent taskStarted as mission TASK_START
+complexEvent closeDuringTask() { as taskStarted -> closeFound }
+signal SIG_CLOSE_IN_TASK utility -2 transition geometry FAR -> CLOSE
+rule closeInTask on closeDuringTask emits SIG_CLOSE_IN_TASK
+rule farAgain on thesisFar emits SIG_CLOSE_IN_TASK
+"""
+
+
+def test_the_same_server_hovers_vepl_events_and_signals_with_their_definitions(
+    language_server: LspClient, tmp_path: Path
+) -> None:
+    path = tmp_path / "patterns.vepl"
+    path.write_text(VEPL_TEXT, encoding="utf-8")
+    uri = path.as_uri()
+    language_server.request("initialize", {"processId": None, "rootUri": tmp_path.as_uri(), "capabilities": {}},
+                            timeout=START_TIMEOUT_S)
+    language_server.notify("initialized", {})
+    language_server.notify("textDocument/didOpen",
+                           {"textDocument": {"uri": uri, "languageId": "vepl", "version": 1, "text": VEPL_TEXT}})
+    lines = VEPL_TEXT.splitlines()
+
+    def hover(line: int, word: str, occurrence: int = 0) -> str:
+        start = -1
+        for _ in range(occurrence + 1):
+            start = lines[line].index(word, start + 1)
+        result = language_server.request("textDocument/hover", {"textDocument": {"uri": uri},
+                                                                "position": {"line": line, "character": start + 1}},
+                                          timeout=START_TIMEOUT_S)
+        assert result is not None, f"no hover on {word!r}"
+        contents = result["contents"]
+        return contents["value"] if isinstance(contents, dict) else str(contents)
+
+    # on a use of an event, its declaration as written
+    used = hover(3, "closeFound")
+    assert "Query event closeFound" in used and "`robotClose` appears" in used, used
+    assert "queryEvent closeFound as robotClose found" in used, used
+    assert "the mission topic's `TASK_START` event" in hover(3, "taskStarted")
+    assert "{ as taskStarted -> closeFound }" in hover(5, "closeDuringTask")
+    assert "the thesis's name of REI's `robotFar`" in hover(6, "thesisFar")
+    signal = hover(5, "SIG_CLOSE_IN_TASK")
+    assert "utility -2.0" in signal and "robot's zone by geometry goes from FAR to CLOSE" in signal, signal
+    assert language_server.stop() == 0

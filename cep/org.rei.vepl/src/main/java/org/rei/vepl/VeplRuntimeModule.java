@@ -5,7 +5,9 @@
 package org.rei.vepl;
 
 import org.eclipse.xtext.conversion.IValueConverterService;
+import org.eclipse.xtext.documentation.IEObjectDocumentationProvider;
 import org.rei.vepl.conversion.VeplValueConverters;
+import org.rei.vepl.documentation.VeplDocumentationProvider;
 
 /** Bindings of the VEPL runtime beyond the generated defaults. */
 public class VeplRuntimeModule extends AbstractVeplRuntimeModule {
@@ -13,5 +15,10 @@ public class VeplRuntimeModule extends AbstractVeplRuntimeModule {
 	@Override
 	public Class<? extends IValueConverterService> bindIValueConverterService() {
 		return VeplValueConverters.class;
+	}
+
+	/** Hovers in editors (the language server asks it). */
+	public Class<? extends IEObjectDocumentationProvider> bindIEObjectDocumentationProvider() {
+		return VeplDocumentationProvider.class;
 	}
 }
