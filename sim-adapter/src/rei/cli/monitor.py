@@ -3,7 +3,8 @@
 
 Prints one line per signal (``seq t signal subject object distance``), the same signals the live run produced;
 for re-checking a run with other rules or after a monitor change, without a simulator or a router. A run folder
-made with ``rei run --patterns DIR`` is replayed with the patterns it kept (``OUT/patterns/``).
+made with ``rei run --patterns DIR --queries DIR`` is replayed with the patterns and queries it kept
+(``OUT/patterns/``, ``OUT/queries/``); ``--patterns``/``--queries`` replay it with others instead.
 """
 
 from __future__ import annotations
@@ -24,6 +25,10 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
                         help="a run folder (with streams/ and case/) or a state.msgpack recording")
     parser.add_argument("--case", metavar="DIR", type=Path,
                         help="generated case folder (default: OUT/case, else the case OUT/sim.json names)")
+    parser.add_argument("--patterns", metavar="DIR", type=Path,
+                        help="the *.vepl of DIR beside the default patterns, instead of the run's own")
+    parser.add_argument("--queries", metavar="DIR", type=Path,
+                        help="the *.drl of DIR beside the packaged queries, instead of the run's own")
     parser.set_defaults(handler=run)
 
 
@@ -40,6 +45,15 @@ def run(args: argparse.Namespace) -> int:
         raise CommandError(f"no generated case found (expected {expected}); give --case DIR")
 
     patterns = PatternSelection.recorded(replay) if replay.is_dir() else PatternSelection()
+    if args.patterns is not None or args.queries is not None:
+        from rei.run.patterns import PatternError, check
+
+        patterns = PatternSelection(args.patterns.resolve() if args.patterns is not None else None,
+                                    queries=args.queries.resolve() if args.queries is not None else None)
+        try:
+            check(patterns)
+        except PatternError as error:
+            raise CommandError(str(error)) from None
     java = toolchain.find_java()
     return toolchain.run_jar(toolchain.find_jar("monitor"),
                              ["--replay", str(replay), "--case", str(case), *patterns.monitor_args()], java=java)

@@ -4,7 +4,7 @@
 Exit 0: every verdict passes; 1: a verdict fails; 2: an error (a part died, the run was interrupted, bad
 arguments, patterns that do not compile). OUT gets events.csv, summary.json, verdicts.xml, the recorded streams
 (streams/), the monitor's model (runtime.xmi), what its patterns declare (utilities.json), a copy of the user's
-patterns (patterns/) and each part's log.
+patterns (patterns/) and queries (queries/) and each part's log.
 """
 
 from __future__ import annotations
@@ -46,6 +46,9 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
                         "(docs/vepl.md); checked before the run, kept in OUT/patterns/")
     parser.add_argument("--no-default-patterns", action="store_true",
                         help="with --patterns: only the patterns of DIR")
+    parser.add_argument("--queries", metavar="DIR", type=Path,
+                        help="the *.drl of DIR: queries over the monitor's runtime model that --patterns may name "
+                        "(docs/monitor.md); checked before the run, kept in OUT/queries/")
     parser.add_argument("--run-id", metavar="ID", help="identifier of the run in topic names (default: random)")
     parser.add_argument("--view", action="store_true",
                         help="watch the run live in the browser: serves a page on 127.0.0.1 and prints its URL")
@@ -98,11 +101,13 @@ def _check_patterns(args: argparse.Namespace) -> tuple[PatternSelection, dict[st
     with them, what they declare (None for the defaults only, which need no check)."""
     from rei.run.patterns import PatternError, PatternSelection, check
 
-    if args.patterns is None:
-        if args.no_default_patterns:
-            raise CommandError("--no-default-patterns needs --patterns DIR")
+    if args.patterns is None and args.no_default_patterns:
+        raise CommandError("--no-default-patterns needs --patterns DIR")
+    if args.patterns is None and args.queries is None:
         return PatternSelection(), None
-    selection = PatternSelection(args.patterns.resolve(), defaults=not args.no_default_patterns)
+    selection = PatternSelection(args.patterns.resolve() if args.patterns is not None else None,
+                                 defaults=not args.no_default_patterns,
+                                 queries=args.queries.resolve() if args.queries is not None else None)
     try:
         return selection, check(selection)
     except PatternError as error:

@@ -15,6 +15,7 @@ import org.rei.monitor.config.CaseReader;
 import org.rei.monitor.config.MonitorSpec;
 import org.rei.monitor.engine.DrlSources;
 import org.rei.monitor.engine.PatternRules;
+import org.rei.monitor.engine.SessionFactory;
 import org.rei.monitor.model.Snapshots;
 import org.rei.monitor.pipeline.Monitor;
 import org.rei.monitor.replay.Recording;
@@ -44,7 +45,8 @@ public final class Main {
 			  --realm NAME         WAMP realm (default rei)
 			  --auth-file FILE     live: the monitor role's credentials (0600 JSON written by the router;
 			                       required by REI's authenticating router, docs/security.md)
-			  --queries DIR        .drl queries (default: the copies of queries/ in the jar)
+			  --queries DIR        the user's .drl queries, beside the packaged ones (queries/): over the runtime
+			                       model and the monitor's facts; --patterns may name them
 			  --patterns DIR       .vepl patterns compiled at start, added to the default patterns (cep/patterns/)
 			  --no-default-patterns  only the patterns of --patterns DIR
 			  --rules DIR          hand-written .drl transition rules instead of any VEPL patterns
@@ -82,6 +84,9 @@ public final class Main {
 		} catch (VeplLoader.VeplException e) { // the message lists file:line:column of every error
 			err.println("rei-monitor: " + e.getMessage());
 			return 1;
+		} catch (IllegalArgumentException e) { // rule files that do not build: file:line of each error
+			err.println("rei-monitor: " + e.getMessage());
+			return 1;
 		} catch (Exception e) {
 			err.println("rei-monitor: " + e);
 			return 1;
@@ -95,8 +100,10 @@ public final class Main {
 
 	/** Compiles the rules and writes {@code --utilities-out} at once, before any message is processed. */
 	static Rules rules(Options o) throws Exception {
-		List<DrlSources.Source> queries = o.queries != null ? DrlSources.folder(o.queries)
-				: DrlSources.packaged(DrlSources.QUERIES);
+		List<DrlSources.Source> queries = new ArrayList<>(DrlSources.packaged(DrlSources.QUERIES));
+		if (o.queries != null) {
+			queries.addAll(DrlSources.folder(o.queries));
+		}
 		List<DrlSources.Source> drl = new ArrayList<>(queries);
 		Map<String, Double> utilities = Map.of(); // hand-written DRL declares none
 		Map<String, CompiledRules.Transition> transitions = Map.of();
@@ -118,6 +125,7 @@ public final class Main {
 
 	private static int compileOnly(Options o, PrintStream err) throws Exception {
 		Rules r = rules(o);
+		SessionFactory.build(r.drl()).dispose(); // the queries and the rules must also build together
 		err.printf("compiled %d rule files, %d signals declared%n", r.drl().size(), r.utilities().size());
 		return 0;
 	}

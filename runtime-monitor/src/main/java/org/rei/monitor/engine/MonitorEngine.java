@@ -5,12 +5,18 @@
 package org.rei.monitor.engine;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.Iterator;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.TimeUnit;
 
+import org.drools.base.definitions.rule.impl.QueryImpl;
+import org.drools.base.rule.Declaration;
+import org.eclipse.emf.ecore.EObject;
 import org.kie.api.definition.KiePackage;
 import org.kie.api.definition.rule.Query;
 import org.kie.api.event.rule.AfterMatchFiredEvent;
@@ -33,8 +39,11 @@ import org.rei.vepl.runtime.SignalSink;
  * {@link QueryEvent}s at the simulation time of the step (live queries), and lets the transition rules turn
  * those into signals. The pseudo clock follows simulation time.
  *
- * <p>Every query of the loaded files is watched; by convention each declares
- * {@code (String subject, String target, double range)}.
+ * <p>Every query of the loaded files is watched. A query declares any of {@code String subject} (default: the
+ * robot), {@code String target} (default: none, the empty string) and {@code double range} (default: 0, as for the
+ * mission's events): they
+ * become the event's subject, target and range, and so a signal's subject, object and distance. The runtime model
+ * is in the session too ({@link ModelFacts}), so a query may match the EMF model's objects as they are.
  */
 public final class MonitorEngine implements AutoCloseable {
 
@@ -48,6 +57,7 @@ public final class MonitorEngine implements AutoCloseable {
 	private final List<LiveQuery> liveQueries = new ArrayList<>();
 	private final List<QueryEvent> pending = new ArrayList<>();
 	private final List<QueryEvent> queryEventLog;
+	private final ModelFacts model;
 	private double now;
 	private long step;
 
@@ -62,10 +72,11 @@ public final class MonitorEngine implements AutoCloseable {
 	}
 
 	/**
+	 * @param model         the runtime model the queries may match (its containment tree), or null
 	 * @param queryEventLog receives every query event in order (tests, debugging), or null
 	 */
 	public MonitorEngine(KieSession session, Thresholds thresholds, String robotName, SignalSink signals,
-			List<QueryEvent> queryEventLog) {
+			EObject model, List<QueryEvent> queryEventLog) {
 		this.session = session;
 		this.clock = session.getSessionClock();
 		this.queryEventLog = queryEventLog;
@@ -77,25 +88,33 @@ public final class MonitorEngine implements AutoCloseable {
 		// transition (and the signals of both state machines then start from the same FAR).
 		laser = new LaserReading(robotName, "laser", Double.POSITIVE_INFINITY);
 		laserHandle = session.insert(laser);
+		this.model = model == null ? null : new ModelFacts(session, model);
 		for (KiePackage pkg : session.getKieBase().getKiePackages()) {
 			for (Query q : pkg.getQueries()) {
-				watch(q.getName());
+				watch(q);
 			}
 		}
 		session.fireAllRules();
 		pending.clear(); // matches present before the first message are the initial state, not events
 	}
 
-	private void watch(String query) {
+	private void watch(Query q) {
+		String query = q.getName();
+		Declaration[] parameters = q instanceof QueryImpl impl ? impl.getParameters() : new Declaration[0];
+		Set<String> declared = new HashSet<>();
+		for (Declaration d : parameters) {
+			declared.add(d.getIdentifier());
+		}
+		String robotName = robot.getName();
 		ViewChangedEventListener listener = new ViewChangedEventListener() {
 			@Override
 			public void rowInserted(Row row) {
-				pending.add(event(query, QueryEvent.Kind.FOUND, row));
+				pending.add(event(query, QueryEvent.Kind.FOUND, row, declared, robotName));
 			}
 
 			@Override
 			public void rowDeleted(Row row) {
-				pending.add(event(query, QueryEvent.Kind.LOST, row));
+				pending.add(event(query, QueryEvent.Kind.LOST, row, declared, robotName));
 			}
 
 			@Override
@@ -103,18 +122,16 @@ public final class MonitorEngine implements AutoCloseable {
 				// the same match with new values (a distance changed): not an event
 			}
 		};
-		try {
-			liveQueries.add(session.openLiveQuery(query, new Object[] { Variable.v, Variable.v, Variable.v }, listener));
-		} catch (RuntimeException e) {
-			throw new IllegalArgumentException("query " + query
-					+ " must declare (String subject, String target, double range): " + e.getMessage(), e);
-		}
+		Object[] arguments = new Object[parameters.length];
+		Arrays.fill(arguments, Variable.v);
+		liveQueries.add(session.openLiveQuery(query, arguments, listener));
 	}
 
-	private QueryEvent event(String query, QueryEvent.Kind kind, Row row) {
-		Object range = row.get("range");
-		return new QueryEvent(query, kind, (String) row.get("subject"), (String) row.get("target"),
-				range instanceof Number n ? n.doubleValue() : Double.NaN, now);
+	private QueryEvent event(String query, QueryEvent.Kind kind, Row row, Set<String> declared, String robotName) {
+		String subject = declared.contains("subject") ? String.valueOf(row.get("subject")) : robotName;
+		String target = declared.contains("target") ? String.valueOf(row.get("target")) : "";
+		Object range = declared.contains("range") ? row.get("range") : null;
+		return new QueryEvent(query, kind, subject, target, range instanceof Number n ? n.doubleValue() : 0.0, now);
 	}
 
 	/** Starts a state step at simulation time {@code t} (seconds); the pseudo clock never runs backwards. */
@@ -180,6 +197,9 @@ public final class MonitorEngine implements AutoCloseable {
 
 	// live-query callbacks arrive inside fireAllRules; the events they produce are inserted afterwards
 	private void fire() {
+		if (model != null) {
+			model.flush();
+		}
 		session.fireAllRules();
 		while (!pending.isEmpty()) {
 			List<QueryEvent> batch = new ArrayList<>(pending);

@@ -5,7 +5,9 @@
 package org.rei.monitor.engine;
 
 import java.nio.charset.StandardCharsets;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.stream.Collectors;
 
 import org.kie.api.KieServices;
@@ -26,21 +28,28 @@ import org.kie.internal.utils.KieHelper;
  */
 public final class SessionFactory {
 
+	private static final String RESOURCES = "src/main/resources/";
+
 	private SessionFactory() {
 	}
 
 	public static KieSession build(List<DrlSources.Source> sources) {
 		KieServices ks = KieServices.Factory.get();
 		KieHelper helper = new KieHelper();
+		Map<String, String> original = new HashMap<>();
 		for (DrlSources.Source s : sources) {
 			Resource r = ks.getResources().newByteArrayResource(s.text().getBytes(StandardCharsets.UTF_8));
-			r.setSourcePath(sourcePath(s.path()));
+			String path = sourcePath(original.size() / 2, s.path());
+			original.put(path, s.path());
+			original.put(path.substring(RESOURCES.length()), s.path()); // messages leave the prefix out
+			r.setSourcePath(path);
 			helper.addResource(r, ResourceType.DRL);
 		}
 		Results results = helper.verify();
 		if (results.hasMessages(Message.Level.ERROR)) {
 			throw new IllegalArgumentException("rule files do not build:\n" + results.getMessages(Message.Level.ERROR)
-					.stream().map(m -> "  " + m.getPath() + ":" + m.getLine() + ": " + m.getText().strip())
+					.stream().map(m -> "  " + original.getOrDefault(m.getPath(), m.getPath()) + ":" + m.getLine()
+							+ ": " + m.getText().strip())
 					.collect(Collectors.joining("\n")));
 		}
 		KieSessionConfiguration conf = ks.newKieSessionConfiguration();
@@ -48,11 +57,13 @@ public final class SessionFactory {
 		return helper.build(EventProcessingOption.STREAM).newKieSession(conf, null);
 	}
 
-	// KieHelper files resources under src/main/resources; a folder named like the DRL package keeps Drools quiet,
-	// the source folder and file name in the file name keep messages readable ("rei/queries_geometry.drl:12")
-	private static String sourcePath(String path) {
+	// KieHelper files resources under src/main/resources; a folder named like the DRL package keeps Drools quiet.
+	// The index keeps two files apart whose folder and name agree (a user's patterns/requirements.drl query file and
+	// the rules compiled from patterns/requirements.vepl): one would silently replace the other. Messages name the
+	// original path.
+	private static String sourcePath(int index, String path) {
 		String[] parts = path.replace('\\', '/').split("/");
 		String tail = parts.length > 1 ? parts[parts.length - 2] + "_" + parts[parts.length - 1] : parts[0];
-		return "src/main/resources/rei/" + tail;
+		return String.format(RESOURCES + "rei/%04d_%s", index, tail);
 	}
 }

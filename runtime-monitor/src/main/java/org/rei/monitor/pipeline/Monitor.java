@@ -100,7 +100,7 @@ public final class Monitor implements AutoCloseable {
 			}
 		}
 		this.engine = new MonitorEngine(SessionFactory.build(rules), new Thresholds(spec.epsClose(), spec.epsCollision()),
-				robotName, signals, queryEventLog);
+				robotName, signals, model.model(), queryEventLog);
 	}
 
 	/** Footprint per catalogue shape: cylinders are circles, boxes and meshes (bounding box) rectangles. */

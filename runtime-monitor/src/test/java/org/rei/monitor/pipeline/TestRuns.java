@@ -27,13 +27,22 @@ public final class TestRuns implements AutoCloseable {
 	public final Monitor monitor;
 
 	public TestRuns() {
+		this(packagedRules());
+	}
+
+	/** With these rule files (queries and rules) instead of the packaged ones. */
+	public TestRuns(List<DrlSources.Source> rules) {
 		CaseReader.Case c = room();
 		SignalPublisher publisher = new SignalPublisher();
 		publisher.addListener(signals::add);
-		List<DrlSources.Source> rules = new ArrayList<>(DrlSources.packaged(DrlSources.QUERIES));
-		rules.addAll(DrlSources.packaged(DrlSources.RULES));
 		monitor = new Monitor("test", c.world(), c.monitor(), rules, publisher, log::add, queryEvents);
 		monitor.engine().addAgendaListener(org.rei.monitor.engine.MonitorEngine.firedRuleRecorder(firedRules));
+	}
+
+	private static List<DrlSources.Source> packagedRules() {
+		List<DrlSources.Source> rules = new ArrayList<>(DrlSources.packaged(DrlSources.QUERIES));
+		rules.addAll(DrlSources.packaged(DrlSources.RULES));
+		return rules;
 	}
 
 	public static Path roomFolder() {
