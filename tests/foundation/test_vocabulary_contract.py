@@ -157,3 +157,23 @@ def test_python_and_java_refuse_the_thresholds_the_dsl_refuses(problem: str, gen
 """)
         validated = run_cli("validate", source)
         assert validated.returncode != 0 and "threshold" in validated.stdout + validated.stderr
+
+
+def test_the_monitor_page_describes_every_class_and_feature_of_the_runtime_model(repo_root: Path) -> None:
+    """Users write queries against these names: the page's table is a copy of runtime.ecore, checked here."""
+    import xml.etree.ElementTree as ET
+
+    page = (repo_root / "docs" / "monitor.md").read_text(encoding="utf-8")
+    section = page.split("## Queries over the runtime model", 1)[1].split("\n## ", 1)[0]
+    rows = {m[1]: m[2] for m in re.finditer(r"^\| `(\w+)` \| (.*)$", section, re.MULTILINE)}
+    model = ET.parse(repo_root / "metamodels" / "model" / "runtime.ecore").getroot()
+    xsi = "{http://www.w3.org/2001/XMLSchema-instance}type"
+    for classifier in model.findall("eClassifiers"):
+        name = classifier.get("name")
+        if classifier.get(xsi) == "ecore:EEnum":
+            literals = [literal.get("name") for literal in classifier.findall("eLiterals")]
+            assert f"{name}: {', '.join(literals)}" in section, name
+            continue
+        assert name in rows, f"docs/monitor.md has no row for {name}"
+        for feature in classifier.findall("eStructuralFeatures"):
+            assert f"`{feature.get('name')}`" in rows[name], f"{name}.{feature.get('name')} is not on its row"

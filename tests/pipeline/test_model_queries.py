@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 import re
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -102,6 +103,13 @@ def test_none_fires_on_the_simple_navigation_example_and_the_run_keeps_its_queri
     assert "SIG_MISSION_END" in events and not any(signal in events for signal in OWN)
     assert (out / "queries" / "requirements.drl").read_text() == (PATTERNS / "requirements.drl").read_text()
     assert processes_mentioning(out) == []
+    # the model as facts leaves the default signals alone: the same lines, byte for byte, as a replay without them
+    plain = tmp_path / "plain"
+    shutil.copytree(out / "streams", plain / "streams")
+    with_queries = run_cli("monitor", "--replay", out, "--case", out / "case")
+    without = run_cli("monitor", "--replay", plain, "--case", out / "case")
+    assert with_queries.returncode == without.returncode == 0, with_queries.stderr + without.stderr
+    assert with_queries.stdout == without.stdout and "SIG_MISSION_END" in without.stdout
     again = run_cli("evaluate", out, timeout=300)  # the replay loads the kept queries: the patterns still compile
     assert again.returncode == 0, again.stdout + again.stderr
 

@@ -4,11 +4,16 @@
  */
 package org.rei.monitor.engine;
 
+import java.util.HashMap;
+import java.util.HashSet;
 import java.util.IdentityHashMap;
 import java.util.LinkedHashSet;
 import java.util.Map;
 import java.util.Set;
 
+import org.drools.base.base.ClassObjectType;
+import org.drools.core.impl.InternalRuleBase;
+import org.drools.core.reteoo.ObjectTypeNode;
 import org.eclipse.emf.common.notify.Notification;
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.EReference;
@@ -26,18 +31,45 @@ import org.kie.api.runtime.rule.FactHandle;
  * {@code Pose}, a {@code Twist}) also updates its container, so a pattern on {@code ConcreteObject(pose.x > 3)}
  * follows the pose. References are not followed: a pattern joins the object it needs instead of reading through a
  * reference ({@code RobotDescription(body == $o)}, not {@code body.pose.x}).
+ *
+ * <p>Only objects of a class some loaded pattern or query matches are facts (the session's object type nodes say
+ * which): the model costs nothing per step when no query reads it, and the moving bodies cost their updates only
+ * when a query reads bodies.
  */
 final class ModelFacts extends EContentAdapter {
 
 	private final KieSession session;
+	private final Set<Class<?>> matched;
+	private final Map<Class<?>, Boolean> relevant = new HashMap<>();
 	private final Map<EObject, FactHandle> handles = new IdentityHashMap<>();
 	// insertion order, so that updates (and the query events they cause) come in the same order every run
 	private final Set<EObject> dirty = new LinkedHashSet<>();
 
-	ModelFacts(KieSession session, EObject root) {
+	private ModelFacts(KieSession session, Set<Class<?>> matched) {
 		this.session = session;
-		insertTree(root);
-		root.eAdapters().add(this);
+		this.matched = matched;
+	}
+
+	/** The model's objects as facts of the session, or null when no pattern of it matches any of them. */
+	static ModelFacts attach(KieSession session, EObject root) {
+		Set<Class<?>> matched = new HashSet<>();
+		for (ObjectTypeNode node : ((InternalRuleBase) session.getKieBase()).getRete().getObjectTypeNodes()) {
+			if (node.getObjectType() instanceof ClassObjectType type && type.getClassType() != Object.class
+					&& EObject.class.isAssignableFrom(type.getClassType())) {
+				matched.add(type.getClassType());
+			}
+		}
+		if (matched.isEmpty()) {
+			return null;
+		}
+		ModelFacts facts = new ModelFacts(session, matched);
+		facts.insertTree(root);
+		root.eAdapters().add(facts);
+		return facts;
+	}
+
+	private boolean isFact(EObject o) {
+		return relevant.computeIfAbsent(o.getClass(), c -> matched.stream().anyMatch(t -> t.isAssignableFrom(c)));
 	}
 
 	int size() {
@@ -69,7 +101,7 @@ final class ModelFacts extends EContentAdapter {
 			dirty.add(changed);
 		}
 		EObject container = changed.eContainer();
-		if (container != null && isValue(changed)) {
+		if (container != null && isValue(changed) && handles.containsKey(container)) {
 			dirty.add(container);
 		}
 	}
@@ -95,7 +127,9 @@ final class ModelFacts extends EContentAdapter {
 
 	private void insertTree(Object value) {
 		if (value instanceof EObject o && !handles.containsKey(o)) {
-			handles.put(o, session.insert(o));
+			if (isFact(o)) {
+				handles.put(o, session.insert(o));
+			}
 			o.eContents().forEach(this::insertTree);
 		}
 	}

@@ -88,7 +88,7 @@ public final class MonitorEngine implements AutoCloseable {
 		// transition (and the signals of both state machines then start from the same FAR).
 		laser = new LaserReading(robotName, "laser", Double.POSITIVE_INFINITY);
 		laserHandle = session.insert(laser);
-		this.model = model == null ? null : new ModelFacts(session, model);
+		this.model = model == null ? null : ModelFacts.attach(session, model);
 		for (KiePackage pkg : session.getKieBase().getKiePackages()) {
 			for (Query q : pkg.getQueries()) {
 				watch(q);

@@ -8,6 +8,7 @@ import java.nio.charset.StandardCharsets;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.stream.Collectors;
 
 import org.kie.api.KieServices;
@@ -39,7 +40,7 @@ public final class SessionFactory {
 		Map<String, String> original = new HashMap<>();
 		for (DrlSources.Source s : sources) {
 			Resource r = ks.getResources().newByteArrayResource(s.text().getBytes(StandardCharsets.UTF_8));
-			String path = sourcePath(original.size() / 2, s.path());
+			String path = sourcePath(original.keySet(), s.path());
 			original.put(path, s.path());
 			original.put(path.substring(RESOURCES.length()), s.path()); // messages leave the prefix out
 			r.setSourcePath(path);
@@ -57,13 +58,17 @@ public final class SessionFactory {
 		return helper.build(EventProcessingOption.STREAM).newKieSession(conf, null);
 	}
 
-	// KieHelper files resources under src/main/resources; a folder named like the DRL package keeps Drools quiet.
-	// The index keeps two files apart whose folder and name agree (a user's patterns/requirements.drl query file and
-	// the rules compiled from patterns/requirements.vepl): one would silently replace the other. Messages name the
-	// original path.
-	private static String sourcePath(int index, String path) {
+	// KieHelper files resources under src/main/resources; a folder named like the DRL package keeps Drools quiet, the
+	// source folder and file name in the file name keep messages readable ("rei/queries_geometry.drl:12"). A number
+	// keeps two files apart whose folder and name agree (a user's patterns/requirements.drl query file and the rules
+	// compiled from patterns/requirements.vepl): one would silently replace the other. Messages name the original.
+	private static String sourcePath(Set<String> taken, String path) {
 		String[] parts = path.replace('\\', '/').split("/");
 		String tail = parts.length > 1 ? parts[parts.length - 2] + "_" + parts[parts.length - 1] : parts[0];
-		return String.format(RESOURCES + "rei/%04d_%s", index, tail);
+		String candidate = RESOURCES + "rei/" + tail;
+		for (int n = 2; taken.contains(candidate); n++) {
+			candidate = RESOURCES + "rei/" + n + "_" + tail;
+		}
+		return candidate;
 	}
 }
