@@ -126,3 +126,27 @@ def test_a_malformed_query_stops_rei_run_with_file_and_line_before_anything_star
     assert result.returncode == 2
     assert f"{queries / 'broken.drl'}:4:" in result.stderr and "RobotDescription" in result.stderr, result.stderr
     assert not out.exists()
+
+
+def test_a_generated_rooms_default_signals_are_the_same_with_the_model_queries_loaded(
+    run_cli, tmp_path: Path
+) -> None:
+    """As a campaign judges its rooms: simulate one (furniture and a walking human), replay it with and without
+    the example queries and patterns; the default signals agree byte for byte."""
+    rooms = tmp_path / "rooms"
+    made = run_cli("gen-rooms", "--size", "small", "--humans", "1", "--seed", "4", "--count", "1", "-o", rooms,
+                   "--no-check")
+    assert made.returncode == 0, made.stderr
+    (room,) = rooms.glob("*.rei")
+    out = tmp_path / "out"
+    sim = run_cli("sim", room, "-o", out, "--no-router", timeout=300)
+    assert sim.returncode in (0, 1), sim.stderr  # a failed task is a verdict, not a broken run
+    plain = run_cli("monitor", "--replay", out)
+    loaded = run_cli("monitor", "--replay", out, "--queries", PATTERNS, "--patterns", PATTERNS)
+    assert plain.returncode == loaded.returncode == 0, plain.stderr + loaded.stderr
+    own = [line for line in loaded.stdout.splitlines() if any(signal in line for signal in OWN)]
+    defaults = [line for line in loaded.stdout.splitlines() if line not in own]
+    expected = plain.stdout.splitlines()
+    assert len(expected) > 10 and any("SIG_GEOM_" in line for line in expected)
+    # the example signals take sequence numbers of their own: compare the default signals without them
+    assert [line.split(None, 1)[1] for line in defaults] == [line.split(None, 1)[1] for line in expected]
