@@ -29,21 +29,18 @@ import org.kie.internal.utils.KieHelper;
  */
 public final class SessionFactory {
 
-	private static final String RESOURCES = "src/main/resources/";
-
 	private SessionFactory() {
 	}
 
 	public static KieSession build(List<DrlSources.Source> sources) {
 		KieServices ks = KieServices.Factory.get();
 		KieHelper helper = new KieHelper();
-		Map<String, String> original = new HashMap<>();
+		Map<String, String> original = new HashMap<>(); // a message's path (no src/main/resources/) -> the file's
 		for (DrlSources.Source s : sources) {
 			Resource r = ks.getResources().newByteArrayResource(s.text().getBytes(StandardCharsets.UTF_8));
 			String path = sourcePath(original.keySet(), s.path());
 			original.put(path, s.path());
-			original.put(path.substring(RESOURCES.length()), s.path()); // messages leave the prefix out
-			r.setSourcePath(path);
+			r.setSourcePath("src/main/resources/" + path);
 			helper.addResource(r, ResourceType.DRL);
 		}
 		Results results = helper.verify();
@@ -65,9 +62,9 @@ public final class SessionFactory {
 	private static String sourcePath(Set<String> taken, String path) {
 		String[] parts = path.replace('\\', '/').split("/");
 		String tail = parts.length > 1 ? parts[parts.length - 2] + "_" + parts[parts.length - 1] : parts[0];
-		String candidate = RESOURCES + "rei/" + tail;
+		String candidate = "rei/" + tail;
 		for (int n = 2; taken.contains(candidate); n++) {
-			candidate = RESOURCES + "rei/" + n + "_" + tail;
+			candidate = "rei/" + n + "_" + tail;
 		}
 		return candidate;
 	}

@@ -23,7 +23,7 @@ import org.rei.context.TestCase;
 public final class CatalogueImports {
 
 	/** One import: the catalogue it names, or why there is none (then {@code catalogue} is null). */
-	public record Import(int index, String path, URI uri, Catalogue catalogue, Resource resource, String problem) {
+	public record Import(int index, String path, Catalogue catalogue, Resource resource, String problem) {
 	}
 
 	private CatalogueImports() {
@@ -47,20 +47,20 @@ public final class CatalogueImports {
 
 	private static Import load(Resource importer, int index, String path) {
 		if (path == null || path.isBlank()) {
-			return new Import(index, path, null, null, null, "The import names no file: expected a catalogue's path");
+			return new Import(index, path, null, null, "The import names no file: expected a catalogue's path");
 		}
 		URI uri;
 		try {
 			uri = URI.createFileURI(path).resolve(importer == null ? URI.createFileURI("") : importer.getURI());
 		} catch (IllegalArgumentException e) {
-			return new Import(index, path, null, null, null, "Cannot read catalogue '" + path + "': " + e.getMessage());
+			return new Import(index, path, null, null, "Cannot read catalogue '" + path + "': " + e.getMessage());
 		}
 		if (importer != null && uri.equals(importer.getURI())) {
-			return new Import(index, path, uri, null, null, "A test case can not import itself");
+			return new Import(index, path, null, null, "A test case can not import itself");
 		}
 		ResourceSet resourceSet = importer == null ? null : importer.getResourceSet();
 		if (resourceSet == null || !resourceSet.getURIConverter().exists(uri, null)) {
-			return new Import(index, path, uri, null, null,
+			return new Import(index, path, null, null,
 					"Cannot read catalogue '" + path + "': no such file (paths are relative to this test case)");
 		}
 		Resource resource;
@@ -72,16 +72,16 @@ public final class CatalogueImports {
 			if (broken != null && !broken.getContents().isEmpty()) {
 				resource = broken; // parsed with errors: the validator reports them
 			} else {
-				return new Import(index, path, uri, null, null, "Cannot read catalogue '" + path + "': "
+				return new Import(index, path, null, null, "Cannot read catalogue '" + path + "': "
 						+ (e.getCause() != null ? e.getCause().getMessage() : e.getMessage()));
 			}
 		}
 		EObject root = resource.getContents().isEmpty() ? null : resource.getContents().get(0);
 		if (root instanceof Catalogue catalogue) {
-			return new Import(index, path, uri, catalogue, resource, null);
+			return new Import(index, path, catalogue, resource, null);
 		}
 		String what = root instanceof TestCase ? "a test case" : root == null ? "empty" : "not a catalogue";
-		return new Import(index, path, uri, null, resource, "'" + path + "' is " + what
+		return new Import(index, path, null, resource, "'" + path + "' is " + what
 				+ ": expected a catalogue file ('catalogue NAME { type ... }')");
 	}
 }
