@@ -4,8 +4,9 @@
 Runs examples/campaigns/thesis.yaml cold (fresh output folder: every case generated, every run executed) with
 `rei campaign --workers N` and reports the wall time, runs per hour, the campaign's CPU seconds and its share of
 the machine's cores, how busy the machine was overall (other processes included) and the load average, and
-where the runs' time went (simulation, monitor replay, evaluation). Target: all 23 runs in under 2 minutes on
-2 cores.
+where the runs' time went (simulation, monitor replay, evaluation). Targets: all 23 runs in under 2 minutes on
+2 cores; the campaign's CPU <= 1.25x its simulations' CPU and its wall time <= 1.1x that CPU spread over the cores
+(both sides printed as RATIO lines; exit 1 when one is missed).
 
     .venv/bin/python benchmarks/campaign.py [--workers 2] [--spec examples/campaigns/thesis.yaml] [--keep DIR]
 """
@@ -23,6 +24,10 @@ import time
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
+#: The campaign's CPU at most this times its simulations' CPU (the rest: generation, replays, workers' start).
+CPU_GOAL = 1.25
+#: Its wall time at most this times the simulations' CPU spread over the cores.
+WALL_GOAL = 1.1
 
 
 def main() -> int:
@@ -59,10 +64,22 @@ def main() -> int:
         print(f"  {name:<13} {t['cpu']:7.1f} s CPU  {t['wall']:7.1f} s wall (summed over runs)")
     overhead = runs["cpu"] - sum(t["cpu"] for t in runs["phases"].values())
     print(f"  {'worker start':<13} {overhead:7.1f} s CPU  (Python start, imports, files)")
+    # the floor, measured in the same run: the simulations' own CPU (issue #17's goals are ratios to it)
+    sim_cpu = runs["phases"].get("simulation", {}).get("cpu", 0.0)
+    cpu_ratio = usage["cpu"] / sim_cpu if sim_cpu else float("inf")
+    ideal_wall = sim_cpu / usage["cores"]
+    wall_ratio = wall / ideal_wall if ideal_wall else float("inf")
+    print(f"RATIO campaign CPU / simulation CPU          {usage['cpu']:7.1f} / {sim_cpu:7.1f} s = {cpu_ratio:.2f}  "
+          f"(goal <= {CPU_GOAL}: {'met' if cpu_ratio <= CPU_GOAL else 'MISSED'})")
+    print(f"RATIO wall / (simulation CPU / {usage['cores']} cores)     {wall:7.1f} / {ideal_wall:7.1f} s = "
+          f"{wall_ratio:.2f}  (goal <= {WALL_GOAL}: {'met' if wall_ratio <= WALL_GOAL else 'MISSED'}; load average "
+          f"{usage['load_average_1min']:.1f})")
     print(f"report: {out / 'report.html'}")
     if args.keep is None:
         shutil.rmtree(out, ignore_errors=True)
-    return 0 if done.returncode in (0, 1) else done.returncode
+    if done.returncode not in (0, 1):
+        return done.returncode
+    return 0 if cpu_ratio <= CPU_GOAL and wall_ratio <= WALL_GOAL else 1
 
 
 if __name__ == "__main__":

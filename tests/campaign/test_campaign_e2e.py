@@ -180,7 +180,13 @@ groups:
         out = tmp_path / mode
         result = run_cli("campaign", spec, "-o", out, "--workers", "1", timeout=300)
         assert result.returncode == 0, result.stdout + result.stderr
-        summaries[mode] = json.loads((out / "runs" / "example__simple_navigation__short__r0" / "summary.json").read_text())
+        run = out / "runs" / "example__simple_navigation__short__r0"
+        summaries[mode] = json.loads((run / "summary.json").read_text())
+        if mode == "replay":  # replayed in the campaign's warm monitor JVM; its thread's CPU counts for the run
+            monitor = json.loads((run / "timing.json").read_text())["monitor"]
+            assert monitor["served"] is True and monitor["cpu"] > 0
+            assert json.loads((run / "result.json").read_text())["cpu_time"] >= monitor["cpu"]
+            assert (out / "cases" / "generator.log").is_file()  # the case was generated in a warm JVM too
     replay, pipeline = summaries["replay"], summaries["pipeline"]
     assert replay["counts"] == pipeline["counts"] and replay["counts"]["SIG_MISSION_TASK_FAIL"] == 2
     assert replay["total_utility"] == pipeline["total_utility"]

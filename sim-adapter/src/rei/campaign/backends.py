@@ -7,13 +7,17 @@ the caller's thread as it arrives, so results are written and printed in one pla
 
 from __future__ import annotations
 
+import contextlib
 import threading
 from collections.abc import Callable, Sequence
 from concurrent.futures import FIRST_COMPLETED, Future, ThreadPoolExecutor, wait
+from pathlib import Path
 from typing import Any
 
 from rei.campaign.plan import RunTask
 from rei.campaign.supervise import Outcome, supervise
+from rei.campaign.worker import MONITOR_SERVER_ENV
+from rei.run.jvm import JarServer
 
 OnOutcome = Callable[[RunTask, Outcome], None]
 
@@ -21,21 +25,36 @@ OnOutcome = Callable[[RunTask, Outcome], None]
 class LocalBackend:
     """``workers`` runs at a time, each in its own process, supervised by one thread each.
 
-    ``command`` (for tests) replaces the worker command line of every run.
+    ``monitor_log``: keep one warm monitor JVM for every run's replay (rei.run.jvm.JarServer), its log there; the
+    workers find its socket in ``$REI_MONITOR_SERVER`` (rei.campaign.worker). ``command`` (for tests) replaces the
+    worker command line of every run.
     """
 
     name = "local"
 
-    def __init__(self, workers: int, command: Callable[[RunTask], Sequence[str]] | None = None) -> None:
+    def __init__(self, workers: int, command: Callable[[RunTask], Sequence[str]] | None = None,
+                 monitor_log: Path | None = None) -> None:
         if workers < 1:
             raise ValueError(f"workers must be >= 1, got {workers}")
         self.workers = workers
         self._command = command
+        self._monitor_log = monitor_log
+        self.monitor_cpu = 0.0  # CPU seconds of the warm monitor JVM, once stopped
 
     def run(self, tasks: Sequence[RunTask], on_outcome: OnOutcome, stop: threading.Event) -> None:
+        with contextlib.ExitStack() as stack:
+            env = None
+            if self._monitor_log is not None and tasks:
+                server = stack.enter_context(JarServer("monitor", self._monitor_log))
+                stack.callback(lambda: setattr(self, "monitor_cpu", self.monitor_cpu + server.cpu))
+                env = {MONITOR_SERVER_ENV: str(server.socket)}
+            self._run(tasks, on_outcome, stop, env)
+
+    def _run(self, tasks: Sequence[RunTask], on_outcome: OnOutcome, stop: threading.Event,
+             env: dict[str, str] | None) -> None:
         with ThreadPoolExecutor(self.workers, thread_name_prefix="rei-campaign") as pool:
             pending: dict[Future[Outcome], RunTask] = {
-                pool.submit(supervise, task, stop, self._command(task) if self._command else None): task
+                pool.submit(supervise, task, stop, self._command(task) if self._command else None, env): task
                 for task in tasks}
             try:
                 while pending:

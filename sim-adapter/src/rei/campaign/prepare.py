@@ -3,7 +3,8 @@
 
 Generated rooms are first written to ``OUT/rooms/<case>.rei``. A case folder records the SHA-256 of the
 ``.rei`` text it came from and of the catalogues it imports; on resume an unchanged case is not generated again
-(one JVM start less per case).
+(one generation less per case). The cases to generate go through one warm generator JVM (rei.run.jvm.JarServer):
+one JVM start for the campaign instead of one per case.
 """
 
 from __future__ import annotations
@@ -27,7 +28,21 @@ class Prepared:
     generated: bool
 
 
-def prepare_case(source: CaseSource, out: Path) -> Prepared:
+def needs_generation(source: CaseSource, out: Path) -> bool:
+    """Whether ``prepare_case`` would run the generator for this case (it is new or its source changed)."""
+    rei = source.rei_file(out)
+    if rei is None:
+        return False
+    if source.text is not None and (not rei.is_file() or rei.read_text(encoding="utf-8") != source.text):
+        return True
+    try:
+        return not _current(source.case_dir(out), source_digest(rei))
+    except OSError:
+        return False  # prepare_case reports the unreadable file
+
+
+def prepare_case(source: CaseSource, out: Path, *, server: Path | None = None) -> Prepared:
+    """Generate the case unless it is current; ``server``: a warm generator JVM's socket (rei.run.jvm)."""
     rei = source.rei_file(out)
     if rei is None:  # an already generated folder
         return Prepared(source.key, None, 0.0, False)
@@ -40,17 +55,22 @@ def prepare_case(source: CaseSource, out: Path) -> Prepared:
     except OSError as error:
         return Prepared(source.key, f"cannot read {error.filename}: {error.strerror or error}", 0.0, False)
     target = source.case_dir(out)
-    stamp = target / STAMP
-    if stamp.is_file() and stamp.read_text(encoding="utf-8").strip() == digest and (target / "world.json").is_file():
+    if _current(target, digest):
         return Prepared(source.key, None, 0.0, False)
     target.mkdir(parents=True, exist_ok=True)
-    stamp.unlink(missing_ok=True)
-    result = run_jar("cli", ["generate", str(rei), "-o", str(target), "--quiet"], target.parent / f"{source.key}.log")
+    (target / STAMP).unlink(missing_ok=True)
+    result = run_jar("cli", ["generate", str(rei), "-o", str(target), "--quiet"], target.parent / f"{source.key}.log",
+                     server=server)
     if result.code != 0:
         return Prepared(source.key, f"{rei} could not be generated (exit {result.code}): {result.log_tail}",
                         result.cpu, True)
-    stamp.write_text(digest + "\n", encoding="utf-8")
+    (target / STAMP).write_text(digest + "\n", encoding="utf-8")
     return Prepared(source.key, None, result.cpu, True)
+
+
+def _current(target: Path, digest: str) -> bool:
+    stamp = target / STAMP
+    return stamp.is_file() and stamp.read_text(encoding="utf-8").strip() == digest and (target / "world.json").is_file()
 
 
 #: A test case's catalogue imports (docs/language.md); only read to notice a changed catalogue on resume.

@@ -35,7 +35,7 @@ class RunResult:
     status: str  # COMPLETED or ERROR
     error: str | None
     wall_time: float  # of the worker process, seconds
-    cpu_time: float  # of the worker and its children, seconds
+    cpu_time: float  # of the worker and its children, plus its replay in the warm monitor JVM; seconds
     host: str
     sim_duration: float | None = None
     total_utility: float | None = None
@@ -62,11 +62,14 @@ def make_result(task: RunTask, outcome: Outcome) -> RunResult:
     error = outcome.error
     if error is None and summary is None:
         error = "crashed: the worker ended without writing summary.json"
+    timing = _json(run_dir / "timing.json") or {}
+    monitor = timing.get("monitor") or {}
+    served = float(monitor.get("cpu", 0.0)) if monitor.get("served") else 0.0  # spent in the warm monitor JVM
     base: dict[str, Any] = {
         "key": task.key, "group": task.group, "case": task.case, "variant": task.variant,
         "repetition": task.repetition, "seed": task.seed, "humans": task.humans, "fault": task.fault,
-        "wall_time": round(outcome.wall, 3), "cpu_time": round(outcome.cpu, 3), "host": outcome.host,
-        "timing": _json(run_dir / "timing.json") or {}}
+        "wall_time": round(outcome.wall, 3), "cpu_time": round(outcome.cpu + served, 3), "host": outcome.host,
+        "timing": timing}
     if error is not None or summary is None:
         return RunResult(status="ERROR", error=error, **base)
     tasks = summary.get("tasks") or {}

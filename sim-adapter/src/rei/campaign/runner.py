@@ -15,6 +15,7 @@ finished ones, and the same command resumes.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import shutil
 import signal
@@ -28,10 +29,11 @@ from typing import Any, Protocol
 from rei.campaign.aggregate import runs_csv, summary_csv
 from rei.campaign.machine import Sample, usage
 from rei.campaign.plan import Plan, RunTask, plan_campaign
-from rei.campaign.prepare import Prepared, prepare_case
+from rei.campaign.prepare import Prepared, needs_generation, prepare_case
 from rei.campaign.results import RunResult, finished_result, make_result, write_result
 from rei.campaign.spec import Spec
 from rei.campaign.supervise import Outcome
+from rei.run.jvm import JarServer
 
 
 class Backend(Protocol):
@@ -75,9 +77,9 @@ def run_campaign(spec: Spec, out: Path, backend: Backend, *, retry_errors: bool 
     interrupted = False
     metrics: dict[str, Any] = {}
     try:
-        prepared = _prepare(plan, out, prepare_workers, log)
+        prepared, prepare_cpu = _prepare(plan, out, prepare_workers, log)
         metrics["prepare"] = {"cases": len(plan.cases), "generated": sum(p.generated for p in prepared.values()),
-                              "cpu": round(sum(p.cpu for p in prepared.values()), 3),
+                              "cpu": round(prepare_cpu, 3),
                               "wall": round(Sample.now().wall - start.wall, 3)}
         todo = []
         for task in plan.runs:
@@ -152,13 +154,18 @@ def _json_or_none(path: Path) -> Any:
         return None
 
 
-def _prepare(plan: Plan, out: Path, workers: int, log: Callable[[str], None]) -> dict[str, Prepared]:
-    with ThreadPoolExecutor(max(1, workers), thread_name_prefix="rei-prepare") as pool:
-        prepared = {p.key: p for p in pool.map(lambda source: prepare_case(source, out), plan.cases)}
+def _prepare(plan: Plan, out: Path, workers: int, log: Callable[[str], None]) -> tuple[dict[str, Prepared], float]:
+    """Every case generated (in one warm generator JVM when any needs it); and that JVM's CPU seconds."""
+    generate = any(needs_generation(source, out) for source in plan.cases)
+    with ThreadPoolExecutor(max(1, workers), thread_name_prefix="rei-prepare") as pool, \
+            (JarServer("cli", out / "cases" / "generator.log") if generate else contextlib.nullcontext()) as server:
+        socket = server.socket if server is not None else None
+        prepared = {p.key: p for p in pool.map(lambda source: prepare_case(source, out, server=socket), plan.cases)}
+    cpu = server.cpu if server is not None else sum(p.cpu for p in prepared.values())
     for p in prepared.values():
         if p.error:
             log(f"case {p.key}: {p.error}")
-    return prepared
+    return prepared, cpu
 
 
 def _record(task: RunTask, outcome: Outcome, log: Callable[[str], None], error: str | None,

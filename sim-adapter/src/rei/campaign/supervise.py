@@ -15,7 +15,7 @@ import subprocess
 import sys
 import threading
 import time
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any
@@ -65,8 +65,9 @@ def worker_command(run_dir: Path) -> list[str]:
 
 
 def supervise(task: RunTask, stop: threading.Event | None = None,
-              command: Sequence[str] | None = None) -> Outcome:
-    """Write ``task.json`` into the run folder and run the worker (or ``command``) there."""
+              command: Sequence[str] | None = None, env: Mapping[str, str] | None = None) -> Outcome:
+    """Write ``task.json`` into the run folder and run the worker (or ``command``) there, with ``env`` added to
+    this process's environment."""
     run_dir = Path(task.run_dir)
     run_dir.mkdir(parents=True, exist_ok=True)
     for stale in ("summary.json", "result.json"):
@@ -79,7 +80,8 @@ def supervise(task: RunTask, stop: threading.Event | None = None,
         return Outcome(task.key, None, False, True, 0.0, 0.0, "", os.uname().nodename)
     with open(log, "wb") as out:
         process = subprocess.Popen(list(command or worker_command(run_dir)), stdout=out, stderr=subprocess.STDOUT,
-                                   stdin=subprocess.DEVNULL, cwd=run_dir, start_new_session=True)
+                                   stdin=subprocess.DEVNULL, cwd=run_dir, start_new_session=True,
+                                   env={**os.environ, **env} if env else None)
         try:
             while True:
                 pid, status, usage = os.wait4(process.pid, os.WNOHANG)

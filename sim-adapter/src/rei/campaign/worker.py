@@ -12,6 +12,10 @@ Two paths, both with the real components:
   out is the router, the live monitor's JVM start before the run and the waits for drains (~10 s a run).
 * ``pipeline``: ``rei run`` in this process (router, live monitor, simulation child, evaluator, report).
 
+The local backend keeps one warm monitor JVM for all its runs and names its socket in ``$REI_MONITOR_SERVER``:
+replays go there (a tenth of a second each instead of a JVM start and rule compilation), and to a JVM of their
+own when it does not answer.
+
 Exit 0 once ``summary.json`` is written (whatever the verdicts); anything else is a broken run.
 ``timing.json`` says where the time went (wall and CPU seconds per phase).
 """
@@ -29,6 +33,8 @@ from rei.campaign.plan import RunTask
 from rei.lifetime import sigterm_unwinds
 
 TASK_FILE = "task.json"
+#: The warm monitor JVM's socket (rei.run.jvm.JarServer), set by the local backend for its workers.
+MONITOR_SERVER_ENV = "REI_MONITOR_SERVER"
 TIMING_FILE = "timing.json"
 
 
@@ -69,10 +75,14 @@ def _replay(task: RunTask, run_dir: Path) -> int:
             result = _with_external_sut(task, run_dir, options)
     # an external SUT that broke the run: what was recorded is still judged, as an ERROR naming it (as `rei run`)
     broken = {} if result.error is None else {"status": "ERROR", "reason": result.error}
-    with _Phase(timing, "evaluation"):  # this process's CPU only: the monitor's replay is a child JVM
+    server = os.environ.get(MONITOR_SERVER_ENV)
+    with _Phase(timing, "evaluation"):  # this process's CPU only: the monitor's replay is in another JVM
         judged = reevaluate(run_dir, Path(task.case_dir), settings=RunSettings(
-            humans=task.humans, run_id=task.key, sim_duration=result.sim_time), **broken)
-    timing["monitor"] = {"wall": round(judged.monitor.wall, 3), "cpu": round(judged.monitor.cpu, 3)}
+            humans=task.humans, run_id=task.key, sim_duration=result.sim_time), **broken,
+            monitor_server=Path(server) if server else None)
+    # served: the replay's CPU was spent in the warm JVM, not in this worker's children (results.make_result)
+    timing["monitor"] = {"wall": round(judged.monitor.wall, 3), "cpu": round(judged.monitor.cpu, 3),
+                         **({"served": True} if server and judged.monitor.served else {})}
     timing["evaluation"]["wall"] = round(judged.evaluation_wall, 3)
     if task.report:
         with _Phase(timing, "report"):

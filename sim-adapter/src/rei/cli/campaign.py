@@ -53,7 +53,7 @@ def run(args: argparse.Namespace) -> int:
         except Exception as error:  # noqa: BLE001 - any failure to reach the cluster is the user's to fix
             raise CommandError(f"cannot connect to Ray at {args.ray}: {error}") from None
     else:
-        backend = LocalBackend(workers)
+        backend = LocalBackend(workers, monitor_log=args.output.resolve() / "runs" / "monitor-server.log")
     try:
         result = run_campaign(spec, args.output, backend, retry_errors=args.retry_errors, prepare_workers=workers)
     except SpecError as error:

@@ -14,11 +14,13 @@ from __future__ import annotations
 import threading
 import time
 from collections.abc import Callable, Iterable, Mapping
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from rei.evaluation.evaluator import Evaluator
 from rei.evaluation.summary import Summary
-from rei.wamp.client import WampClient
+
+if TYPE_CHECKING:
+    from rei.wamp.client import WampClient
 from rei.wamp.topics import Topics
 
 MISSION_INFO_RETRY = 0.5

@@ -6,6 +6,10 @@ into the optimising JIT compiler, whose work never pays back. Measured on the 2-
 replay: default flags 5.4 s CPU; ``-XX:TieredStopAtLevel=1`` (client compiler only) 3.0 s; plus
 ``-XX:+UseSerialGC`` (no parallel GC threads competing with the other runs) 2.7 s. Generation: 2.3 -> 1.5 s.
 
+A warm JVM (``JarServer``, the jar's ``--serve SOCKET``, org.rei.warmjvm) runs many commands in one JVM: classes
+loaded, code compiled and rule bases built once. ``run_jar(..., server=SOCKET)`` sends the command there instead
+of starting a JVM, and falls back to its own JVM when the server is gone.
+
 Class-data sharing on top: the first run of a jar dumps the classes it loaded into an archive
 (``-XX:ArchiveClassesAtExit``, once, ~1.4 s extra), later runs map it instead of loading and verifying the classes
 again (``benchmarks/replay_jvm.py``). Archives are kept per jar build and Java in ``$REI_CDS_DIR`` (default
@@ -16,11 +20,15 @@ from __future__ import annotations
 
 import hashlib
 import os
+import shutil
+import socket
 import subprocess
+import tempfile
 import time
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
+from typing import IO, Self
 
 from rei import toolchain
 
@@ -32,12 +40,148 @@ CDS_ENV = "REI_CDS_DIR"
 class JvmResult:
     code: int
     wall: float
-    cpu: float  # user + system seconds of the JVM
+    cpu: float  # user + system seconds of the JVM (served: of the command's thread in the warm JVM)
     log_tail: str
+    served: bool = False  # ran in a warm JVM (JarServer), not in one of its own
 
 
-def run_jar(role: str, args: Sequence[str], log: Path, timeout: float | None = None) -> JvmResult:
-    """Run one of REI's jars to completion with the fast-start flags, its output into ``log``."""
+#: Seconds a warm JVM may take to start listening.
+SERVER_START_TIMEOUT = 60.0
+
+
+class JarServerError(RuntimeError):
+    """A warm JVM did not start; the message has its log's tail."""
+
+
+class JarServer:
+    """One of REI's jars serving many commands in one JVM until ``stop()`` (or until this process ends: the JVM
+    exits when its standard input closes). Its socket lives in a new private folder (0700)."""
+
+    def __init__(self, role: str, log: Path) -> None:
+        self.role, self.log = role, log
+        self._folder: Path | None = None
+        self._process: subprocess.Popen[bytes] | None = None
+        self._log_file: IO[bytes] | None = None
+        self._dump: tuple[Path, Path] | None = None
+        self.cpu = 0.0  # user + system seconds of the JVM, once stopped
+
+    @property
+    def socket(self) -> Path:
+        if self._folder is None:
+            raise RuntimeError("the server is not started")
+        return self._folder / "jvm.sock"
+
+    def start(self) -> Self:
+        java = toolchain.find_java()
+        jar = toolchain.find_jar(self.role)
+        sharing, self._dump = _class_sharing(jar, java)
+        self._folder = Path(tempfile.mkdtemp(prefix=f"rei-{self.role}-"))  # 0700: whoever connects runs commands
+        self.log.parent.mkdir(parents=True, exist_ok=True)
+        self._log_file = open(self.log, "wb")  # noqa: SIM115 - kept open while the JVM runs
+        self._process = subprocess.Popen(
+            [str(java.executable), *FAST_START_FLAGS, *sharing, "-jar", str(jar), "--serve", str(self.socket)],
+            stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=self._log_file)
+        assert self._process.stdout is not None
+        ready = _read_line(self._process.stdout, SERVER_START_TIMEOUT)
+        if ready != b"ready\n":
+            self.stop()
+            raise JarServerError(f"the warm {self.role} JVM did not start: {tail(self.log, 8)}")
+        return self
+
+    def alive(self) -> bool:
+        return self._process is not None and self._process.poll() is None
+
+    def stop(self, timeout: float = 10.0) -> None:
+        """Closes the JVM's standard input (it finishes and exits), kills it after ``timeout``."""
+        process = self._process
+        if process is None:
+            return
+        self._process = None
+        if process.stdin is not None:
+            try:
+                process.stdin.close()
+            except OSError:
+                pass
+        deadline = time.perf_counter() + timeout
+        while True:
+            pid, status, usage = os.wait4(process.pid, os.WNOHANG)
+            if pid:
+                break
+            if time.perf_counter() > deadline:
+                process.kill()
+                pid, status, usage = os.wait4(process.pid, 0)
+                break
+            time.sleep(0.02)
+        process.returncode = os.waitstatus_to_exitcode(status)
+        self.cpu = usage.ru_utime + usage.ru_stime
+        if self._dump is not None:
+            _keep_archive(self._dump, ok=process.returncode == 0)
+        if self._log_file is not None:
+            self._log_file.close()
+        if self._folder is not None:
+            shutil.rmtree(self._folder, ignore_errors=True)
+
+    def __enter__(self) -> Self:
+        return self.start()
+
+    def __exit__(self, *exc: object) -> None:
+        self.stop()
+
+
+def run_served(server: Path, args: Sequence[str], log: Path, timeout: float | None = None) -> JvmResult | None:
+    """Run one command in the warm JVM listening on ``server``; None when nobody answers there (start one's own).
+
+    ``cpu`` is the command thread's CPU time in the server. A timed-out command is cancelled (exit code -1)."""
+    for value in (*args, str(log)):
+        if "\n" in value or "\r" in value:
+            raise ValueError(f"a line break in {value!r}: not passed to a warm JVM")
+    started = time.perf_counter()
+    connection = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+    try:
+        connection.connect(str(server))
+    except OSError:
+        connection.close()
+        return None
+    with connection:
+        request = "".join(f"arg {a}\n" for a in args) + f"log {log}\nrun\n"
+        connection.sendall(request.encode("utf-8"))
+        connection.settimeout(timeout)
+        answer = b""
+        try:
+            while not answer.endswith(b"\n"):
+                chunk = connection.recv(64)
+                if not chunk:
+                    break
+                answer += chunk
+        except TimeoutError:
+            return JvmResult(-1, time.perf_counter() - started, 0.0,
+                             f"{tail(log, 7)}\ncancelled after {timeout:.0f} s".strip(), served=True)
+    fields = answer.decode("ascii", errors="replace").split()
+    if len(fields) != 4 or fields[0] != "exit":
+        return JvmResult(-1, time.perf_counter() - started, 0.0,
+                         f"{tail(log, 7)}\nthe warm JVM ended during the command".strip(), served=True)
+    return JvmResult(int(fields[1]), time.perf_counter() - started, int(fields[2]) / 1000, tail(log, 8), served=True)
+
+
+def _read_line(stream: IO[bytes], timeout: float) -> bytes:
+    """One line of a child's output, or b"" when none comes within ``timeout`` seconds (or it ended)."""
+    import selectors
+
+    with selectors.DefaultSelector() as selector:
+        selector.register(stream, selectors.EVENT_READ)
+        if not selector.select(timeout):
+            return b""
+    return stream.readline()
+
+
+def run_jar(role: str, args: Sequence[str], log: Path, timeout: float | None = None,
+            server: Path | None = None) -> JvmResult:
+    """Run one of REI's jars to completion with the fast-start flags, its output into ``log``: in the warm JVM
+    listening on ``server`` when given and answering, else in a JVM of its own."""
+    if server is not None:
+        served = run_served(server, args, log, timeout)
+        if served is not None:
+            return served
     java = toolchain.find_java()
     jar = toolchain.find_jar(role)
     sharing, dump = _class_sharing(jar, java)

@@ -16,7 +16,7 @@ import time
 from collections.abc import Callable
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from rei.artifacts import read_case
 from rei.geometry import Twist2D
@@ -25,10 +25,11 @@ from rei.sim.simulation import Simulation
 from rei.sut.api import Controller
 from rei.sut.external.controller import SutError
 from rei.sut.external.options import SutOptions
-from rei.sut.external.session import external_sut
 from rei.sut.registry import create_controller
-from rei.wamp.client import WampClient
 from rei.wamp.collector import CollectorConfig, DataCollector, MissionPublisher
+
+if TYPE_CHECKING:
+    from rei.wamp.client import WampClient
 
 #: Sim seconds allowed beyond the sum of task timeouts before the run is cut (a controller that never
 #: reports can not hang a run).
@@ -122,6 +123,7 @@ def run_mission(
             if options.sut is not None:
                 if client is None:
                     raise SutError("an external system under test needs a router (not --no-router)")
+                from rei.sut.external.session import external_sut  # the WAMP client: only with a router
                 controller = external = stack.enter_context(external_sut(
                     options.sut, client, run_id, out_dir, case=case, static_map=sim.static_map(),
                     control_rate=options.control_rate, now=lambda: sim.t))

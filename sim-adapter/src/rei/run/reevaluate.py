@@ -73,12 +73,12 @@ def case_of_run(out: Path) -> Path | None:
 
 
 def replay_monitor(out: Path, case_dir: Path, *, patterns: PatternSelection | None = None,
-                   timeout: float = REPLAY_TIMEOUT) -> tuple[JvmResult, list[Any]]:
+                   timeout: float = REPLAY_TIMEOUT, server: Path | None = None) -> tuple[JvmResult, list[Any]]:
     """Run the monitor jar over the run's recorded streams; returns its result and the signals it emitted.
 
     ``patterns``: default the run's own (``PatternSelection.recorded``). Writes ``OUT/signals.jsonl``,
     ``OUT/utilities.json`` (what the patterns declare), ``OUT/runtime.xmi`` (the final model) and
-    ``OUT/monitor-replay.log``.
+    ``OUT/monitor-replay.log``. ``server``: a warm monitor JVM's socket (rei.run.jvm.JarServer) to replay in.
     """
     if not stream_path(out, "state").is_file():
         raise ReevaluationError(f"{stream_path(out, 'state')}: no recorded state stream to re-evaluate")
@@ -89,7 +89,7 @@ def replay_monitor(out: Path, case_dir: Path, *, patterns: PatternSelection | No
     result = run_jar("monitor", ["--replay", str(out), "--case", str(case_dir), "--signals-out", str(signals_file),
                                  "--snapshot-out", str(out / "runtime.xmi"), "--quiet", *patterns.monitor_args(),
                                  "--utilities-out", str(out / UTILITIES_FILE)],
-                     out / "monitor-replay.log", timeout=timeout)
+                     out / "monitor-replay.log", timeout=timeout, server=server)
     return result, read_signals(signals_file)
 
 
@@ -116,13 +116,13 @@ class Reevaluation:
 def reevaluate(out: Path, case_dir: Path | None = None, *, utilities: Path | None = None,
                settings: RunSettings | None = None, notes: tuple[str, ...] = (),
                status: str = "COMPLETED", reason: str | None = None,
-               patterns: PatternSelection | None = None) -> Reevaluation:
+               patterns: PatternSelection | None = None, monitor_server: Path | None = None) -> Reevaluation:
     """Replay the recorded streams through the monitor and evaluate the signals into ``out``.
 
     ``notes``: what the summary should say about why the run was re-evaluated. ``patterns``: default the ones
     the run kept (``OUT/patterns/``, else the defaults). A failed replay makes the run an ERROR with the
     monitor's log tail as the reason; a utility file that does not fit the patterns raises ReevaluationError
-    before the live results are touched.
+    before the live results are touched. ``monitor_server``: replay in that warm monitor JVM.
     """
     from rei.artifacts import read_case
     from rei.evaluation import (
@@ -141,7 +141,7 @@ def reevaluate(out: Path, case_dir: Path | None = None, *, utilities: Path | Non
         raise ReevaluationError(f"no generated case in {case_dir} (world.json missing)")
     settings = settings or RunSettings.from_run(out)
     patterns = patterns or PatternSelection.recorded(out)
-    monitor, signals = replay_monitor(out, case_dir, patterns=patterns)
+    monitor, signals = replay_monitor(out, case_dir, patterns=patterns, server=monitor_server)
     started = time.perf_counter()
     declared_file = out / UTILITIES_FILE  # missing only when the replay failed before compiling its rules
     try:

@@ -21,9 +21,8 @@ import os
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from types import TracebackType
-from typing import Any, Self
+from typing import TYPE_CHECKING, Any, Self
 
-from rei.wamp.client import WampClient
 from rei.wamp.codec import (
     LaserMode,
     MissionEventKind,
@@ -36,6 +35,9 @@ from rei.wamp.codec import (
 )
 from rei.wamp.recording import RecordingWriter, stream_path
 from rei.wamp.topics import Topics
+
+if TYPE_CHECKING:
+    from rei.wamp.client import WampClient
 
 _EPS = 1e-9  # tolerance of sim-time schedules against t = n * dt rounding
 #: Categories of the objects a state message carries (the others never move; docs/protocol.md).

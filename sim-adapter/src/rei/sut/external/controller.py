@@ -18,7 +18,7 @@ import queue
 import time
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from rei.geometry import Pose2D, Twist2D
 from rei.processes import ManagedProcess
@@ -26,7 +26,9 @@ from rei.sut.api import Controller, NavGoal, NavStatus, Observation, StaticMap
 from rei.sut.external import protocol
 from rei.sut.external.options import Clock
 from rei.sut.external.protocol import Command, Rejected, RobotLimits, Status
-from rei.wamp.client import WampClient
+
+if TYPE_CHECKING:
+    from rei.wamp.client import WampClient
 
 #: Rejections logged one by one (the rest are only counted).
 LOGGED_REJECTIONS = 10

@@ -12,6 +12,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
+import org.rei.warmjvm.CommandServer;
+
 /**
  * {@code rei-cli validate FILE...}, {@code rei-cli generate FILE -o DIR [--templates DIR]} and
  * {@code rei-cli types CATALOGUE} (a user catalogue's types as JSON on standard output).
@@ -27,6 +29,7 @@ public final class Main {
 			usage: rei-cli validate FILE.rei [FILE.rei ...] [--quiet] [--repeat N]
 			       rei-cli generate FILE.rei -o OUTDIR [--templates DIR] [--quiet] [--repeat N]
 			       rei-cli types CATALOGUE.rei   (its object and robot types as JSON)
+			       rei-cli --serve SOCKET        (run many of the above in this JVM: org.rei.warmjvm)
 			  --templates DIR  EGL templates in DIR replace the built-in ones of the same name
 			  --repeat N       run N times in one process and print each run's time (for benchmarks)
 			  --quiet          print diagnostics only
@@ -41,6 +44,10 @@ public final class Main {
 	}
 
 	public static void main(String[] args) {
+		if (args.length == 2 && args[0].equals("--serve")) { // a warm JVM for many commands (org.rei.warmjvm)
+			System.exit(CommandServer.serveUntilStdinCloses((a, out, err) -> new Main(out, err).run(a), args[1],
+					System.err));
+		}
 		System.exit(new Main(System.out, System.err).run(args));
 	}
 

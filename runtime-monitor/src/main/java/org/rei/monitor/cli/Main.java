@@ -27,6 +27,7 @@ import org.rei.monitor.wamp.LiveMonitor;
 import org.rei.vepl.compiler.CompiledRules;
 import org.rei.vepl.compiler.VeplLoader;
 import org.rei.wamp.auth.RouterCredentials;
+import org.rei.warmjvm.CommandServer;
 
 /**
  * {@code java -jar rei-monitor.jar}: live ({@code --router URL --run ID}) or replay ({@code --replay FILE|DIR}), or
@@ -39,6 +40,7 @@ public final class Main {
 			usage: java -jar rei-monitor.jar --router ws://HOST:PORT/ws --run ID [options]   (live)
 			       java -jar rei-monitor.jar --replay STATE.msgpack|RUN_DIR --case DIR [options]   (replay)
 			       java -jar rei-monitor.jar --compile-only [--patterns DIR] [options]   (check the rules, exit)
+			       java -jar rei-monitor.jar --serve SOCKET   (run many of the above in this JVM: org.rei.warmjvm)
 			options:
 			  --case DIR           world.json + monitor.json (live: default is the run's config RPC)
 			  --mission FILE       replay: the mission stream (default: mission.msgpack beside the state stream)
@@ -67,6 +69,9 @@ public final class Main {
 	}
 
 	public static void main(String[] args) {
+		if (args.length == 2 && args[0].equals("--serve")) { // a warm JVM for many runs (org.rei.warmjvm)
+			System.exit(CommandServer.serveUntilStdinCloses(Main::run, args[1], System.err));
+		}
 		System.exit(run(args, System.out, System.err));
 	}
 

@@ -9,8 +9,10 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.stream.Collectors;
 
+import org.kie.api.KieBase;
 import org.kie.api.KieServices;
 import org.kie.api.builder.Message;
 import org.kie.api.builder.Results;
@@ -32,7 +34,30 @@ public final class SessionFactory {
 	private SessionFactory() {
 	}
 
+	/** Rule bases already built in this JVM (a warm JVM serves many runs with the same rules). */
+	private static final Map<List<DrlSources.Source>, KieBase> BUILT = new ConcurrentHashMap<>();
+	/** More distinct rule sets than this in one JVM: start over rather than grow without bound. */
+	private static final int MAX_BUILT = 16;
+
+	/**
+	 * A new session of the rule base of {@code sources}: built once per distinct set of sources in this JVM, a
+	 * session per call (rule bases are shared safely between sessions and threads).
+	 */
 	public static KieSession build(List<DrlSources.Source> sources) {
+		KieBase base = BUILT.get(sources);
+		if (base == null) {
+			base = kieBase(sources); // outside the map's lock: a failing build throws and caches nothing
+			if (BUILT.size() >= MAX_BUILT) {
+				BUILT.clear();
+			}
+			BUILT.putIfAbsent(List.copyOf(sources), base);
+		}
+		KieSessionConfiguration conf = KieServices.Factory.get().newKieSessionConfiguration();
+		conf.setOption(ClockTypeOption.PSEUDO);
+		return base.newKieSession(conf, null);
+	}
+
+	private static KieBase kieBase(List<DrlSources.Source> sources) {
 		KieServices ks = KieServices.Factory.get();
 		KieHelper helper = new KieHelper();
 		Map<String, String> original = new HashMap<>(); // a message's path (no src/main/resources/) -> the file's
@@ -50,9 +75,7 @@ public final class SessionFactory {
 							+ ": " + m.getText().strip())
 					.collect(Collectors.joining("\n")));
 		}
-		KieSessionConfiguration conf = ks.newKieSessionConfiguration();
-		conf.setOption(ClockTypeOption.PSEUDO);
-		return helper.build(EventProcessingOption.STREAM).newKieSession(conf, null);
+		return helper.build(EventProcessingOption.STREAM);
 	}
 
 	// KieHelper files resources under src/main/resources; a folder named like the DRL package keeps Drools quiet, the
