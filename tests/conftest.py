@@ -10,7 +10,7 @@ import os
 import signal
 import subprocess
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -69,6 +69,28 @@ def _jar(role: str) -> Path:
     except toolchain.ToolchainError as error:
         problem = str(error)
     pytest.fail(problem, pytrace=False)  # outside `except`: one line, no chained traceback
+
+
+@pytest.fixture(scope="session", autouse=True)
+def background_service() -> Iterator[Path]:
+    """Runs use the background service (rei.service) as a user's do: one per test session in a folder of its own
+    (short: a Unix socket's path is limited to 107 bytes), stopped at the end."""
+    import shutil
+    import tempfile
+
+    from rei.service import DIR_ENV
+    from rei.service.client import stop
+
+    folder = Path(tempfile.mkdtemp(prefix="rei-service-"))
+    previous = os.environ.get(DIR_ENV)
+    os.environ[DIR_ENV] = str(folder)
+    yield folder
+    stop(folder)
+    if previous is None:
+        os.environ.pop(DIR_ENV, None)
+    else:
+        os.environ[DIR_ENV] = previous
+    shutil.rmtree(folder, ignore_errors=True)
 
 
 @pytest.fixture(scope="session")

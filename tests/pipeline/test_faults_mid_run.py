@@ -17,17 +17,20 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
 
+import pytest
+
 from rei.run.reevaluate import read_signals
+from rei.service.client import connect
 from rei.wamp.recording import read_recording
 
 RUN_TIMEOUT_S = 240.0
 
 
 @contextmanager
-def _realtime_run(rei_script: Path, repo_root: Path, out: Path) -> Iterator[subprocess.Popen[str]]:
+def _realtime_run(rei_script: Path, repo_root: Path, out: Path, *options: str) -> Iterator[subprocess.Popen[str]]:
     process = subprocess.Popen(
         [str(rei_script), "run", str(repo_root / "examples" / "simple_navigation.rei"), "-o", str(out),
-         "--realtime"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True,
+         "--realtime", *options], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True,
         env={**os.environ, "REI_HOME": str(repo_root)})
     try:
         yield process
@@ -74,20 +77,33 @@ def _statuses(out: Path) -> dict[str, str]:
     return {v["requirement"]: v["status"] for v in json.loads((out / "summary.json").read_text())["verdicts"]}
 
 
+@pytest.mark.parametrize("service", [False, True], ids=["own-jvm", "service-jvm"])
 def test_a_monitor_killed_mid_run_is_judged_again_from_the_recording_with_identical_signals(
-    run_cli, processes_mentioning, rei_script: Path, repo_root: Path, tmp_path: Path
+    run_cli, processes_mentioning, rei_script: Path, repo_root: Path, tmp_path: Path, background_service: Path,
+    service: bool
 ) -> None:
     reference = tmp_path / "reference"
     result = run_cli("run", repo_root / "examples" / "simple_navigation.rei", "-o", reference, timeout=RUN_TIMEOUT_S)
     assert result.returncode == 0, result.stdout + result.stderr
     out = tmp_path / "killed"
-    with _realtime_run(rei_script, repo_root, out) as process:
+    with _realtime_run(rei_script, repo_root, out, *(() if service else ("--no-service",))) as process:
         _await_rows(out, 3)
-        (monitor,) = _pids(b"rei-monitor", out)
+        if service:  # the background service's warm JVM, which runs this run's monitor
+            warm = connect(folder=background_service).monitor
+            assert warm is not None
+            (monitor,) = _pids(b"--serve", warm)
+        else:
+            (monitor,) = _pids(b"rei-monitor", out)
         os.kill(monitor, signal.SIGKILL)
         stdout, stderr = process.communicate(timeout=RUN_TIMEOUT_S)
     assert process.returncode == 0, stdout + stderr
-    assert "rei: the live monitor was killed by SIGKILL" in stdout, stdout
+    died = "ended without an exit code (the warm JVM serving it is gone)" if service else "was killed by SIGKILL"
+    assert f"rei: the live monitor {died}" in stdout, stdout
+    if service:  # the service replaces its JVM, said in one line of its log; the next run has it
+        deadline = time.monotonic() + 60
+        while connect(folder=background_service).monitor in (None, warm) and time.monotonic() < deadline:
+            time.sleep(0.2)
+        assert "the warm monitor JVM ended; starting a new one" in (background_service / "service.log").read_text()
     summary = json.loads((out / "summary.json").read_text())
     assert summary["status"] == "COMPLETED"
     assert any("re-computed from the recorded streams" in p["text"] for p in summary["problems"])

@@ -30,12 +30,15 @@ class ManagedProcess:
     """A child process with its output in ``log`` and, optionally, each stdout line passed to ``on_line``."""
 
     def __init__(self, name: str, argv: Sequence[str], log: Path, *, on_line: Callable[[str], None] | None = None,
-                 env: dict[str, str] | None = None, cwd: Path | None = None) -> None:
+                 env: dict[str, str] | None = None, cwd: Path | None = None, held: bool = False) -> None:
+        """``held``: the child's standard input is a pipe that ``release()`` writes a line to (a child that waits
+        for it can start up meanwhile)."""
         self.name = name
         self.log = log
         self._log = open(log, "w", encoding="utf-8")  # noqa: SIM115 - closed in stop()
         self._process = subprocess.Popen(
-            die_with_parent(argv), stdin=subprocess.DEVNULL, stdout=subprocess.PIPE if on_line else self._log,
+            die_with_parent(argv), stdin=subprocess.PIPE if held else subprocess.DEVNULL,
+            stdout=subprocess.PIPE if on_line else self._log,
             stderr=self._log, start_new_session=True, cwd=cwd,
             env={**os.environ, **(env or {})}, text=True, bufsize=1)
         self._reader: threading.Thread | None = None
@@ -46,6 +49,14 @@ class ManagedProcess:
     @property
     def pid(self) -> int:
         return self._process.pid
+
+    def release(self) -> None:
+        """Tell a ``held`` child to go on: one line on its standard input, which is then closed."""
+        stdin = self._process.stdin
+        if stdin is not None and not stdin.closed:
+            with contextlib.suppress(OSError):  # it died meanwhile: poll() says so
+                stdin.write("go\n")
+                stdin.close()
 
     def poll(self) -> int | None:
         """The exit code once the process has ended (negative: killed by that signal), else None."""

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import os
 import shutil
+import sys
 from pathlib import Path
 
 from rei.cli._java import run_java_cli
@@ -31,14 +32,26 @@ def prepare_output(out: Path) -> None:
                            "(set REI_MIN_FREE_MB to change the limit)")
 
 
-def case_folder(case: Path, out: Path) -> Path:
-    """The folder of generated artifacts to run."""
+def case_folder(case: Path, out: Path, server: Path | None = None) -> Path:
+    """The folder of generated artifacts to run. ``server``: a warm generator JVM's socket (rei.service)."""
     if case.is_dir():
         return case
     if case.suffix != ".rei" or not case.is_file():
         raise CommandError(f"{case}: expected a .rei file or a folder generated from one", EXIT_USAGE)
     generated = out / "case"
-    code = run_java_cli(["generate", str(case), "-o", str(generated), "--quiet"])
+    args = ["generate", str(case.resolve()), "-o", str(generated.resolve()), "--quiet"]
+    served = None
+    if server is not None:
+        from rei.run.jvm import run_served
+
+        served = run_served(server, args, out / "generate.log")
+    if served is not None:  # the diagnostics went to the log: show them as the JVM of our own would have
+        text = (out / "generate.log").read_text(encoding="utf-8", errors="replace")
+        if text:
+            print(text, end="", file=sys.stderr, flush=True)
+        code = served.code
+    else:
+        code = run_java_cli(args)
     if code != EXIT_OK:
         raise CommandError(f"{case} could not be generated (see above)", code)
     return generated

@@ -10,10 +10,13 @@ patterns (patterns/) and queries (queries/) and each part's log.
 from __future__ import annotations
 
 import argparse
+import os
 import secrets
+import shutil
 import sys
+from concurrent.futures import Future, ThreadPoolExecutor
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Self
 
 from rei.cli._case import case_folder, prepare_output, valid_run_id
 from rei.cli._mission_options import (
@@ -29,6 +32,11 @@ from rei.cli.errors import CommandError
 
 if TYPE_CHECKING:
     from rei.run.patterns import PatternSelection
+    from rei.wamp.router import Router
+
+#: Seconds a run waits for the background service's spare router (it is being started after the last run took
+#: the previous one); starting one of its own would take as long and compete for the CPU.
+ROUTER_WAIT = 20.0
 
 
 def register(subparsers: argparse._SubParsersAction[Any]) -> None:
@@ -50,6 +58,9 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
                         help="the *.drl of DIR: queries over the monitor's runtime model that --patterns may name "
                         "(docs/monitor.md); checked before the run, kept in OUT/queries/")
     parser.add_argument("--run-id", metavar="ID", help="identifier of the run in topic names (default: random)")
+    parser.add_argument("--no-service", action="store_true",
+                        help="start this run's own router and JVMs instead of using the background service that "
+                        "keeps them ready between runs (docs/performance.md; also REI_SERVICE=off)")
     parser.add_argument("--view", action="store_true",
                         help="watch the run live in the browser: serves a page on 127.0.0.1 and prints its URL")
     add_router_options(parser, "run")
@@ -57,7 +68,6 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from rei.run.pipeline import PipelineOptions, Progress, run_pipeline
 
     check_mission_options(args)
     check_router_options(args)
@@ -69,13 +79,23 @@ def run(args: argparse.Namespace) -> int:
             load_utilities(args.utilities, declared)  # it may name the signals of the user's patterns
         except UtilityError as error:
             raise CommandError(str(error)) from None
-    run_id = args.run_id or secrets.token_hex(6)
-    if not valid_run_id(run_id):
-        raise CommandError(f"--run-id {run_id!r}: expected letters, digits, '_' or '-'")
+    if args.run_id is not None and not valid_run_id(args.run_id):
+        raise CommandError(f"--run-id {args.run_id!r}: expected letters, digits, '_' or '-'")
     out = Path(args.output).resolve()  # children and the router run in other working directories
     prepare_output(out)
-    case_dir = case_folder(Path(args.case), out)
-    check_collector_objects(args, case_dir)
+    with _Warm(args, out) as warm:
+        case_dir = case_folder(Path(args.case), out, server=warm.cli)
+        check_collector_objects(args, case_dir)
+        router = warm.router()
+        return _run(args, out, case_dir, patterns, declared,
+                    run_id=router.run_id if router is not None else args.run_id or secrets.token_hex(6),
+                    router=router, monitor_server=warm.monitor)
+
+
+def _run(args: argparse.Namespace, out: Path, case_dir: Path, patterns: PatternSelection,
+         declared: dict[str, float | None] | None, *, run_id: str, router: Router | None,
+         monitor_server: Path | None) -> int:
+    from rei.run.pipeline import PipelineOptions, Progress, run_pipeline
 
     def show(progress: Progress) -> None:
         if sys.stderr.isatty():
@@ -86,7 +106,7 @@ def run(args: argparse.Namespace) -> int:
                               utilities=args.utilities,
                               humans=not args.no_humans, laser=collector_config(args).laser.value != "none", view=args.view,
                               bind=args.bind, tls_cert=_path(args.tls_cert), tls_key=_path(args.tls_key),
-                              patterns=patterns, declared=declared)
+                              patterns=patterns, declared=declared, router=router, monitor_server=monitor_server)
     result = run_pipeline(case_dir, out, options,
                           run_id=run_id, on_progress=show)
     if sys.stderr.isatty():
@@ -94,6 +114,67 @@ def run(args: argparse.Namespace) -> int:
     print_verdicts(result.summary)
     write_views(out)
     return result.exit_code
+
+
+class _Warm:
+    """What the background service (rei.service) has ready for this run: warm JVMs, and a spare router taken
+    over in the background while the case is generated. Without the service (``--no-service``,
+    ``REI_SERVICE=off``, or it cannot be reached) every attribute is None and the run starts its own."""
+
+    def __init__(self, args: argparse.Namespace, out: Path) -> None:
+        self.out = out
+        self.monitor: Path | None = None
+        self.cli: Path | None = None
+        self._taking: Future[dict[str, Any] | None] | None = None
+        self._pool: ThreadPoolExecutor | None = None
+        from rei import service
+
+        if args.no_service or not service.enabled():
+            return
+        from rei.service.client import ServiceError, connect
+
+        try:
+            found = connect()
+        except ServiceError as error:
+            print(f"rei: {error}; this run starts its own router and JVMs", flush=True)
+            return
+        self.monitor, self.cli = found.monitor, found.cli
+        # its own run id, a TLS transport: not what a spare router is made for
+        if args.run_id is None and args.bind is None:
+            self._pool = ThreadPoolExecutor(1, thread_name_prefix="rei-take-router")
+            self._taking = self._pool.submit(found.take_router, os.getpid(), ROUTER_WAIT)
+
+    def router(self) -> Router | None:
+        """The spare router, moved into OUT/router; None when the service had none ready in time."""
+        if self._taking is None:
+            return None
+        from rei.service.client import ServiceError
+        from rei.wamp.router import Router
+
+        try:
+            description = self._taking.result()
+        except ServiceError as error:
+            print(f"rei: {error}; this run starts its own router", flush=True)
+            return None
+        if description is None:
+            return None
+        folder = self.out / "router"
+        if folder.is_symlink() or folder.is_file():
+            folder.unlink()
+        elif folder.exists():
+            shutil.rmtree(folder)
+        try:
+            os.rename(description["run_dir"], folder)  # the run keeps its router's config, log and secrets
+        except OSError:  # another file system: the run's folder points to it instead
+            folder.symlink_to(description["run_dir"], target_is_directory=True)
+        return Router.adopt(description, folder)
+
+    def __enter__(self) -> Self:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        if self._pool is not None:
+            self._pool.shutdown(wait=False)
 
 
 def _check_patterns(args: argparse.Namespace) -> tuple[PatternSelection, dict[str, float | None] | None]:

@@ -65,6 +65,9 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
     parser.add_argument("--wait-for-monitor", action="store_true",
                         help="with --reconnect: after a reconnection, send the queued messages only once the run's "
                         f"monitor answers again (at most {MONITOR_GATE_S:g} s), so the router does not drop them")
+    parser.add_argument("--held", action="store_true",
+                        help="with --router: once connected, wait for a line on standard input before simulating "
+                        "(`rei run` starts the simulation while the monitor starts, and says go once it listens)")
     parser.add_argument("--sut-auth-file", metavar="FILE", type=Path,
                         help="with --router and --sut/--sut-attach: the sut role's credentials, for the SUT")
     parser.add_argument("--sut-router", metavar="URL",
@@ -96,6 +99,8 @@ def run(args: argparse.Namespace) -> int:
         publisher = _publisher(args, out, run_id)
         # stopped by `rei run` or a campaign: unwind, so a started SUT and the router are stopped too
         with sigterm_unwinds(), publisher as client:
+            if args.held and not sys.stdin.readline():
+                raise CommandError("--held: standard input ended before the line that starts the simulation")
             url, auth_file = publisher.sut_connection(client)
             options = dataclasses.replace(options, sut=sut_options(args, router_url=url, auth_file=auth_file))
             result = run_mission(case_dir, out, options, run_id=run_id, client=client,
@@ -121,6 +126,8 @@ def run(args: argparse.Namespace) -> int:
 def _check_router_options(args: argparse.Namespace) -> None:
     if not args.reconnect >= 0:
         raise CommandError(f"--reconnect must be a number of seconds >= 0, got {args.reconnect}")
+    if args.held and args.router is None:
+        raise CommandError("--held applies with --router URL only")
     if args.wait_for_monitor and not args.reconnect:
         raise CommandError("--wait-for-monitor applies with --reconnect SECONDS only")
     if args.auth_file is not None and args.router is None:

@@ -18,12 +18,14 @@ again (``benchmarks/replay_jvm.py``). Archives are kept per jar build and Java i
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import os
 import shutil
 import socket
 import subprocess
 import tempfile
+import threading
 import time
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -161,6 +163,74 @@ def run_served(server: Path, args: Sequence[str], log: Path, timeout: float | No
         return JvmResult(-1, time.perf_counter() - started, 0.0,
                          f"{tail(log, 7)}\nthe warm JVM ended during the command".strip(), served=True)
     return JvmResult(int(fields[1]), time.perf_counter() - started, int(fields[2]) / 1000, tail(log, 8), served=True)
+
+
+class ServedCommand:
+    """A command running in a warm JVM, supervised like a child process (rei.processes.ManagedProcess): poll,
+    wait, stop (which cancels it in the JVM), its exit described and its log's tail.
+
+    Raises ConnectionError at once when nobody serves ``server``."""
+
+    def __init__(self, name: str, server: Path, args: Sequence[str], log: Path) -> None:
+        for value in (*args, str(log)):
+            if "\n" in value or "\r" in value:
+                raise ValueError(f"a line break in {value!r}: not passed to a warm JVM")
+        self.name, self.log = name, log
+        self._connection = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+        try:
+            self._connection.connect(str(server))
+        except OSError as error:
+            self._connection.close()
+            raise ConnectionError(f"no warm JVM answers at {server}: {error}") from error
+        request = "".join(f"arg {a}\n" for a in args) + f"log {log}\nrun\n"
+        self._connection.sendall(request.encode("utf-8"))
+        self._code: int | None = None
+        self._cancelled = False
+        self._done = threading.Event()
+        self._thread = threading.Thread(target=self._await, name=f"{name}-served", daemon=True)
+        self._thread.start()
+
+    def _await(self) -> None:
+        answer = b""
+        try:
+            while not answer.endswith(b"\n"):
+                chunk = self._connection.recv(64)
+                if not chunk:
+                    break
+                answer += chunk
+        except OSError:
+            pass
+        fields = answer.decode("ascii", errors="replace").split()
+        self._code = int(fields[1]) if len(fields) == 4 and fields[0] == "exit" else -1
+        self._done.set()
+
+    def poll(self) -> int | None:
+        return self._code if self._done.is_set() else None
+
+    def wait(self, timeout: float) -> int | None:
+        self._done.wait(timeout)
+        return self.poll()
+
+    def stop(self, grace: float = 10.0) -> int:
+        """Cancel the command unless it finished (closing the connection interrupts its thread in the JVM)."""
+        if not self._done.is_set():
+            self._cancelled = True
+            with contextlib.suppress(OSError):
+                self._connection.shutdown(socket.SHUT_RDWR)
+            self._done.wait(grace)
+        self._connection.close()
+        return self._code if self._code is not None else -1
+
+    def describe_exit(self) -> str:
+        if self._code is None:
+            return f"{self.name} is running"
+        if self._code == -1:
+            return f"{self.name} was cancelled" if self._cancelled else \
+                f"{self.name} ended without an exit code (the warm JVM serving it is gone)"
+        return f"{self.name} exited with code {self._code}"
+
+    def log_tail(self, lines: int = 20) -> str:
+        return tail(self.log, lines)
 
 
 def _read_line(stream: IO[bytes], timeout: float) -> bytes:

@@ -5,10 +5,14 @@
                       -> monitor (rei-monitor.jar, child process) publishes signals
                       -> evaluator (here) scores them, writes events.csv, summary.json, verdicts.xml
 
-The monitor is started first and the simulation only once the monitor answers its snapshot procedure: the
-router has then processed its subscriptions, so the first state message is not lost. By then the monitor has
-also written what its patterns declare (``OUT/utilities.json``), so the evaluator is made and subscribed
-between the two - still before the simulation, hence before the first signal.
+The simulation process is started first but held (``rei sim --held``) before its first step; it starts up while
+the monitor does. It is let go only once the monitor answers its snapshot procedure: the router has then processed
+its subscriptions, so the first state message is not lost. By then the monitor has also written what its
+patterns declare (``OUT/utilities.json``), so the evaluator is made and subscribed between the two - still before
+the simulation's first step, hence before the first signal.
+
+With the background service (rei.service, docs/performance.md) the router is one it had ready, taken over by
+this run, and the monitor runs in its warm JVM; nothing else changes.
 
 Faults during the run (docs/security.md, "Faults mid-run"):
 
@@ -37,6 +41,7 @@ from typing import TYPE_CHECKING, Any
 
 from rei import toolchain
 from rei.processes import ManagedProcess
+from rei.run.jvm import ServedCommand
 from rei.run.patterns import UTILITIES_FILE, PatternSelection
 from rei.run.patterns import record as record_patterns
 from rei.run.reevaluate import (
@@ -49,7 +54,7 @@ from rei.run.reevaluate import (
 )
 from rei.wamp.client import WampClient
 from rei.wamp.recording import RecordingWriter, stream_path
-from rei.wamp.router import Router
+from rei.wamp.router import UNKNOWN_EXIT, Router
 from rei.wamp.topics import Topics
 
 if TYPE_CHECKING:
@@ -82,6 +87,10 @@ class PipelineOptions:
     # what they declare when checked before the run (rei.run.patterns.check): the live view starts before the
     # monitor and scores with it; the evaluator uses the monitor's own OUT/utilities.json
     declared: Mapping[str, float | None] | None = None
+    # from the background service (rei.service): a router already running for this run id, taken over
+    # (Router.adopt), and a warm monitor JVM's socket to run the monitor in; None: started here as before
+    router: Router | None = None
+    monitor_server: Path | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -147,7 +156,7 @@ class _Run:
         self.viewer: ViewServer | None = None
         self.client: WampClient | None = None
         self.signals: RecordingWriter | None = None
-        self.monitor: ManagedProcess | None = None
+        self.monitor: ManagedProcess | ServedCommand | None = None
         self.sim: ManagedProcess | None = None
         self.evaluator: Any = None  # made once the monitor says which utilities its patterns declare
         self.monitor_lost: str | None = None  # how the live monitor ended during the run, if it did
@@ -155,27 +164,37 @@ class _Run:
         (out / UTILITIES_FILE).unlink(missing_ok=True)  # a previous run's must not stand in for this one's
 
     def start(self) -> None:
-        """Router, view, the evaluator's client, monitor, evaluator, simulation - in that order (module docstring)."""
+        """Router, view, simulation (held), the evaluator's client, monitor, evaluator, then the simulation goes
+        (module docstring)."""
         from rei.evaluation import attach, load_declared, load_utilities
 
         out, options = self.out, self.options
         self.patterns = record_patterns(options.patterns, out)  # so a replay runs the patterns the live monitor ran
         # authenticated: one role per component, secrets in OUT/router/auth/<role>.json (0600), docs/security.md
-        router = self.router = Router(run_dir=out / "router", run_id=self.run_id, bind=options.bind,
-                                      tls_cert=options.tls_cert, tls_key=options.tls_key, die_with_parent=True).start()
+        router = self.router = options.router or Router(
+            run_dir=out / "router", run_id=self.run_id, bind=options.bind, tls_cert=options.tls_cert,
+            tls_key=options.tls_key, die_with_parent=True).start()
         if router.exposed_url is not None:
             print(f"router: {router.exposed_url} (TLS, authenticated)", flush=True)
         self.viewer = _start_view(router, self.run_id, self.case_dir, options) if options.view else None
+        # the simulation starts up (Python, pybullet, its router session) while the monitor does, held before
+        # its first step until both monitor and evaluator listen
+        sut_args = ["--sut-router", router.ws_url, "--sut-auth-file", str(router.auth_file("sut"))] \
+            if options.external_sut else []
+        self.sim = ManagedProcess("simulation", [
+            sys.executable, "-m", "rei.cli", "sim", str(self.case_dir), "-o", str(out), "--router", router.rs_url,
+            "--auth-file", str(router.auth_file("simulation")), "--run-id", self.run_id, "--progress", "lines",
+            "--reconnect", str(ROUTER_RECONNECT), "--wait-for-monitor", "--held", *sut_args, *options.sim_args],
+            out / "simulation.log", on_line=lambda line: _on_sim_line(line, self.progress), held=True)
         client = self.client = WampClient(router.rs_url, auth=router.credentials("evaluator"),
                                           reconnect=ROUTER_RECONNECT).start()
         self.signals = RecordingWriter(stream_path(out, "signal"))
-        monitor = self.monitor = ManagedProcess("monitor", [
-            str(toolchain.find_java().executable), "-jar", str(toolchain.find_jar("monitor")),
+        monitor = self.monitor = _start_monitor([
             "--router", router.ws_url, "--auth-file", str(router.auth_file("monitor")),
             "--run", self.run_id, "--case", str(self.case_dir), "--until-end", "--quiet",
             "--snapshot-out", str(out / "runtime.xmi"), "--signals-out", str(out / SIGNALS_FILE),
             *self.patterns.monitor_args(), "--utilities-out", str(out / UTILITIES_FILE)],
-            out / "monitor.log")
+            out / "monitor.log", options.monitor_server)
         _await_monitor(client, self.topics, monitor)
         # the monitor wrote what its patterns declare before it answered; signals only come once the simulation
         # runs, so subscribing here still sees the first one
@@ -185,13 +204,7 @@ class _Run:
         attach(client, self.run_id, self.evaluator, also=self.signals.write)
         if self.viewer is not None:
             _await_viewer(self.viewer)
-        sut_args = ["--sut-router", router.ws_url, "--sut-auth-file", str(router.auth_file("sut"))] \
-            if options.external_sut else []
-        self.sim = ManagedProcess("simulation", [
-            sys.executable, "-m", "rei.cli", "sim", str(self.case_dir), "-o", str(out), "--router", router.rs_url,
-            "--auth-file", str(router.auth_file("simulation")), "--run-id", self.run_id, "--progress", "lines",
-            "--reconnect", str(ROUTER_RECONNECT), "--wait-for-monitor", *sut_args, *options.sim_args],
-            out / "simulation.log", on_line=lambda line: _on_sim_line(line, self.progress))
+        self.sim.release()  # monitor and evaluator listen: the simulation may publish
 
     def supervise(self) -> None:
         """While the simulation runs: restart a dead router, note a dead monitor, report progress."""
@@ -209,7 +222,7 @@ class _Run:
             if self.on_progress is not None:
                 p = self.progress
                 self.on_progress(Progress(p["t"], int(p["done"]), int(p["total"]), evaluator.total))
-            time.sleep(0.2)
+            sim.wait(0.05)
         # 0 and 1 are a mission that succeeded or failed; anything else, or no summary, is a broken run
         summary = _json(self.out / "sim.json") if (self.out / "sim.json").is_file() else None
         if summary is not None and summary.get("error"):  # the simulation's own account (an external SUT broke it)
@@ -288,6 +301,17 @@ class _Run:
                                                                     laser=self.options.laser))
 
 
+def _start_monitor(args: list[str], log: Path, server: Path | None) -> ManagedProcess | ServedCommand:
+    """The live monitor: a command in the warm monitor JVM when there is one that answers, else a JVM of its own."""
+    if server is not None:
+        try:
+            return ServedCommand("monitor", server, args, log)
+        except ConnectionError as error:
+            print(f"rei: {error}; starting the monitor in a JVM of its own", flush=True)
+    return ManagedProcess("monitor", [str(toolchain.find_java().executable), "-jar", str(toolchain.find_jar("monitor")),
+                                      *args], log)
+
+
 def _utilities_without_monitor(options: PipelineOptions, patterns: PatternSelection) -> Any:
     """The utility table of a run that broke before the monitor said what its patterns declare."""
     from rei.evaluation import UtilityError, load_utilities
@@ -300,7 +324,9 @@ def _utilities_without_monitor(options: PipelineOptions, patterns: PatternSelect
 
 def _restart_router(router: Router, evaluator: Any, sim_time: float) -> None:
     """The router died mid-run: start it again where the components look for it (see the module docstring)."""
-    code = router.poll()
+    code: int | str | None = router.poll()
+    if code == UNKNOWN_EXIT:
+        code = "unknown to this run (the service started it)"
     if router.restarts >= MAX_ROUTER_RESTARTS:
         raise _Interrupted(f"the router exited with code {code} for the {router.restarts + 1}th time; not restarted "
                            f"again: {router.log_tail(5)}")

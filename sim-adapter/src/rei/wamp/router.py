@@ -28,13 +28,20 @@ import socket
 import subprocess
 import tempfile
 import time
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from pathlib import Path
 from types import TracebackType
-from typing import Self
+from typing import Any, Self
 
 from rei.lifetime import die_with_parent
-from rei.wamp.auth import Credentials, new_secret, private_dir, write_credentials, write_private
+from rei.wamp.auth import (
+    Credentials,
+    load_credentials,
+    new_secret,
+    private_dir,
+    write_credentials,
+    write_private,
+)
 from rei.wamp.crossbar_config import (
     ROLE_GRANTS,
     Role,
@@ -130,6 +137,7 @@ class Router:
         startup_timeout: float = 30.0,
         stop_timeout: float = 10.0,
         die_with_parent: bool = False,
+        niceness: int = 0,
     ) -> None:
         if not _is_loopback(host):
             raise ValueError(f"router host {host!r} is not loopback; use bind=ADDRESS (with TLS) to expose it")
@@ -160,6 +168,8 @@ class Router:
         # crossbar gets SIGTERM if the thread that starts it dies (rei.lifetime.die_with_parent): for a
         # router owned by a process's main thread, so a killed `rei run` leaves no router behind
         self._die_with_parent = die_with_parent
+        # > 0: a spare router of the background service starts on the CPU the current run leaves idle
+        self._niceness = niceness
         self._startup_timeout = startup_timeout
         self._stop_timeout = stop_timeout
         self._process: subprocess.Popen[bytes] | None = None
@@ -224,6 +234,35 @@ class Router:
     def rs_url(self) -> str:
         return self.url("rawsocket")
 
+    def describe(self) -> dict[str, object]:
+        """What ``adopt`` needs to take this running router over in another process (no secrets: those are in
+        ``run_dir/auth``, readable by the user only)."""
+        if self._process is None or self._run_dir is None:
+            raise RouterError("router not started")
+        if self._exposed is not None or not self.auth:
+            raise RouterError("only an authenticating loopback router can be handed over")
+        return {"run_id": self.run_id, "run_dir": str(self._run_dir), "realm": self.realm, "host": self.host,
+                "nodelay": self.nodelay, "ports": {kind: t.port for kind, t in self._transports.items()},
+                "pid": self._process.pid}
+
+    @classmethod
+    def adopt(cls, description: Mapping[str, Any], run_dir: Path | None = None) -> Router:
+        """The running router ``describe()`` described, started by another process (the background service,
+        rei.service), as if this process had started it: ``stop()`` stops it, ``restart()`` starts it again as
+        this process's child. ``run_dir``: where its folder was moved to, if it was."""
+        ports = dict(description["ports"])
+        router = cls(run_dir=run_dir or Path(description["run_dir"]), realm=str(description["realm"]),
+                     host=str(description["host"]), kinds=tuple(ports), nodelay=bool(description["nodelay"]),
+                     run_id=str(description["run_id"]), die_with_parent=True)
+        router._run_dir = router._run_dir_arg
+        router._secrets = {role: load_credentials(router.run_dir / "auth" / f"{role}.json").secret
+                           for role in ROLE_GRANTS}
+        auth = wampcra_auth(router._secrets)
+        router._transports = {kind: Transport(kind, int(port), interface=router.host, nodelay=router.nodelay,
+                                              auth=auth) for kind, port in ports.items()}
+        router._process = _Foreign(int(description["pid"]))  # type: ignore[assignment]
+        return router
+
     def start(self) -> Router:
         """Start the router and return once every transport accepts connections (or raise RouterError)."""
         if self._process is not None:
@@ -279,7 +318,14 @@ class Router:
         return self
 
     def stop(self) -> None:
-        """SIGTERM the router's process group, SIGKILL it after ``stop_timeout``; never leaves a process."""
+        """SIGTERM the router's process group, SIGKILL it after ``stop_timeout``; never leaves a process.
+
+        An adopted router still run by the service that started it is only sent SIGTERM: the service reaps it,
+        and kills it should it outlive the run (rei.service.daemon), so the run does not wait for its shutdown."""
+        if isinstance(self._process, _Foreign) and self._process.poll() is None:
+            _signal_group(self._process.pid, signal.SIGTERM)
+            self._process = None
+            return
         self._terminate()
         self._cleanup_dir()
 
@@ -346,6 +392,8 @@ class Router:
             "--loglevel",
             "info",
         ]
+        if self._niceness and shutil.which("nice"):
+            command = ["nice", "-n", str(self._niceness), *command]
         with open(self.log_path, "ab") as log:
             try:
                 # Own session = own process group: stop() signals the node controller and its worker together.
@@ -410,6 +458,39 @@ class Router:
             shutil.rmtree(self._run_dir, ignore_errors=True)
             self._run_dir = None
             self._temporary = False
+
+
+#: The exit code of an adopted router whose parent reaped it before this process saw it.
+UNKNOWN_EXIT = -255
+
+
+class _Foreign:
+    """A router process this process did not start (``Router.adopt``): watched through /proc, as Popen would be."""
+
+    def __init__(self, pid: int) -> None:
+        self.pid = pid
+        self.returncode: int | None = None
+
+    def poll(self) -> int | None:
+        if self.returncode is None:
+            try:
+                fields = Path(f"/proc/{self.pid}/stat").read_text().rsplit(")", 1)[1].split()
+            except (OSError, IndexError):
+                fields = ["gone"]
+            if fields[0] == "Z" and len(fields) > 49:  # a zombie's wait status (field 52), until its parent reaps it
+                self.returncode = os.waitstatus_to_exitcode(int(fields[49]))
+            elif fields[0] in ("Z", "X", "gone"):
+                self.returncode = UNKNOWN_EXIT  # reaped by its parent (the service): the code is the parent's
+        return self.returncode
+
+    def wait(self, timeout: float | None = None) -> int:
+        deadline = None if timeout is None else time.monotonic() + timeout
+        while self.poll() is None:
+            if deadline is not None and time.monotonic() > deadline:
+                raise subprocess.TimeoutExpired(f"pid {self.pid}", timeout or 0.0)
+            time.sleep(0.02)
+        assert self.returncode is not None
+        return self.returncode
 
 
 def check_bind(

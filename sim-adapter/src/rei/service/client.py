@@ -1,0 +1,135 @@
+# SPDX-License-Identifier: EPL-2.0
+"""A run's side of the background service: find it (starting or replacing it when needed), take a router over."""
+
+from __future__ import annotations
+
+import json
+import os
+import socket
+import subprocess
+import sys
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from rei.service import LOG_NAME, PID_NAME, SOCKET_NAME, fingerprint, service_dir
+from rei.wamp.auth import private_dir
+
+#: Seconds a run waits for a service it started to answer.
+START_TIMEOUT = 30.0
+
+
+class ServiceError(RuntimeError):
+    """The service could not be reached or started; the run goes on without it."""
+
+
+@dataclass(frozen=True, slots=True)
+class Service:
+    folder: Path
+    pid: int
+    fingerprint: str
+    monitor: Path | None  # the warm monitor JVM's socket (rei.run.jvm), None while it is being replaced
+    cli: Path | None  # the warm generator JVM's socket
+
+    def take_router(self, owner: int, wait: float) -> dict[str, Any] | None:
+        """The spare router's description (``Router.adopt``), now this run's; None when none is ready in time."""
+        return request(self.folder, {"op": "router", "owner": owner, "wait": wait}, timeout=wait + 10.0).get("router")
+
+
+def request(folder: Path, message: dict[str, Any], timeout: float = 10.0) -> dict[str, Any]:
+    connection = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+    connection.settimeout(timeout)
+    try:
+        with connection:
+            connection.connect(str(folder / SOCKET_NAME))
+            connection.sendall(json.dumps(message).encode("utf-8") + b"\n")
+            with connection.makefile("rb") as stream:
+                line = stream.readline()
+    except OSError as error:
+        raise ServiceError(f"the background service in {folder} does not answer: {error}") from error
+    if not line:
+        raise ServiceError(f"the background service in {folder} closed the connection")
+    answer = json.loads(line)
+    if "error" in answer:
+        raise ServiceError(f"the background service: {answer['error']}")
+    return answer
+
+
+def connect(log: Callable[[str], None] = print, folder: Path | None = None) -> Service:
+    """The running service, started first when there is none (and replaced when it died, which ``log`` says)."""
+    folder = folder or service_dir()
+    try:
+        found = _hello(folder)
+        if found.fingerprint == fingerprint():
+            return found
+        log(f"rei: REI was rebuilt since the background service (pid {found.pid}) started; replacing it")
+        request(folder, {"op": "stop"})
+        _await_exit(found.pid)
+    except ServiceError:
+        pass
+    stale = _stale_pid(folder)
+    if stale is not None:
+        log(f"rei: the background service (pid {stale}) is gone; starting a new one")
+    _spawn(folder)
+    deadline = time.monotonic() + START_TIMEOUT
+    while True:
+        try:
+            return _hello(folder)
+        except ServiceError as error:
+            if time.monotonic() > deadline:
+                raise ServiceError(f"{error}; see {folder / LOG_NAME}") from None
+            time.sleep(0.05)
+
+
+def stop(folder: Path | None = None) -> bool:
+    """Ask the service to stop; False when none was running."""
+    try:
+        request(folder or service_dir(), {"op": "stop"})
+    except ServiceError:
+        return False
+    return True
+
+
+def _hello(folder: Path) -> Service:
+    answer = request(folder, {"op": "hello"}, timeout=5.0)
+    return Service(folder, int(answer["pid"]), str(answer.get("fingerprint")),
+                   *(Path(answer[r]) if answer.get(r) else None for r in ("monitor", "cli")))
+
+
+def _await_exit(pid: int, timeout: float = 20.0) -> None:
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        try:
+            os.kill(pid, 0)
+        except ProcessLookupError:
+            return
+        time.sleep(0.05)
+
+
+def _stale_pid(folder: Path) -> int | None:
+    """The pid a dead service left in its pid file (a service that was killed runs no clean-up)."""
+    try:
+        pid = int((folder / PID_NAME).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return pid
+    except PermissionError:
+        return None
+    return None
+
+
+def _spawn(folder: Path) -> None:
+    """Start the service detached from this run (own session): it outlives the run, not the machine."""
+    private_dir(folder)
+    with open(folder / LOG_NAME, "ab") as log:
+        subprocess.Popen([sys.executable, "-m", "rei.service"], stdin=subprocess.DEVNULL, stdout=log,
+                         stderr=subprocess.STDOUT, start_new_session=True, cwd=folder,
+                         env={**os.environ, "REI_SERVICE_DIR": str(folder)})
+
+
+__all__ = ["Service", "ServiceError", "connect", "request", "stop"]

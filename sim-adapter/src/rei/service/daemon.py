@@ -1,0 +1,236 @@
+# SPDX-License-Identifier: EPL-2.0
+"""The service process: ``python -m rei.service [--idle SECONDS]`` (started by ``rei.service.client``).
+
+Control protocol, one request per connection on ``service.sock`` (a JSON object per line each way):
+
+    {"op": "hello"}                       -> {"pid": P, "fingerprint": F, "monitor": SOCKET, "cli": SOCKET}
+    {"op": "router", "owner": PID, "wait": S}
+                                          -> {"router": Router.describe()} or {"router": null} (none within S)
+    {"op": "stop"}                        -> {"stopping": true}
+
+A router handed to a run belongs to it: the run stops it. Should the run die first, the service stops the router
+once it sees the owner's pid gone. The main loop replaces a warm JVM that died and keeps one spare router.
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import fcntl
+import json
+import os
+import secrets
+import shutil
+import socket
+import sys
+import threading
+import time
+from pathlib import Path
+from typing import Any
+
+from rei.run.jvm import JarServer, JarServerError
+from rei.service import IDLE_SECONDS, LOG_NAME, PID_NAME, SOCKET_NAME, fingerprint, service_dir
+from rei.wamp.auth import private_dir
+from rei.wamp.router import Router, RouterError
+
+_TICK = 0.2
+#: The spare router's niceness (it keeps it for the run that takes it over: ~0.1 s of router CPU per run).
+SPARE_NICENESS = 10
+
+
+class Service:
+    def __init__(self, folder: Path, idle: float = IDLE_SECONDS) -> None:
+        self.folder, self.idle = folder, idle
+        self.jvms: dict[str, JarServer | None] = {"monitor": None, "cli": None}
+        self.spare: Router | None = None
+        self.handed: list[tuple[Router, int]] = []  # routers runs took over, with the run's pid
+        self.lock = threading.Lock()
+        self.spare_ready = threading.Condition(self.lock)
+        self.last_request = time.monotonic()
+        self.stopping = threading.Event()
+        self.fingerprint = fingerprint()
+
+    def run(self) -> int:
+        private_dir(self.folder)
+        with open(self.folder / "service.lock", "w") as lock:
+            try:
+                fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            except BlockingIOError:
+                _say("another service runs in this folder; leaving")
+                return 0
+            (self.folder / PID_NAME).write_text(f"{os.getpid()}\n", encoding="utf-8")
+            for role in self.jvms:  # listening within a fraction of a second: the first run already uses them
+                self._keep_jvm(role)
+            control = self._listen()
+            threading.Thread(target=self._accept, args=(control,), name="service-accept", daemon=True).start()
+            _say(f"started (pid {os.getpid()}) in {self.folder}")
+            try:
+                self._loop()
+            finally:
+                control.close()
+                self._shutdown()
+        return 0
+
+    # -- the main loop: keep what runs need ready ----------------------------------------------------------------
+
+    def _loop(self) -> None:
+        while not self.stopping.is_set():
+            for role in self.jvms:
+                self._keep_jvm(role)
+            self._reap_handed()
+            if self.spare is None or self.spare.poll() is not None:
+                self._start_spare()
+            with self.lock:
+                idle = time.monotonic() - self.last_request > self.idle and not self.handed
+            if idle:
+                _say(f"idle for {self.idle:.0f} s; stopping")
+                return
+            self.stopping.wait(_TICK)
+
+    def _keep_jvm(self, role: str) -> None:
+        server = self.jvms[role]
+        if server is not None and server.alive():
+            return
+        if server is not None:
+            _say(f"the warm {role} JVM ended; starting a new one")
+            server.stop()
+        try:
+            self.jvms[role] = JarServer(role, self.folder / f"{role}-jvm.log").start()
+        except (JarServerError, OSError) as error:
+            _say(f"cannot start the warm {role} JVM: {error}")
+            self.jvms[role] = None
+
+    def _start_spare(self) -> None:
+        if self.spare is not None:
+            _say("the spare router ended; starting a new one")
+            self._discard(self.spare)
+        run_id = secrets.token_hex(6)
+        # niced: it starts while a run goes on and must not slow that run's simulation down
+        router = Router(run_dir=self.folder / "routers" / run_id, run_id=run_id, die_with_parent=True,
+                        niceness=SPARE_NICENESS)
+        try:
+            router.start()
+        except RouterError as error:
+            _say(f"cannot start a spare router: {error}")
+            self._discard(router)
+            self.stopping.wait(5.0)  # not in a tight loop
+            return
+        with self.lock:
+            self.spare = router
+            self.spare_ready.notify_all()
+
+    def _reap_handed(self) -> None:
+        with self.lock:
+            handed = list(self.handed)
+        for router, owner in handed:
+            if router.poll() is not None:  # the run stopped it (polling also reaps it)
+                self._forget(router)
+            elif not _alive(owner):  # usually shutting down on the run's SIGTERM; killed if it does not
+                self._discard(router)
+                self._forget(router)
+
+    def _forget(self, router: Router) -> None:
+        with self.lock:
+            self.handed = [(r, o) for r, o in self.handed if r is not router]
+
+    def _discard(self, router: Router) -> None:
+        folder = router.run_dir if router.pid is not None else None
+        with contextlib.suppress(RouterError):
+            router.stop()
+        if folder is not None and folder.is_dir() and folder.parent == self.folder / "routers":
+            shutil.rmtree(folder, ignore_errors=True)  # only a spare's own folder: a handed one moved to its run
+
+    def _shutdown(self) -> None:
+        with self.lock:
+            spare, self.spare = self.spare, None
+        if spare is not None:
+            self._discard(spare)
+        for server in self.jvms.values():
+            if server is not None:
+                server.stop()
+        for name in (SOCKET_NAME, PID_NAME):
+            (self.folder / name).unlink(missing_ok=True)
+
+    # -- requests ---------------------------------------------------------------------------------------------
+
+    def _listen(self) -> socket.socket:
+        path = self.folder / SOCKET_NAME
+        path.unlink(missing_ok=True)
+        control = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+        control.bind(str(path))
+        control.listen(16)
+        return control
+
+    def _accept(self, control: socket.socket) -> None:
+        while True:
+            try:
+                connection, _ = control.accept()
+            except OSError:
+                return
+            threading.Thread(target=self._serve, args=(connection,), name="service-request", daemon=True).start()
+
+    def _serve(self, connection: socket.socket) -> None:
+        with connection, connection.makefile("rwb") as stream:
+            try:
+                request = json.loads(stream.readline() or b"{}")
+                answer = self._answer(request)
+            except (ValueError, KeyError, TypeError) as error:
+                answer = {"error": f"bad request: {error}"}
+            with contextlib.suppress(OSError):
+                stream.write(json.dumps(answer).encode("utf-8") + b"\n")
+                stream.flush()
+
+    def _answer(self, request: dict[str, Any]) -> dict[str, Any]:
+        with self.lock:
+            self.last_request = time.monotonic()
+        op = request.get("op")
+        if op == "hello":
+            return {"pid": os.getpid(), "fingerprint": self.fingerprint, **{role: str(server.socket) if server is not None and server.alive() else None
+                                           for role, server in self.jvms.items()}}
+        if op == "router":
+            return {"router": self._hand_over(int(request["owner"]), float(request.get("wait", 0.0)))}
+        if op == "stop":
+            self.stopping.set()
+            return {"stopping": True}
+        return {"error": f"unknown op {op!r}"}
+
+    def _hand_over(self, owner: int, wait: float) -> dict[str, Any] | None:
+        deadline = time.monotonic() + wait
+        with self.lock:
+            while self.spare is None or self.spare.poll() is not None:
+                left = deadline - time.monotonic()
+                if left <= 0 or self.stopping.is_set():
+                    return None
+                self.spare_ready.wait(min(left, 0.5))
+            router, self.spare = self.spare, None
+            self.handed.append((router, owner))
+        return router.describe()
+
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    return True
+
+
+def _say(text: str) -> None:
+    print(f"{time.strftime('%Y-%m-%d %H:%M:%S')} rei service: {text}", flush=True)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m rei.service", description=__doc__.splitlines()[0])
+    parser.add_argument("--idle", type=float, default=IDLE_SECONDS, help="stop after this many idle seconds")
+    args = parser.parse_args(argv)
+    folder = service_dir()
+    try:
+        return Service(folder, idle=args.idle).run()
+    except OSError as error:
+        print(f"rei service: {folder}: {error}", file=sys.stderr)
+        return 2
+
+
+__all__ = ["LOG_NAME", "Service", "main"]

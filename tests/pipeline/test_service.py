@@ -1,0 +1,102 @@
+# SPDX-License-Identifier: EPL-2.0
+"""`rei run` through the background service (rei.service): the same results as a run that starts everything
+itself, a router and credentials of its own per run, and a service that died or is stale replaced."""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+import signal
+import time
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from rei.service import DIR_ENV
+from rei.service import client as service_client
+
+RUN_TIMEOUT_S = 240.0
+
+
+@pytest.fixture
+def own_service(tmp_path_factory: pytest.TempPathFactory, monkeypatch: pytest.MonkeyPatch) -> Any:
+    """A service folder of this test's own (short path: Unix sockets), stopped at the end."""
+    import shutil
+    import tempfile
+
+    folder = Path(tempfile.mkdtemp(prefix="rei-svc-"))
+    monkeypatch.setenv(DIR_ENV, str(folder))
+    yield folder
+    service_client.stop(folder)
+    shutil.rmtree(folder, ignore_errors=True)
+
+
+def _run(run_cli: Any, repo_root: Path, out: Path, *options: str) -> Any:
+    result = run_cli("run", repo_root / "examples" / "simple_navigation.rei", "-o", out, *options,
+                     timeout=RUN_TIMEOUT_S)
+    assert result.returncode == 0, result.stdout + result.stderr
+    return result
+
+
+def _verdicts(out: Path) -> list[tuple[str, str]]:
+    return [(v["requirement"], v["status"]) for v in json.loads((out / "summary.json").read_text())["verdicts"]]
+
+
+def test_runs_through_the_service_match_a_run_of_its_own_with_a_router_and_secrets_each(
+    run_cli: Any, repo_root: Path, tmp_path: Path, own_service: Path
+) -> None:
+    alone = _run(run_cli, repo_root, tmp_path / "alone", "--no-service")
+    assert "background service" not in alone.stdout + alone.stderr
+    first, second = tmp_path / "first", tmp_path / "second"
+    _run(run_cli, repo_root, first)
+    _run(run_cli, repo_root, second)
+    # the same streams byte for byte, the same verdicts
+    for out in (first, second):
+        for stream in ("state", "mission", "signal"):
+            assert (out / "streams" / f"{stream}.msgpack").read_bytes() == \
+                (tmp_path / "alone" / "streams" / f"{stream}.msgpack").read_bytes(), (out, stream)
+        assert _verdicts(out) == _verdicts(tmp_path / "alone")
+    # each run had a spare router of the service, now its own folder: its own run id, ports and secrets
+    routers = [json.loads((out / "router" / ".crossbar" / "config.json").read_text()) for out in (first, second)]
+    ports = [set(re.findall(r"port=(\d+)", json.dumps(r["workers"][0]["transports"]))) for r in routers]
+    assert all(len(p) == 2 for p in ports)
+    assert ports[0].isdisjoint(ports[1])
+    secrets = [json.loads((out / "router" / "auth" / "monitor.json").read_text())["secret"] for out in (first, second)]
+    assert secrets[0] != secrets[1]
+    run_ids = [json.loads((out / "sim.json").read_text())["run_id"] for out in (first, second)]
+    assert run_ids[0] != run_ids[1]
+    assert all(f"rei.run.{run_id}.state" in json.dumps(router) for run_id, router in zip(run_ids, routers, strict=True))
+    assert not (first / "router").is_symlink()  # moved into the run, not pointing into the service's folder
+    # the monitor ran in the service's warm JVM: no JVM of the run's own was started
+    assert (own_service / "monitor-jvm.log").is_file()
+    assert "processed 665 state" in (first / "monitor.log").read_text()
+
+
+def test_a_killed_service_is_replaced_by_the_next_run_with_one_line(
+    run_cli: Any, repo_root: Path, tmp_path: Path, own_service: Path
+) -> None:
+    _run(run_cli, repo_root, tmp_path / "before")
+    pid = int((own_service / "service.pid").read_text())
+    os.kill(pid, signal.SIGKILL)  # no clean-up: socket and pid file stay behind
+    deadline = time.monotonic() + 10
+    while Path(f"/proc/{pid}").exists() and time.monotonic() < deadline:
+        time.sleep(0.05)
+    after = _run(run_cli, repo_root, tmp_path / "after")
+    assert f"rei: the background service (pid {pid}) is gone; starting a new one" in after.stdout, after.stdout
+    assert int((own_service / "service.pid").read_text()) != pid
+    assert _verdicts(tmp_path / "after") == _verdicts(tmp_path / "before")
+    assert len([line for line in after.stdout.splitlines() if "background service" in line]) == 1
+
+
+def test_a_service_started_from_other_jars_or_code_is_replaced(own_service: Path,
+                                                               monkeypatch: pytest.MonkeyPatch) -> None:
+    said: list[str] = []
+    first = service_client.connect(said.append, own_service)
+    assert first.monitor is not None and first.cli is not None and said == []
+    assert service_client.connect(said.append, own_service).pid == first.pid  # the same one, while current
+    monkeypatch.setattr(service_client, "fingerprint", lambda: "rebuilt")
+    second = service_client.connect(said.append, own_service)
+    assert second.pid != first.pid
+    assert said == [f"rei: REI was rebuilt since the background service (pid {first.pid}) started; replacing it"]
