@@ -28,13 +28,14 @@ import time
 from pathlib import Path
 from typing import Any
 
-from rei.run.jvm import JarServer, JarServerError
+from rei.run.jvm import JarServer, JarServerError, run_served
 from rei.service import IDLE_SECONDS, LOG_NAME, PID_NAME, SOCKET_NAME, fingerprint, service_dir
 from rei.wamp.auth import private_dir
 from rei.wamp.router import Router, RouterError
 
 _TICK = 0.2
-#: The spare router's niceness (it keeps it for the run that takes it over: ~0.1 s of router CPU per run).
+#: The niceness of a spare router started while a run goes on (it keeps it for the run that takes it over: that
+#: router spends ~0.1 s of CPU per run).
 SPARE_NICENESS = 10
 
 
@@ -95,19 +96,26 @@ class Service:
             _say(f"the warm {role} JVM ended; starting a new one")
             server.stop()
         try:
-            self.jvms[role] = JarServer(role, self.folder / f"{role}-jvm.log").start()
+            started = self.jvms[role] = JarServer(role, self.folder / f"{role}-jvm.log").start()
         except (JarServerError, OSError) as error:
             _say(f"cannot start the warm {role} JVM: {error}")
             self.jvms[role] = None
+            return
+        if role == "monitor":  # build the default rules now, not in the first run that needs them
+            threading.Thread(target=run_served, args=(started.socket, ["--compile-only"],
+                                                      self.folder / "monitor-warm-up.log"),
+                             name="service-warm-up", daemon=True).start()
 
     def _start_spare(self) -> None:
         if self.spare is not None:
             _say("the spare router ended; starting a new one")
             self._discard(self.spare)
         run_id = secrets.token_hex(6)
-        # niced: it starts while a run goes on and must not slow that run's simulation down
+        # niced while a run goes on: its start must not slow that run's simulation down
+        with self.lock:
+            busy = bool(self.handed)
         router = Router(run_dir=self.folder / "routers" / run_id, run_id=run_id, die_with_parent=True,
-                        niceness=SPARE_NICENESS)
+                        niceness=SPARE_NICENESS if busy else 0)
         try:
             router.start()
         except RouterError as error:
