@@ -97,8 +97,12 @@ def run_mission(
     run_id: str,
     client: WampClient | None = None,
     progress: Progress | None = None,
+    controller: Controller | None = None,
 ) -> MissionRunResult:
     """Run the case's mission once; the streams it published are recorded under ``out_dir/streams``.
+
+    ``controller``: this controller object instead of the one ``options.controller`` names (benchmarks wrap
+    the reference navigation to time it).
 
     An external SUT that breaks the run (``SutError``) ends it early: the result carries the error, and everything
     published until then is recorded."""
@@ -119,8 +123,7 @@ def run_mission(
         missions = stack.enter_context(MissionPublisher(run_id, out_dir, client=client,
                                                         mission_info=mission_info(case.mission)))
         try:
-            controller: Controller
-            if options.sut is not None:
+            if controller is None and options.sut is not None:
                 if client is None:
                     raise SutError("an external system under test needs a router (not --no-router)")
                 from rei.sut.external.session import external_sut  # the WAMP client: only with a router
@@ -128,7 +131,7 @@ def run_mission(
                     options.sut, client, run_id, out_dir, case=case, static_map=sim.static_map(),
                     control_rate=options.control_rate, now=lambda: sim.t))
                 wall_start = time.perf_counter()  # the SUT's start-up is not the mission's time
-            else:
+            elif controller is None:
                 controller = create_controller(options.controller)
             executor = MissionExecutor(case.mission, controller, lambda event: _publish(missions, event))
             controller.reset(sim.static_map(), case.mission.start)
