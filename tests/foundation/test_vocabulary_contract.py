@@ -22,6 +22,7 @@ from rei.artifacts.monitor import read_monitor
 from rei.evaluation import DEFAULT_UTILITIES, load_declared_transitions, load_declared_utilities
 from rei.evaluation.signals import DEFAULT_TRANSITIONS, SIGNAL_RECORD, Signal
 from rei.mission.executor import MissionEventKind
+from rei.run import jvm
 from rei.sut.external import protocol
 from rei.sut.external.process import Connection
 from rei.wamp.topics import RUN_ID_PATTERN, TOPIC_NAMES, TOPIC_TEMPLATE, Topics
@@ -58,6 +59,7 @@ def test_python_copies(contract: dict) -> None:
         tuple(sut["from_simulation"]), tuple(sut["from_sut"]), tuple(sut["procedures"]))
     env = Connection("ws://x", "rei", "r1", Path("auth"), "rs://x").environment()
     assert list(env) == sut["environment"] + sut["optional_environment"]
+    assert (jvm.REQUEST_WORDS, jvm.ANSWER_WORD) == (tuple(contract["warm_jvm"]["request"]), contract["warm_jvm"]["answer"])
 
 
 def test_java_copies(contract: dict, java_facts: dict) -> None:
@@ -70,6 +72,8 @@ def test_java_copies(contract: dict, java_facts: dict) -> None:
     assert (java_facts["sut_from_simulation"], java_facts["sut_from_sut"], java_facts["sut_procedures"]) == (
         sut["from_simulation"], sut["from_sut"], sut["procedures"])
     assert java_facts["sut_environment"] == sut["environment"]
+    assert java_facts["warm_jvm_request"] == contract["warm_jvm"]["request"]
+    assert java_facts["warm_jvm_answer"] == contract["warm_jvm"]["answer"]
 
 
 def test_typescript_copies(contract: dict, repo_root: Path) -> None:

@@ -12,6 +12,7 @@ import org.rei.monitor.signals.Signal;
 import org.rei.sut.kit.SutClient;
 import org.rei.vepl.runtime.MissionEvent;
 import org.rei.vepl.validation.VeplValidator;
+import org.rei.warmjvm.CommandServer;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
 
@@ -34,6 +35,8 @@ public final class JavaVocabulary {
 		facts.put("sut_procedures", SutClient.PROCEDURES);
 		facts.put("sut_environment", List.of(SutClient.ENV_ROUTER_URL, SutClient.ENV_REALM, SutClient.ENV_RUN_ID,
 				SutClient.ENV_AUTH_FILE));
+		facts.put("warm_jvm_request", CommandServer.REQUEST);
+		facts.put("warm_jvm_answer", CommandServer.ANSWER);
 		System.out.println(new ObjectMapper().writeValueAsString(facts));
 	}
 }

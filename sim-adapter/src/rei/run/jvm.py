@@ -47,6 +47,9 @@ class JvmResult:
     served: bool = False  # ran in a warm JVM (JarServer), not in one of its own
 
 
+#: The words of a warm JVM's protocol (contract/vocabulary.json, "warm_jvm"; org.rei.warmjvm.CommandServer).
+REQUEST_WORDS = ("arg", "log", "run")
+ANSWER_WORD = "exit"
 #: Seconds a warm JVM may take to start listening.
 SERVER_START_TIMEOUT = 60.0
 
@@ -145,8 +148,7 @@ def run_served(server: Path, args: Sequence[str], log: Path, timeout: float | No
         connection.close()
         return None
     with connection:
-        request = "".join(f"arg {a}\n" for a in args) + f"log {log}\nrun\n"
-        connection.sendall(request.encode("utf-8"))
+        connection.sendall(_request(args, log))
         connection.settimeout(timeout)
         answer = b""
         try:
@@ -159,7 +161,7 @@ def run_served(server: Path, args: Sequence[str], log: Path, timeout: float | No
             return JvmResult(-1, time.perf_counter() - started, 0.0,
                              f"{tail(log, 7)}\ncancelled after {timeout:.0f} s".strip(), served=True)
     fields = answer.decode("ascii", errors="replace").split()
-    if len(fields) != 4 or fields[0] != "exit":
+    if len(fields) != 4 or fields[0] != ANSWER_WORD:
         return JvmResult(-1, time.perf_counter() - started, 0.0,
                          f"{tail(log, 7)}\nthe warm JVM ended during the command".strip(), served=True)
     return JvmResult(int(fields[1]), time.perf_counter() - started, int(fields[2]) / 1000, tail(log, 8), served=True)
@@ -182,8 +184,7 @@ class ServedCommand:
         except OSError as error:
             self._connection.close()
             raise ConnectionError(f"no warm JVM answers at {server}: {error}") from error
-        request = "".join(f"arg {a}\n" for a in args) + f"log {log}\nrun\n"
-        self._connection.sendall(request.encode("utf-8"))
+        self._connection.sendall(_request(args, log))
         self._code: int | None = None
         self._cancelled = False
         self._done = threading.Event()
@@ -201,7 +202,7 @@ class ServedCommand:
         except OSError:
             pass
         fields = answer.decode("ascii", errors="replace").split()
-        self._code = int(fields[1]) if len(fields) == 4 and fields[0] == "exit" else -1
+        self._code = int(fields[1]) if len(fields) == 4 and fields[0] == ANSWER_WORD else -1
         self._done.set()
 
     def poll(self) -> int | None:
@@ -231,6 +232,11 @@ class ServedCommand:
 
     def log_tail(self, lines: int = 20) -> str:
         return tail(self.log, lines)
+
+
+def _request(args: Sequence[str], log: Path) -> bytes:
+    arg, log_word, run = REQUEST_WORDS
+    return ("".join(f"{arg} {a}\n" for a in args) + f"{log_word} {log}\n{run}\n").encode("utf-8")
 
 
 def _read_line(stream: IO[bytes], timeout: float) -> bytes:

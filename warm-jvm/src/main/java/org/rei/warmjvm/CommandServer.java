@@ -59,6 +59,10 @@ public final class CommandServer {
 		int run(String[] args, PrintStream out, PrintStream err) throws Exception;
 	}
 
+	/** The protocol's words (contract/vocabulary.json, "warm_jvm"): request lines, then the answer's. */
+	public static final List<String> REQUEST = List.of("arg", "log", "run");
+	public static final String ANSWER = "exit";
+
 	private static final ThreadMXBean THREADS = ManagementFactory.getThreadMXBean();
 
 	private final Command command;
@@ -194,7 +198,7 @@ public final class CommandServer {
 		}
 		long cpuMs = (THREADS.getCurrentThreadCpuTime() - cpu) / 1_000_000;
 		long wallMs = (System.nanoTime() - wall) / 1_000_000;
-		return "exit " + code + " " + cpuMs + " " + wallMs + "\n";
+		return ANSWER + " " + code + " " + cpuMs + " " + wallMs + "\n";
 	}
 
 	private static void drain(InputStream in) {
@@ -216,12 +220,12 @@ public final class CommandServer {
 			List<String> args = new ArrayList<>();
 			Path log = null;
 			for (String line; (line = reader.readLine()) != null;) {
-				if (line.equals("run")) {
+				if (line.equals(REQUEST.get(2))) {
 					return new Request(List.copyOf(args), log);
-				} else if (line.startsWith("arg ")) {
-					args.add(line.substring(4));
-				} else if (line.startsWith("log ")) {
-					log = Path.of(line.substring(4));
+				} else if (line.startsWith(REQUEST.get(0) + " ")) {
+					args.add(line.substring(REQUEST.get(0).length() + 1));
+				} else if (line.startsWith(REQUEST.get(1) + " ")) {
+					log = Path.of(line.substring(REQUEST.get(1).length() + 1));
 				} else {
 					return null; // not this protocol: drop the connection
 				}
