@@ -14,6 +14,7 @@ import os
 import secrets
 import shutil
 import sys
+import threading
 from concurrent.futures import Future, ThreadPoolExecutor
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Self
@@ -83,6 +84,8 @@ def run(args: argparse.Namespace) -> int:
         raise CommandError(f"--run-id {args.run_id!r}: expected letters, digits, '_' or '-'")
     out = Path(args.output).resolve()  # children and the router run in other working directories
     prepare_output(out)
+    # the run's own modules load while the case is generated and the router taken over (both wait on sockets)
+    threading.Thread(target=_import_run_modules, name="rei-imports", daemon=True).start()
     with _Warm(args, out) as warm:
         case_dir = case_folder(Path(args.case), out, server=warm.cli)
         check_collector_objects(args, case_dir)
@@ -114,6 +117,12 @@ def _run(args: argparse.Namespace, out: Path, case_dir: Path, patterns: PatternS
     print_verdicts(result.summary)
     write_views(out)
     return result.exit_code
+
+
+def _import_run_modules() -> None:
+    import rei.evaluation
+    import rei.report
+    import rei.run.pipeline  # noqa: F401
 
 
 class _Warm:

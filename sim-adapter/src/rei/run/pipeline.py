@@ -364,7 +364,7 @@ def _judge_from_recording(out: Path, case_dir: Path, options: PipelineOptions, e
     return PipelineResult(summary.status, summary.error, summary)
 
 
-def _await_monitor(client: WampClient, topics: Topics, monitor: ManagedProcess) -> None:
+def _await_monitor(client: WampClient, topics: Topics, monitor: ManagedProcess | ServedCommand) -> None:
     """Until the monitor answers its snapshot procedure (see the module's docstring)."""
     deadline = time.monotonic() + MONITOR_START_TIMEOUT
     while time.monotonic() < deadline:
@@ -374,7 +374,7 @@ def _await_monitor(client: WampClient, topics: Topics, monitor: ManagedProcess) 
             client.call(topics.snapshot, timeout=5.0)
             return
         except Exception:  # noqa: BLE001 - not registered yet
-            time.sleep(0.25)
+            time.sleep(0.05)  # a warm monitor registers within a few tenths of a second: do not oversleep it
     raise _Interrupted(f"the monitor did not start within {MONITOR_START_TIMEOUT:.0f} s")
 
 

@@ -49,6 +49,7 @@ class Service:
         self.spare_ready = threading.Condition(self.lock)
         self.last_request = time.monotonic()
         self.stopping = threading.Event()
+        self.jvms_up = threading.Event()
         self.fingerprint = fingerprint()
 
     def run(self) -> int:
@@ -60,13 +61,18 @@ class Service:
                 _say("another service runs in this folder; leaving")
                 return 0
             (self.folder / PID_NAME).write_text(f"{os.getpid()}\n", encoding="utf-8")
-            for role in self.jvms:  # listening within a fraction of a second: the first run already uses them
-                self._keep_jvm(role)
-            control = self._listen()
-            threading.Thread(target=self._accept, args=(control,), name="service-accept", daemon=True).start()
+            control = self._listen()  # a run that connects now waits in the backlog until the JVMs are up
+
+            def open_doors() -> None:  # the JVMs are up in a fraction of a second: the first run uses them
+                for role in self.jvms:
+                    self._keep_jvm(role)
+                self.jvms_up.set()
+                self._accept(control)
+
+            threading.Thread(target=open_doors, name="service-accept", daemon=True).start()
             _say(f"started (pid {os.getpid()}) in {self.folder}")
             try:
-                self._loop()
+                self._loop()  # starts the spare router at once, on this thread (it dies with this thread)
             finally:
                 control.close()
                 self._shutdown()
@@ -76,7 +82,7 @@ class Service:
 
     def _loop(self) -> None:
         while not self.stopping.is_set():
-            for role in self.jvms:
+            for role in self.jvms if self.jvms_up.is_set() else ():
                 self._keep_jvm(role)
             self._reap_handed()
             if self.spare is None or self.spare.poll() is not None:
