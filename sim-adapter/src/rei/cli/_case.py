@@ -32,6 +32,11 @@ def prepare_output(out: Path) -> None:
                            "(set REI_MIN_FREE_MB to change the limit)")
 
 
+def case_target(case: Path, out: Path) -> Path:
+    """Where ``case_folder`` will find or put the case's generated artifacts."""
+    return case if case.is_dir() else out / "case"
+
+
 def case_folder(case: Path, out: Path, server: Path | None = None) -> Path:
     """The folder of generated artifacts to run. ``server``: a warm generator JVM's socket (rei.service)."""
     if case.is_dir():

@@ -10,6 +10,7 @@ patterns (patterns/) and queries (queries/) and each part's log.
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import os
 import secrets
 import shutil
@@ -19,7 +20,7 @@ from concurrent.futures import Future, ThreadPoolExecutor
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Self
 
-from rei.cli._case import case_folder, prepare_output, valid_run_id
+from rei.cli._case import case_folder, case_target, prepare_output, valid_run_id
 from rei.cli._mission_options import (
     add_mission_options,
     check_collector_objects,
@@ -33,6 +34,7 @@ from rei.cli.errors import CommandError
 
 if TYPE_CHECKING:
     from rei.run.patterns import PatternSelection
+    from rei.run.pipeline import PipelineOptions
     from rei.wamp.router import Router
 
 #: Seconds a run waits for the background service's spare router (it is being started after the last run took
@@ -87,31 +89,50 @@ def run(args: argparse.Namespace) -> int:
     # the run's own modules load while the case is generated and the router taken over (both wait on sockets)
     threading.Thread(target=_import_run_modules, name="rei-imports", daemon=True).start()
     with _Warm(args, out) as warm:
-        case_dir = case_folder(Path(args.case), out, server=warm.cli)
-        check_collector_objects(args, case_dir)
-        router = warm.router()
-        return _run(args, out, case_dir, patterns, declared,
-                    run_id=router.run_id if router is not None else args.run_id or secrets.token_hex(6),
-                    router=router, monitor_server=warm.monitor)
+        from rei.run.held import start_simulation
+
+        # a spare router waiting already: the simulation starts up (held) while the case is generated
+        router = warm.router(wait=False)
+        run_id = router.run_id if router is not None else args.run_id or secrets.token_hex(6)
+        sim_args, external_sut = tuple(mission_argv(args)), args.sut is not None or args.sut_attach
+        held = None if router is None else start_simulation(
+            case_target(Path(args.case), out), out, router, run_id, sim_args=sim_args, external_sut=external_sut)
+        try:
+            case_dir = case_folder(Path(args.case), out, server=warm.cli)
+            check_collector_objects(args, case_dir)
+        except BaseException:
+            if held is not None:
+                held.process.stop()
+            if router is not None:
+                router.stop()
+            raise
+        if router is None:  # the first run of a service: its spare router was starting meanwhile
+            router = warm.router(wait=True)
+            run_id = router.run_id if router is not None else run_id
+        options = _options(args, patterns, declared, warm.monitor)
+        return _run(out, case_dir, dataclasses.replace(options, router=router, simulation=held), run_id)
 
 
-def _run(args: argparse.Namespace, out: Path, case_dir: Path, patterns: PatternSelection,
-         declared: dict[str, float | None] | None, *, run_id: str, router: Router | None,
-         monitor_server: Path | None) -> int:
-    from rei.run.pipeline import PipelineOptions, Progress, run_pipeline
+def _options(args: argparse.Namespace, patterns: PatternSelection, declared: dict[str, float | None] | None,
+             monitor_server: Path | None) -> PipelineOptions:
+    from rei.run.pipeline import PipelineOptions
+
+    return PipelineOptions(sim_args=tuple(mission_argv(args)), external_sut=args.sut is not None or args.sut_attach,
+                           utilities=args.utilities, humans=not args.no_humans,
+                           laser=collector_config(args).laser.value != "none", view=args.view, bind=args.bind,
+                           tls_cert=_path(args.tls_cert), tls_key=_path(args.tls_key), patterns=patterns,
+                           declared=declared, monitor_server=monitor_server)
+
+
+def _run(out: Path, case_dir: Path, options: PipelineOptions, run_id: str) -> int:
+    from rei.run.pipeline import Progress, run_pipeline
 
     def show(progress: Progress) -> None:
         if sys.stderr.isatty():
             print(f"\rsim {progress.sim_time:7.1f} s  tasks {progress.tasks_done}/{progress.tasks}  "
                   f"utility {progress.utility:+.0f}   ", end="", file=sys.stderr, flush=True)
 
-    options = PipelineOptions(sim_args=tuple(mission_argv(args)), external_sut=args.sut is not None or args.sut_attach,
-                              utilities=args.utilities,
-                              humans=not args.no_humans, laser=collector_config(args).laser.value != "none", view=args.view,
-                              bind=args.bind, tls_cert=_path(args.tls_cert), tls_key=_path(args.tls_key),
-                              patterns=patterns, declared=declared, router=router, monitor_server=monitor_server)
-    result = run_pipeline(case_dir, out, options,
-                          run_id=run_id, on_progress=show)
+    result = run_pipeline(case_dir, out, options, run_id=run_id, on_progress=show)
     if sys.stderr.isatty():
         print(file=sys.stderr)
     print_verdicts(result.summary)
@@ -120,9 +141,11 @@ def _run(args: argparse.Namespace, out: Path, case_dir: Path, patterns: PatternS
 
 
 def _import_run_modules() -> None:
-    import rei.evaluation
-    import rei.report
-    import rei.run.pipeline  # noqa: F401
+    """In the order they are needed: the pipeline at the start, the report at the end."""
+    import importlib
+
+    for module in ("rei.run.pipeline", "rei.evaluation", "rei.report"):
+        importlib.import_module(module)
 
 
 class _Warm:
@@ -153,15 +176,17 @@ class _Warm:
             self._pool = ThreadPoolExecutor(1, thread_name_prefix="rei-take-router")
             self._taking = self._pool.submit(found.take_router, os.getpid(), ROUTER_WAIT)
 
-    def router(self) -> Router | None:
-        """The spare router, moved into OUT/router; None when the service had none ready in time."""
-        if self._taking is None:
+    def router(self, *, wait: bool) -> Router | None:
+        """The spare router, moved into OUT/router; None when the service had none ready in time (or, without
+        ``wait``, not ready yet: then ask again later)."""
+        if self._taking is None or not (wait or self._taking.done()):
             return None
         from rei.service.client import ServiceError
         from rei.wamp.router import Router
 
+        taking, self._taking = self._taking, None
         try:
-            description = self._taking.result()
+            description = taking.result()
         except ServiceError as error:
             print(f"rei: {error}; this run starts its own router", flush=True)
             return None

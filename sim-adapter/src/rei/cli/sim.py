@@ -90,8 +90,8 @@ def run(args: argparse.Namespace) -> int:
             animation=args.animation, realtime=args.realtime, collector=collector_config(args))
     except ValueError as error:
         raise CommandError(str(error)) from None
-    case_dir = case_folder(Path(args.case), out)
-    check_collector_objects(args, case_dir)
+    # held (`rei run`): the case may still be being generated; it is read once the simulation is let go
+    case_dir = None if args.held else _case(args, out)
     run_id = args.run_id or secrets.token_hex(6)
     if not valid_run_id(run_id):
         raise CommandError(f"--run-id {run_id!r}: expected letters, digits, '_' or '-' (it becomes part of topic URIs)")
@@ -99,8 +99,11 @@ def run(args: argparse.Namespace) -> int:
         publisher = _publisher(args, out, run_id)
         # stopped by `rei run` or a campaign: unwind, so a started SUT and the router are stopped too
         with sigterm_unwinds(), publisher as client:
-            if args.held and not sys.stdin.readline():
-                raise CommandError("--held: standard input ended before the line that starts the simulation")
+            if args.held:
+                if not sys.stdin.readline():
+                    raise CommandError("--held: standard input ended before the line that starts the simulation")
+                case_dir = _case(args, out)
+            assert case_dir is not None
             url, auth_file = publisher.sut_connection(client)
             options = dataclasses.replace(options, sut=sut_options(args, router_url=url, auth_file=auth_file))
             result = run_mission(case_dir, out, options, run_id=run_id, client=client,
@@ -121,6 +124,12 @@ def run(args: argparse.Namespace) -> int:
           f"{result.wall_time:.1f} s ({result.real_time_factor:.0f}x real time); run {run_id}")
     print(f"streams: {out / 'streams'} ({result.state_messages} state, {result.mission_messages} mission messages)")
     return EXIT_OK if result.succeeded else EXIT_INVALID
+
+
+def _case(args: argparse.Namespace, out: Path) -> Path:
+    case_dir = case_folder(Path(args.case), out)
+    check_collector_objects(args, case_dir)
+    return case_dir
 
 
 def _check_router_options(args: argparse.Namespace) -> None:

@@ -32,7 +32,6 @@ from __future__ import annotations
 
 import json
 import signal
-import sys
 import time
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
@@ -41,6 +40,7 @@ from typing import TYPE_CHECKING, Any
 
 from rei import toolchain
 from rei.processes import ManagedProcess
+from rei.run.held import ROUTER_RECONNECT, HeldSimulation, start_simulation
 from rei.run.jvm import ServedCommand
 from rei.run.patterns import UTILITIES_FILE, PatternSelection
 from rei.run.patterns import record as record_patterns
@@ -64,8 +64,6 @@ if TYPE_CHECKING:
 MONITOR_START_TIMEOUT = 60.0
 #: Seconds the monitor may take to finish after the simulation ended (it processes what is queued).
 MONITOR_DRAIN_TIMEOUT = 60.0
-#: Seconds a component keeps trying to reach a restarted router before its part of the run is lost.
-ROUTER_RECONNECT = 30.0
 #: Router deaths a run survives; one more and the run is an ERROR (a router that keeps dying is not a blip).
 MAX_ROUTER_RESTARTS = 3
 
@@ -91,6 +89,8 @@ class PipelineOptions:
     # (Router.adopt), and a warm monitor JVM's socket to run the monitor in; None: started here as before
     router: Router | None = None
     monitor_server: Path | None = None
+    # a simulation already started, held (start_simulation): it started up while the case was generated
+    simulation: HeldSimulation | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -179,13 +179,9 @@ class _Run:
         self.viewer = _start_view(router, self.run_id, self.case_dir, options) if options.view else None
         # the simulation starts up (Python, pybullet, its router session) while the monitor does, held before
         # its first step until both monitor and evaluator listen
-        sut_args = ["--sut-router", router.ws_url, "--sut-auth-file", str(router.auth_file("sut"))] \
-            if options.external_sut else []
-        self.sim = ManagedProcess("simulation", [
-            sys.executable, "-m", "rei.cli", "sim", str(self.case_dir), "-o", str(out), "--router", router.rs_url,
-            "--auth-file", str(router.auth_file("simulation")), "--run-id", self.run_id, "--progress", "lines",
-            "--reconnect", str(ROUTER_RECONNECT), "--wait-for-monitor", "--held", *sut_args, *options.sim_args],
-            out / "simulation.log", on_line=lambda line: _on_sim_line(line, self.progress), held=True)
+        held = options.simulation or start_simulation(self.case_dir, out, router, self.run_id,
+                                                      sim_args=options.sim_args, external_sut=options.external_sut)
+        self.sim, self.progress = held.process, held.progress
         client = self.client = WampClient(router.rs_url, auth=router.credentials("evaluator"),
                                           reconnect=ROUTER_RECONNECT).start()
         self.signals = RecordingWriter(stream_path(out, "signal"))
@@ -402,24 +398,6 @@ def _await_viewer(viewer: ViewServer) -> None:
             print("view:   no page connected; running anyway", flush=True)
 
 
-def _on_sim_line(line: str, progress: dict[str, float]) -> None:
-    """A line the simulation printed: progress is parsed, what concerns an external SUT shown to the user."""
-    if line.startswith("sut: "):
-        print(line, flush=True)
-    _parse_progress(line, progress)
-
-
-def _parse_progress(line: str, progress: dict[str, float]) -> None:
-    if not line.startswith("progress "):
-        return
-    fields = dict(item.split("=", 1) for item in line.split()[1:] if "=" in item)
-    try:
-        progress["t"], progress["done"], progress["total"] = (
-            float(fields["t"]), int(fields["done"]), int(fields["total"]))
-    except (KeyError, ValueError):
-        pass
-
-
 def _raise_interrupted(signum: int, frame: object) -> None:
     raise _Interrupted(f"stopped by {signal.Signals(signum).name}")
 
@@ -428,4 +406,4 @@ def _json(path: Path) -> dict[str, Any]:
     return json.loads(path.read_text(encoding="utf-8"))
 
 
-__all__ = ["PipelineOptions", "PipelineResult", "Progress", "run_pipeline"]
+__all__ = ["HeldSimulation", "PipelineOptions", "PipelineResult", "Progress", "run_pipeline", "start_simulation"]
