@@ -100,3 +100,14 @@ def test_a_service_started_from_other_jars_or_code_is_replaced(own_service: Path
     second = service_client.connect(said.append, own_service)
     assert second.pid != first.pid
     assert said == [f"rei: REI was rebuilt since the background service (pid {first.pid}) started; replacing it"]
+
+
+def test_a_folder_too_deep_for_a_socket_is_refused_at_once(tmp_path: Path, run_cli: Any, repo_root: Path,
+                                                           monkeypatch: pytest.MonkeyPatch) -> None:
+    """The run goes on without the service and says why in one line; nothing waits for a service that cannot
+    listen."""
+    deep = tmp_path / ("d" * 120)
+    monkeypatch.setenv(DIR_ENV, str(deep))
+    result = _run(run_cli, repo_root, tmp_path / "out")
+    assert "too deep for a Unix socket" in result.stdout and "this run starts its own router" in result.stdout
+    assert not deep.exists()

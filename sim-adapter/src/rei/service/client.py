@@ -14,9 +14,11 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from rei.service import LOG_NAME, PID_NAME, SOCKET_NAME, fingerprint, service_dir
+from rei.service import DIR_ENV, LOG_NAME, PID_NAME, SOCKET_NAME, fingerprint, service_dir
 from rei.wamp.auth import private_dir
 
+#: The longest path of a Unix socket (Linux: 108 bytes with the terminating zero).
+MAX_SOCKET_PATH = 107
 #: Seconds a run waits for a service it started to answer.
 START_TIMEOUT = 30.0
 
@@ -60,6 +62,9 @@ def request(folder: Path, message: dict[str, Any], timeout: float = 10.0) -> dic
 def connect(log: Callable[[str], None] = print, folder: Path | None = None) -> Service:
     """The running service, started first when there is none (and replaced when it died, which ``log`` says)."""
     folder = folder or service_dir()
+    if len(os.fsencode(folder / SOCKET_NAME)) > MAX_SOCKET_PATH:
+        raise ServiceError(f"the service's folder {folder} is too deep for a Unix socket ({MAX_SOCKET_PATH} bytes "
+                           f"at most); set {DIR_ENV} to a shorter one")
     try:
         found = _hello(folder)
         if found.fingerprint == fingerprint():
@@ -72,7 +77,10 @@ def connect(log: Callable[[str], None] = print, folder: Path | None = None) -> S
     stale = _stale_pid(folder)
     if stale is not None:
         log(f"rei: the background service (pid {stale}) is gone; starting a new one")
-    _spawn(folder)
+    try:
+        _spawn(folder)
+    except OSError as error:
+        raise ServiceError(f"cannot start the background service in {folder}: {error}") from error
     deadline = time.monotonic() + START_TIMEOUT
     while True:
         try:
