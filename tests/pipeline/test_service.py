@@ -111,3 +111,16 @@ def test_a_folder_too_deep_for_a_socket_is_refused_at_once(tmp_path: Path, run_c
     result = _run(run_cli, repo_root, tmp_path / "out")
     assert "too deep for a Unix socket" in result.stdout and "this run starts its own router" in result.stdout
     assert not deep.exists()
+
+
+def test_rei_service_status_start_and_stop(run_cli: Any, own_service: Path) -> None:
+    assert run_cli("service", "status").returncode == 1
+    started = run_cli("service", "start")
+    assert started.returncode == 0, started.stdout + started.stderr
+    assert f"in {own_service}" in started.stdout and "warm monitor JVM:   ready" in started.stdout
+    pid = int((own_service / "service.pid").read_text())
+    stopped = run_cli("service", "stop")
+    assert stopped.returncode == 0 and "stopped the service" in stopped.stdout
+    assert not Path(f"/proc/{pid}").exists() or "Z" in Path(f"/proc/{pid}/stat").read_text().split(")")[1][:3]
+    assert run_cli("service", "status").returncode == 1
+    assert list((own_service / "routers").iterdir()) == []  # the spare router went with it

@@ -92,11 +92,14 @@ def connect(log: Callable[[str], None] = print, folder: Path | None = None) -> S
 
 
 def stop(folder: Path | None = None) -> bool:
-    """Ask the service to stop; False when none was running."""
+    """Stop the service and what it keeps, and wait until it has exited; False when none was running."""
+    folder = folder or service_dir()
     try:
-        request(folder or service_dir(), {"op": "stop"})
+        pid = int(request(folder, {"op": "status"})["pid"])
+        request(folder, {"op": "stop"})
     except ServiceError:
         return False
+    _await_exit(pid)
     return True
 
 

@@ -6,6 +6,8 @@ Control protocol, one request per connection on ``service.sock`` (a JSON object 
     {"op": "hello"}                       -> {"pid": P, "fingerprint": F, "monitor": SOCKET, "cli": SOCKET}
     {"op": "router", "owner": PID, "wait": S}
                                           -> {"router": Router.describe()} or {"router": null} (none within S)
+    {"op": "status"}                      -> {"pid", "monitor", "cli", "spare": RUN_ID|null, "handed": N,
+                                              "idle_left": SECONDS}  (not a request that keeps it alive)
     {"op": "stop"}                        -> {"stopping": true}
 
 A router handed to a run belongs to it: the run stops it. Should the run die first, the service stops the router
@@ -195,18 +197,28 @@ class Service:
                 stream.flush()
 
     def _answer(self, request: dict[str, Any]) -> dict[str, Any]:
+        op = request.get("op")
+        if op == "status":
+            with self.lock:
+                spare = self.spare.run_id if self.spare is not None and self.spare.poll() is None else None
+                return {"pid": os.getpid(), "monitor": self._jvm_socket("monitor"), "cli": self._jvm_socket("cli"),
+                        "spare": spare, "handed": len(self.handed),
+                        "idle_left": max(0.0, self.idle - (time.monotonic() - self.last_request))}
         with self.lock:
             self.last_request = time.monotonic()
-        op = request.get("op")
         if op == "hello":
-            return {"pid": os.getpid(), "fingerprint": self.fingerprint, **{role: str(server.socket) if server is not None and server.alive() else None
-                                           for role, server in self.jvms.items()}}
+            return {"pid": os.getpid(), "fingerprint": self.fingerprint,
+                    **{role: self._jvm_socket(role) for role in self.jvms}}
         if op == "router":
             return {"router": self._hand_over(int(request["owner"]), float(request.get("wait", 0.0)))}
         if op == "stop":
             self.stopping.set()
             return {"stopping": True}
         return {"error": f"unknown op {op!r}"}
+
+    def _jvm_socket(self, role: str) -> str | None:
+        server = self.jvms[role]
+        return str(server.socket) if server is not None and server.alive() else None
 
     def _hand_over(self, owner: int, wait: float) -> dict[str, Any] | None:
         deadline = time.monotonic() + wait
