@@ -17,7 +17,7 @@ from typing import Any
 from rei.campaign.plan import RunTask
 from rei.campaign.supervise import Outcome, supervise
 from rei.campaign.worker import MONITOR_SERVER_ENV
-from rei.run.jvm import JarServer
+from rei.run.jvm import JarServer, JarServerError
 
 OnOutcome = Callable[[RunTask, Outcome], None]
 
@@ -45,9 +45,14 @@ class LocalBackend:
         with contextlib.ExitStack() as stack:
             env = None
             if self._monitor_log is not None and tasks:
-                server = stack.enter_context(JarServer("monitor", self._monitor_log))
+                server = JarServer("monitor", self._monitor_log)
+                # registered first, so it runs after the server has stopped (and its CPU is known)
                 stack.callback(lambda: setattr(self, "monitor_cpu", self.monitor_cpu + server.cpu))
-                env = {MONITOR_SERVER_ENV: str(server.socket)}
+                try:
+                    stack.enter_context(server)
+                    env = {MONITOR_SERVER_ENV: str(server.socket)}
+                except (JarServerError, OSError) as error:  # each replay then starts a JVM of its own
+                    print(f"campaign: no warm monitor JVM ({error}); each run replays in a JVM of its own", flush=True)
             self._run(tasks, on_outcome, stop, env)
 
     def _run(self, tasks: Sequence[RunTask], on_outcome: OnOutcome, stop: threading.Event,

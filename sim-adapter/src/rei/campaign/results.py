@@ -35,7 +35,8 @@ class RunResult:
     status: str  # COMPLETED or ERROR
     error: str | None
     wall_time: float  # of the worker process, seconds
-    cpu_time: float  # of the worker and its children, plus its replay in the warm monitor JVM; seconds
+    cpu_time: float  # of the worker and its children, plus its replay's thread in the warm monitor JVM (that JVM's
+    # compiler and collector threads are in the campaign's total only); seconds
     host: str
     sim_duration: float | None = None
     total_utility: float | None = None

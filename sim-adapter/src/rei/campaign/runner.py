@@ -15,7 +15,6 @@ finished ones, and the same command resumes.
 
 from __future__ import annotations
 
-import contextlib
 import json
 import shutil
 import signal
@@ -33,7 +32,7 @@ from rei.campaign.prepare import Prepared, needs_generation, prepare_case
 from rei.campaign.results import RunResult, finished_result, make_result, write_result
 from rei.campaign.spec import Spec
 from rei.campaign.supervise import Outcome
-from rei.run.jvm import JarServer
+from rei.run.jvm import JarServer, JarServerError
 
 
 class Backend(Protocol):
@@ -156,11 +155,20 @@ def _json_or_none(path: Path) -> Any:
 
 def _prepare(plan: Plan, out: Path, workers: int, log: Callable[[str], None]) -> tuple[dict[str, Prepared], float]:
     """Every case generated (in one warm generator JVM when any needs it); and that JVM's CPU seconds."""
-    generate = any(needs_generation(source, out) for source in plan.cases)
-    with ThreadPoolExecutor(max(1, workers), thread_name_prefix="rei-prepare") as pool, \
-            (JarServer("cli", out / "cases" / "generator.log") if generate else contextlib.nullcontext()) as server:
-        socket = server.socket if server is not None else None
-        prepared = {p.key: p for p in pool.map(lambda source: prepare_case(source, out, server=socket), plan.cases)}
+    server = None
+    if any(needs_generation(source, out) for source in plan.cases):
+        try:
+            server = JarServer("cli", out / "cases" / "generator.log").start()
+        except (JarServerError, OSError) as error:  # each case then starts a JVM of its own
+            log(f"campaign: no warm generator JVM ({error}); each case is generated in a JVM of its own")
+    socket = server.socket if server is not None else None
+    try:
+        with ThreadPoolExecutor(max(1, workers), thread_name_prefix="rei-prepare") as pool:
+            prepared = {p.key: p for p in pool.map(lambda source: prepare_case(source, out, server=socket),
+                                                    plan.cases)}
+    finally:
+        if server is not None:
+            server.stop()
     cpu = server.cpu if server is not None else sum(p.cpu for p in prepared.values())
     for p in prepared.values():
         if p.error:

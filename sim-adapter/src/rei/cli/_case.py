@@ -34,13 +34,13 @@ def prepare_output(out: Path) -> None:
 
 def case_target(case: Path, out: Path) -> Path:
     """Where ``case_folder`` will find or put the case's generated artifacts."""
-    return case if case.is_dir() else out / "case"
+    return case.resolve() if case.is_dir() else out / "case"
 
 
 def case_folder(case: Path, out: Path, server: Path | None = None) -> Path:
     """The folder of generated artifacts to run. ``server``: a warm generator JVM's socket (rei.service)."""
     if case.is_dir():
-        return case
+        return case.resolve()  # children (a warm JVM among them) run in other working directories
     if case.suffix != ".rei" or not case.is_file():
         raise CommandError(f"{case}: expected a .rei file or a folder generated from one", EXIT_USAGE)
     generated = out / "case"

@@ -16,7 +16,7 @@ import secrets
 import shutil
 import sys
 import threading
-from concurrent.futures import Future, ThreadPoolExecutor
+from concurrent.futures import Future
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Self
 
@@ -158,7 +158,6 @@ class _Warm:
         self.monitor: Path | None = None
         self.cli: Path | None = None
         self._taking: Future[dict[str, Any] | None] | None = None
-        self._pool: ThreadPoolExecutor | None = None
         from rei import service
 
         if args.no_service or not service.enabled():
@@ -173,8 +172,17 @@ class _Warm:
         self.monitor, self.cli = found.monitor, found.cli
         # its own run id, a TLS transport: not what a spare router is made for
         if args.run_id is None and args.bind is None:
-            self._pool = ThreadPoolExecutor(1, thread_name_prefix="rei-take-router")
-            self._taking = self._pool.submit(found.take_router, os.getpid(), ROUTER_WAIT)
+            # a daemon thread: a run that stops before it needs the router (Ctrl-C, a case that does not
+            # generate) does not wait for it; the service stops a router whose run has gone
+            self._taking = taking = Future()
+
+            def take() -> None:
+                try:
+                    taking.set_result(found.take_router(os.getpid(), ROUTER_WAIT))
+                except BaseException as error:  # noqa: BLE001 - handed to router()
+                    taking.set_exception(error)
+
+            threading.Thread(target=take, name="rei-take-router", daemon=True).start()
 
     def router(self, *, wait: bool) -> Router | None:
         """The spare router, moved into OUT/router; None when the service had none ready in time (or, without
@@ -207,8 +215,12 @@ class _Warm:
         return self
 
     def __exit__(self, *exc: object) -> None:
-        if self._pool is not None:
-            self._pool.shutdown(wait=False)
+        folder = self.out / "router"
+        if folder.is_symlink():  # the router's folder stayed on another file system: keep a copy of it
+            target = folder.resolve()
+            folder.unlink()
+            if target.is_dir():
+                shutil.copytree(target, folder, symlinks=True)
 
 
 def _check_patterns(args: argparse.Namespace) -> tuple[PatternSelection, dict[str, float | None] | None]:

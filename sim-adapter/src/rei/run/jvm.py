@@ -82,7 +82,9 @@ class JarServer:
         sharing, self._dump = _class_sharing(jar, java)
         self._folder = Path(tempfile.mkdtemp(prefix=f"rei-{self.role}-"))  # 0700: whoever connects runs commands
         self.log.parent.mkdir(parents=True, exist_ok=True)
-        self._log_file = open(self.log, "wb")  # noqa: SIM115 - kept open while the JVM runs
+        self.log.write_bytes(b"")
+        # appending: the JVM's standard error and the copy of its standard output share the file
+        self._log_file = open(self.log, "ab")  # noqa: SIM115 - kept open while the JVM runs
         self._process = subprocess.Popen(
             [str(java.executable), *FAST_START_FLAGS, *sharing, "-jar", str(jar), "--serve", str(self.socket)],
             stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=self._log_file)
@@ -91,6 +93,9 @@ class JarServer:
         if ready != b"ready\n":
             self.stop()
             raise JarServerError(f"the warm {self.role} JVM did not start: {tail(self.log, 8)}")
+        # whatever the JVM still prints goes to its log: an unread pipe would block it once full
+        threading.Thread(target=_copy, args=(self._process.stdout, self._log_file), name=f"{self.role}-jvm-out",
+                         daemon=True).start()
         return self
 
     def alive(self) -> bool:
@@ -108,20 +113,23 @@ class JarServer:
             except OSError:
                 pass
         deadline = time.perf_counter() + timeout
-        while True:
-            pid, status, usage = os.wait4(process.pid, os.WNOHANG)
+        while process.returncode is None:  # not reaped yet (alive() reaps a JVM that died by itself)
+            try:
+                pid, status, usage = os.wait4(process.pid, os.WNOHANG)
+            except ChildProcessError:
+                break
             if pid:
+                process.returncode = os.waitstatus_to_exitcode(status)
+                self.cpu = usage.ru_utime + usage.ru_stime
                 break
             if time.perf_counter() > deadline:
                 process.kill()
-                pid, status, usage = os.wait4(process.pid, 0)
-                break
             time.sleep(0.02)
-        process.returncode = os.waitstatus_to_exitcode(status)
-        self.cpu = usage.ru_utime + usage.ru_stime
         if self._dump is not None:
             _keep_archive(self._dump, ok=process.returncode == 0)
         if self._log_file is not None:
+            if process.stdout is not None:
+                process.stdout.close()
             self._log_file.close()
         if self._folder is not None:
             shutil.rmtree(self._folder, ignore_errors=True)
@@ -134,7 +142,8 @@ class JarServer:
 
 
 def run_served(server: Path, args: Sequence[str], log: Path, timeout: float | None = None) -> JvmResult | None:
-    """Run one command in the warm JVM listening on ``server``; None when nobody answers there (start one's own).
+    """Run one command in the warm JVM listening on ``server``; None when nobody answers there or the JVM ended
+    during the command (then run it in a JVM of its own: REI's commands can be run again).
 
     ``cpu`` is the command thread's CPU time in the server. A timed-out command is cancelled (exit code -1)."""
     for value in (*args, str(log)):
@@ -148,10 +157,10 @@ def run_served(server: Path, args: Sequence[str], log: Path, timeout: float | No
         connection.close()
         return None
     with connection:
-        connection.sendall(_request(args, log))
-        connection.settimeout(timeout)
         answer = b""
         try:
+            connection.sendall(_request(args, log))
+            connection.settimeout(timeout)
             while not answer.endswith(b"\n"):
                 chunk = connection.recv(64)
                 if not chunk:
@@ -160,10 +169,11 @@ def run_served(server: Path, args: Sequence[str], log: Path, timeout: float | No
         except TimeoutError:
             return JvmResult(-1, time.perf_counter() - started, 0.0,
                              f"{tail(log, 7)}\ncancelled after {timeout:.0f} s".strip(), served=True)
+        except OSError:
+            pass  # the JVM went away: no answer
     fields = answer.decode("ascii", errors="replace").split()
     if len(fields) != 4 or fields[0] != ANSWER_WORD:
-        return JvmResult(-1, time.perf_counter() - started, 0.0,
-                         f"{tail(log, 7)}\nthe warm JVM ended during the command".strip(), served=True)
+        return None  # the warm JVM ended during the command: the caller runs it in a JVM of its own
     return JvmResult(int(fields[1]), time.perf_counter() - started, int(fields[2]) / 1000, tail(log, 8), served=True)
 
 
@@ -232,6 +242,13 @@ class ServedCommand:
 
     def log_tail(self, lines: int = 20) -> str:
         return tail(self.log, lines)
+
+
+def _copy(source: IO[bytes], target: IO[bytes]) -> None:
+    with contextlib.suppress(OSError, ValueError):  # closed at stop()
+        for line in source:
+            target.write(line)
+            target.flush()
 
 
 def _request(args: Sequence[str], log: Path) -> bytes:

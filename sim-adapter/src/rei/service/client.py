@@ -71,7 +71,7 @@ def connect(log: Callable[[str], None] = print, folder: Path | None = None) -> S
             return found
         log(f"rei: REI was rebuilt since the background service (pid {found.pid}) started; replacing it")
         request(folder, {"op": "stop"})
-        _await_exit(found.pid)
+        _await_released(folder, found.pid)
     except ServiceError:
         pass
     stale = _stale_pid(folder)
@@ -107,6 +107,17 @@ def _hello(folder: Path) -> Service:
     answer = request(folder, {"op": "hello"}, timeout=5.0)
     return Service(folder, int(answer["pid"]), str(answer.get("fingerprint")),
                    *(Path(answer[r]) if answer.get(r) else None for r in ("monitor", "cli")))
+
+
+def _await_released(folder: Path, pid: int, timeout: float = 20.0) -> None:
+    """Until a stopping service has given its folder up (it may stay a while for runs that hold its routers)."""
+    deadline = time.monotonic() + timeout
+    while (folder / SOCKET_NAME).exists() and time.monotonic() < deadline:
+        try:
+            os.kill(pid, 0)
+        except ProcessLookupError:
+            return
+        time.sleep(0.05)
 
 
 def _await_exit(pid: int, timeout: float = 20.0) -> None:

@@ -11,7 +11,10 @@ Control protocol, one request per connection on ``service.sock`` (a JSON object 
     {"op": "stop"}                        -> {"stopping": true}
 
 A router handed to a run belongs to it: the run stops it. Should the run die first, the service stops the router
-once it sees the owner's pid gone. The main loop replaces a warm JVM that died and keeps one spare router.
+once it sees the owner's pid gone. The main loop replaces a warm JVM that died and keeps one spare router. A
+service that stops (idle, `rei service stop`, replaced by a newer build) hands nothing out any more and gives its
+folder to a new service at once, but stays until the runs holding its routers have ended: those routers, and the
+live monitors in its JVM, go with it.
 """
 
 from __future__ import annotations
@@ -32,13 +35,13 @@ from typing import Any
 
 from rei.run.jvm import JarServer, JarServerError, run_served
 from rei.service import IDLE_SECONDS, LOG_NAME, PID_NAME, SOCKET_NAME, fingerprint, service_dir
+from rei.toolchain import ToolchainError
 from rei.wamp.auth import private_dir
 from rei.wamp.router import Router, RouterError
 
 _TICK = 0.2
-#: The niceness of a spare router started while a run goes on (it keeps it for the run that takes it over: that
-#: router spends ~0.1 s of CPU per run).
-SPARE_NICENESS = 10
+#: Seconds a stopping service waits for the runs that hold its routers (they stop them at their end).
+RUNS_DRAIN = 1800.0
 
 
 class Service:
@@ -76,8 +79,15 @@ class Service:
             try:
                 self._loop()  # starts the spare router at once, on this thread (it dies with this thread)
             finally:
+                self.stopping.set()  # no more hand-overs
+                self._discard_spare()
+                # a new service may start now; this one stays for the runs that hold its routers
                 control.close()
-                self._shutdown()
+                for name in (SOCKET_NAME, PID_NAME):
+                    (self.folder / name).unlink(missing_ok=True)
+                fcntl.flock(lock, fcntl.LOCK_UN)
+                self._await_runs()
+                self._stop_jvms()
         return 0
 
     # -- the main loop: keep what runs need ready ----------------------------------------------------------------
@@ -105,7 +115,7 @@ class Service:
             server.stop()
         try:
             started = self.jvms[role] = JarServer(role, self.folder / f"{role}-jvm.log").start()
-        except (JarServerError, OSError) as error:
+        except (JarServerError, ToolchainError, OSError) as error:
             _say(f"cannot start the warm {role} JVM: {error}")
             self.jvms[role] = None
             return
@@ -119,11 +129,9 @@ class Service:
             _say("the spare router ended; starting a new one")
             self._discard(self.spare)
         run_id = secrets.token_hex(6)
-        # niced while a run goes on: its start must not slow that run's simulation down
-        with self.lock:
-            busy = bool(self.handed)
-        router = Router(run_dir=self.folder / "routers" / run_id, run_id=run_id, die_with_parent=True,
-                        niceness=SPARE_NICENESS if busy else 0)
+        # not niced: the run that takes it over could not raise its priority again (measured: nice 10 while a run
+        # goes on gave the same warm-run times)
+        router = Router(run_dir=self.folder / "routers" / run_id, run_id=run_id, die_with_parent=True)
         try:
             router.start()
         except RouterError as error:
@@ -148,6 +156,10 @@ class Service:
     def _forget(self, router: Router) -> None:
         with self.lock:
             self.handed = [(r, o) for r, o in self.handed if r is not router]
+        # still here when the run's folder is on another file system (the run copied it at its end)
+        folder = self.folder / "routers" / str(router.run_id)
+        if folder.is_dir():
+            shutil.rmtree(folder, ignore_errors=True)
 
     def _discard(self, router: Router) -> None:
         folder = router.run_dir if router.pid is not None else None
@@ -156,16 +168,25 @@ class Service:
         if folder is not None and folder.is_dir() and folder.parent == self.folder / "routers":
             shutil.rmtree(folder, ignore_errors=True)  # only a spare's own folder: a handed one moved to its run
 
-    def _shutdown(self) -> None:
+    def _discard_spare(self) -> None:
         with self.lock:
             spare, self.spare = self.spare, None
         if spare is not None:
             self._discard(spare)
+
+    def _await_runs(self) -> None:
+        """Until the runs holding routers of this service have ended (their routers die with this thread)."""
+        if self.handed:
+            _say(f"stopping once the {len(self.handed)} run(s) holding its routers end")
+        deadline = time.monotonic() + RUNS_DRAIN
+        while self.handed and time.monotonic() < deadline:
+            self._reap_handed()
+            time.sleep(_TICK)
+
+    def _stop_jvms(self) -> None:
         for server in self.jvms.values():
             if server is not None:
                 server.stop()
-        for name in (SOCKET_NAME, PID_NAME):
-            (self.folder / name).unlink(missing_ok=True)
 
     # -- requests ---------------------------------------------------------------------------------------------
 
@@ -223,6 +244,8 @@ class Service:
     def _hand_over(self, owner: int, wait: float) -> dict[str, Any] | None:
         deadline = time.monotonic() + wait
         with self.lock:
+            if self.stopping.is_set():
+                return None
             while self.spare is None or self.spare.poll() is not None:
                 left = deadline - time.monotonic()
                 if left <= 0 or self.stopping.is_set():

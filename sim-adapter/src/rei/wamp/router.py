@@ -137,7 +137,6 @@ class Router:
         startup_timeout: float = 30.0,
         stop_timeout: float = 10.0,
         die_with_parent: bool = False,
-        niceness: int = 0,
     ) -> None:
         if not _is_loopback(host):
             raise ValueError(f"router host {host!r} is not loopback; use bind=ADDRESS (with TLS) to expose it")
@@ -168,8 +167,6 @@ class Router:
         # crossbar gets SIGTERM if the thread that starts it dies (rei.lifetime.die_with_parent): for a
         # router owned by a process's main thread, so a killed `rei run` leaves no router behind
         self._die_with_parent = die_with_parent
-        # > 0: a spare router of the background service starts on the CPU the current run leaves idle
-        self._niceness = niceness
         self._startup_timeout = startup_timeout
         self._stop_timeout = stop_timeout
         self._process: subprocess.Popen[bytes] | None = None
@@ -392,8 +389,6 @@ class Router:
             "--loglevel",
             "info",
         ]
-        if self._niceness and shutil.which("nice"):
-            command = ["nice", "-n", str(self._niceness), *command]
         with open(self.log_path, "ab") as log:
             try:
                 # Own session = own process group: stop() signals the node controller and its worker together.

@@ -63,6 +63,9 @@ public final class CommandServer {
 	public static final List<String> REQUEST = List.of("arg", "log", "run");
 	public static final String ANSWER = "exit";
 
+	/** How long the commands still running when the owner lets go may take to finish (a run's live monitor). */
+	static final long DRAIN_MILLIS = 30 * 60 * 1000L;
+
 	private static final ThreadMXBean THREADS = ManagementFactory.getThreadMXBean();
 
 	private final Command command;
@@ -93,12 +96,13 @@ public final class CommandServer {
 		System.out.println("ready");
 		System.out.flush();
 		drain(System.in);
-		try {
+		try { // no new commands; the running ones (a run's live monitor) may finish
 			channel.close();
 			Files.deleteIfExists(server.socket);
 		} catch (IOException e) {
 			// exiting anyway
 		}
+		server.awaitIdle(DRAIN_MILLIS);
 		return 0;
 	}
 
@@ -136,6 +140,19 @@ public final class CommandServer {
 		}
 	}
 
+	/** Waits until no command runs, at most {@code millis}. */
+	void awaitIdle(long millis) {
+		long deadline = System.currentTimeMillis() + millis;
+		while (running.get() > 0 && System.currentTimeMillis() < deadline) {
+			try {
+				Thread.sleep(50);
+			} catch (InterruptedException e) {
+				Thread.currentThread().interrupt();
+				return;
+			}
+		}
+	}
+
 	/** Commands running now (for tests and the server's own account). */
 	public int running() {
 		return running.get();
@@ -149,13 +166,17 @@ public final class CommandServer {
 			}
 			OutputStream answer = Channels.newOutputStream(client);
 			Thread worker = new Thread(() -> {
-				String line = execute(request);
 				try {
-					answer.write(line.getBytes(StandardCharsets.UTF_8));
+					answer.write(execute(request).getBytes(StandardCharsets.UTF_8));
 					answer.flush();
-					client.close(); // ends the watch below
 				} catch (IOException e) {
 					// the client is gone: nobody to tell
+				} finally {
+					try {
+						client.close(); // ends the watch below; a client without an answer falls back
+					} catch (IOException e) {
+						// closed already
+					}
 				}
 			}, "warm-jvm-command");
 			worker.setDaemon(true);
@@ -187,7 +208,7 @@ public final class CommandServer {
 		try (PrintStream out = request.log()) {
 			try {
 				code = command.run(request.args().toArray(String[]::new), out, out);
-			} catch (Exception | LinkageError | StackOverflowError e) { // one bad command must not end the server
+			} catch (Throwable e) { // one bad command (even out of memory) must not end the server unanswered
 				e.printStackTrace(out);
 				code = 1;
 			}

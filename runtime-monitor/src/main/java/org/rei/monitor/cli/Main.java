@@ -198,15 +198,22 @@ public final class Main {
 				}
 			});
 			Runtime.getRuntime().addShutdownHook(hook);
-			long timeout = o.timeoutSeconds > 0 ? (long) (o.timeoutSeconds * 1000) : Long.MAX_VALUE;
-			if (o.untilEnd) {
-				if (!live.awaitEnd(timeout)) {
-					err.println("rei-monitor: no END event within " + o.timeoutSeconds + " s");
-				} else if (o.lingerSeconds > 0) {
-					Thread.sleep((long) (o.lingerSeconds * 1000)); // the final model stays available over WAMP
+			try {
+				long timeout = o.timeoutSeconds > 0 ? (long) (o.timeoutSeconds * 1000) : Long.MAX_VALUE;
+				if (o.untilEnd) {
+					if (!live.awaitEnd(timeout)) {
+						err.println("rei-monitor: no END event within " + o.timeoutSeconds + " s");
+					} else if (o.lingerSeconds > 0) {
+						Thread.sleep((long) (o.lingerSeconds * 1000)); // the final model stays available over WAMP
+					}
+				} else {
+					Thread.sleep(timeout);
 				}
-			} else {
-				Thread.sleep(timeout);
+			} catch (InterruptedException e) { // cancelled in a warm JVM (org.rei.warmjvm): still leave the model
+				hook.run();
+				throw e;
+			} finally {
+				Runtime.getRuntime().removeShutdownHook(hook); // a warm JVM serves many runs: no hook left behind
 			}
 			live.onPipeline(() -> {
 				Monitor m = live.monitor();
@@ -214,7 +221,6 @@ public final class Main {
 						m.missionsProcessed(), m.signals().count(), m.guard().problems());
 				save(m, snapshotOut, err);
 			});
-			Runtime.getRuntime().removeShutdownHook(hook);
 		}
 		return 0;
 	}
