@@ -72,6 +72,12 @@ def test_runs_through_the_service_match_a_run_of_its_own_with_a_router_and_secre
     # the monitor ran in the service's warm JVM: no JVM of the run's own was started
     assert (own_service / "monitor-jvm.log").is_file()
     assert "processed 665 state" in (first / "monitor.log").read_text()
+    # `rei evaluate` replays in the running service's warm JVM: the same signals again
+    live = (first / "streams" / "signal.msgpack").read_bytes()
+    again = run_cli("evaluate", first, timeout=RUN_TIMEOUT_S)
+    assert again.returncode == 0, again.stdout + again.stderr
+    assert (first / "streams" / "signal.msgpack").read_bytes() == live
+    assert "replayed 665 state" in (first / "monitor-replay.log").read_text()
 
 
 def test_a_killed_service_is_replaced_by_the_next_run_with_one_line(

@@ -43,9 +43,12 @@ def run(args: argparse.Namespace) -> int:
             load_utilities(args.utilities, load_declared_utilities(recorded) if recorded.is_file() else None)
         except UtilityError as error:
             raise CommandError(str(error)) from None
-    try:
+    from rei.service.client import running_monitor
+
+    try:  # in the background service's warm monitor JVM when one runs (docs/performance.md)
         judged = reevaluate(out, args.case.resolve() if args.case else None, utilities=args.utilities,
-                            notes=("re-evaluated from the recorded streams (rei evaluate)",))
+                            notes=("re-evaluated from the recorded streams (rei evaluate)",),
+                            monitor_server=running_monitor())
     except ReevaluationError as error:
         raise CommandError(str(error)) from None
     print_verdicts(judged.summary)

@@ -91,6 +91,20 @@ def connect(log: Callable[[str], None] = print, folder: Path | None = None) -> S
             time.sleep(0.05)
 
 
+def running_monitor(folder: Path | None = None) -> Path | None:
+    """The warm monitor JVM's socket of a service that runs already and is current, else None (never starts one:
+    a command that needs a monitor once is not worth a router and two JVMs)."""
+    from rei.service import enabled
+
+    if not enabled():
+        return None
+    try:
+        found = _hello(folder or service_dir())
+    except (ServiceError, ValueError, KeyError):
+        return None
+    return found.monitor if found.fingerprint == fingerprint() else None
+
+
 def stop(folder: Path | None = None) -> bool:
     """Stop the service and what it keeps, and wait until it has exited; False when none was running."""
     folder = folder or service_dir()
@@ -154,4 +168,4 @@ def _spawn(folder: Path) -> None:
                          env={**os.environ, "REI_SERVICE_DIR": str(folder)})
 
 
-__all__ = ["Service", "ServiceError", "connect", "request", "stop"]
+__all__ = ["Service", "ServiceError", "connect", "request", "running_monitor", "stop"]
