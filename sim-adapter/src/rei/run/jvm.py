@@ -146,35 +146,19 @@ def run_served(server: Path, args: Sequence[str], log: Path, timeout: float | No
     during the command (then run it in a JVM of its own: REI's commands can be run again).
 
     ``cpu`` is the command thread's CPU time in the server. A timed-out command is cancelled (exit code -1)."""
-    for value in (*args, str(log)):
-        if "\n" in value or "\r" in value:
-            raise ValueError(f"a line break in {value!r}: not passed to a warm JVM")
     started = time.perf_counter()
-    connection = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
     try:
-        connection.connect(str(server))
-    except OSError:
-        connection.close()
+        command = ServedCommand("command", server, args, log)
+    except ConnectionError:
         return None
-    with connection:
-        answer = b""
-        try:
-            connection.sendall(_request(args, log))
-            connection.settimeout(timeout)
-            while not answer.endswith(b"\n"):
-                chunk = connection.recv(64)
-                if not chunk:
-                    break
-                answer += chunk
-        except TimeoutError:
-            return JvmResult(-1, time.perf_counter() - started, 0.0,
-                             f"{tail(log, 7)}\ncancelled after {timeout:.0f} s".strip(), served=True)
-        except OSError:
-            pass  # the JVM went away: no answer
-    fields = answer.decode("ascii", errors="replace").split()
-    if len(fields) != 4 or fields[0] != ANSWER_WORD:
+    code = command.wait(timeout)
+    command.stop()  # cancels a command that is still running
+    if code is None:
+        return JvmResult(-1, time.perf_counter() - started, 0.0,
+                         f"{tail(log, 7)}\ncancelled after {timeout:.0f} s".strip(), served=True)
+    if not command.answered:
         return None  # the warm JVM ended during the command: the caller runs it in a JVM of its own
-    return JvmResult(int(fields[1]), time.perf_counter() - started, int(fields[2]) / 1000, tail(log, 8), served=True)
+    return JvmResult(code, time.perf_counter() - started, command.cpu, tail(log, 8), served=True)
 
 
 class ServedCommand:
@@ -188,13 +172,15 @@ class ServedCommand:
             if "\n" in value or "\r" in value:
                 raise ValueError(f"a line break in {value!r}: not passed to a warm JVM")
         self.name, self.log = name, log
+        self.answered = False  # the JVM gave an exit line (else it went away during the command)
+        self.cpu = 0.0  # the command thread's CPU seconds in the JVM, once answered
         self._connection = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
         try:
             self._connection.connect(str(server))
+            self._connection.sendall(_request(args, log))
         except OSError as error:
             self._connection.close()
             raise ConnectionError(f"no warm JVM answers at {server}: {error}") from error
-        self._connection.sendall(_request(args, log))
         self._code: int | None = None
         self._cancelled = False
         self._done = threading.Event()
@@ -212,13 +198,16 @@ class ServedCommand:
         except OSError:
             pass
         fields = answer.decode("ascii", errors="replace").split()
-        self._code = int(fields[1]) if len(fields) == 4 and fields[0] == ANSWER_WORD else -1
+        self.answered = len(fields) == 4 and fields[0] == ANSWER_WORD
+        if self.answered:
+            self.cpu = int(fields[2]) / 1000
+        self._code = int(fields[1]) if self.answered else -1
         self._done.set()
 
     def poll(self) -> int | None:
         return self._code if self._done.is_set() else None
 
-    def wait(self, timeout: float) -> int | None:
+    def wait(self, timeout: float | None) -> int | None:
         self._done.wait(timeout)
         return self.poll()
 
