@@ -15,6 +15,8 @@
 # thread's own CPU time per update. The exit code is 1 when a target or the ratio is missed.
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
+# shellcheck source=benchmarks/_base_tree.sh
+source "$ROOT/benchmarks/_base_tree.sh"
 JAR="$ROOT/runtime-monitor/target/rei-monitor.jar"
 CORE="${1:-0}"
 BASE_REF="${2:-HEAD~1}"
@@ -24,15 +26,13 @@ if [[ ! -f "$JAR" ]]; then
 fi
 base_sha="$(git -C "$ROOT" rev-parse --short "$BASE_REF")"
 BASE_JAR="$ROOT/target/bench-base/rei-monitor-$base_sha.jar"
+build_base() { # in the base's worktree: its monitor jar, copied out
+  "${MVN[@]}" && cp runtime-monitor/target/rei-monitor.jar "$BASE_JAR"
+}
 if [[ ! -f "$BASE_JAR" ]]; then
   echo "== building the monitor of $BASE_REF ($base_sha) in a temporary worktree"
-  tree="$(mktemp -d)/base"
-  git -C "$ROOT" worktree add -q --detach "$tree" "$base_sha"
-  trap 'git -C "$ROOT" worktree remove --force "$tree" >/dev/null 2>&1 || true' EXIT
   mkdir -p "$(dirname "$BASE_JAR")"
-  log="$(dirname "$BASE_JAR")/build-$base_sha.log"
-  (cd "$tree" && "${MVN[@]}") >"$log" 2>&1 || { echo "   the base does not build: $log"; exit 1; }
-  cp "$tree/runtime-monitor/target/rei-monitor.jar" "$BASE_JAR"
+  in_base_tree "$base_sha" "$(dirname "$BASE_JAR")/build-$base_sha.log" build_base || exit 1
 fi
 echo "== rei-monitor throughput on core $CORE of $(nproc) (load before: $(cut -d' ' -f1-3 /proc/loadavg))"
 echo "   this tree: $JAR"

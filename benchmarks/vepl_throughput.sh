@@ -15,6 +15,8 @@ ROBOTS=${3:-10}
 EVENTS=${4:-1000000}
 TARGET_EVENTS_PER_S=100000
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
+# shellcheck source=benchmarks/_base_tree.sh
+source "$ROOT/benchmarks/_base_tree.sh"
 MODULE="$ROOT/cep/org.rei.vepl"
 MVN=(mvn -B -q -s "$ROOT/.mvn/settings.xml")
 "${MVN[@]}" -f "$ROOT/pom.xml" -pl cep/org.rei.vepl -am install -DskipTests >/dev/null 2>&1
@@ -26,15 +28,14 @@ trap 'rm -f "$CP_FILE"' EXIT
 # repository keeps this tree's artifacts), in front of this tree's dependency class path
 base_sha="$(git -C "$ROOT" rev-parse --short "$BASE_REF")"
 BASE="$ROOT/target/bench-base/vepl-$base_sha"
+build_base() { # in the base's worktree: its VEPL module and tests compiled, copied out
+  "${MVN[@]}" -pl cep/org.rei.vepl -am package -DskipTests && "${MVN[@]}" -f cep/org.rei.vepl/pom.xml test-compile \
+    && cp -r cep/org.rei.vepl/target/classes cep/org.rei.vepl/target/test-classes "$BASE/"
+}
 if [[ ! -d "$BASE/classes" ]]; then
   echo "== building the VEPL module of $BASE_REF ($base_sha) in a temporary worktree"
-  tree="$(mktemp -d)/base"
-  git -C "$ROOT" worktree add -q --detach "$tree" "$base_sha"
-  trap 'rm -f "$CP_FILE"; git -C "$ROOT" worktree remove --force "$tree" >/dev/null 2>&1 || true' EXIT
   mkdir -p "$BASE"
-  (cd "$tree" && "${MVN[@]}" -pl cep/org.rei.vepl -am package -DskipTests && "${MVN[@]}" -f cep/org.rei.vepl/pom.xml \
-    test-compile) >"$BASE.log" 2>&1 || { echo "   the base does not build: $BASE.log"; exit 1; }
-  cp -r "$tree/cep/org.rei.vepl/target/classes" "$tree/cep/org.rei.vepl/target/test-classes" "$BASE/"
+  in_base_tree "$base_sha" "$BASE.log" build_base || { rm -rf "$BASE"; exit 1; }
 fi
 echo "cores: $(nproc), load: $(cut -d' ' -f1-3 /proc/loadavg), pinned to core $CORE; base $BASE_REF = $base_sha"
 bench() { # classes test-classes

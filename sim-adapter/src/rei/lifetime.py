@@ -10,10 +10,22 @@ pre-exec hook, which can deadlock a process that runs threads, so the child is s
 from __future__ import annotations
 
 import contextlib
+import os
 import shutil
 import signal
 import sys
 from collections.abc import Iterator, Sequence
+
+
+def alive(pid: int) -> bool:
+    """Whether process ``pid`` exists (one of another user counts; a zombie too, until its parent reaps it)."""
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    return True
 
 
 def die_with_parent(argv: Sequence[str]) -> list[str]:

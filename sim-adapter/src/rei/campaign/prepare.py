@@ -33,7 +33,7 @@ def needs_generation(source: CaseSource, out: Path) -> bool:
     rei = source.rei_file(out)
     if rei is None:
         return False
-    if source.text is not None and (not rei.is_file() or rei.read_text(encoding="utf-8") != source.text):
+    if _text_changed(source, rei):
         return True
     try:
         return not _current(source.case_dir(out), source_digest(rei))
@@ -46,10 +46,10 @@ def prepare_case(source: CaseSource, out: Path, *, server: Path | None = None) -
     rei = source.rei_file(out)
     if rei is None:  # an already generated folder
         return Prepared(source.key, None, 0.0, False)
-    if source.text is not None:
+    if _text_changed(source, rei):
+        assert source.text is not None
         rei.parent.mkdir(parents=True, exist_ok=True)
-        if not rei.is_file() or rei.read_text(encoding="utf-8") != source.text:
-            rei.write_text(source.text, encoding="utf-8")
+        rei.write_text(source.text, encoding="utf-8")
     try:
         digest = source_digest(rei)
     except OSError as error:
@@ -66,6 +66,11 @@ def prepare_case(source: CaseSource, out: Path, *, server: Path | None = None) -
                         result.cpu, True)
     (target / STAMP).write_text(digest + "\n", encoding="utf-8")
     return Prepared(source.key, None, result.cpu, True)
+
+
+def _text_changed(source: CaseSource, rei: Path) -> bool:
+    """A generated room whose ``.rei`` text is not (yet) the one on disk."""
+    return source.text is not None and (not rei.is_file() or rei.read_text(encoding="utf-8") != source.text)
 
 
 def _current(target: Path, digest: str) -> bool:

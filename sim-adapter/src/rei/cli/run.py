@@ -109,15 +109,15 @@ def run(args: argparse.Namespace) -> int:
         if router is None:  # the first run of a service: its spare router was starting meanwhile
             router = warm.router(wait=True)
             run_id = router.run_id if router is not None else run_id
-        options = _options(args, patterns, declared, warm.monitor)
+        options = _options(args, patterns, declared, warm.monitor, sim_args=sim_args, external_sut=external_sut)
         return _run(out, case_dir, dataclasses.replace(options, router=router, simulation=held), run_id)
 
 
 def _options(args: argparse.Namespace, patterns: PatternSelection, declared: dict[str, float | None] | None,
-             monitor_server: Path | None) -> PipelineOptions:
+             monitor_server: Path | None, *, sim_args: tuple[str, ...], external_sut: bool) -> PipelineOptions:
     from rei.run.pipeline import PipelineOptions
 
-    return PipelineOptions(sim_args=tuple(mission_argv(args)), external_sut=args.sut is not None or args.sut_attach,
+    return PipelineOptions(sim_args=sim_args, external_sut=external_sut,
                            utilities=args.utilities, humans=not args.no_humans,
                            laser=collector_config(args).laser.value != "none", view=args.view, bind=args.bind,
                            tls_cert=_path(args.tls_cert), tls_key=_path(args.tls_key), patterns=patterns,

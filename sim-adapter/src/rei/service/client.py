@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from rei.lifetime import alive
 from rei.service import DIR_ENV, LOG_NAME, PID_NAME, SOCKET_NAME, fingerprint, service_dir
 from rei.wamp.auth import private_dir
 
@@ -113,7 +114,7 @@ def stop(folder: Path | None = None) -> bool:
         request(folder, {"op": "stop"})
     except ServiceError:
         return False
-    _await_exit(pid)
+    _wait_until(lambda: not alive(pid))
     return True
 
 
@@ -123,24 +124,14 @@ def _hello(folder: Path) -> Service:
                    *(Path(answer[r]) if answer.get(r) else None for r in ("monitor", "cli")))
 
 
-def _await_released(folder: Path, pid: int, timeout: float = 20.0) -> None:
+def _await_released(folder: Path, pid: int) -> None:
     """Until a stopping service has given its folder up (it may stay a while for runs that hold its routers)."""
-    deadline = time.monotonic() + timeout
-    while (folder / SOCKET_NAME).exists() and time.monotonic() < deadline:
-        try:
-            os.kill(pid, 0)
-        except ProcessLookupError:
-            return
-        time.sleep(0.05)
+    _wait_until(lambda: not (folder / SOCKET_NAME).exists() or not alive(pid))
 
 
-def _await_exit(pid: int, timeout: float = 20.0) -> None:
+def _wait_until(done: Callable[[], bool], timeout: float = 20.0) -> None:
     deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        try:
-            os.kill(pid, 0)
-        except ProcessLookupError:
-            return
+    while not done() and time.monotonic() < deadline:
         time.sleep(0.05)
 
 
@@ -150,13 +141,7 @@ def _stale_pid(folder: Path) -> int | None:
         pid = int((folder / PID_NAME).read_text(encoding="utf-8"))
     except (OSError, ValueError):
         return None
-    try:
-        os.kill(pid, 0)
-    except ProcessLookupError:
-        return pid
-    except PermissionError:
-        return None
-    return None
+    return None if alive(pid) else pid
 
 
 def _spawn(folder: Path) -> None:

@@ -33,6 +33,7 @@ import time
 from pathlib import Path
 from typing import Any
 
+from rei.lifetime import alive
 from rei.run.jvm import JarServer, JarServerError, run_served
 from rei.service import IDLE_SECONDS, LOG_NAME, PID_NAME, SOCKET_NAME, fingerprint, service_dir
 from rei.toolchain import ToolchainError
@@ -149,7 +150,7 @@ class Service:
         for router, owner in handed:
             if router.poll() is not None:  # the run stopped it (polling also reaps it)
                 self._forget(router)
-            elif not _alive(owner):  # usually shutting down on the run's SIGTERM; killed if it does not
+            elif not alive(owner):  # usually shutting down on the run's SIGTERM; killed if it does not
                 self._discard(router)
                 self._forget(router)
 
@@ -254,16 +255,6 @@ class Service:
             router, self.spare = self.spare, None
             self.handed.append((router, owner))
         return router.describe()
-
-
-def _alive(pid: int) -> bool:
-    try:
-        os.kill(pid, 0)
-    except ProcessLookupError:
-        return False
-    except PermissionError:
-        return True
-    return True
 
 
 def _say(text: str) -> None:
