@@ -6,7 +6,7 @@
 # usage: benchmarks/vepl_throughput.sh [CORE] [BASE_REF] [ROBOTS] [EVENTS]
 #   target: >= 100,000 query events per CPU-second (docs/vepl.md). Also runs the VEPL module (compiler, runtime
 #   and bench) of BASE_REF (default HEAD~1, the previous commit), built in a temporary worktree and kept in
-#   target/bench-base/, on the same core right after: the ratio of the two is printed (goal <= 1.2; machines of
+#   target/bench-base/, on the same core, interleaved, the best of three runs each: the ratio is printed (goal <= 1.2; machines of
 #   this kind differ about 2x between sessions, so the ratio is what compares). Exit 1 when either is missed.
 set -euo pipefail
 CORE=${1:-1}
@@ -42,12 +42,17 @@ bench() { # classes test-classes
   (cd "$MODULE" && taskset -c "$CORE" java -Xms512m -Xmx512m -cp "$2:$1:$(cat "$CP_FILE")" \
     org.rei.vepl.tests.VeplBench "$ROBOTS" "$EVENTS" 2>/dev/null)
 }
-OUT=$(bench "$MODULE/target/classes" "$MODULE/target/test-classes")
+rate() { awk '/^cpu/ {print $2}' <<<"$1"; }
+# judged on the thread's CPU time: on a shared machine wall-clock numbers include preemption by other processes.
+# The best of three runs of each, interleaved: single runs of the same code differ by up to ~40 % here.
+RATE=0 BASE_RATE=0
+for _ in 1 2 3; do
+  out=$(bench "$BASE/classes" "$BASE/test-classes"); r=$(rate "$out")
+  (( ${r%.*} > ${BASE_RATE%.*} )) && BASE_RATE=$r
+  out=$(bench "$MODULE/target/classes" "$MODULE/target/test-classes"); r=$(rate "$out")
+  if (( ${r%.*} > ${RATE%.*} )); then RATE=$r OUT=$out; fi
+done
 echo "$OUT"
-BASE_OUT=$(bench "$BASE/classes" "$BASE/test-classes")
-# judged on the thread's CPU time: on a shared machine wall-clock numbers include preemption by other processes
-RATE=$(echo "$OUT" | awk '/^cpu/ {print $2}')
-BASE_RATE=$(echo "$BASE_OUT" | awk '/^cpu/ {print $2}')
 status=0
 if [ "${RATE%.*}" -ge "$TARGET_EVENTS_PER_S" ]; then
   echo "PASS: $RATE >= $TARGET_EVENTS_PER_S query events per CPU-second"
