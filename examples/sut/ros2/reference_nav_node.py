@@ -19,7 +19,6 @@ import sys
 import threading
 
 import numpy as np
-from cyclonedds.core import Listener
 from cyclonedds.domain import DomainParticipant
 from cyclonedds.pub import DataWriter
 from cyclonedds.sub import DataReader
@@ -32,6 +31,7 @@ from rei.sut.rasterize import static_map_of_grid
 from rei.sut.ros2 import messages as m
 from rei.sut.ros2 import types as t
 from rei.sut.ros2.action import action_topics, service_qos, status_qos
+from rei.sut.ros2.dds import listening_reader
 
 FOOTPRINT = (0.281, 0.306)
 MAX_LINEAR, MAX_ANGULAR, TOLERANCE = 0.26, 1.82, 0.25
@@ -59,8 +59,7 @@ class ReferenceNavNode:
         names = action_topics("navigate_to_pose")
 
         def reader(topic: str, kind: type, qos, callback) -> DataReader:  # type: ignore[no-untyped-def]
-            return DataReader(participant, Topic(participant, topic, kind), qos=qos,
-                              listener=Listener(on_data_available=callback))
+            return listening_reader(participant, Topic(participant, topic, kind), qos, callback)
 
         def writer(topic: str, kind: type, qos) -> DataWriter:  # type: ignore[no-untyped-def]
             return DataWriter(participant, Topic(participant, topic, kind), qos=qos)

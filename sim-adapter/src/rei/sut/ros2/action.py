@@ -17,7 +17,7 @@ import threading
 from collections.abc import Callable
 from typing import Any
 
-from cyclonedds.core import Listener, Policy, Qos
+from cyclonedds.core import Policy, Qos
 from cyclonedds.domain import DomainParticipant
 from cyclonedds.pub import DataWriter
 from cyclonedds.sub import DataReader
@@ -26,6 +26,7 @@ from cyclonedds.util import duration
 
 from rei.sut.api import NavStatus
 from rei.sut.ros2 import types as t
+from rei.sut.ros2.dds import listening_reader
 from rei.sut.ros_conventions import ACTION_MSGS_FINAL
 
 
@@ -79,14 +80,13 @@ class NavigateToPoseClient:
             return Topic(participant, names[key], kind)
 
         self._send = DataWriter(participant, topic("send_goal_request", t.NavigateToPose_SendGoal_Request), qos)
-        self._send_reply = DataReader(participant, topic("send_goal_reply", t.NavigateToPose_SendGoal_Response), qos,
-                                      listener=Listener(on_data_available=self._on_send_reply))
+        self._send_reply = listening_reader(participant, topic("send_goal_reply", t.NavigateToPose_SendGoal_Response),
+                                            qos, self._on_send_reply)
         self._cancel = DataWriter(participant, topic("cancel_request", t.CancelGoal_Request), qos)
         # read only so that the server sees a reply reader of this client (it answers no client without one)
-        self._cancel_reply = DataReader(participant, topic("cancel_reply", t.CancelGoal_Response), qos,
-                                        listener=Listener(on_data_available=lambda reader: reader.take(N=16)))
-        self._status = DataReader(participant, topic("status", t.GoalStatusArray), status_qos(),
-                                  listener=Listener(on_data_available=self._on_status))
+        self._cancel_reply = listening_reader(participant, topic("cancel_reply", t.CancelGoal_Response), qos,
+                                              lambda reader: reader.take(N=16))
+        self._status = listening_reader(participant, topic("status", t.GoalStatusArray), status_qos(), self._on_status)
 
     def server_ready(self) -> bool:
         """The server's request readers and reply writers are matched (discovery is done both ways)."""

@@ -76,16 +76,15 @@ class Ros2Bridge(RosBridge):
     # -- SystemUnderTest ---------------------------------------------------------------------------------------
 
     def on_start(self, session: Session) -> None:
-        from cyclonedds.core import Listener
-        from cyclonedds.sub import DataReader
         from cyclonedds.topic import Topic
 
         from rei.sut.ros2.action import NavigateToPoseClient
+        from rei.sut.ros2.dds import listening_reader
 
         self._scan_time = 1.0 / float(session.robot["lidar"]["rate"])
         cmd = self.m.TOPICS["cmd_vel"]
-        self._cmd_reader = DataReader(self._participant, Topic(self._participant, cmd.dds_name, cmd.type),
-                                      qos=cmd.qos, listener=Listener(on_data_available=self._on_cmd_vel))
+        self._cmd_reader = listening_reader(self._participant, Topic(self._participant, cmd.dds_name, cmd.type),
+                                            cmd.qos, self._on_cmd_vel)
         if session.static_map is not None:
             self._with_map = True
             self._writers["map"].write(self.m.occupancy_grid(session.static_map, self.frames))
