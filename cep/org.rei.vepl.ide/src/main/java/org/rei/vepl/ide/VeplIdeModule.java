@@ -4,6 +4,14 @@
  */
 package org.rei.vepl.ide;
 
-/** Bindings of VEPL's editor services beyond the generated defaults (none yet). */
+import org.eclipse.xtext.ide.editor.contentassist.IdeContentProposalProvider;
+import org.rei.vepl.ide.contentassist.VeplProposalProvider;
+
+/** Bindings of VEPL's editor services beyond the generated defaults. */
 public class VeplIdeModule extends AbstractVeplIdeModule {
+
+	/** Completion of query and mission event names, which the grammar only knows as IDs. */
+	public Class<? extends IdeContentProposalProvider> bindIdeContentProposalProvider() {
+		return VeplProposalProvider.class;
+	}
 }
