@@ -1,0 +1,199 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.vepl.ide.tests;
+
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Comparator;
+import java.util.List;
+import java.util.concurrent.ExecutionException;
+
+import org.eclipse.lsp4j.CompletionItem;
+import org.eclipse.lsp4j.CompletionParams;
+import org.eclipse.lsp4j.Diagnostic;
+import org.eclipse.lsp4j.HoverParams;
+import org.eclipse.lsp4j.Position;
+import org.eclipse.lsp4j.TextDocumentIdentifier;
+import org.eclipse.xtext.testing.AbstractLanguageServerTest;
+import org.junit.jupiter.api.Assertions;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.rei.vepl.validation.KnownQueries;
+
+/**
+ * VEPL as an editor sees it: requests go to Xtext's language server (the one the server jar runs), which loads
+ * the language through META-INF/services as the jar does. Positions are 0-based, as in LSP. (Assertions is
+ * qualified: the base class has an assertEquals of its own.)
+ */
+class VeplLanguageServerTest extends AbstractLanguageServerTest {
+
+	/** The queries the workspace's own queries/ folder declares, as the validator reads them (sorted). */
+	private static final List<String> QUERIES = List.of("laserSensesCloseness", "robotClose", "robotFar");
+
+	private static final String PATTERNS = """
+			queryEvent closeFound as robotClose found
+			queryEvent nearFound as robotNear found
+			atomicEvent started as mission TASK_STRT
+			complexEvent closeInTask() { as started -> closeFound -> farLost }
+			signal SIG_CLOSE_IN_TASK utility -2
+			rule closeInTask on closeInTask emits SIG_CLOSE_IN_TASK
+			""";
+
+	private boolean initialized;
+
+	VeplLanguageServerTest() {
+		super("vepl");
+	}
+
+	/** In target/, not in the module folder; above it lies the repository's queries/ folder. */
+	@BeforeEach
+	void workspaceInTarget() {
+		root = Path.of("target", "lsp-workspace").toAbsolutePath().toFile();
+	}
+
+	/** A queries/ folder of the workspace's own: found first above its files, so the names are exactly these. */
+	private void writeQueries() {
+		writeFile("queries/state.drl", "query robotClose(String robot)\nend\nquery robotFar(String robot)\nend\n");
+		writeFile("queries/laser.drl", "query laserSensesCloseness(String robot)\nend\n");
+	}
+
+	@Test
+	void diagnosticsPointAtTheWrongNameAndListTheKnownQueries() {
+		writeQueries();
+		String uri = openFile("patterns/p.vepl", PATTERNS);
+		Assertions.assertEquals(List.of(
+				"[1:24-1:33] org.rei.vepl.unknownQuery Unknown query 'robotNear': the loaded queries are "
+						+ String.join(", ", QUERIES),
+				"[2:31-2:40] org.rei.vepl.unknownMissionEvent Unknown mission event 'TASK_STRT': one of BEGIN, "
+						+ "TASK_START, TASK_SUCCESS, TASK_FAIL, END",
+				"[3:57-3:64] " + org.eclipse.xtext.diagnostics.Diagnostic.LINKING_DIAGNOSTIC
+						+ " Couldn't resolve reference to Event 'farLost'."),
+				diagnostics(uri));
+	}
+
+	@Test
+	void aSyntaxErrorIsReportedOnTheOffendingToken() {
+		String uri = openFile("p.vepl", "queryEvent closeFound as robotClose fund\n");
+		Assertions.assertEquals(List.of("[0:36-0:40] " + org.eclipse.xtext.diagnostics.Diagnostic.SYNTAX_DIAGNOSTIC
+				+ " no viable alternative at input 'fund'"), diagnostics(uri));
+	}
+
+	@Test
+	void aQueryIsCompletedWithTheQueriesTheValidatorAccepts() throws Exception {
+		writeQueries();
+		String text = "queryEvent b as ro found\nqueryEvent a as \n";
+		String uri = openFile("p.vepl", text);
+		Assertions.assertEquals(QUERIES, labels(uri, after(text, "queryEvent a as ")));
+		Assertions.assertEquals(List.of("robotClose", "robotFar"), labels(uri, after(text, "queryEvent b as ro")));
+	}
+
+	@Test
+	void aFileOfTheRepositoryIsCompletedWithTheQueriesTheMonitorPackages() throws Exception {
+		String text = "queryEvent a as \n";
+		String uri = openFile("p.vepl", text);
+		List<String> offered = labels(uri, after(text, "as "));
+		Assertions.assertEquals(List.copyOf(KnownQueries.inFolder(repositoryQueries())), offered);
+		assertTrue(offered.containsAll(List.of("robotClose", "robotFar", "robotInCollision")), offered.toString());
+	}
+
+	@Test
+	void aMissionEventIsCompletedWithTheMissionTopicsEvents() throws Exception {
+		String text = "atomicEvent b as mission TASK_S\natomicEvent a as mission \n";
+		String uri = openFile("p.vepl", text);
+		Assertions.assertEquals(List.of("BEGIN", "END", "TASK_FAIL", "TASK_START", "TASK_SUCCESS"),
+				labels(uri, after(text, "atomicEvent a as mission ")));
+		Assertions.assertEquals(List.of("TASK_START", "TASK_SUCCESS"), labels(uri, after(text, "mission TASK_S")));
+	}
+
+	@Test
+	void eventsOfThisFileAndOfTheOtherFilesAreCompletedWhereAnEventStands() throws Exception {
+		writeFile("other.vepl", "queryEvent farLost as robotFar lost\n");
+		String text = """
+				queryEvent closeFound as robotClose found
+				atomicEvent started as mission TASK_START
+				complexEvent closeInTask() { as started ->  }
+				signal SIG_CLOSE_IN_TASK
+				rule inTask on  emits SIG_CLOSE_IN_TASK
+				rule again on started emits\s
+				""";
+		String uri = openFile("p.vepl", text);
+		// not closeInTask itself: a complex event that refers to itself is an error
+		Assertions.assertEquals(List.of("closeFound", "farLost", "started", "NOT", "!", "("),
+				labels(uri, after(text, "as started -> ")));
+		Assertions.assertEquals(List.of("closeFound", "closeInTask", "farLost", "started"),
+				labels(uri, after(text, "inTask on ")));
+		Assertions.assertEquals(List.of("SIG_CLOSE_IN_TASK"), labels(uri, after(text, "started emits ")));
+	}
+
+	@Test
+	void keywordsAreCompletedWhereADeclarationOrTheHeaderMayStart() throws Exception {
+		String text = "\nqueryEvent a as robotFar lost\n\n";
+		String uri = openFile("p.vepl", text);
+		Assertions.assertEquals(List.of("atomicEvent", "complexEvent", "import", "import-queries", "package",
+				"queryEvent", "rule", "signal"), labels(uri, new Position(0, 0)));
+		Assertions.assertEquals(List.of("atomicEvent", "complexEvent", "queryEvent", "rule", "signal"),
+				labels(uri, new Position(2, 0)));
+	}
+
+	@Test
+	void aUseOfAQueryEventHoversItsDeclaration() throws Exception {
+		String uri = openFile("p.vepl", PATTERNS);
+		Position onUse = after(PATTERNS, "as started -> c");
+		String hover = languageServer.hover(new HoverParams(new TextDocumentIdentifier(uri), onUse)).get()
+				.getContents().getRight().getValue();
+		assertTrue(hover.contains("Query event closeFound") && hover.contains("`robotClose` appears"), hover);
+	}
+
+	/** Starts the server on the workspace and opens one file as an editor does; its URI. */
+	private String openFile(String path, String text) {
+		if (!initialized) {
+			initialize();
+			initialized = true;
+		}
+		String uri = writeFile(path, text);
+		open(uri, text);
+		return uri;
+	}
+
+	/** The file's diagnostics, each as {@code [line:column-line:column] code message}, first position first. */
+	private List<String> diagnostics(String uri) {
+		return getDiagnostics().get(uri).stream()
+				.sorted(Comparator.comparing((Diagnostic d) -> d.getRange().getStart().getLine())
+						.thenComparing(d -> d.getRange().getStart().getCharacter()))
+				.map(d -> "[" + at(d.getRange().getStart()) + "-" + at(d.getRange().getEnd()) + "] "
+						+ d.getCode().getLeft() + " " + d.getMessage().getLeft())
+				.toList();
+	}
+
+	private static String at(Position p) {
+		return p.getLine() + ":" + p.getCharacter();
+	}
+
+	private List<String> labels(String uri, Position at) throws InterruptedException, ExecutionException {
+		var result = languageServer.completion(new CompletionParams(new TextDocumentIdentifier(uri), at)).get();
+		List<CompletionItem> items = result.isLeft() ? result.getLeft() : result.getRight().getItems();
+		return items.stream().map(CompletionItem::getLabel).toList();
+	}
+
+	/** The position just after the first occurrence of {@code snippet}. */
+	private static Position after(String text, String snippet) {
+		int end = text.indexOf(snippet) + snippet.length();
+		String before = text.substring(0, end);
+		int line = (int) before.chars().filter(c -> c == '\n').count();
+		return new Position(line, end - before.lastIndexOf('\n') - 1);
+	}
+
+	/** The repository's queries/ folder, the one the monitor packages. */
+	private static Path repositoryQueries() {
+		for (Path dir = Path.of("").toAbsolutePath(); dir != null; dir = dir.getParent()) {
+			if (Files.isDirectory(dir.resolve("queries"))) {
+				return dir.resolve("queries");
+			}
+		}
+		throw new IllegalStateException("no queries/ folder above " + Path.of("").toAbsolutePath());
+	}
+}
