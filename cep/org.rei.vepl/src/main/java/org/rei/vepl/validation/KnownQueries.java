@@ -6,8 +6,14 @@ package org.rei.vepl.validation;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
+import java.net.URISyntaxException;
+import java.net.URL;
+import java.nio.file.FileSystem;
+import java.nio.file.FileSystemAlreadyExistsException;
+import java.nio.file.FileSystems;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Collections;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeSet;
@@ -22,12 +28,16 @@ import org.eclipse.emf.ecore.resource.ResourceSet;
 
 /**
  * The DRL queries a queryEvent may name. Whoever loads the files (the compiler, the monitor) attaches the names of
- * the queries it will run to the resource set; an editor without that finds the repository's {@code queries/}
- * folder above the file. With neither, query names are not checked.
+ * the queries it will run to the resource set. Without that (an editor) they are what the monitor would load: the
+ * default queries, packaged in this jar from the repository's {@code queries/} by the build, plus those of the
+ * nearest {@code queries/} folder above the file (the user's own, as {@code --queries DIR}).
  */
 public final class KnownQueries extends AdapterImpl {
 
 	private static final Pattern QUERY = Pattern.compile("(?m)^\\s*query\\s+([A-Za-z_$][\\w$]*)");
+
+	/** Classpath folder of the default queries (a copy of the repository's {@code queries/}, see the pom). */
+	public static final String DEFAULTS = "/org/rei/vepl/queries";
 
 	/**
 	 * The query names of the thesis's own patterns (9.2.2.1) and REI's state queries they stand for
@@ -56,7 +66,10 @@ public final class KnownQueries extends AdapterImpl {
 		set.eAdapters().add(new KnownQueries(names));
 	}
 
-	/** The known names for a resource, or null when they cannot be known. */
+	/**
+	 * The known names for a resource: those attached to its resource set, else (sorted) the default queries plus
+	 * those of the nearest {@code queries/} folder above a file (read again each time: the user may edit them).
+	 */
 	public static Set<String> of(Resource r) {
 		ResourceSet set = r.getResourceSet();
 		if (set != null) {
@@ -66,16 +79,51 @@ public final class KnownQueries extends AdapterImpl {
 				}
 			}
 		}
+		Set<String> out = new TreeSet<>(defaults());
 		URI uri = r.getURI();
 		if (uri != null && uri.isFile()) {
 			for (Path dir = Path.of(uri.toFileString()).toAbsolutePath().getParent(); dir != null; dir = dir
 					.getParent()) {
 				if (Files.isDirectory(dir.resolve("queries"))) {
-					return inFolder(dir.resolve("queries"));
+					out.addAll(inFolder(dir.resolve("queries")));
+					break;
 				}
 			}
 		}
-		return null;
+		return Collections.unmodifiableSet(out);
+	}
+
+	/** The names of the default queries, the ones the monitor always loads (read once: they are in the jar). */
+	public static Set<String> defaults() {
+		return Defaults.NAMES;
+	}
+
+	private static final class Defaults {
+		static final Set<String> NAMES = Collections.unmodifiableSet(read());
+
+		private static Set<String> read() {
+			URL url = KnownQueries.class.getResource(DEFAULTS);
+			if (url == null) { // the build copies them; without them every query would be unknown
+				throw new IllegalStateException("packaged default queries missing: " + DEFAULTS);
+			}
+			try {
+				java.net.URI uri = url.toURI();
+				if (!"jar".equals(uri.getScheme())) {
+					return inFolder(Path.of(uri));
+				}
+				FileSystem fs;
+				try { // the monitor's jar holds this class too and may have opened it already
+					fs = FileSystems.newFileSystem(uri, Map.of());
+				} catch (FileSystemAlreadyExistsException e) {
+					fs = FileSystems.getFileSystem(uri);
+				}
+				return inFolder(fs.getPath(DEFAULTS));
+			} catch (URISyntaxException e) {
+				throw new IllegalStateException(e);
+			} catch (IOException e) {
+				throw new UncheckedIOException(e);
+			}
+		}
 	}
 
 	/** The names of the queries declared in DRL text. */

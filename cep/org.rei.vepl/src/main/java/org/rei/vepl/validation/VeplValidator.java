@@ -100,7 +100,7 @@ public class VeplValidator extends AbstractVeplValidator {
 	@Check
 	public void checkQueryIsKnown(QueryEvent e) {
 		Set<String> known = KnownQueries.of(e.eResource());
-		if (known != null && e.getQuery() != null && !known.contains(KnownQueries.resolve(e.getQuery()))) {
+		if (e.getQuery() != null && !known.contains(KnownQueries.resolve(e.getQuery()))) {
 			error("Unknown query '" + e.getQuery() + "': the loaded queries are " + String.join(", ", known), e,
 					Literals.QUERY_EVENT__QUERY, VeplIssueCodes.UNKNOWN_QUERY);
 		}

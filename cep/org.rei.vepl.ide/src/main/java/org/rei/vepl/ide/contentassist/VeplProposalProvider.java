@@ -5,7 +5,6 @@
 package org.rei.vepl.ide.contentassist;
 
 import java.util.Collection;
-import java.util.Set;
 import java.util.TreeSet;
 
 import org.eclipse.emf.common.util.URI;
@@ -41,12 +40,8 @@ public class VeplProposalProvider extends IdeContentProposalProvider {
 	protected void _createProposals(Assignment assignment, ContentAssistContext context,
 			IIdeContentProposalAcceptor acceptor) {
 		if (assignment == grammar.getQueryEventAccess().getQueryAssignment_4()) {
-			Set<String> known = KnownQueries.of(context.getResource());
-			if (known != null) {
-				propose(new TreeSet<>(known), "query", context, acceptor);
-				return;
-			}
-			// no queries/ folder above the file: the validator checks nothing, the default placeholder stays
+			propose(new TreeSet<>(KnownQueries.of(context.getResource())), "query", context, acceptor);
+			return;
 		} else if (assignment == grammar.getAtomicEventAccess().getMissionAssignment_5()) {
 			propose(VeplValidator.MISSION_EVENTS, "mission event", context, acceptor);
 			return;

@@ -4,12 +4,14 @@
  */
 package org.rei.vepl.ide.tests;
 
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Comparator;
 import java.util.List;
+import java.util.TreeSet;
 import java.util.concurrent.ExecutionException;
 
 import org.eclipse.lsp4j.CompletionItem;
@@ -22,6 +24,7 @@ import org.eclipse.xtext.testing.AbstractLanguageServerTest;
 import org.junit.jupiter.api.Assertions;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import org.rei.vepl.validation.KnownQueries;
 
 /**
@@ -31,8 +34,8 @@ import org.rei.vepl.validation.KnownQueries;
  */
 class VeplLanguageServerTest extends AbstractLanguageServerTest {
 
-	/** The queries the workspace's own queries/ folder declares, as the validator reads them (sorted). */
-	private static final List<String> QUERIES = List.of("laserSensesCloseness", "robotClose", "robotFar");
+	/** The queries of the workspace's own queries/ folder that are not default queries. */
+	private static final List<String> OWN = List.of("laserBlinded", "robotWaving");
 
 	private static final String PATTERNS = """
 			queryEvent closeFound as robotClose found
@@ -55,10 +58,31 @@ class VeplLanguageServerTest extends AbstractLanguageServerTest {
 		root = Path.of("target", "lsp-workspace").toAbsolutePath().toFile();
 	}
 
-	/** A queries/ folder of the workspace's own: found first above its files, so the names are exactly these. */
+	@TempDir
+	Path outside;
+
+	/**
+	 * A queries/ folder of the workspace's own, the nearest above its files: its queries (one of them also a
+	 * default) come on top of the defaults, as the monitor loads {@code --queries DIR} beside them.
+	 */
 	private void writeQueries() {
-		writeFile("queries/state.drl", "query robotClose(String robot)\nend\nquery robotFar(String robot)\nend\n");
-		writeFile("queries/laser.drl", "query laserSensesCloseness(String robot)\nend\n");
+		writeFile("queries/state.drl", "query robotClose(String robot)\nend\nquery robotWaving(String robot)\nend\n");
+		writeFile("queries/laser.drl", "query laserBlinded(String robot)\nend\n");
+	}
+
+	/** The default queries and {@code own}, sorted, as the message lists them and completion offers them. */
+	private static List<String> defaultsAnd(List<String> own) {
+		TreeSet<String> all = new TreeSet<>(KnownQueries.inFolder(repositoryQueries()));
+		all.addAll(own);
+		return List.copyOf(all);
+	}
+
+	/** A workspace outside the repository (a user's), with no queries/ folder above it. */
+	private void workspaceOutside() {
+		root = outside.toFile();
+		for (Path dir = outside; dir != null; dir = dir.getParent()) {
+			assertFalse(Files.isDirectory(dir.resolve("queries")), "the test needs no queries/ above " + outside);
+		}
 	}
 
 	@Test
@@ -67,7 +91,7 @@ class VeplLanguageServerTest extends AbstractLanguageServerTest {
 		String uri = openFile("patterns/p.vepl", PATTERNS);
 		Assertions.assertEquals(List.of(
 				"[1:24-1:33] org.rei.vepl.unknownQuery Unknown query 'robotNear': the loaded queries are "
-						+ String.join(", ", QUERIES),
+						+ String.join(", ", defaultsAnd(OWN)),
 				"[2:31-2:40] org.rei.vepl.unknownMissionEvent Unknown mission event 'TASK_STRT': one of BEGIN, "
 						+ "TASK_START, TASK_SUCCESS, TASK_FAIL, END",
 				"[3:57-3:64] " + org.eclipse.xtext.diagnostics.Diagnostic.LINKING_DIAGNOSTIC
@@ -87,8 +111,31 @@ class VeplLanguageServerTest extends AbstractLanguageServerTest {
 		writeQueries();
 		String text = "queryEvent b as ro found\nqueryEvent a as \n";
 		String uri = openFile("p.vepl", text);
-		Assertions.assertEquals(QUERIES, labels(uri, after(text, "queryEvent a as ")));
-		Assertions.assertEquals(List.of("robotClose", "robotFar"), labels(uri, after(text, "queryEvent b as ro")));
+		Assertions.assertEquals(defaultsAnd(OWN), labels(uri, after(text, "queryEvent a as ")));
+		Assertions.assertEquals(List.of("robotClose", "robotFar", "robotInCollision", "robotWaving"),
+				labels(uri, after(text, "queryEvent b as ro")));
+	}
+
+	@Test
+	void aFileOutsideTheRepositoryKnowsTheDefaultQueries() throws Exception {
+		workspaceOutside();
+		String uri = openFile("patterns/p.vepl", "queryEvent nearFound as robotNear found\n");
+		Assertions.assertEquals(List.of("[0:24-0:33] org.rei.vepl.unknownQuery Unknown query 'robotNear': the "
+				+ "loaded queries are " + String.join(", ", defaultsAnd(List.of()))), diagnostics(uri));
+		String text = "queryEvent a as \n"; // a file of its own: unfinished, it has a syntax error
+		Assertions.assertEquals(defaultsAnd(List.of()), labels(openFile("patterns/q.vepl", text), after(text, "as ")));
+	}
+
+	@Test
+	void aFileOutsideTheRepositoryWithItsOwnQueriesKnowsTheDefaultsAndItsOwn() throws Exception {
+		workspaceOutside();
+		writeQueries();
+		String uri = openFile("patterns/p.vepl", "queryEvent closeFound as robotClose found\n"
+				+ "queryEvent wave as robotWaving found\nqueryEvent nearFound as robotNear found\n");
+		Assertions.assertEquals(List.of("[2:24-2:33] org.rei.vepl.unknownQuery Unknown query 'robotNear': the "
+				+ "loaded queries are " + String.join(", ", defaultsAnd(OWN))), diagnostics(uri));
+		String text = "queryEvent a as \n";
+		Assertions.assertEquals(defaultsAnd(OWN), labels(openFile("patterns/q.vepl", text), after(text, "as ")));
 	}
 
 	@Test
