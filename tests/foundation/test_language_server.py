@@ -285,3 +285,47 @@ def test_the_same_server_hovers_vepl_events_and_signals_with_their_definitions(
     signal = hover(5, "SIG_CLOSE_IN_TASK")
     assert "utility -2.0" in signal and "robot's zone by geometry goes from FAR to CLOSE" in signal, signal
     assert language_server.stop() == 0
+
+
+UNKNOWN_QUERY_LINE = 2  # 1-based: a query neither the defaults nor the user declares
+OUTSIDE_TEXT = """\
+queryEvent closeFound as robotClose found
+queryEvent nearFound as robotNear found
+queryEvent another as \n"""
+
+
+def test_a_vepl_file_outside_the_repository_knows_the_default_queries(
+    language_server: LspClient, tmp_path: Path
+) -> None:
+    """A user's workspace has no queries/ folder above it: the server still knows the queries the monitor always
+    loads (packaged in the jar), as it checks them and offers them."""
+    assert not any((d / "queries").is_dir() for d in (tmp_path, *tmp_path.parents)), "queries/ above tmp_path"
+    path = tmp_path / "mine.vepl"
+    path.write_text(OUTSIDE_TEXT, encoding="utf-8")
+    uri = path.as_uri()
+    language_server.request("initialize", {"processId": None, "rootUri": tmp_path.as_uri(), "capabilities": {}},
+                            timeout=START_TIMEOUT_S)
+    language_server.notify("initialized", {})
+    language_server.notify("textDocument/didOpen",
+                           {"textDocument": {"uri": uri, "languageId": "vepl", "version": 1, "text": OUTSIDE_TEXT}})
+
+    published = language_server.wait_for(
+        lambda m: (
+            m.get("method") == "textDocument/publishDiagnostics"
+            and m["params"]["uri"].endswith("/mine.vepl")
+            and m["params"]["diagnostics"]
+        ),
+        START_TIMEOUT_S,
+        "diagnostics for mine.vepl",
+    )
+    unknown = [d for d in published["params"]["diagnostics"] if d.get("code") == "org.rei.vepl.unknownQuery"]
+    assert [d["range"]["start"]["line"] for d in unknown] == [UNKNOWN_QUERY_LINE - 1], published
+    assert "'robotNear'" in unknown[0]["message"] and "robotClose" in unknown[0]["message"], unknown
+
+    last = OUTSIDE_TEXT.splitlines()[-1]
+    completion = language_server.request(
+        "textDocument/completion",
+        {"textDocument": {"uri": uri}, "position": {"line": 2, "character": last.index(" as ") + len(" as ")}},
+    )
+    assert "robotClose" in labels(completion)
+    assert language_server.stop() == 0
