@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: EPL-2.0
 // The language client: vscode-languageclient talks LSP to the process that server.ts starts.
 
+import * as fs from "node:fs";
+import * as os from "node:os";
+import * as path from "node:path";
 import * as vscode from "vscode";
 import { LanguageClient, LanguageClientOptions, ServerOptions } from "vscode-languageclient/node";
 
@@ -12,6 +15,8 @@ export const LANGUAGES = ["rei", "vepl"];
 
 export class ReiLanguageServer implements vscode.Disposable {
   private client: LanguageClient | undefined;
+  private watcher: vscode.FileSystemWatcher | undefined;
+  private emptyRoot: string | undefined;
 
   constructor(private readonly extensionPath: string) {}
 
@@ -36,24 +41,43 @@ export class ReiLanguageServer implements vscode.Disposable {
       throw error;
     }
 
+    // A catalogue changed on disk changes the types its importers may use; the server hears of it through this.
+    this.watcher = vscode.workspace.createFileSystemWatcher("**/*.{rei,vepl}");
     const serverOptions: ServerOptions = async () => spawnServer(launch, firstWorkspaceFolder());
     const clientOptions: LanguageClientOptions = {
       // Xtext's server reads files from disk for cross-references (catalogue imports), so only file: documents.
       documentSelector: LANGUAGES.map((language) => ({ scheme: "file", language })),
-      synchronize: {
-        // A catalogue changed on disk changes the types its importers may use.
-        fileEvents: vscode.workspace.createFileSystemWatcher("**/*.{rei,vepl}"),
-      },
+      synchronize: { fileEvents: this.watcher },
+      workspaceFolder: this.rootWhenNoFolderIsOpen(),
     };
     this.client = new LanguageClient("rei", "REI Language Server", serverOptions, clientOptions);
     await this.client.start();
   }
 
+  /**
+   * Xtext's server fails `initialize` without a root (a NullPointerException in its WorkspaceManager), and VS Code
+   * sends none for a file opened without a folder. An empty folder of the extension's own is a root that costs no
+   * indexing; files outside it are still checked, catalogue imports included.
+   */
+  private rootWhenNoFolderIsOpen(): vscode.WorkspaceFolder | undefined {
+    if (vscode.workspace.workspaceFolders?.length) {
+      return undefined;
+    }
+    this.emptyRoot = fs.mkdtempSync(path.join(os.tmpdir(), "rei-language-server-"));
+    return { uri: vscode.Uri.file(this.emptyRoot), name: "REI (no folder open)", index: 0 };
+  }
+
   async stop(): Promise<void> {
     const client = this.client;
     this.client = undefined;
+    this.watcher?.dispose();
+    this.watcher = undefined;
     if (client?.isRunning()) {
       await client.stop();
+    }
+    if (this.emptyRoot) {
+      fs.rmSync(this.emptyRoot, { recursive: true, force: true });
+      this.emptyRoot = undefined;
     }
   }
 

@@ -8,7 +8,7 @@ import * as vscode from "vscode";
 import { EXIT_OK, generate, GenerateResult, summary } from "./generate";
 import { JavaNotFoundError, requireJava } from "./java";
 import { expandVariables, FileContext, resolveFolder } from "./paths";
-import { existingReport, LauncherNotFoundError, resolveLauncher, runLaunch } from "./run";
+import { LauncherNotFoundError, newReport, resolveLauncher, runLaunch } from "./run";
 import { CLI_JAR, JarNotFoundError, resolveJar } from "./server";
 import { javaLookup, readSettings, showSettingError } from "./settings";
 
@@ -194,6 +194,7 @@ export class ReiCommands implements vscode.Disposable {
       }
     });
     let exitCode: number | undefined;
+    const started = Date.now();
     try {
       await vscode.tasks.executeTask(task);
       exitCode = await ended;
@@ -204,7 +205,7 @@ export class ReiCommands implements vscode.Disposable {
       listener.dispose();
     }
     this.output.appendLine(`rei run ended with exit code ${exitCode ?? "unknown"}`);
-    const report = existingReport(outputDirectory);
+    const report = newReport(outputDirectory, started);
     // rei run's exit codes: 0 every verdict passes, 1 a verdict fails, 2 an error.
     const outcome =
       exitCode === 0 ? "every verdict passes" : exitCode === 1 ? "a verdict fails" : `it ended with an error (exit ${exitCode})`;

@@ -41,8 +41,18 @@ export function runLaunch(launcher: string, file: string, outputDirectory: strin
   return { command: launcher, args: ["run", file, "-o", outputDirectory] };
 }
 
-/** The report of a finished run, if the run wrote one (a run that failed early writes none). */
-export function existingReport(outputDirectory: string): string | undefined {
+/** Filesystems with whole-second timestamps may date a report written just after the start before it. */
+const TIMESTAMP_SLACK_MS = 2000;
+
+/**
+ * The report of the run that started at `startedMs` (Date.now()), if it wrote one: a run that failed early writes
+ * none, and the report of an earlier run into the same folder must not be offered as this one's.
+ */
+export function newReport(outputDirectory: string, startedMs: number): string | undefined {
   const report = reportPath(outputDirectory);
-  return fs.existsSync(report) ? report : undefined;
+  try {
+    return fs.statSync(report).mtimeMs >= startedMs - TIMESTAMP_SLACK_MS ? report : undefined;
+  } catch {
+    return undefined;
+  }
 }

@@ -30,7 +30,7 @@ import {
 
 import { requireJava } from "../src/java";
 import { LANGUAGE_SERVER_JAR, serverLaunch, spawnServer } from "../src/server";
-import { jar, readRepoFile } from "./support";
+import { jar, readRepoFile, repoRoot } from "./support";
 
 /** A JVM plus Xtext's injectors on a busy 2-core machine; generous, but every wait is bounded. */
 const START_TIMEOUT_MS = 120_000;
@@ -185,6 +185,38 @@ describe("rei-language-server.jar over stdio", { timeout: 5 * START_TIMEOUT_MS }
       JSON.stringify(reported.diagnostics),
     );
     assert.match(errors[0].message, /nowhere/);
+  });
+
+  // With no folder open the extension gives the server an empty root (client.ts): files elsewhere, and the
+  // catalogues they import, must still be checked.
+  test("a test case outside the workspace root is checked, with its catalogue import", async () => {
+    const elsewhere = fs.mkdtempSync(path.join(os.tmpdir(), "rei-vscode-elsewhere-"));
+    try {
+      fs.mkdirSync(path.join(elsewhere, "catalogues"));
+      fs.copyFileSync(
+        path.join(repoRoot, "examples/catalogues/office.rei"),
+        path.join(elsewhere, "catalogues/office.rei"),
+      );
+      const text = readRepoFile("examples/own_types.rei").replace("object sofa : Sofa on", "object sofa : Sofo on");
+      const caseFile = path.join(elsewhere, "own_types.rei");
+      fs.writeFileSync(caseFile, text);
+      const caseUri = pathToFileURL(caseFile).toString();
+      const since = published.length;
+      await connection.sendNotification(DidOpenTextDocumentNotification.type, {
+        textDocument: { uri: caseUri, languageId: "rei", version: 1, text },
+      });
+      const reported = await diagnostics(since, (p) => p.uri === caseUri && p.diagnostics.length > 0, "diagnostics");
+      const errors = reported.diagnostics.filter((d) => d.severity === 1);
+      assert.deepEqual(
+        errors.map((d) => d.range.start.line),
+        [text.split("\n").findIndex((l) => l.includes("Sofo"))],
+        JSON.stringify(reported.diagnostics),
+      );
+      // The catalogue was read: its types are among the names the message suggests.
+      assert.match(errors[0].message, /Sofa/);
+    } finally {
+      fs.rmSync(elsewhere, { recursive: true, force: true });
+    }
   });
 
   test("shutdown and exit end the process with status 0", { timeout: REPLY_TIMEOUT_MS }, async () => {

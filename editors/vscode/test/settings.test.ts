@@ -11,7 +11,7 @@ import { after, describe, test } from "node:test";
 import { DEFAULTS } from "../src/defaults";
 import { findExecutable, JavaNotFoundError, parseJavaVersion, requireJava, resolveJava } from "../src/java";
 import { expandVariables, resolveFolder } from "../src/paths";
-import { LauncherNotFoundError, reportPath, resolveLauncher, runLaunch } from "../src/run";
+import { LauncherNotFoundError, newReport, reportPath, resolveLauncher, runLaunch } from "../src/run";
 import { JarNotFoundError, LANGUAGE_SERVER_JAR, resolveJar, serverLaunch } from "../src/server";
 import { extensionRoot } from "./support";
 
@@ -100,6 +100,20 @@ describe("jars and launcher", () => {
       args: ["run", "/w/a.rei", "-o", "/w/out/a"],
     });
     assert.equal(reportPath("/w/out/a"), path.join("/w/out/a", "report.html"));
+  });
+
+  test("only a report written since the run started is offered", () => {
+    const out = path.join(temp, "run");
+    fs.mkdirSync(out, { recursive: true });
+    assert.equal(newReport(out, Date.now()), undefined, "no report at all");
+    const report = reportPath(out);
+    fs.writeFileSync(report, "<html></html>");
+    const hourAgo = new Date(Date.now() - 3_600_000);
+    fs.utimesSync(report, hourAgo, hourAgo);
+    assert.equal(newReport(out, Date.now()), undefined, "an earlier run's report");
+    const started = Date.now();
+    fs.writeFileSync(report, "<html></html>");
+    assert.equal(newReport(out, started), report);
   });
 });
 
