@@ -5,7 +5,7 @@
 import * as path from "node:path";
 import * as vscode from "vscode";
 
-import { EXIT_OK, generate, GenerateResult, summary } from "./generate";
+import { EXIT_INVALID, EXIT_OK, generate, GenerateResult, summary } from "./generate";
 import { JavaNotFoundError, requireJava } from "./java";
 import { expandVariables, FileContext, resolveFolder } from "./paths";
 import { LauncherNotFoundError, newReport, resolveLauncher, runLaunch } from "./run";
@@ -135,7 +135,7 @@ export class ReiCommands implements vscode.Disposable {
       } else {
         void this.offer(vscode.window.showInformationMessage(message, "Show Output", "Reveal Folder"), result);
       }
-    } else if (!quiet || result.exitCode !== 1) {
+    } else if (!quiet || result.exitCode !== EXIT_INVALID) {
       void this.offer(vscode.window.showErrorMessage(message, "Show Output"), result);
     }
   }

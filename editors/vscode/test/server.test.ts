@@ -18,6 +18,7 @@ import {
   DidChangeTextDocumentNotification,
   DidOpenTextDocumentNotification,
   ExitNotification,
+  HoverRequest,
   InitializedNotification,
   InitializeRequest,
   ProtocolConnection,
@@ -166,6 +167,18 @@ describe("rei-language-server.jar over stdio", { timeout: 5 * START_TIMEOUT_MS }
     for (const floor of ["F_0_0", "F_5_3", "F_4_0"]) {
       assert.ok(labels.has(floor), `${floor} not offered: ${[...labels].join(", ")}`);
     }
+  });
+
+  test("hover on a floor tells its extent", { timeout: REPLY_TIMEOUT_MS }, async () => {
+    const lines = VALID.split("\n");
+    const line = lines.findIndex((l) => l.includes("object table1 : Table on F_2_1"));
+    const hover = await connection.sendRequest(HoverRequest.type, {
+      textDocument: { uri: uri() },
+      position: { line, character: lines[line].indexOf("F_2_1") + 2 },
+    });
+    const contents = hover?.contents;
+    const text = typeof contents === "object" && contents !== null && "value" in contents ? contents.value : "";
+    assert.match(text, /Floor F_2_1.*centre/, JSON.stringify(hover));
   });
 
   test("a .vepl file is checked by the same server", async () => {
