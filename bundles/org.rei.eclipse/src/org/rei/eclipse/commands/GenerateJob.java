@@ -3,6 +3,8 @@ package org.rei.eclipse.commands;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
 
 import org.eclipse.core.resources.IContainer;
 import org.eclipse.core.resources.IFile;
@@ -17,12 +19,12 @@ import org.rei.eclipse.ReiIds;
 
 /** Generate artifacts of one test case in the background, then show the new files in the workspace. */
 public final class GenerateJob extends Job {
+	private static final Map<Path, Object> RUNNING = new ConcurrentHashMap<>();
 	private final IFile testCase;
 
 	public GenerateJob(IFile testCase) {
 		super("Generate artifacts of " + testCase.getName());
 		this.testCase = testCase;
-		setRule(testCase); // two generations of one file run one after the other
 		setUser(false);
 	}
 
@@ -30,6 +32,14 @@ public final class GenerateJob extends Job {
 	protected IStatus run(IProgressMonitor monitor) {
 		Path file = testCase.getLocation().toFile().toPath();
 		Path output = Generator.outputFor(file);
+		// Two generations of one file run one after the other. Not a scheduling rule: the refresh below needs
+		// the rule of the output's nearest existing folder, which a rule on the file would not contain.
+		synchronized (RUNNING.computeIfAbsent(file, key -> new Object())) {
+			return generate(file, output);
+		}
+	}
+
+	private IStatus generate(Path file, Path output) {
 		try {
 			ProcessResult result = Generator.generate(file, output);
 			ReiConsole.println("rei generate " + testCase.getFullPath() + " -o " + output);
@@ -50,12 +60,17 @@ public final class GenerateJob extends Job {
 		}
 	}
 
-	/** The output folder as the workspace sees it, when it is inside the workspace. */
+	/** The output folder as the workspace sees it, when it is inside the workspace: from its nearest existing
+	 * ancestor, since a folder the generator just created is not yet a resource. */
 	static void refresh(Path folder) {
 		for (IContainer container : ResourcesPlugin.getWorkspace().getRoot()
 				.findContainersForLocationURI(folder.toUri())) {
+			IContainer existing = container;
+			while (!existing.exists() && existing.getParent() != null) {
+				existing = existing.getParent();
+			}
 			try {
-				container.refreshLocal(IResource.DEPTH_INFINITE, null);
+				existing.refreshLocal(IResource.DEPTH_INFINITE, null);
 			} catch (CoreException ignored) {
 				// the files are written; the workspace shows them at its next refresh
 			}

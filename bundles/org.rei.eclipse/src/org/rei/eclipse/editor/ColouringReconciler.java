@@ -61,12 +61,13 @@ public abstract class ColouringReconciler extends PresentationReconciler {
 		IToken keyword = token(KEYWORD, SWT.BOLD);
 		IToken comment = token(COMMENT, SWT.NORMAL);
 		IToken string = token(STRING, SWT.NORMAL);
-		WordRule words = new WordRule(new Identifier(), Token.UNDEFINED);
+		// Every identifier is one token (keyword or plain), so the digits in "table1" are not a number.
+		WordRule words = new WordRule(new Identifier(), new Token(null));
 		keywords.forEach(word -> words.addWord(word, keyword));
 		RuleBasedScanner scanner = new RuleBasedScanner();
 		scanner.setRules(new IRule[] { new EndOfLineRule("//", comment), new MultiLineRule("/*", "*/", comment, (char) 0, true),
-				new SingleLineRule("\"", "\"", string, '\\'), new SingleLineRule("'", "'", string, '\\'),
-				new NumberRule(token(NUMBER, SWT.NORMAL)), words });
+				new SingleLineRule("\"", "\"", string, '\\'), new SingleLineRule("'", "'", string, '\\'), words,
+				new NumberRule(token(NUMBER, SWT.NORMAL)) });
 		return scanner;
 	}
 

@@ -40,7 +40,13 @@ public final class CompletionProcessor implements IContentAssistProcessor {
 			prefixStart = offset;
 		}
 		int wordStart = prefixStart;
-		return items.stream().map(item -> proposal(document, offset, wordStart, item)).toArray(ICompletionProposal[]::new);
+		String prefix = document.get().substring(wordStart, offset).toLowerCase(java.util.Locale.ROOT);
+		// The client filters by what was typed, as LSP clients do: the server also proposes what may follow
+		// (a closing brace), which would replace the typed word.
+		return items.stream()
+				.filter(item -> (item.getFilterText() != null ? item.getFilterText() : item.getLabel())
+						.toLowerCase(java.util.Locale.ROOT).startsWith(prefix))
+				.map(item -> proposal(document, offset, wordStart, item)).toArray(ICompletionProposal[]::new);
 	}
 
 	private static ICompletionProposal proposal(IDocument document, int offset, int wordStart, CompletionItem item) {

@@ -62,6 +62,9 @@ public final class LanguageServerConnection {
 	private final Map<String, OpenDocument> open = new HashMap<>();
 	private Process process;
 	private LanguageServer server;
+	/** When the server last failed to start: it is not tried again for a while, one failure is one log entry. */
+	private long failedAt = Long.MIN_VALUE;
+	private static final long RETRY_NANOS = 30_000_000_000L;
 
 	private record OpenDocument(String languageId, String text, int version, int editors) {
 	}
@@ -178,6 +181,9 @@ public final class LanguageServerConnection {
 		if (process != null && process.isAlive()) {
 			return;
 		}
+		if (failedAt != Long.MIN_VALUE && System.nanoTime() - failedAt < RETRY_NANOS) {
+			throw new IllegalStateException("REI language server is not running (it failed to start; see " + log + ")");
+		}
 		boolean restart = process != null;
 		try {
 			Path jar = Jars.locate(Jars.LANGUAGE_SERVER);
@@ -201,6 +207,7 @@ public final class LanguageServerConnection {
 			if (process != null) {
 				process.destroyForcibly();
 			}
+			failedAt = System.nanoTime();
 			throw new IllegalStateException("REI language server did not start (" + error.getMessage()
 					+ "); its output is in " + log, error);
 		}
@@ -212,6 +219,7 @@ public final class LanguageServerConnection {
 		// The workspace's folder: the server indexes every .rei and .vepl in it, so files that are not open get
 		// markers as well, and cross-file references (imported catalogues) resolve.
 		String root = Documents.uriOf(ResourcesPlugin.getWorkspace().getRoot().getLocation().toFile().toPath());
+		params.setRootUri(root); // Xtext's server reads the root, not the folders
 		params.setWorkspaceFolders(List.of(new WorkspaceFolder(root, "workspace")));
 		TextDocumentClientCapabilities text = new TextDocumentClientCapabilities();
 		text.setSynchronization(new SynchronizationCapabilities(false, false, true));

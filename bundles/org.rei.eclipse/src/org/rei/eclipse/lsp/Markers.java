@@ -51,7 +51,8 @@ final class Markers {
 		for (Diagnostic diagnostic : diagnostics) {
 			IMarker marker = file.createMarker(ReiIds.PROBLEM_MARKER);
 			int[] offsets = Documents.offsetsOf(document, diagnostic.getRange());
-			marker.setAttribute(IMarker.MESSAGE, diagnostic.getMessage());
+			marker.setAttribute(IMarker.MESSAGE, diagnostic.getMessage().isLeft() ? diagnostic.getMessage().getLeft()
+					: diagnostic.getMessage().getRight().getValue()); // LSP 3.18 allows a markup message
 			marker.setAttribute(IMarker.SEVERITY, severityOf(diagnostic.getSeverity()));
 			marker.setAttribute(IMarker.LINE_NUMBER, diagnostic.getRange().getStart().getLine() + 1);
 			marker.setAttribute(IMarker.CHAR_START, offsets[0]);

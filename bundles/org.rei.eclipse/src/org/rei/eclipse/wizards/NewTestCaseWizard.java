@@ -37,7 +37,7 @@ public final class NewTestCaseWizard extends Wizard implements INewWizard {
 			}
 		};
 		page.setTitle("REI test case");
-		page.setDescription("A room with one table, a robot and a mission of one goal, to edit from there.");
+		page.setDescription("A room with a table, a robot and a mission of two goals, to edit from there.");
 		page.setFileExtension("rei");
 		page.setFileName("new_test_case.rei");
 		addPage(page);
@@ -61,15 +61,16 @@ public final class NewTestCaseWizard extends Wizard implements INewWizard {
 	public static String contents(String fileName) {
 		String name = testCaseName(fileName.replaceFirst("\\.rei$", ""));
 		return """
-				// %s: a 4 x 3 m room with a table, a TurtleBot3 Waffle and one goal.
+				// %s: a 4 x 3 m room with a table, a TurtleBot3 Waffle and a mission of two goals.
 				// Floors are named F_<column>_<row>; hover a name to see where it is, Ctrl+Space to complete.
 				testcase %s {
 				  room Room size 4 x 3 {
 				    object table1 : Table on F_2_1
 				    robot robot1 : Waffle on F_0_0
 				  }
-				  mission ToCorner {
-				    goto F_3_2
+				  mission AcrossTheRoom {
+				    goto F_3_0
+				    goto F_3_2 within 60s
 				  }
 				  monitor { close 0.25 collision 0.01 }
 				}

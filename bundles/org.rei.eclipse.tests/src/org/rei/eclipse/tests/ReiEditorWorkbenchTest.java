@@ -1,0 +1,190 @@
+// SPDX-License-Identifier: EPL-2.0
+package org.rei.eclipse.tests;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.List;
+import java.util.stream.Stream;
+
+import org.eclipse.core.resources.IFile;
+import org.eclipse.core.resources.IFolder;
+import org.eclipse.core.resources.IMarker;
+import org.eclipse.core.resources.IProject;
+import org.eclipse.core.runtime.jobs.Job;
+import org.eclipse.jface.text.IDocument;
+import org.eclipse.jface.text.ITextViewer;
+import org.eclipse.jface.text.Region;
+import org.eclipse.jface.text.contentassist.ICompletionProposal;
+import org.eclipse.jface.text.hyperlink.IHyperlink;
+import org.eclipse.ui.IEditorPart;
+import org.eclipse.ui.IPageLayout;
+import org.eclipse.ui.PlatformUI;
+import org.eclipse.ui.handlers.IHandlerService;
+import org.eclipse.ui.ide.IDE;
+import org.eclipse.ui.texteditor.ITextEditor;
+import org.eclipse.ui.views.contentoutline.IContentOutlinePage;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.MethodOrderer;
+import org.junit.jupiter.api.Order;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.TestMethodOrder;
+import org.rei.eclipse.ReiIds;
+import org.rei.eclipse.commands.Generator;
+import org.rei.eclipse.commands.ProcessResult;
+import org.rei.eclipse.editor.CompletionProcessor;
+import org.rei.eclipse.editor.DefinitionHyperlinkDetector;
+import org.rei.eclipse.editor.LspHover;
+import org.rei.eclipse.lsp.Jars;
+import org.rei.eclipse.wizards.NewTestCaseWizard;
+
+/**
+ * The plug-in in a real workbench with REI's real language server and generator: what a test engineer sees when
+ * they open, break, fix and generate a test case. The first test opens the first file: its time to the first
+ * markers includes the language server's start.
+ */
+@TestMethodOrder(MethodOrderer.OrderAnnotation.class)
+class ReiEditorWorkbenchTest {
+	/** The first markers wait for the server's start (a JVM and Xtext) on a busy two-core machine. */
+	private static final long SERVER_MILLIS = 90_000;
+	private static final List<String> ARTIFACTS = List.of("animation.json", "mission.xml", "monitor.json",
+			"world.json", "world.sdf");
+
+	private static IProject project;
+	private static String example;
+
+	@BeforeAll
+	static void workspace() throws Exception {
+		project = Workbench.project("rei-ui-test");
+		example = Files.readString(Path.of(System.getProperty("rei.examples"), "simple_navigation.rei"));
+		PlatformUI.getWorkbench().getActiveWorkbenchWindow().getShell().setSize(1280, 800);
+	}
+
+	@Test
+	@Order(1)
+	void anInvalidTestCaseShowsItsMarkersAndFixingItClearsThem() throws Exception {
+		assertTrue(example.contains(": Table on F_2_1"), "the example still places its table on F_2_1");
+		IFile file = Workbench.write(project, "broken.rei", example.replace(": Table on F_2_1", ": Tabel on F_2_1"));
+		long opened = System.nanoTime();
+		IEditorPart part = IDE.openEditor(Workbench.page(), file);
+		assertEquals("org.eclipse.ui.genericeditor.GenericEditor", part.getSite().getId());
+		ITextEditor editor = (ITextEditor) part;
+
+		Workbench.waitUntil(() -> Workbench.markers(file).stream()
+				.anyMatch(marker -> marker.getAttribute(IMarker.LINE_NUMBER, -1) == 5
+						&& marker.getAttribute(IMarker.SEVERITY, -1) == IMarker.SEVERITY_ERROR
+						&& marker.getAttribute(IMarker.MESSAGE, "").contains("Tabel")),
+				SERVER_MILLIS, () -> "an error on line 5 naming Tabel; markers: " + Workbench.describe(Workbench.markers(file)));
+		long firstMarkers = (System.nanoTime() - opened) / 1_000_000;
+		System.out.println("REI UI test: first markers " + firstMarkers + " ms after opening the file");
+		IMarker marker = Workbench.markers(file).get(0);
+		IDocument document = Workbench.documentOf(editor);
+		int typo = document.get().indexOf("Tabel");
+		assertEquals(typo, marker.getAttribute(IMarker.CHAR_START, -1), "the marker starts at the unknown name");
+		assertEquals(typo + "Tabel".length(), marker.getAttribute(IMarker.CHAR_END, -1));
+
+		Workbench.page().showView(IPageLayout.ID_PROBLEM_VIEW);
+		Workbench.page().showView(IPageLayout.ID_OUTLINE);
+		Workbench.page().activate(editor);
+		Workbench.flush(1500);
+		Workbench.screenshot("eclipse-markers.png");
+
+		document.replace(typo, "Tabel".length(), "Table");
+		Workbench.waitUntil(() -> Workbench.markers(file).isEmpty(), SERVER_MILLIS,
+				() -> "no markers once fixed; markers: " + Workbench.describe(Workbench.markers(file)));
+		editor.doSave(null);
+		Workbench.page().closeEditor(editor, false);
+	}
+
+	@Test
+	@Order(2)
+	void generateArtifactsWritesWhatTheGeneratorWritesFromTheCommandLine() throws Exception {
+		IFile file = Workbench.write(project, "simple.rei", example);
+		ITextEditor editor = (ITextEditor) IDE.openEditor(Workbench.page(), file);
+		Workbench.flush(200);
+
+		PlatformUI.getWorkbench().getService(IHandlerService.class).executeCommand(ReiIds.GENERATE_COMMAND, null);
+		Job.getJobManager().join(ReiIds.JOB_FAMILY, null);
+		Workbench.flush(200);
+
+		IFolder output = project.getFolder("simple-artifacts");
+		assertTrue(output.exists(), "the workspace shows the output folder");
+		for (String artifact : ARTIFACTS) {
+			assertTrue(output.getFile(artifact).exists(), artifact + " is in the workspace");
+		}
+		Path reference = Files.createTempDirectory("rei-generate");
+		Path testCase = file.getLocation().toFile().toPath();
+		ProcessResult cli = ProcessResult.run(List.of(Jars.java(), "-jar", Jars.locate(Jars.GENERATOR).toString(),
+				"generate", testCase.toString(), "-o", reference.toString()), testCase.getParent().toFile(), 120, null);
+		assertEquals(0, cli.exitCode(), cli.output());
+		Path written = Generator.outputFor(testCase);
+		assertEquals(ARTIFACTS, names(reference));
+		assertEquals(ARTIFACTS, names(written));
+		for (String artifact : ARTIFACTS) {
+			assertArrayEquals(Files.readAllBytes(reference.resolve(artifact)), Files.readAllBytes(written.resolve(artifact)),
+					artifact + " is byte for byte what rei generate writes");
+		}
+		Workbench.page().closeEditor(editor, false);
+	}
+
+	@Test
+	@Order(3)
+	void theNewTestCaseWizardsTemplateIsValid() throws Exception {
+		IFile file = Workbench.write(project, "fresh_case.rei", NewTestCaseWizard.contents("fresh_case.rei") + "oops\n");
+		ITextEditor editor = (ITextEditor) IDE.openEditor(Workbench.page(), file);
+		Workbench.waitUntil(() -> !Workbench.markers(file).isEmpty(), SERVER_MILLIS,
+				() -> "a syntax error for the text after the test case");
+		IDocument document = Workbench.documentOf(editor);
+		document.set(NewTestCaseWizard.contents("fresh_case.rei"));
+		Workbench.waitUntil(() -> Workbench.markers(file).isEmpty(), SERVER_MILLIS,
+				() -> "the template is valid; markers: " + Workbench.describe(Workbench.markers(file)));
+		assertTrue(document.get().contains("testcase FreshCase {"));
+		Workbench.page().closeEditor(editor, false);
+	}
+
+	@Test
+	@Order(4)
+	void completionHoverDefinitionAndOutlineComeFromTheServer() throws Exception {
+		IFile file = Workbench.write(project, "features.rei", example);
+		ITextEditor editor = (ITextEditor) IDE.openEditor(Workbench.page(), file);
+		ITextViewer viewer = Workbench.viewerOf(editor);
+		IDocument document = Workbench.documentOf(editor);
+		int reference = document.get().indexOf("goto F_4_0") + "goto ".length();
+
+		ICompletionProposal[][] proposals = new ICompletionProposal[1][];
+		Workbench.waitUntil(() -> {
+			proposals[0] = new CompletionProcessor().computeCompletionProposals(viewer, reference + "F_4".length());
+			return Stream.of(proposals[0]).anyMatch(p -> p.getDisplayString().startsWith("F_4_0"));
+		}, SERVER_MILLIS, () -> "floor names after 'goto F_4'; got " + labels(proposals[0]));
+		assertTrue(Stream.of(proposals[0]).allMatch(p -> p.getDisplayString().startsWith("F_4")),
+				"only floors that start with the typed prefix: " + labels(proposals[0]));
+
+		String hover = new LspHover().getHoverInfo(viewer, new Region(reference + 1, 0));
+		assertNotNull(hover, "a hover on a floor reference");
+		assertTrue(hover.contains("F_4_0"), hover);
+
+		IHyperlink[] links = new DefinitionHyperlinkDetector().detectHyperlinks(viewer, new Region(reference + 1, 0), false);
+		assertNotNull(links, "a definition for the floor reference");
+		assertEquals(reference, links[0].getHyperlinkRegion().getOffset());
+		assertEquals("F_4_0".length(), links[0].getHyperlinkRegion().getLength());
+
+		assertNotNull(editor.getAdapter(IContentOutlinePage.class), "the editor has an outline");
+		Workbench.page().closeEditor(editor, false);
+	}
+
+	private static List<String> names(Path folder) throws IOException {
+		try (Stream<Path> files = Files.list(folder)) {
+			return files.map(path -> path.getFileName().toString()).sorted().toList();
+		}
+	}
+
+	private static String labels(ICompletionProposal[] proposals) {
+		return proposals == null ? "nothing" : Arrays.toString(Stream.of(proposals).map(ICompletionProposal::getDisplayString).toArray());
+	}
+}
