@@ -19,6 +19,9 @@ import org.eclipse.core.resources.IMarker;
 import org.eclipse.core.resources.IProject;
 import org.eclipse.core.runtime.jobs.Job;
 import org.eclipse.jface.text.IDocument;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.custom.StyleRange;
+import org.eclipse.swt.custom.StyledText;
 import org.eclipse.jface.text.ITextViewer;
 import org.eclipse.jface.text.Region;
 import org.eclipse.jface.text.contentassist.ICompletionProposal;
@@ -175,6 +178,15 @@ class ReiEditorWorkbenchTest {
 		assertEquals("F_4_0".length(), links[0].getHyperlinkRegion().getLength());
 
 		assertNotNull(editor.getAdapter(IContentOutlinePage.class), "the editor has an outline");
+
+		// colouring: a keyword is bold, the digit of a name is not coloured as a number
+		StyledText text = viewer.getTextWidget();
+		StyleRange keyword = text.getStyleRangeAtOffset(document.get().indexOf("testcase"));
+		assertNotNull(keyword, "'testcase' is coloured");
+		assertEquals(SWT.BOLD, keyword.fontStyle & SWT.BOLD);
+		StyleRange digit = text.getStyleRangeAtOffset(document.get().indexOf("table1") + "table".length());
+		assertTrue(digit == null || digit.foreground == null || digit.foreground.equals(text.getForeground()),
+				"the 1 of table1 is part of a name: " + digit);
 		Workbench.page().closeEditor(editor, false);
 	}
 
