@@ -8,6 +8,7 @@ killed, so a hung JVM never outlives the test.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import queue
 import subprocess
@@ -121,11 +122,10 @@ class LspClient:
             self.process.wait(10)
 
 
-@pytest.fixture
-def language_server(language_server_jar: Path, java: toolchain.Java, tmp_path: Path) -> Iterator[LspClient]:
-    """A started (not yet initialized) language server with a workspace folder in `tmp_path`; killed after
-    the test whatever happened."""
-    client = LspClient(toolchain.jar_command(language_server_jar, [], java), tmp_path)
+@contextlib.contextmanager
+def started(command: list[str], cwd: Path) -> Iterator[LspClient]:
+    """A started (not yet initialized) language server, killed on leaving whatever happened."""
+    client = LspClient(command, cwd)
     try:
         yield client
     finally:
@@ -133,6 +133,14 @@ def language_server(language_server_jar: Path, java: toolchain.Java, tmp_path: P
         for stream in (client.process.stdin, client.process.stdout, client.process.stderr):
             if stream is not None:
                 stream.close()
+
+
+@pytest.fixture
+def language_server(language_server_jar: Path, java: toolchain.Java, tmp_path: Path) -> Iterator[LspClient]:
+    """A started (not yet initialized) language server with a workspace folder in `tmp_path`; killed after
+    the test whatever happened."""
+    with started(toolchain.jar_command(language_server_jar, [], java), tmp_path) as client:
+        yield client
 
 
 BROKEN_LINE = 3  # 1-based: the object stands on a floor the 3 x 2 grid does not have
@@ -153,6 +161,20 @@ def labels(result: Any) -> list[str]:
     return [item["label"] for item in items]
 
 
+def published_errors(client: LspClient, name: str) -> list[Message]:
+    """The errors of the first non-empty diagnostics the server publishes for the file called `name`."""
+    published = client.wait_for(
+        lambda m: (
+            m.get("method") == "textDocument/publishDiagnostics"
+            and m["params"]["uri"].endswith("/" + name)
+            and m["params"]["diagnostics"]
+        ),
+        START_TIMEOUT_S,
+        f"diagnostics for {name}",
+    )
+    return [d for d in published["params"]["diagnostics"] if d.get("severity") == 1]
+
+
 def test_diagnostics_completion_and_clean_exit(language_server: LspClient, tmp_path: Path) -> None:
     path = tmp_path / "editing.rei"
     path.write_text(TEXT, encoding="utf-8")
@@ -170,16 +192,7 @@ def test_diagnostics_completion_and_clean_exit(language_server: LspClient, tmp_p
         {"textDocument": {"uri": uri, "languageId": "rei", "version": 1, "text": TEXT}},
     )
 
-    published = language_server.wait_for(
-        lambda m: (
-            m.get("method") == "textDocument/publishDiagnostics"
-            and m["params"]["uri"].endswith("/editing.rei")
-            and m["params"]["diagnostics"]
-        ),
-        START_TIMEOUT_S,
-        "diagnostics for editing.rei",
-    )
-    errors = [d for d in published["params"]["diagnostics"] if d.get("severity") == 1]
+    errors = published_errors(language_server, "editing.rei")
     assert [d["range"]["start"]["line"] for d in errors] == [BROKEN_LINE - 1], errors
     assert "F_7_7" in errors[0]["message"]
 
@@ -194,6 +207,97 @@ def test_diagnostics_completion_and_clean_exit(language_server: LspClient, tmp_p
     assert "table1" not in offered and "tb3" not in offered, "only floors stand after 'on'"
 
     assert language_server.stop() == 0
+
+
+@pytest.mark.parametrize("folders_capability", [False, True], ids=["plain", "workspaceFolders-capable"])
+def test_a_client_sending_only_workspace_folders_gets_them_as_the_root(
+    language_server: LspClient, tmp_path: Path, folders_capability: bool
+) -> None:
+    """No rootUri and no rootPath: Xtext alone fails `initialize` unless the client also declares the
+    workspaceFolders capability. The folder is the root: a file in it that the client never opens is checked too
+    (the initial build's diagnostics come before those of the opened file's build)."""
+    (tmp_path / "editing.rei").write_text(TEXT, encoding="utf-8")
+    (tmp_path / "unopened.rei").write_text(TEXT, encoding="utf-8")
+    capabilities = {"workspace": {"workspaceFolders": True}} if folders_capability else {}
+    result = language_server.request(
+        "initialize",
+        {
+            "processId": None,
+            "workspaceFolders": [{"uri": tmp_path.as_uri(), "name": "lab"}],
+            "capabilities": capabilities,
+        },
+        timeout=START_TIMEOUT_S,
+    )
+    assert "completionProvider" in result["capabilities"]
+    language_server.notify("initialized", {})
+    opened = {"uri": (tmp_path / "editing.rei").as_uri(), "languageId": "rei", "version": 1, "text": TEXT}
+    language_server.notify("textDocument/didOpen", {"textDocument": opened})
+    for name in ("unopened.rei", "editing.rei"):
+        errors = published_errors(language_server, name)
+        assert [d["range"]["start"]["line"] for d in errors] == [BROKEN_LINE - 1], (name, errors)
+    assert language_server.stop() == 0
+
+
+CATALOGUE_TEXT = """\
+catalogue Lab {
+  type Sofa : object box 1.1 x 0.8 x 0.8 mass 40
+}
+"""
+IMPORTING_BROKEN_LINE = 6  # 1-based; the lines above use the imported catalogue's Sofa
+IMPORTING_TEXT = """\
+import "catalogues/lab.rei"
+
+testcase Imported {
+  room Lab size 3 x 2 {
+    object sofa : Sofa on F_1_0
+    object table1 : Table on F_7_7
+    robot tb3 : Waffle on F_0_0
+  }
+  mission Go { goto F_2_1 goto F_0_1 }
+}
+"""
+
+
+@pytest.mark.parametrize("folders_capability", [False, True], ids=["plain", "workspaceFolders-capable"])
+def test_without_any_root_a_file_anywhere_is_checked_with_its_imports_and_no_temporary_root_remains(
+    language_server_jar: Path, java: toolchain.Java, tmp_path: Path, folders_capability: bool
+) -> None:
+    """No root at all, as VS Code sends (declaring workspaceFolders) for a file opened without a folder. The server
+    makes an empty root of its own in the JVM's temporary directory (here one the test watches), checks the file
+    where it is, its catalogue import resolved beside it, and deletes that root on exit."""
+    jvm_tmp = tmp_path / "jvm-tmp"
+    jvm_tmp.mkdir()
+    files = tmp_path / "anywhere"
+    (files / "catalogues").mkdir(parents=True)
+    (files / "catalogues" / "lab.rei").write_text(CATALOGUE_TEXT, encoding="utf-8")
+    path = files / "imported.rei"
+    path.write_text(IMPORTING_TEXT, encoding="utf-8")
+    command = toolchain.jar_command(language_server_jar, [], java)
+    command[1:1] = [f"-Djava.io.tmpdir={jvm_tmp}"]
+
+    with started(command, tmp_path) as server:
+        result = server.request(
+            "initialize",
+            {
+                "processId": None,
+                "rootPath": None,
+                "rootUri": None,
+                "workspaceFolders": None,
+                "capabilities": {"workspace": {"workspaceFolders": True}} if folders_capability else {},
+            },
+            timeout=START_TIMEOUT_S,
+        )
+        assert "completionProvider" in result["capabilities"]
+        roots = list(jvm_tmp.glob("rei-language-server-*"))
+        assert len(roots) == 1 and roots[0].is_dir() and not any(roots[0].iterdir()), roots
+        server.notify("initialized", {})
+        opened = {"uri": path.as_uri(), "languageId": "rei", "version": 1, "text": IMPORTING_TEXT}
+        server.notify("textDocument/didOpen", {"textDocument": opened})
+        errors = published_errors(server, "imported.rei")
+        assert [d["range"]["start"]["line"] for d in errors] == [IMPORTING_BROKEN_LINE - 1], errors
+        assert "F_7_7" in errors[0]["message"]
+        assert server.stop() == 0
+    assert not list(jvm_tmp.glob("rei-language-server-*")), "the server left its temporary root behind"
 
 
 HOVER_TEXT = """\
