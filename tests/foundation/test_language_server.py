@@ -209,6 +209,25 @@ def test_diagnostics_completion_and_clean_exit(language_server: LspClient, tmp_p
     assert language_server.stop() == 0
 
 
+def test_a_server_whose_editor_went_away_without_exit_ends_by_itself(
+    language_server: LspClient, tmp_path: Path
+) -> None:
+    """An editor that crashes closes the server's stdin without shutdown/exit: the server must not live on."""
+    language_server.request(
+        "initialize",
+        {"processId": None, "rootUri": tmp_path.as_uri(), "capabilities": {}},
+        timeout=START_TIMEOUT_S,
+    )
+    language_server.notify("initialized", {})
+    assert language_server.process.stdin is not None
+    language_server.process.stdin.close()
+    try:
+        # Xtext's launcher looks at its input every 10 s
+        assert language_server.process.wait(30) == 0
+    except subprocess.TimeoutExpired:
+        pytest.fail(f"language server still running 30 s after its stdin closed; {language_server.stderr_tail()}")
+
+
 @pytest.mark.parametrize("folders_capability", [False, True], ids=["plain", "workspaceFolders-capable"])
 def test_a_client_sending_only_workspace_folders_gets_them_as_the_root(
     language_server: LspClient, tmp_path: Path, folders_capability: bool

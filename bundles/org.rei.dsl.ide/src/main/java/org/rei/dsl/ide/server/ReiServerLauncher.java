@@ -19,5 +19,8 @@ public final class ReiServerLauncher {
 	public static void main(String[] args) {
 		ServerLauncher.launch(ReiServerLauncher.class.getName(), args, Modules.override(new ServerModule())
 				.with(binder -> binder.bind(LanguageServerImpl.class).to(ReiLanguageServer.class)));
+		// launch returns when the client's end of stdin closes without an exit notification (an editor that
+		// crashed or was killed); Xtext's worker threads would keep this JVM alive for ever, an orphan per crash.
+		System.exit(0);
 	}
 }
