@@ -15,6 +15,7 @@ public final class ReiIds {
 	public static final String PREF_GENERATE_ON_SAVE = "generateOnSave";
 	public static final String PREF_LAUNCHER = "launcher";
 	public static final String PREF_JAVA = "java";
+	public static final String PREF_OPEN_REPORT = "openReport";
 
 	private ReiIds() {
 	}

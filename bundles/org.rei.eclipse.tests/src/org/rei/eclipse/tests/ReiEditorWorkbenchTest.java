@@ -18,6 +18,8 @@ import org.eclipse.core.resources.IFolder;
 import org.eclipse.core.resources.IMarker;
 import org.eclipse.core.resources.IProject;
 import org.eclipse.core.runtime.jobs.Job;
+import org.eclipse.core.runtime.preferences.IEclipsePreferences;
+import org.eclipse.core.runtime.preferences.InstanceScope;
 import org.eclipse.jface.text.IDocument;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.custom.StyleRange;
@@ -65,7 +67,7 @@ class ReiEditorWorkbenchTest {
 	@BeforeAll
 	static void workspace() throws Exception {
 		project = Workbench.project("rei-ui-test");
-		example = Files.readString(Path.of(System.getProperty("rei.examples"), "simple_navigation.rei"));
+		example = Files.readString(Path.of(System.getProperty("rei.root"), "examples", "simple_navigation.rei"));
 		PlatformUI.getWorkbench().getActiveWorkbenchWindow().getShell().setSize(1280, 800);
 	}
 
@@ -188,6 +190,50 @@ class ReiEditorWorkbenchTest {
 		assertTrue(digit == null || digit.foreground == null || digit.foreground.equals(text.getForeground()),
 				"the 1 of table1 is part of a name: " + digit);
 		Workbench.page().closeEditor(editor, false);
+	}
+
+	@Test
+	@Order(5)
+	void savingATestCaseGeneratesItsArtifactsWhenThePreferenceIsOn() throws Exception {
+		IEclipsePreferences preferences = InstanceScope.INSTANCE.getNode(ReiIds.PLUGIN);
+		IFile file = Workbench.write(project, "on_save.rei", example);
+		ITextEditor editor = (ITextEditor) IDE.openEditor(Workbench.page(), file);
+		IFolder output = project.getFolder("on_save-artifacts");
+		try {
+			preferences.putBoolean(ReiIds.PREF_GENERATE_ON_SAVE, true);
+			IDocument document = Workbench.documentOf(editor);
+			document.replace(document.get().indexOf("F_0_3"), "F_0_3".length(), "F_1_3");
+			editor.doSave(null);
+			Workbench.waitUntil(() -> output.getFile("world.json").exists(), SERVER_MILLIS,
+					() -> "on_save-artifacts/world.json after saving");
+			assertTrue(Files.readString(output.getFile("world.json").getLocation().toFile().toPath()).contains("shelf1"));
+		} finally {
+			preferences.putBoolean(ReiIds.PREF_GENERATE_ON_SAVE, false);
+			Workbench.page().closeEditor(editor, false);
+		}
+	}
+
+	/** The whole of rei run (router, simulation, monitor, evaluation) through the user's REI installation. */
+	@Test
+	@Order(6)
+	void runTestCaseRunsReiRunAndWritesTheReport() throws Exception {
+		IEclipsePreferences preferences = InstanceScope.INSTANCE.getNode(ReiIds.PLUGIN);
+		preferences.put(ReiIds.PREF_LAUNCHER, Path.of(System.getProperty("rei.root"), "rei").toString());
+		preferences.putBoolean(ReiIds.PREF_OPEN_REPORT, false); // no browser window on the build machine
+		IFile file = Workbench.write(project, "run_me.rei", example);
+		ITextEditor editor = (ITextEditor) IDE.openEditor(Workbench.page(), file);
+		try {
+			PlatformUI.getWorkbench().getService(IHandlerService.class).executeCommand(ReiIds.RUN_COMMAND, null);
+			Workbench.waitUntil(() -> Job.getJobManager().find(ReiIds.JOB_FAMILY).length == 0, 300_000,
+					() -> "rei run to end");
+			IFolder run = project.getFolder("run_me-run");
+			assertTrue(run.getFile("report.html").exists(), "report.html in the workspace");
+			assertTrue(run.getFile("summary.json").exists(), "summary.json in the workspace");
+		} finally {
+			preferences.remove(ReiIds.PREF_LAUNCHER);
+			preferences.remove(ReiIds.PREF_OPEN_REPORT);
+			Workbench.page().closeEditor(editor, false);
+		}
 	}
 
 	private static List<String> names(Path folder) throws IOException {

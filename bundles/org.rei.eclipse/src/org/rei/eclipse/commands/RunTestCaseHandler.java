@@ -73,7 +73,8 @@ public final class RunTestCaseHandler extends AbstractHandler {
 							: Status.error("rei run " + testCase.getName() + " did not end in " + TIMEOUT_SECONDS + " s");
 				}
 				Path report = output.resolve("report.html");
-				if (Files.isRegularFile(report)) {
+				if (Files.isRegularFile(report)
+						&& InstanceScope.INSTANCE.getNode(ReiIds.PLUGIN).getBoolean(ReiIds.PREF_OPEN_REPORT, true)) {
 					Display.getDefault().asyncExec(() -> open(report));
 				}
 				// rei run's exit codes: 0 every requirement passed, 1 one failed, 2 and more the run itself failed

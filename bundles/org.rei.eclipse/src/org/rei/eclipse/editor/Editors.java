@@ -41,8 +41,12 @@ final class Editors {
 		} catch (InterruptedException interrupted) {
 			Thread.currentThread().interrupt();
 			return Optional.empty();
+		} catch (java.util.concurrent.TimeoutException slow) {
+			return Optional.empty(); // a busy server: the user asks again
 		} catch (Exception failed) {
-			ReiPlugin.log("REI language server: no answer", failed);
+			if (!(failed.getCause() instanceof IllegalStateException)) { // a server that failed to start is logged once
+				ReiPlugin.log("REI language server: no answer", failed);
+			}
 			return Optional.empty();
 		}
 	}

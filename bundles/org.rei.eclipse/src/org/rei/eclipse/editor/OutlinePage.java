@@ -72,7 +72,8 @@ final class OutlinePage extends ContentOutlinePage implements IDocumentListener 
 
 	@Override
 	public void documentChanged(DocumentEvent event) {
-		Display.getCurrent().timerExec(REFRESH_DELAY_MILLIS, refresh); // one refresh after a burst of typing
+		// one refresh after a burst of typing; a document may also change off the UI thread (a file buffer's sync)
+		Display.getDefault().asyncExec(() -> Display.getDefault().timerExec(REFRESH_DELAY_MILLIS, refresh));
 	}
 
 	private void refresh() {

@@ -15,5 +15,6 @@ public final class PreferenceDefaults extends AbstractPreferenceInitializer {
 		defaults.putBoolean(ReiIds.PREF_GENERATE_ON_SAVE, false);
 		defaults.put(ReiIds.PREF_LAUNCHER, "");
 		defaults.put(ReiIds.PREF_JAVA, "");
+		defaults.putBoolean(ReiIds.PREF_OPEN_REPORT, true);
 	}
 }

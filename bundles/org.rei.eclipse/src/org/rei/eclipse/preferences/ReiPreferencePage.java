@@ -28,6 +28,8 @@ public final class ReiPreferencePage extends FieldEditorPreferencePage implement
 				getFieldEditorParent()));
 		addField(new FileFieldEditor(ReiIds.PREF_LAUNCHER, "REI launcher for Run test case (the rei script; empty: rei on the PATH):",
 				true, getFieldEditorParent()));
+		addField(new BooleanFieldEditor(ReiIds.PREF_OPEN_REPORT, "Open the report when Run test case ends",
+				getFieldEditorParent()));
 		addField(new FileFieldEditor(ReiIds.PREF_JAVA, "Java for the language server and generator (empty: the workbench's):",
 				true, getFieldEditorParent()));
 	}
