@@ -21,16 +21,19 @@ import org.eclipse.core.runtime.jobs.Job;
 import org.eclipse.core.runtime.preferences.IEclipsePreferences;
 import org.eclipse.core.runtime.preferences.InstanceScope;
 import org.eclipse.jface.text.IDocument;
-import org.eclipse.swt.SWT;
-import org.eclipse.swt.custom.StyleRange;
-import org.eclipse.swt.custom.StyledText;
 import org.eclipse.jface.text.ITextViewer;
 import org.eclipse.jface.text.Region;
 import org.eclipse.jface.text.contentassist.ICompletionProposal;
 import org.eclipse.jface.text.hyperlink.IHyperlink;
+import org.eclipse.jface.viewers.StructuredSelection;
+import org.eclipse.jface.wizard.WizardDialog;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.custom.StyleRange;
+import org.eclipse.swt.custom.StyledText;
 import org.eclipse.ui.IEditorPart;
 import org.eclipse.ui.IPageLayout;
 import org.eclipse.ui.PlatformUI;
+import org.eclipse.ui.dialogs.WizardNewFileCreationPage;
 import org.eclipse.ui.handlers.IHandlerService;
 import org.eclipse.ui.ide.IDE;
 import org.eclipse.ui.texteditor.ITextEditor;
@@ -234,6 +237,27 @@ class ReiEditorWorkbenchTest {
 			preferences.remove(ReiIds.PREF_OPEN_REPORT);
 			Workbench.page().closeEditor(editor, false);
 		}
+	}
+
+	@Test
+	@Order(7)
+	void theNewTestCaseWizardCreatesTheFileAndOpensIt() throws Exception {
+		NewTestCaseWizard wizard = new NewTestCaseWizard();
+		wizard.init(PlatformUI.getWorkbench(), new StructuredSelection(project));
+		WizardDialog dialog = new WizardDialog(PlatformUI.getWorkbench().getActiveWorkbenchWindow().getShell(), wizard);
+		dialog.create();
+		try {
+			((WizardNewFileCreationPage) wizard.getPage("testCase")).setFileName("from-the wizard.rei");
+			assertTrue(wizard.performFinish());
+		} finally {
+			dialog.close();
+		}
+		IFile created = project.getFile("from-the wizard.rei");
+		assertTrue(created.exists(), "the wizard created the file");
+		assertTrue(Files.readString(created.getLocation().toFile().toPath()).contains("testcase FromTheWizard {"));
+		IEditorPart active = Workbench.page().getActiveEditor();
+		assertEquals("from-the wizard.rei", active.getEditorInput().getName(), "and opened it");
+		Workbench.page().closeEditor(active, false);
 	}
 
 	private static List<String> names(Path folder) throws IOException {
