@@ -3,6 +3,7 @@ package org.rei.eclipse.tests;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -175,7 +176,8 @@ class ReiEditorWorkbenchTest {
 
 		String hover = new LspHover().getHoverInfo(viewer, new Region(reference + 1, 0));
 		assertNotNull(hover, "a hover on a floor reference");
-		assertTrue(hover.contains("F_4_0"), hover);
+		assertTrue(hover.contains("Floor F_4_0: x 4..5 m"), hover);
+		assertFalse(hover.contains("**"), "markdown marks are not shown: " + hover);
 
 		IHyperlink[] links = new DefinitionHyperlinkDetector().detectHyperlinks(viewer, new Region(reference + 1, 0), false);
 		assertNotNull(links, "a definition for the floor reference");

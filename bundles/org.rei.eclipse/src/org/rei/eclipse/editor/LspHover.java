@@ -9,6 +9,8 @@ import org.eclipse.jface.text.ITextViewer;
 import org.eclipse.jface.text.Region;
 import org.eclipse.lsp4j.Hover;
 import org.eclipse.lsp4j.HoverParams;
+import org.eclipse.lsp4j.MarkupContent;
+import org.eclipse.lsp4j.MarkupKind;
 import org.rei.eclipse.ReiPlugin;
 
 /** The server's hover as plain text: a floor's extent, a type's shape and mass, an event's definition. */
@@ -26,11 +28,17 @@ public final class LspHover implements ITextHover {
 			return "";
 		}
 		if (hover.getContents().isRight()) {
-			return hover.getContents().getRight().getValue();
+			MarkupContent content = hover.getContents().getRight();
+			return MarkupKind.MARKDOWN.equals(content.getKind()) ? plain(content.getValue()) : content.getValue();
 		}
 		return hover.getContents().getLeft().stream()
-				.map(part -> part.isLeft() ? part.getLeft() : part.getRight().getValue())
+				.map(part -> plain(part.isLeft() ? part.getLeft() : part.getRight().getValue()))
 				.collect(Collectors.joining("\n\n"));
+	}
+
+	/** The default hover shows text: the emphasis and code marks of the server's markdown would show as is. */
+	static String plain(String markdown) {
+		return markdown.replace("**", "").replace("`", "");
 	}
 
 	@Override
