@@ -175,6 +175,28 @@ class Workbench:
         self.page.wait_for_selector(f".tabs-container .tab.active[aria-label*='{name}']")
         self.page.wait_for_selector(".part.editor .monaco-editor .view-lines")
 
+    def run_command(self, title: str) -> None:
+        """Run a command from the command palette (F1), by its title as the palette lists it."""
+        self.page.keyboard.press("F1")
+        self.page.wait_for_selector(".quick-input-widget input")
+        self.page.keyboard.type(title)
+        self.page.locator(".quick-input-list .monaco-list-row", has_text=title).first.wait_for()
+        self.page.keyboard.press("Enter")
+
+    def hover(self, line: str, word: str, timeout_s: float = 30.0) -> str:
+        """Point the mouse at `word` in the editor's `line` until a hover naming it shows; the hover's text."""
+        at = self.word_centre(line, word)
+        shown = "() => [...document.querySelectorAll('.monaco-hover-content')].map(e => e.innerText).join('\\n')"
+        deadline = time.monotonic() + timeout_s
+        while word not in (text := self.page.evaluate(shown)):
+            assert time.monotonic() < deadline, f"no hover naming {word} within {timeout_s} s; shown: {text!r}"
+            # Point elsewhere and back: the workbench asks the server again on the next move over the word.
+            self.page.mouse.move(at["x"] - 150, at["y"] + 120)
+            self.page.mouse.move(at["x"], at["y"], steps=3)
+            self.page.wait_for_timeout(1500)
+        self.page.mouse.move(at["x"] - 150, at["y"] + 120)
+        return text
+
     def word_centre(self, line: str, word: str) -> dict[str, float]:
         self.page.wait_for_function(f"arg => ({WORD_CENTRE_JS})(arg) !== null", arg=[line, word])
         return self.page.evaluate(WORD_CENTRE_JS, [line, word])
@@ -431,19 +453,45 @@ def test_generate_artifacts_from_the_command_palette(workbench: Workbench, java:
 
 
 def test_hover_over_a_floor_describes_it(workbench: Workbench) -> None:
-    page = workbench.page
     workbench.open_from_explorer("lab.rei")
-    at = workbench.word_centre("goto F_4_0", "F_4_0")
-    shown = "[...document.querySelectorAll('.monaco-hover-content')].map(e => e.innerText).join('\\n')"
-    deadline = time.monotonic() + 30.0
-    while "F_4_0" not in page.evaluate(f"() => {shown}"):
-        assert time.monotonic() < deadline, f"no hover naming F_4_0; shown: {page.evaluate(f'() => {shown}')!r}"
-        # Point elsewhere and back: the workbench asks again on the next mouse move over the word.
-        page.mouse.move(at["x"] - 150, at["y"] + 120)
-        page.mouse.move(at["x"], at["y"], steps=3)
-        page.wait_for_timeout(1500)
-    text = page.evaluate(f"() => {shown}")
+    text = workbench.hover("goto F_4_0", "F_4_0")
     assert "Floor F_4_0" in text, text
+
+
+def test_restarting_the_language_server_replaces_its_process(workbench: Workbench) -> None:
+    (old,) = language_servers(workbench.server.pid)
+    workbench.run_command("REI: Restart language server")
+    deadline = time.monotonic() + 60.0
+    while (running := language_servers(workbench.server.pid)) == [old] or len(running) != 1:
+        assert time.monotonic() < deadline, f"after the restart: {running} (before: {old})"
+        time.sleep(0.3)
+    workbench.page.keyboard.press("Escape")
+    # The new server answers: the hover is asked of it.
+    workbench.open_from_explorer("lab.rei")
+    assert "Floor F_5_3" in workbench.hover("goto F_5_3", "F_5_3")
+    assert language_servers(workbench.server.pid) == running
+
+
+def test_restarting_twice_in_a_row_leaves_one_language_server(workbench: Workbench) -> None:
+    """The second restart comes while the first is still stopping or starting its server (an impatient person,
+    or a change of rei.java.home during a restart): still exactly one server afterwards, and it answers."""
+    (old,) = language_servers(workbench.server.pid)
+    workbench.run_command("REI: Restart language server")
+    workbench.run_command("REI: Restart language server")
+    deadline = time.monotonic() + 60.0
+    since = None
+    while True:
+        running = language_servers(workbench.server.pid)
+        settled = len(running) == 1 and running != [old]
+        now = time.monotonic()
+        since = (since or now) if settled else None
+        if since is not None and now - since > 5.0:
+            break
+        assert now < deadline, f"language servers 60 s after two restarts: {running} (before: {old})"
+        time.sleep(0.3)
+    workbench.open_from_explorer("lab.rei")
+    assert "Floor F_4_0" in workbench.hover("goto F_4_0", "F_4_0")
+    assert language_servers(workbench.server.pid) == running
 
 
 def test_stopping_code_server_ends_the_language_server(workbench: Workbench) -> None:

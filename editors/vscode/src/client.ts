@@ -17,11 +17,44 @@ export class ReiLanguageServer implements vscode.Disposable {
   private client: LanguageClient | undefined;
   private watcher: vscode.FileSystemWatcher | undefined;
   private emptyRoot: string | undefined;
+  /** The last start, stop or restart; the next one runs after it (see `serialized`). */
+  private queue: Promise<void> = Promise.resolve();
 
   constructor(private readonly extensionPath: string) {}
 
   /** Starts the server; a missing Java or jar is shown to the user with the setting to fix, not thrown. */
-  async start(): Promise<void> {
+  start(): Promise<void> {
+    return this.serialized(() => this.startNow());
+  }
+
+  /** Stops the server (shutdown and exit), after a start still under way has finished. */
+  stop(): Promise<void> {
+    return this.serialized(() => this.stopNow());
+  }
+
+  restart(): Promise<void> {
+    return this.serialized(async () => {
+      await this.stopNow();
+      await this.startNow();
+    });
+  }
+
+  dispose(): void {
+    void this.stop();
+  }
+
+  /**
+   * Runs `action` once the previous start, stop or restart has ended. Overlapping ones (two restarts in a row, a
+   * settings change while the server starts) would otherwise each start a server and keep only the last: a
+   * client that is still starting cannot be stopped, so the other JVM would be left running with its client.
+   */
+  private serialized(action: () => Promise<void>): Promise<void> {
+    const run = this.queue.then(action);
+    this.queue = run.catch(() => undefined);
+    return run;
+  }
+
+  private async startNow(): Promise<void> {
     const settings = readSettings();
     let launch: Launch;
     try {
@@ -67,7 +100,7 @@ export class ReiLanguageServer implements vscode.Disposable {
     return { uri: vscode.Uri.file(this.emptyRoot), name: "REI (no folder open)", index: 0 };
   }
 
-  async stop(): Promise<void> {
+  private async stopNow(): Promise<void> {
     const client = this.client;
     this.client = undefined;
     this.watcher?.dispose();
@@ -79,14 +112,5 @@ export class ReiLanguageServer implements vscode.Disposable {
       fs.rmSync(this.emptyRoot, { recursive: true, force: true });
       this.emptyRoot = undefined;
     }
-  }
-
-  async restart(): Promise<void> {
-    await this.stop();
-    await this.start();
-  }
-
-  dispose(): void {
-    void this.stop();
   }
 }
