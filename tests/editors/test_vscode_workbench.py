@@ -186,7 +186,9 @@ class Workbench:
     def hover(self, line: str, word: str, timeout_s: float = 30.0) -> str:
         """Point the mouse at `word` in the editor's `line` until a hover naming it shows; the hover's text."""
         at = self.word_centre(line, word)
-        shown = "() => [...document.querySelectorAll('.monaco-hover-content')].map(e => e.innerText).join('\\n')"
+        # Only a hover on screen: the workbench keeps a hidden one's last content.
+        shown = ("() => [...document.querySelectorAll('.monaco-hover-content')]"
+                 ".filter(e => e.checkVisibility()).map(e => e.innerText).join('\\n')")
         deadline = time.monotonic() + timeout_s
         while word not in (text := self.page.evaluate(shown)):
             assert time.monotonic() < deadline, f"no hover naming {word} within {timeout_s} s; shown: {text!r}"
@@ -428,11 +430,7 @@ def test_generate_artifacts_from_the_command_palette(workbench: Workbench, java:
     page.keyboard.type("// saved by Generate artifacts\n")
     page.wait_for_selector(".tabs-container .tab.active.dirty")
 
-    page.keyboard.press("F1")  # the command palette
-    page.wait_for_selector(".quick-input-widget input")
-    page.keyboard.type("REI: Generate artifacts")
-    page.locator(".quick-input-list .monaco-list-row", has_text="REI: Generate artifacts").first.wait_for()
-    page.keyboard.press("Enter")
+    workbench.run_command("REI: Generate artifacts")
     expected = default_generate_folder(source, workbench.folder)
     toast = page.locator(".notifications-toasts .notification-toast", has_text="REI: wrote")
     toast.first.wait_for()
@@ -458,23 +456,10 @@ def test_hover_over_a_floor_describes_it(workbench: Workbench) -> None:
     assert "Floor F_4_0" in text, text
 
 
-def test_restarting_the_language_server_replaces_its_process(workbench: Workbench) -> None:
-    (old,) = language_servers(workbench.server.pid)
-    workbench.run_command("REI: Restart language server")
-    deadline = time.monotonic() + 60.0
-    while (running := language_servers(workbench.server.pid)) == [old] or len(running) != 1:
-        assert time.monotonic() < deadline, f"after the restart: {running} (before: {old})"
-        time.sleep(0.3)
-    workbench.page.keyboard.press("Escape")
-    # The new server answers: the hover is asked of it.
-    workbench.open_from_explorer("lab.rei")
-    assert "Floor F_5_3" in workbench.hover("goto F_5_3", "F_5_3")
-    assert language_servers(workbench.server.pid) == running
-
-
-def test_restarting_twice_in_a_row_leaves_one_language_server(workbench: Workbench) -> None:
-    """The second restart comes while the first is still stopping or starting its server (an impatient person,
-    or a change of rei.java.home during a restart): still exactly one server afterwards, and it answers."""
+def test_restarting_twice_in_a_row_leaves_one_new_language_server(workbench: Workbench) -> None:
+    """REI: Restart language server, twice: the second comes while the first is still stopping or starting its
+    server (an impatient person, or a change of rei.java.home during a restart). Exactly one server afterwards,
+    a new process, and it answers."""
     (old,) = language_servers(workbench.server.pid)
     workbench.run_command("REI: Restart language server")
     workbench.run_command("REI: Restart language server")
@@ -485,12 +470,12 @@ def test_restarting_twice_in_a_row_leaves_one_language_server(workbench: Workben
         settled = len(running) == 1 and running != [old]
         now = time.monotonic()
         since = (since or now) if settled else None
-        if since is not None and now - since > 5.0:
+        if since is not None and now - since > 3.0:
             break
         assert now < deadline, f"language servers 60 s after two restarts: {running} (before: {old})"
         time.sleep(0.3)
     workbench.open_from_explorer("lab.rei")
-    assert "Floor F_4_0" in workbench.hover("goto F_4_0", "F_4_0")
+    assert "Floor F_5_3" in workbench.hover("goto F_5_3", "F_5_3")
     assert language_servers(workbench.server.pid) == running
 
 
