@@ -1,0 +1,81 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.dsl.edit;
+
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+
+import org.rei.context.Direction;
+
+/**
+ * One edit of a room as a diagram makes it. Elements are named as in the text; goals are counted from 0 in the
+ * mission's order. {@link RoomDocument#apply} applies a batch of them as one change.
+ */
+public sealed interface EditOperation {
+
+	/** Puts a piece of furniture or the robot on another floor. */
+	record MoveObject(String name, String floor) implements EditOperation {
+	}
+
+	/** Turns a piece of furniture or the robot: {@code yaw} in degrees, counter-clockwise from +x (0 omits it). */
+	record RotateObject(String name, double yawDegrees) implements EditOperation {
+	}
+
+	/** Places new furniture: {@code object NAME : TYPE on FLOOR}; the type comes from the catalogues in scope. */
+	record AddObject(String name, String type, String floor) implements EditOperation {
+	}
+
+	/** Removes furniture, a moving object or a human (not the robot: a room has exactly one). */
+	record DeleteObject(String name) implements EditOperation {
+	}
+
+	/** Declares a floor of an explicit floor graph with the neighbours it names ({@code floor C left B}). */
+	record AddFloor(String name, Map<Direction, String> neighbours) implements EditOperation {
+		public AddFloor {
+			neighbours = Map.copyOf(neighbours);
+		}
+	}
+
+	/** Removes a floor of an explicit floor graph and every neighbour reference to it. */
+	record RemoveFloor(String name) implements EditOperation {
+	}
+
+	/** Declares a wall and puts it on one side of a floor of an explicit floor graph. */
+	record AddWall(String name, String floor, Direction side) implements EditOperation {
+	}
+
+	/** Removes a wall of an explicit floor graph and every reference to it. */
+	record RemoveWall(String name) implements EditOperation {
+	}
+
+	/** Replaces the control points of a human's (or a moving object's) trajectory; {@code loop} or once. */
+	record SetTrajectory(String name, List<Waypoint> points, boolean loop) implements EditOperation {
+		public SetTrajectory {
+			points = List.copyOf(points);
+		}
+	}
+
+	/** A control point: the centre of a floor at a time in seconds. */
+	record Waypoint(String floor, double seconds) {
+		public Waypoint {
+			Objects.requireNonNull(floor, "floor");
+		}
+	}
+
+	/** Inserts a goal at {@code index} (the goal count appends); {@code timeoutSeconds} null for the mission's. */
+	record AddGoal(String floor, int index, Double timeoutSeconds) implements EditOperation {
+		public AddGoal(String floor, int index) {
+			this(floor, index, null);
+		}
+	}
+
+	record RemoveGoal(int index) implements EditOperation {
+	}
+
+	/** Moves the goal at {@code from} so that it ends up at {@code to}. */
+	record MoveGoal(int from, int to) implements EditOperation {
+	}
+}

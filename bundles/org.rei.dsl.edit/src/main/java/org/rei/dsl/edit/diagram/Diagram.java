@@ -1,0 +1,60 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.dsl.edit.diagram;
+
+import java.util.List;
+
+/**
+ * A snapshot of a test case as the room editor draws it: plain values in metres, seconds and degrees, with every
+ * element named as in the text so that an edit or a validation issue can point at it. Coordinates come from the
+ * floor layout the generators use (x to the right, y up, origin at the bottom-left corner of the room); they are
+ * null for a floor the layout could not place.
+ */
+public record Diagram(String testCase, Room room, List<Item> objects, Item robot, List<Mover> movers,
+		Mission mission, Monitor monitor) {
+
+	/**
+	 * @param form "grid" ({@code size C x R}), "map" or "graph" (floors and walls written out)
+	 * @param columns cells along x of the laid-out floors
+	 */
+	public record Room(String name, String form, double floorSize, int columns, int rows, List<FloorCell> floors,
+			List<WallSide> walls) {
+	}
+
+	/** @param written whether the floor is a statement of the text (not derived from a grid or a map) */
+	public record FloorCell(String name, String type, Integer x, Integer y, Double centreX, Double centreY,
+			boolean written) {
+	}
+
+	/** A wall on one side of the first floor that names it, as an axis-aligned box. */
+	public record WallSide(String name, String type, String floor, String side, double x, double y, double sizeX,
+			double sizeY, boolean written) {
+	}
+
+	/** What a catalogue type says about an element's outline: {@code box} or {@code cylinder}, sizes in metres. */
+	public record Footprint(String type, String shape, double sizeX, double sizeY, double height, String colour) {
+	}
+
+	/** Furniture or the robot on a floor; {@code x, y} is the floor's centre. */
+	public record Item(String name, String kind, String floor, double yaw, Double x, Double y, Footprint footprint) {
+	}
+
+	/** A human or a moving object and its control points. */
+	public record Mover(String name, String kind, Footprint footprint, List<Waypoint> points, boolean loop) {
+	}
+
+	public record Waypoint(String floor, double seconds, Double x, Double y) {
+	}
+
+	/** @param timeout the goal's own timeout, null when the mission's task timeout applies */
+	public record Goal(int index, String floor, Double timeout, Double x, Double y) {
+	}
+
+	public record Mission(String name, double tolerance, double taskTimeout, List<Goal> goals) {
+	}
+
+	public record Monitor(double close, double collision, int maxHumanCollisions) {
+	}
+}

@@ -1,0 +1,162 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.dsl.edit.diagram;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import org.eclipse.emf.ecore.resource.ResourceSet;
+import org.rei.catalogue.Catalogue;
+import org.rei.catalogue.ObjectType;
+import org.rei.catalogue.util.Catalogues;
+import org.rei.context.AsciiLayout;
+import org.rei.context.BuildingBlock;
+import org.rei.context.ControlPoint;
+import org.rei.context.DynamicObject;
+import org.rei.context.Environment;
+import org.rei.context.Floor;
+import org.rei.context.GridLayout;
+import org.rei.context.Human;
+import org.rei.context.MonitorSpec;
+import org.rei.context.NavigationTask;
+import org.rei.context.PhysicalObject;
+import org.rei.context.Robot;
+import org.rei.context.Task;
+import org.rei.context.TestCase;
+import org.rei.context.layout.Cell;
+import org.rei.context.layout.FloorLayout;
+import org.rei.context.layout.WallPlacement;
+import org.rei.dsl.derived.DerivedMarker;
+
+/**
+ * Builds a {@link Diagram} from a test case. Floor cells, centres and wall places come from {@link FloorLayout}, the
+ * mapping the generators use, so the diagram shows the room the simulator will build.
+ */
+public final class DiagramBuilder {
+
+	private DiagramBuilder() {
+	}
+
+	public static Diagram of(TestCase testCase) {
+		Environment environment = testCase.getOwnedEnvironment();
+		if (environment == null) {
+			return new Diagram(testCase.getName(), null, List.of(), null, List.of(), mission(testCase, null),
+					monitor(testCase.getOwnedMonitor()));
+		}
+		FloorLayout layout = FloorLayout.compute(environment);
+		Catalogue defaults = Catalogues.loadDefault(resourceSet(testCase));
+		List<Diagram.Item> objects = new ArrayList<>();
+		List<Diagram.Mover> movers = new ArrayList<>();
+		for (PhysicalObject object : environment.getOwnedObjects()) {
+			if (object instanceof DynamicObject mover) {
+				movers.add(mover(mover, layout, defaults));
+			} else {
+				objects.add(item(object, "object", layout, defaults));
+			}
+		}
+		Robot robot = environment.getOwnedRobot();
+		return new Diagram(testCase.getName(), room(environment, layout, defaults), objects,
+				robot == null ? null : item(robot, "robot", layout, defaults), movers, mission(testCase, layout),
+				monitor(testCase.getOwnedMonitor()));
+	}
+
+	private static Diagram.Room room(Environment environment, FloorLayout layout, Catalogue defaults) {
+		List<Diagram.FloorCell> floors = new ArrayList<>();
+		for (BuildingBlock block : environment.getOwnedBlocks()) {
+			if (block instanceof Floor floor) {
+				Cell cell = layout.cellOf(floor).orElse(null);
+				double[] centre = cell == null ? null : layout.centreOf(floor);
+				floors.add(new Diagram.FloorCell(floor.getName(), typeName(floor.getType(), defaults, "Floor"),
+						cell == null ? null : cell.x(), cell == null ? null : cell.y(),
+						centre == null ? null : centre[0], centre == null ? null : centre[1],
+						!DerivedMarker.isDerived(floor)));
+			}
+		}
+		List<Diagram.WallSide> walls = new ArrayList<>();
+		for (WallPlacement wall : layout.walls()) {
+			walls.add(new Diagram.WallSide(wall.wall().getName(), wall.type().getName(), wall.floor().getName(),
+					wall.side().getLiteral().toLowerCase(), wall.x(), wall.y(), wall.sizeX(), wall.sizeY(),
+					!DerivedMarker.isDerived(wall.wall())));
+		}
+		String form = environment.getOwnedLayout() instanceof GridLayout ? "grid"
+				: environment.getOwnedLayout() instanceof AsciiLayout ? "map" : "graph";
+		return new Diagram.Room(environment.getName(), form, environment.getFloorSize(), layout.columns(),
+				layout.rows(), floors, walls);
+	}
+
+	private static Diagram.Item item(PhysicalObject object, String kind, FloorLayout layout, Catalogue defaults) {
+		Floor floor = object.getFloor();
+		double[] centre = centre(floor, layout);
+		return new Diagram.Item(object.getName(), kind, name(floor), object.getYaw(), centre == null ? null : centre[0],
+				centre == null ? null : centre[1], footprint(object.getType(), defaults, null));
+	}
+
+	private static Diagram.Mover mover(DynamicObject mover, FloorLayout layout, Catalogue defaults) {
+		List<Diagram.Waypoint> points = new ArrayList<>();
+		boolean loop = false;
+		if (mover.getOwnedTrajectory() != null) {
+			loop = mover.getOwnedTrajectory().isLoop();
+			for (ControlPoint point : mover.getOwnedTrajectory().getOwnedControlPoints()) {
+				double[] centre = centre(point.getFloor(), layout);
+				points.add(new Diagram.Waypoint(name(point.getFloor()), point.getTime(),
+						centre == null ? null : centre[0], centre == null ? null : centre[1]));
+			}
+		}
+		boolean human = mover instanceof Human;
+		return new Diagram.Mover(mover.getName(), human ? "human" : "dynamic",
+				footprint(mover.getType(), defaults, human ? "Human" : null), points, loop);
+	}
+
+	private static Diagram.Mission mission(TestCase testCase, FloorLayout layout) {
+		org.rei.context.Mission mission = testCase.getOwnedMission();
+		if (mission == null) {
+			return null;
+		}
+		List<Diagram.Goal> goals = new ArrayList<>();
+		List<Task> tasks = mission.getOwnedTasks();
+		for (int i = 0; i < tasks.size(); i++) {
+			if (tasks.get(i) instanceof NavigationTask task) {
+				double[] centre = layout == null ? null : centre(task.getGoal(), layout);
+				goals.add(new Diagram.Goal(i, name(task.getGoal()), task.isSetTimeout() ? task.getTimeout() : null,
+						centre == null ? null : centre[0], centre == null ? null : centre[1]));
+			}
+		}
+		return new Diagram.Mission(mission.getName(), mission.getGoalTolerance(), mission.getTaskTimeout(), goals);
+	}
+
+	private static Diagram.Monitor monitor(MonitorSpec monitor) {
+		return monitor == null ? null
+				: new Diagram.Monitor(monitor.getEpsClose(), monitor.getEpsCollision(), monitor.getMaxHumanCollisions());
+	}
+
+	/** The type's outline; an untyped human is the default catalogue's Human. */
+	private static Diagram.Footprint footprint(ObjectType type, Catalogue defaults, String defaultType) {
+		ObjectType effective = type != null && !type.eIsProxy() ? type
+				: defaultType == null ? null : Catalogues.find(defaults, defaultType).orElse(null);
+		if (effective == null) {
+			return null;
+		}
+		return new Diagram.Footprint(effective.getName(), effective.getShape().getLiteral().toLowerCase(), effective.getSizeX(),
+				effective.getSizeY(), effective.getSizeZ(), effective.getColour());
+	}
+
+	private static String typeName(ObjectType type, Catalogue defaults, String defaultType) {
+		return type != null && !type.eIsProxy() ? type.getName()
+				: Catalogues.find(defaults, defaultType).map(ObjectType::getName).orElse(defaultType);
+	}
+
+	private static double[] centre(Floor floor, FloorLayout layout) {
+		return floor != null && layout.cellOf(floor).isPresent() ? layout.centreOf(floor) : null;
+	}
+
+	private static String name(Floor floor) {
+		return floor == null || floor.eIsProxy() ? null : floor.getName();
+	}
+
+	private static ResourceSet resourceSet(TestCase testCase) {
+		ResourceSet resourceSet = testCase.eResource() == null ? null : testCase.eResource().getResourceSet();
+		return resourceSet != null ? resourceSet : new org.eclipse.emf.ecore.resource.impl.ResourceSetImpl();
+	}
+}
