@@ -35,6 +35,7 @@ import org.eclipse.xtext.scoping.IScopeProvider;
 import org.rei.context.TestCase;
 import org.rei.dsl.edit.diagram.Diagram;
 import org.rei.dsl.edit.diagram.DiagramBuilder;
+import org.rei.dsl.edit.serializer.TangledListException;
 
 import com.google.inject.Injector;
 
@@ -140,38 +141,69 @@ public final class RoomDocument {
 	}
 
 	/**
-	 * Applies the operations as one change (one undo step).
+	 * Applies the operations as one change (one undo step). A batch the serializer cannot write in one go (two new
+	 * statements at one place of a list) is applied one operation after the other; its edit is then the one
+	 * replacement that spans all changes.
 	 *
 	 * @throws EditRefusedException when one cannot be expressed; the document is unchanged
 	 * @throws IllegalStateException when the written text would not read back as the edited model; unchanged too
 	 */
 	public EditResult apply(List<EditOperation> operations) {
-		TestCase testCase = current.testCase();
+		String before = current.text();
+		try {
+			Written written;
+			try {
+				written = write(current, operations);
+			} catch (TangledListException | ReadBackException e) {
+				if (operations.size() < 2) {
+					throw e;
+				}
+				Version step = parse(before);
+				for (EditOperation operation : operations) {
+					step = write(step, List.of(operation)).next();
+				}
+				written = new Written(TextEdits.between(before, step.text()), step);
+			}
+			undo.push(new Step(written.edits(), TextEdits.inverse(before, written.edits())));
+			redo.clear();
+			current = written.next();
+			return result(written.edits());
+		} catch (RuntimeException e) {
+			current = parse(before); // the model may be half edited: read the text again
+			throw e;
+		}
+	}
+
+	private record Written(List<TextEdit> edits, Version next) {
+	}
+
+	/** The written text read back as something else than the edited model. */
+	private static final class ReadBackException extends IllegalStateException {
+		private static final long serialVersionUID = 1L;
+
+		ReadBackException(String message) {
+			super(message);
+		}
+	}
+
+	/** Edits the version's model (which is spent afterwards) and returns the text edits and the re-read result. */
+	private Written write(Version version, List<EditOperation> operations) {
+		TestCase testCase = version.testCase();
 		IChangeSerializer serializer = injector.getInstance(IChangeSerializer.class);
 		// one file is edited and nothing is renamed: no other file or reference needs updating
 		serializer.setUpdateRelatedFiles(false);
 		serializer.setUpdateCrossReferences(false);
 		ModelEditor editor = new ModelEditor(testCase, injector.getInstance(IScopeProvider.class), reservedWords);
-		serializer.addModification(current.resource(), resource -> operations.forEach(editor::apply));
+		serializer.addModification(version.resource(), resource -> operations.forEach(editor::apply));
 		List<IEmfResourceChange> changes = new ArrayList<>();
-		try {
-			serializer.applyModifications(changes::add);
-		} catch (RuntimeException e) {
-			current = parse(current.text()); // the model may be half edited: read the text again
-			throw e;
-		}
-		List<TextEdit> edits = TextEdits.tidy(current.text(), TextEdits.sorted(replacements(changes)));
-		Version next = parse(TextEdits.apply(current.text(), edits));
+		serializer.applyModifications(changes::add);
+		List<TextEdit> edits = TextEdits.tidy(version.text(), TextEdits.sorted(replacements(changes)));
+		Version next = parse(TextEdits.apply(version.text(), edits));
 		if (!new EcoreUtil.EqualityHelper().equals(testCase, next.testCase())) {
-			Version rejected = next;
-			current = parse(current.text());
-			throw new IllegalStateException("The written text does not read back as the edited room; nothing was "
-					+ "changed. Written text:\n" + rejected.text() + "\nits errors: " + rejected.resource().getErrors());
+			throw new ReadBackException("The written text does not read back as the edited room; nothing was "
+					+ "changed. Written text:\n" + next.text() + "\nits errors: " + next.resource().getErrors());
 		}
-		undo.push(new Step(edits, TextEdits.inverse(current.text(), edits)));
-		redo.clear();
-		current = next;
-		return result(edits);
+		return new Written(edits, next);
 	}
 
 	public boolean canUndo() {

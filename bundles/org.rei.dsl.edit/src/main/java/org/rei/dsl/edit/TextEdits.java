@@ -35,6 +35,25 @@ final class TextEdits {
 		return out.append(text, at, text.length()).toString();
 	}
 
+	/** One edit from the first to the last character that differ (nothing when the texts are equal). */
+	static List<TextEdit> between(String before, String after) {
+		int prefix = 0;
+		int limit = Math.min(before.length(), after.length());
+		while (prefix < limit && before.charAt(prefix) == after.charAt(prefix)) {
+			prefix++;
+		}
+		int suffix = 0;
+		while (suffix < limit - prefix
+				&& before.charAt(before.length() - 1 - suffix) == after.charAt(after.length() - 1 - suffix)) {
+			suffix++;
+		}
+		if (prefix == before.length() && prefix == after.length()) {
+			return List.of();
+		}
+		return List.of(new TextEdit(prefix, before.length() - prefix - suffix,
+				after.substring(prefix, after.length() - suffix)));
+	}
+
 	/** The edits that turn {@code apply(text, edits)} back into {@code text}. */
 	static List<TextEdit> inverse(String text, List<TextEdit> edits) {
 		List<TextEdit> result = new ArrayList<>(edits.size());

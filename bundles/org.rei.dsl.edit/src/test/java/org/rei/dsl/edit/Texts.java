@@ -44,24 +44,32 @@ final class Texts {
 	}
 
 	/**
-	 * The lines that differ, as a unified diff's body without context: the common leading and trailing lines are
-	 * dropped, what remains is "-old" lines then "+new" lines.
+	 * The lines that differ, as the body of a unified diff without context lines: "-old" and "+new" lines in text
+	 * order (longest common subsequence of lines; the files here are small).
 	 */
 	static List<String> diff(String before, String after) {
 		List<String> a = before.lines().toList();
 		List<String> b = after.lines().toList();
-		int head = 0;
-		while (head < a.size() && head < b.size() && a.get(head).equals(b.get(head))) {
-			head++;
-		}
-		int tail = 0;
-		while (tail < a.size() - head && tail < b.size() - head
-				&& a.get(a.size() - 1 - tail).equals(b.get(b.size() - 1 - tail))) {
-			tail++;
+		int[][] common = new int[a.size() + 1][b.size() + 1];
+		for (int i = a.size() - 1; i >= 0; i--) {
+			for (int j = b.size() - 1; j >= 0; j--) {
+				common[i][j] = a.get(i).equals(b.get(j)) ? common[i + 1][j + 1] + 1
+						: Math.max(common[i + 1][j], common[i][j + 1]);
+			}
 		}
 		List<String> result = new ArrayList<>();
-		a.subList(head, a.size() - tail).forEach(line -> result.add("-" + line));
-		b.subList(head, b.size() - tail).forEach(line -> result.add("+" + line));
+		int i = 0;
+		int j = 0;
+		while (i < a.size() || j < b.size()) {
+			if (i < a.size() && j < b.size() && a.get(i).equals(b.get(j))) {
+				i++;
+				j++;
+			} else if (j < b.size() && (i == a.size() || common[i][j + 1] > common[i + 1][j])) {
+				result.add("+" + b.get(j++));
+			} else {
+				result.add("-" + a.get(i++));
+			}
+		}
 		return result;
 	}
 

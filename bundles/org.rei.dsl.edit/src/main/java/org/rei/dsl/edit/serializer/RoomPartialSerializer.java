@@ -32,15 +32,23 @@ import org.eclipse.xtext.formatting2.regionaccess.ISemanticRegion;
 import org.eclipse.xtext.formatting2.regionaccess.ITextRegionAccess;
 import org.eclipse.xtext.ide.serializer.impl.PartialSerializer;
 import org.eclipse.xtext.serializer.ISerializationContext;
+import org.eclipse.xtext.serializer.acceptor.ISemanticSequenceAcceptor;
+import org.eclipse.xtext.serializer.acceptor.ISequenceAcceptor;
+import org.eclipse.xtext.serializer.acceptor.ISyntacticSequenceAcceptor;
+import org.eclipse.xtext.serializer.acceptor.TokenStreamSequenceAdapter;
 import org.eclipse.xtext.serializer.analysis.IGrammarConstraintProvider.IConstraint;
 import org.eclipse.xtext.serializer.analysis.IGrammarConstraintProvider.IConstraintElement;
 import org.eclipse.xtext.serializer.diagnostic.ISerializationDiagnostic;
+import org.eclipse.xtext.serializer.sequencer.IHiddenTokenSequencer;
+import org.eclipse.xtext.serializer.sequencer.ISemanticSequencer;
+import org.eclipse.xtext.serializer.sequencer.ISyntacticSequencer;
 import org.eclipse.xtext.serializer.tokens.ICrossReferenceSerializer;
 import org.eclipse.xtext.serializer.tokens.IValueSerializer;
 
 import org.rei.dsl.derived.DerivedMarker;
 
 import com.google.inject.Inject;
+import com.google.inject.Provider;
 
 /**
  * Xtext's partial serializer with three gaps closed that the REI grammar runs into; without them a small edit
@@ -48,7 +56,8 @@ import com.google.inject.Inject;
  * <ul>
  * <li>A list inside a repeated group of alternatives ({@code (ownedBlocks+=.. | ownedObjects+=.. | ..)*}) is not
  * "many" to the constraint analysis (its assignments are each optional, not repeated), so adding or deleting one object fell back to the enclosing room: here list
- * changes are turned into region deletions and insertions whenever the feature itself is many.</li>
+ * changes are turned into region deletions and insertions whenever the feature itself is many, in a way that
+ * suits the diff builder (see {@link #serializeContainmentList}).</li>
  * <li>Unsetting an optional {@code 'yaw' yaw=Number} deleted "90" and kept "yaw": the keyword goes with it.</li>
  * <li>Setting such a value where the text has none re-serialized the whole statement: a trailing optional group
  * is appended after the statement's last token instead, so the rest of the line keeps its text.</li>
@@ -61,6 +70,15 @@ public class RoomPartialSerializer extends PartialSerializer {
 
 	@Inject
 	private ICrossReferenceSerializer crossReferenceSerializer;
+
+	@Inject
+	private Provider<ISemanticSequencer> semanticSequencers;
+
+	@Inject
+	private Provider<ISyntacticSequencer> syntacticSequencers;
+
+	@Inject
+	private Provider<IHiddenTokenSequencer> hiddenTokenSequencers;
 
 	private final ISerializationDiagnostic.Acceptor errors = ISerializationDiagnostic.EXCEPTION_THROWING_ACCEPTOR;
 
@@ -79,8 +97,10 @@ public class RoomPartialSerializer extends PartialSerializer {
 
 	/**
 	 * Old list = the elements with a region in the original text (in text order), new list = the feature's value.
-	 * Deleted elements lose their region; the longest run of elements that kept their order stays put; the others
-	 * (new or moved) are written next to their nearest stable neighbour, moved ones with their original text.
+	 * The longest run of elements that kept their order stays as it is; between two of them (a gap) the others are
+	 * deleted and the new or moved ones written. Rewrites of Xtext's diff builder must not share a boundary, so a
+	 * gap's insertion replaces its first deleted run when it has one, and a gap takes one insertion at most (a batch
+	 * that needs more is split by the document).
 	 */
 	private List<SerializationStrategy> serializeContainmentList(EObject owner, EReference feature,
 			FeatureChange change, IEObjectRegion ownerRegion) {
@@ -114,48 +134,81 @@ public class RoomPartialSerializer extends PartialSerializer {
 			}
 		}
 		Set<EObject> stable = longestOrderedRun(now, oldIndex);
+		List<EObject> anchors = now.stream().filter(stable::contains).toList();
 		List<SerializationStrategy> result = new ArrayList<>();
-		for (IEObjectRegion region : old) {
-			EObject element = region.getSemanticElement();
-			if (!stable.contains(element)) {
-				result.add(new DeleteRegionStrategy(region));
+		int position = 0; // in now
+		for (int gap = 0; gap <= anchors.size(); gap++) {
+			int from = gap == 0 ? -1 : oldIndex.get(anchors.get(gap - 1));
+			int to = gap == anchors.size() ? old.size() : oldIndex.get(anchors.get(gap));
+			List<EObject> inserted = new ArrayList<>();
+			while (position < now.size() && !stable.contains(now.get(position))) {
+				inserted.add(now.get(position++));
 			}
-		}
-		for (int i = 0; i < now.size(); i++) {
-			EObject element = now.get(i);
-			if (stable.contains(element)) {
-				continue;
+			position++; // the anchor
+			if (inserted.size() > 1) {
+				throw new TangledListException(feature);
 			}
-			IHiddenRegion insertAt = insertionPoint(now, i, stable, access, ownerRegion);
-			if (insertAt == null) {
-				return null;
+			List<List<IEObjectRegion>> runs = contiguousRuns(old.subList(from + 1, to));
+			for (int r = 0; r < runs.size(); r++) {
+				List<IEObjectRegion> run = runs.get(r);
+				IHiddenRegion first = run.get(0).getPreviousHiddenRegion();
+				IHiddenRegion last = run.get(run.size() - 1).getNextHiddenRegion();
+				if (r == 0 && !inserted.isEmpty()) {
+					result.add(write(first, last, inserted.get(0)));
+				} else {
+					result.add(edits -> edits.remove(first, last));
+				}
 			}
-			IEObjectRegion original = access.regionForEObject(element);
-			if (original != null) {
-				result.add(new InsertRegionStrategy(insertAt, original));
-			} else {
-				ISerializationContext context = getSerializationContext(element);
-				result.add(new SerializeRecursiveStrategy(insertAt, element, context));
+			if (runs.isEmpty() && !inserted.isEmpty()) {
+				IHiddenRegion at = gap > 0 ? access.regionForEObject(anchors.get(gap - 1)).getNextHiddenRegion()
+						: !anchors.isEmpty() ? access.regionForEObject(anchors.get(0)).getPreviousHiddenRegion()
+								: beforeClosingBrace(ownerRegion);
+				if (at == null) {
+					return null;
+				}
+				result.add(write(at, at, inserted.get(0)));
 			}
 		}
 		return result;
 	}
 
-	/** After the closest stable element before it, else before the closest one after it, else before the '}'. */
-	private static IHiddenRegion insertionPoint(List<EObject> now, int index, Set<EObject> stable,
-			ITextRegionAccess access, IEObjectRegion ownerRegion) {
-		for (int j = index - 1; j >= 0; j--) {
-			if (stable.contains(now.get(j))) {
-				return access.regionForEObject(now.get(j)).getNextHiddenRegion();
+	/** Regions that follow one another in the text with nothing but hidden tokens between them. */
+	private static List<List<IEObjectRegion>> contiguousRuns(List<IEObjectRegion> regions) {
+		List<List<IEObjectRegion>> runs = new ArrayList<>();
+		for (IEObjectRegion region : regions) {
+			List<IEObjectRegion> run = runs.isEmpty() ? null : runs.get(runs.size() - 1);
+			if (run != null && run.get(run.size() - 1).getNextHiddenRegion() == region.getPreviousHiddenRegion()) {
+				run.add(region);
+			} else {
+				List<IEObjectRegion> next = new ArrayList<>();
+				next.add(region);
+				runs.add(next);
 			}
 		}
-		for (int j = index + 1; j < now.size(); j++) {
-			if (stable.contains(now.get(j))) {
-				return access.regionForEObject(now.get(j)).getPreviousHiddenRegion();
-			}
-		}
-		List<ISemanticRegion> closing = ownerRegion.getRegionFor().keywords("}");
+		return runs;
+	}
+
+	private static IHiddenRegion beforeClosingBrace(IEObjectRegion owner) {
+		List<ISemanticRegion> closing = owner.getRegionFor().keywords("}");
 		return closing.isEmpty() ? null : closing.get(closing.size() - 1).getPreviousHiddenRegion();
+	}
+
+	/** Serializes {@code element} in place of the text from {@code first} to {@code last} (equal: inserts). */
+	private SerializationStrategy write(IHiddenRegion first, IHiddenRegion last, EObject element) {
+		ISerializationContext context = getSerializationContext(element);
+		return edits -> {
+			ISemanticSequencer semantic = semanticSequencers.get();
+			ISyntacticSequencer syntactic = syntacticSequencers.get();
+			IHiddenTokenSequencer hidden = hiddenTokenSequencers.get();
+			semantic.init((ISemanticSequenceAcceptor) syntactic, errors);
+			syntactic.init(context, element, (ISyntacticSequenceAcceptor) hidden, errors);
+			ISequenceAcceptor acceptor = edits.replaceSequence(first, last, context, element);
+			hidden.init(context, element, acceptor, errors);
+			if (acceptor instanceof TokenStreamSequenceAdapter adapter) {
+				adapter.init(context);
+			}
+			semantic.createSequence(context, element);
+		};
 	}
 
 	/** The longest subsequence of {@code now} whose old indices increase: those elements need no edit. */
