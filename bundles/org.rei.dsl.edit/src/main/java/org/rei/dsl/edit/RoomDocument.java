@@ -51,8 +51,8 @@ import com.google.inject.Injector;
  * {@link org.rei.dsl.edit.serializer.RoomLayoutFormatter} (a new statement on its own line, indented like its
  * neighbours) and {@link org.rei.dsl.edit.serializer.RoomPartialSerializer} closes three gaps of Xtext's partial
  * serializer that would otherwise rewrite a whole room. Every result is parsed again and must give a model equal to
- * the edited one ({@link EcoreUtil.EqualityHelper}), else the edit fails and the document keeps its text: a
- * diagram never saves a file that means something else than what it shows. The new text is validated by the
+ * the edited one (EMF's EqualityHelper), else the edit fails and the document keeps its text: a diagram never saves
+ * a file that means something else than what it shows. The new text is validated by the
  * language's validators; their findings name the diagram element they are on.
  * <p>
  * <b>Refused</b> ({@link EditRefusedException}, nothing changes): what the text cannot express - unknown names, a
@@ -78,6 +78,15 @@ public final class RoomDocument {
 
 	private record Step(List<TextEdit> forward, List<TextEdit> backward) {
 	}
+
+	/** Where the time of the last {@link #apply} went, in milliseconds (for the benchmark and a server's log). */
+	record Timings(long serialize, long parse, long validate, long compare) {
+	}
+
+	private long serializeNanos;
+	private long parseNanos;
+	private long validateNanos;
+	private long compareNanos;
 
 	private final Injector injector;
 	private final URI uri;
@@ -150,6 +159,7 @@ public final class RoomDocument {
 	 */
 	public EditResult apply(List<EditOperation> operations) {
 		String before = current.text();
+		serializeNanos = parseNanos = validateNanos = compareNanos = 0;
 		try {
 			Written written;
 			try {
@@ -196,10 +206,15 @@ public final class RoomDocument {
 		ModelEditor editor = new ModelEditor(testCase, injector.getInstance(IScopeProvider.class), reservedWords);
 		serializer.addModification(version.resource(), resource -> operations.forEach(editor::apply));
 		List<IEmfResourceChange> changes = new ArrayList<>();
+		long start = System.nanoTime();
 		serializer.applyModifications(changes::add);
 		List<TextEdit> edits = TextEdits.tidy(version.text(), TextEdits.sorted(replacements(changes)));
+		serializeNanos += System.nanoTime() - start;
 		Version next = parse(TextEdits.apply(version.text(), edits));
-		if (!new EcoreUtil.EqualityHelper().equals(testCase, next.testCase())) {
+		start = System.nanoTime();
+		boolean equal = SameModel.equal(testCase, next.testCase());
+		compareNanos += System.nanoTime() - start;
+		if (!equal) {
 			throw new ReadBackException("The written text does not read back as the edited room; nothing was "
 					+ "changed. Written text:\n" + next.text() + "\nits errors: " + next.resource().getErrors());
 		}
@@ -247,6 +262,7 @@ public final class RoomDocument {
 		if (uri.fileExtension() != null) {
 			resourceSet.getResourceFactoryRegistry().getExtensionToFactoryMap().put(uri.fileExtension(), factory);
 		}
+		long start = System.nanoTime();
 		XtextResource resource = (XtextResource) resourceSet.createResource(uri);
 		try {
 			resource.load(new ByteArrayInputStream(text.getBytes(StandardCharsets.UTF_8)),
@@ -255,7 +271,16 @@ public final class RoomDocument {
 			throw new UncheckedIOException(e);
 		}
 		EcoreUtil.resolveAll(resource);
-		return new Version(text, resource, Issues.of(resource));
+		long parsed = System.nanoTime();
+		parseNanos += parsed - start;
+		List<ValidationIssue> issues = Issues.of(resource);
+		validateNanos += System.nanoTime() - parsed;
+		return new Version(text, resource, issues);
+	}
+
+	Timings lastTimings() {
+		return new Timings(serializeNanos / 1_000_000, parseNanos / 1_000_000, validateNanos / 1_000_000,
+				compareNanos / 1_000_000);
 	}
 
 	private static List<TextEdit> replacements(List<IEmfResourceChange> changes) {

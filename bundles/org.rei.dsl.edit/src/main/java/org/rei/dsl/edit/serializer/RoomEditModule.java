@@ -6,6 +6,7 @@ package org.rei.dsl.edit.serializer;
 
 import org.eclipse.xtext.formatting2.IFormatter2;
 import org.eclipse.xtext.ide.serializer.IChangeSerializer;
+import org.eclipse.xtext.ide.serializer.hooks.IEObjectDescriptionProvider;
 import org.eclipse.xtext.ide.serializer.impl.ChangeSerializer;
 import org.eclipse.xtext.ide.serializer.impl.PartialSerializer;
 import org.eclipse.xtext.service.AbstractGenericModule;
@@ -31,6 +32,10 @@ public class RoomEditModule extends AbstractGenericModule {
 	/** The language has no formatter; without one, written statements would run on without spaces or lines. */
 	public Class<? extends IFormatter2> bindIFormatter2() {
 		return RoomLayoutFormatter.class;
+	}
+
+	public Class<? extends IEObjectDescriptionProvider> bindIEObjectDescriptionProvider() {
+		return NoNameIndex.class;
 	}
 
 	/** Floors and walls derived from a grid or a map are never written back as text. */

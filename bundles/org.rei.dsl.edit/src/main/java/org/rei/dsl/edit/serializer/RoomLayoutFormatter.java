@@ -82,11 +82,11 @@ public class RoomLayoutFormatter extends AbstractJavaFormatter {
 		environment.getOwnedBlocks().forEach(block -> addIfWritten(statements, block));
 		environment.getOwnedObjects().forEach(object -> addIfWritten(statements, object));
 		addIfWritten(statements, environment.getOwnedRobot());
-		statements.sort((a, b) -> regionForEObject(a).getOffset() - regionForEObject(b).getOffset());
+		// a room may have ten thousand floors: only the statements an edit touched are laid out
+		statements.removeIf(statement -> !isInRequestedRange(statement));
 		block(environment, statements, List.of(), doc);
 		inline(environment, doc);
-		// a room may have ten thousand floors: only the statements an edit touched are laid out
-		statements.stream().filter(this::isInRequestedRange).forEach(doc::format);
+		statements.forEach(doc::format);
 	}
 
 	protected void format(Mission mission, IFormattableDocument doc) {

@@ -44,7 +44,6 @@ import org.eclipse.xtext.serializer.sequencer.ISemanticSequencer;
 import org.eclipse.xtext.serializer.sequencer.ISyntacticSequencer;
 import org.eclipse.xtext.serializer.tokens.ICrossReferenceSerializer;
 import org.eclipse.xtext.serializer.tokens.IValueSerializer;
-
 import org.rei.dsl.derived.DerivedMarker;
 
 import com.google.inject.Inject;
@@ -55,9 +54,9 @@ import com.google.inject.Provider;
  * re-serializes a whole room (derived floors included) or leaves a keyword without its value.
  * <ul>
  * <li>A list inside a repeated group of alternatives ({@code (ownedBlocks+=.. | ownedObjects+=.. | ..)*}) is not
- * "many" to the constraint analysis (its assignments are each optional, not repeated), so adding or deleting one object fell back to the enclosing room: here list
- * changes are turned into region deletions and insertions whenever the feature itself is many, in a way that
- * suits the diff builder (see {@link #serializeContainmentList}).</li>
+ * "many" to the constraint analysis (each assignment is optional, the group repeats), so adding or deleting one
+ * object fell back to the enclosing room: here such list changes become region deletions and insertions, in a way
+ * that suits the diff builder (see {@link #serializeContainmentList}).</li>
  * <li>Unsetting an optional {@code 'yaw' yaw=Number} deleted "90" and kept "yaw": the keyword goes with it.</li>
  * <li>Setting such a value where the text has none re-serialized the whole statement: a trailing optional group
  * is appended after the statement's last token instead, so the rest of the line keeps its text.</li>
@@ -211,28 +210,34 @@ public class RoomPartialSerializer extends PartialSerializer {
 		};
 	}
 
-	/** The longest subsequence of {@code now} whose old indices increase: those elements need no edit. */
+	/**
+	 * The longest subsequence of {@code now} whose old indices increase: those elements need no edit (patience
+	 * sorting, n log n: an explicit room may list ten thousand floors).
+	 */
 	private static Set<EObject> longestOrderedRun(List<EObject> now, Map<EObject, Integer> oldIndex) {
 		List<EObject> kept = now.stream().filter(oldIndex::containsKey).toList();
 		int n = kept.size();
-		int[] length = new int[n];
+		int[] tails = new int[n]; // tails[k]: index into kept of the smallest end of a run of length k + 1
 		int[] previous = new int[n];
-		int best = -1;
+		int length = 0;
 		for (int i = 0; i < n; i++) {
-			length[i] = 1;
-			previous[i] = -1;
-			for (int j = 0; j < i; j++) {
-				if (oldIndex.get(kept.get(j)) < oldIndex.get(kept.get(i)) && length[j] + 1 > length[i]) {
-					length[i] = length[j] + 1;
-					previous[i] = j;
+			int value = oldIndex.get(kept.get(i));
+			int low = 0;
+			int high = length;
+			while (low < high) {
+				int middle = (low + high) >>> 1;
+				if (oldIndex.get(kept.get(tails[middle])) < value) {
+					low = middle + 1;
+				} else {
+					high = middle;
 				}
 			}
-			if (best < 0 || length[i] > length[best]) {
-				best = i;
-			}
+			previous[i] = low > 0 ? tails[low - 1] : -1;
+			tails[low] = i;
+			length = Math.max(length, low + 1);
 		}
 		Set<EObject> result = new HashSet<>();
-		for (int i = best; i >= 0; i = previous[i]) {
+		for (int i = length > 0 ? tails[length - 1] : -1; i >= 0; i = previous[i]) {
 			result.add(kept.get(i));
 		}
 		return result;
