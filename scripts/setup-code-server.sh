@@ -34,7 +34,11 @@ log="$dir/install.log"
 say() { echo "setup-code-server: $*" >&2; }
 die() { say "error: $*"; exit 1; }
 
-if [ -x "$binary" ] && [ "$(cat "$stamp" 2>/dev/null)" = "$version" ]; then
+command -v node >/dev/null 2>&1 || die "node not found: install Node.js 20"
+command -v npm >/dev/null 2>&1 || die "npm not found: install it with Node.js 20"
+# The native modules are built for one Node.js ABI: another Node.js means another install.
+installed="$version node-abi-$(node -p process.versions.modules)"
+if [ -x "$binary" ] && [ "$(cat "$stamp" 2>/dev/null)" = "$installed" ]; then
     say "code-server $version already installed"
     echo "$binary"
     exit 0
@@ -61,8 +65,6 @@ if [ "${#missing[@]}" -gt 0 ]; then
     fi
 fi
 
-command -v node >/dev/null 2>&1 || die "node not found: install Node.js 20"
-command -v npm >/dev/null 2>&1 || die "npm not found: install it with Node.js 20"
 node_major="$(node -p 'process.versions.node.split(".")[0]')"
 [ "$node_major" = 20 ] || die "Node.js $(node --version): code-server $version installs only with Node.js 20"
 case "$(node -p process.arch)" in
@@ -124,6 +126,6 @@ rg="$dir/node_modules/code-server/lib/vscode/node_modules/@vscode/ripgrep/bin/rg
 [ -x "$rg" ] || die "code-server installed without ripgrep ($rg missing; log: $log)"
 "$binary" --version >/dev/null || die "$binary does not start (log: $log)"
 rm -rf "$TMPDIR"
-echo "$version" > "$stamp"
+echo "$installed" > "$stamp"
 say "code-server $version installed in $((SECONDS - started)) s"
 echo "$binary"
