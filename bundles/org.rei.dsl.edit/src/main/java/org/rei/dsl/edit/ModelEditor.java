@@ -201,6 +201,10 @@ final class ModelEditor {
 			throw new EditRefusedException("'" + set.name() + "' stands on a floor and has no trajectory: move it "
 					+ "instead");
 		}
+		if (set.points().isEmpty()) {
+			throw new EditRefusedException("A trajectory is written with one control point at least (and needs two "
+					+ "to move): '" + set.name() + "' would have none");
+		}
 		List<Floor> floors = set.points().stream().map(p -> floor(p.floor())).toList();
 		Trajectory trajectory = mover.getOwnedTrajectory();
 		List<ControlPoint> points = trajectory.getOwnedControlPoints();

@@ -137,6 +137,22 @@ public final class RoomDocument {
 		return DiagramBuilder.of(model());
 	}
 
+	/**
+	 * Takes a text that changed outside the editor (the file was saved by a text editor): the diagram follows it,
+	 * and the undo history, which is made of edits of the previous text, is forgotten.
+	 */
+	public EditResult reset(String text) {
+		List<TextEdit> edits = TextEdits.between(current.text(), text);
+		Version next = parse(text);
+		if (next.testCase() == null) {
+			throw new IllegalArgumentException("the new text is not a test case ('testcase NAME { room ... }')");
+		}
+		current = next;
+		undo.clear();
+		redo.clear();
+		return result(edits);
+	}
+
 	/** Writes the current text back to the file it came from. */
 	public void save() throws IOException {
 		if (!uri.isFile()) {

@@ -85,7 +85,8 @@ class FloorGraphEditTest {
 		AddWall add = new AddWall("W2", "D", Direction.RIGHT);
 		EditResult result = document.apply(add);
 
-		assertEquals(List.of("-\t\tfloor D", "+\t\tfloor D right W2", "+\t\twall W2"), Texts.diff(original, result.text()));
+		assertEquals(List.of("-\t\tfloor D", "+\t\tfloor D right W2", "+\t\twall W2"),
+				Texts.diff(original, result.text()));
 		assertTrue(result.text().contains("\t\tfloor D right W2\n\t\twall W1\n\t\twall W2\n\t\t// the chair stays\n"),
 				result.text());
 		assertEquals(List.of(), result.issues());

@@ -75,7 +75,7 @@ class SimpleNavigationEditTest {
 		assertEquals(List.of("+    goto F_0_3 within 45s"), Texts.diff(original, result.text()));
 		// F_0_3 carries shelf1: the mission validator says so on the new goal
 		ValidationIssue issue = result.issues().get(0);
-		assertEquals(List.of(ReiIssueCodes.GOAL_OCCUPIED), result.issues().stream().map(ValidationIssue::code).toList());
+		assertEquals(List.of(ReiIssueCodes.GOAL_OCCUPIED), codes(result));
 		assertEquals("goal", issue.kind());
 		assertEquals("F_0_3", issue.element());
 		assertEquals(2, issue.index());
@@ -136,7 +136,7 @@ class SimpleNavigationEditTest {
 		EditResult result = document.apply(new MoveObject("shelf1", "F_2_1"));
 
 		ValidationIssue issue = result.issues().get(0);
-		assertEquals(List.of(ReiIssueCodes.FLOOR_OCCUPIED), result.issues().stream().map(ValidationIssue::code).toList());
+		assertEquals(List.of(ReiIssueCodes.FLOOR_OCCUPIED), codes(result));
 		assertEquals("shelf1", issue.element());
 		assertEquals(6, issue.line());
 		assertEquals(30, issue.column());
@@ -199,9 +199,24 @@ class SimpleNavigationEditTest {
 		assertRefused(new AddFloor("F_6_0", Map.of(Direction.LEFT, "F_5_0")), "derives its floors and walls from "
 				+ "its size 6 x 4");
 		assertRefused(new RemoveGoal(2), "No goal 2");
+		assertRefused(new SetTrajectory("walker", List.of(), true), "'walker' would have none");
 		// a refusal late in a batch undoes the earlier operations of the batch too
 		assertRefused(List.of(new MoveObject("table1", "F_3_3"), new MoveGoal(0, 5)), "cannot move to 5");
 		assertEquals("F_2_1", document.diagram().objects().get(0).floor());
+	}
+
+	@Test
+	void aTextChangedElsewhereReplacesTheModelAndTheHistory() {
+		String moved = document.apply(new MoveObject("table1", "F_3_3")).text();
+		String typed = original.replace("goto F_5_3", "goto F_5_2");
+
+		EditResult result = document.reset(typed);
+
+		assertEquals(typed, TextEdits.apply(moved, result.edits()));
+		assertEquals(typed, result.text());
+		assertEquals("F_5_2", document.diagram().mission().goals().get(1).floor());
+		assertEquals("F_2_1", document.diagram().objects().get(0).floor());
+		assertFalse(document.canUndo());
 	}
 
 	private void assertRefused(EditOperation operation, String message) {
@@ -213,5 +228,9 @@ class SimpleNavigationEditTest {
 		assertTrue(refused.getMessage().contains(message), refused.getMessage());
 		assertEquals(original, document.text());
 		assertFalse(document.canUndo());
+	}
+
+	private static List<String> codes(EditResult result) {
+		return result.issues().stream().map(ValidationIssue::code).toList();
 	}
 }

@@ -43,9 +43,13 @@ class UserCatalogueEditTest {
 		EditResult result = document.apply(new AddObject("trolley", "Trolley", "F_3_3"));
 
 		ValidationIssue issue = result.issues().get(0);
-		assertEquals(List.of(ReiIssueCodes.TYPE_CATEGORY), result.issues().stream().map(ValidationIssue::code).toList());
+		assertEquals(List.of(ReiIssueCodes.TYPE_CATEGORY), codes(result));
 		assertEquals(List.of("trolley", "object", 11, 22), List.of(issue.element(), issue.kind(), issue.line(),
 				issue.column()));
 		assertTrue(issue.message().startsWith("Type Trolley is a DYNAMIC type"), issue.message());
+	}
+
+	private static List<String> codes(EditResult result) {
+		return result.issues().stream().map(ValidationIssue::code).toList();
 	}
 }

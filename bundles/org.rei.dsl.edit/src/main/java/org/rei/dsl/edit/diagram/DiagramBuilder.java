@@ -128,7 +128,8 @@ public final class DiagramBuilder {
 
 	private static Diagram.Monitor monitor(MonitorSpec monitor) {
 		return monitor == null ? null
-				: new Diagram.Monitor(monitor.getEpsClose(), monitor.getEpsCollision(), monitor.getMaxHumanCollisions());
+				: new Diagram.Monitor(monitor.getEpsClose(), monitor.getEpsCollision(),
+						monitor.getMaxHumanCollisions());
 	}
 
 	/** The type's outline; an untyped human is the default catalogue's Human. */
@@ -138,8 +139,8 @@ public final class DiagramBuilder {
 		if (effective == null) {
 			return null;
 		}
-		return new Diagram.Footprint(effective.getName(), effective.getShape().getLiteral().toLowerCase(), effective.getSizeX(),
-				effective.getSizeY(), effective.getSizeZ(), effective.getColour());
+		return new Diagram.Footprint(effective.getName(), effective.getShape().getLiteral().toLowerCase(),
+				effective.getSizeX(), effective.getSizeY(), effective.getSizeZ(), effective.getColour());
 	}
 
 	private static String typeName(ObjectType type, Catalogue defaults, String defaultType) {
