@@ -45,15 +45,21 @@ import com.google.inject.Injector;
  * <p>
  * <b>Design.</b> An edit is applied to the EMF model while Xtext's {@link IChangeSerializer} records it; the
  * serializer turns the recorded change into the smallest text replacements it can find, from the node model of the
- * parsed text. That is the grammar's own serializer at work, so whatever it writes is what the parser reads, and
- * everything it was not asked to change keeps its characters: comments, blank lines, indentation, the order of
- * statements, a map's drawing, the spelling of numbers ({@code 6 s}) and names. Written text is laid out by
+ * parsed text. That is the grammar's own serializer at work, so whatever it writes is what the parser reads, and it
+ * touches only the statements that changed. Written text is laid out by
  * {@link org.rei.dsl.edit.serializer.RoomLayoutFormatter} (a new statement on its own line, indented like its
  * neighbours) and {@link org.rei.dsl.edit.serializer.RoomPartialSerializer} closes three gaps of Xtext's partial
  * serializer that would otherwise rewrite a whole room. Every result is parsed again and must give a model equal to
  * the edited one (EMF's EqualityHelper), else the edit fails and the document keeps its text: a diagram never saves
- * a file that means something else than what it shows. The new text is validated by the
- * language's validators; their findings name the diagram element they are on.
+ * a file that means something else than what it shows. The new text is validated by the language's validators;
+ * their findings name the diagram element they are on.
+ * <p>
+ * <b>Preserved</b>: everything outside the changed statements keeps its characters - comments, blank lines,
+ * indentation, line ends, statement order, a map's drawing, the spelling of numbers ({@code 60 s}). A moved object or
+ * goal keeps its line but for the changed name; a new yaw or timeout is appended to its line. <b>Not preserved</b>: a
+ * statement that is written anew (an added or moved goal, a trajectory whose points were added or removed) is
+ * spelled the serializer's way ({@code 6s}); a deleted statement takes the comment lines right above it along (a
+ * moved one carries them to its new place).
  * <p>
  * <b>Refused</b> ({@link EditRefusedException}, nothing changes): what the text cannot express - unknown names, a
  * name that is taken or not a name, floors and walls of a grid or map room (they are derived from its size or
