@@ -7,6 +7,7 @@ These tests never skip: a missing jar or tool is a failure that says how to get 
 from __future__ import annotations
 
 import os
+import shutil
 import signal
 import subprocess
 import sys
@@ -97,6 +98,17 @@ def background_service() -> Iterator[Path]:
 def repo_root() -> Path:
     """The checkout under test."""
     return REPO_ROOT
+
+
+@pytest.fixture(scope="session")
+def chromium() -> str:
+    """Debian's chromium (installed by scripts/setup-browser.sh) for the browser tests, or REI_CHROMIUM."""
+    for candidate in (os.environ.get("REI_CHROMIUM"), "chromium", "chromium-browser", "google-chrome"):
+        found = shutil.which(candidate) if candidate else None
+        if found:
+            return found
+    pytest.fail("no headless browser: run scripts/setup-browser.sh (apt-get install chromium) or set REI_CHROMIUM",
+                pytrace=False)
 
 
 @pytest.fixture(scope="session")

@@ -97,16 +97,6 @@ WORD_CENTRE_JS = """([line, word]) => {
 }"""
 
 
-def chromium_path() -> str:
-    """Debian's chromium, as the other browser tests use it (tests/view/conftest.py)."""
-    for candidate in (os.environ.get("REI_CHROMIUM"), "chromium", "chromium-browser", "google-chrome"):
-        found = shutil.which(candidate) if candidate else None
-        if found:
-            return found
-    pytest.fail("no headless browser: run scripts/setup-browser.sh (apt-get install chromium) or set REI_CHROMIUM",
-                pytrace=False)
-
-
 def free_port() -> int:
     with socket.socket() as probe:
         probe.bind(("127.0.0.1", 0))
@@ -300,7 +290,7 @@ def wait_until_healthy(server: subprocess.Popen[bytes], base: str, log: Path, ti
 
 
 @pytest.fixture(scope="module")
-def workbench(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Workbench]:
+def workbench(tmp_path_factory: pytest.TempPathFactory, chromium: str) -> Iterator[Workbench]:
     vsix = find_vsix()
     code_server = find_code_server()
     profile = tmp_path_factory.mktemp("vscode")
@@ -330,7 +320,7 @@ def workbench(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Workbench]:
         base = f"http://127.0.0.1:{port}"
         wait_until_healthy(server, base, log)
         playwright = sync_playwright().start()
-        browser = playwright.chromium.launch(executable_path=chromium_path(),
+        browser = playwright.chromium.launch(executable_path=chromium,
                                              args=["--no-sandbox", "--disable-dev-shm-usage"])
         page = browser.new_page(viewport={"width": 1280, "height": 800})
         page.set_default_timeout(PAGE_TIMEOUT_MS)

@@ -11,9 +11,7 @@ distribution (`scripts/setup-browser.sh`); nothing is downloaded at test time.
 from __future__ import annotations
 
 import json
-import os
 import re
-import shutil
 import struct
 import subprocess
 import sys
@@ -44,17 +42,9 @@ def _run(argv: list[str], cwd: Path | None = None) -> subprocess.CompletedProces
         pytest.fail(f"{' '.join(argv)} did not finish within {TIMEOUT_S} s")
 
 
-def chromium() -> str:
-    for candidate in (os.environ.get("REI_CHROMIUM"), "chromium", "chromium-browser", "google-chrome"):
-        if candidate and shutil.which(candidate):
-            return str(shutil.which(candidate))
-    pytest.fail("no headless browser: run scripts/setup-browser.sh (apt-get install chromium) or set "
-                "REI_CHROMIUM", pytrace=False)
-
-
-def browser(*args: str, profile: Path) -> subprocess.CompletedProcess[str]:
+def browser(chromium: str, *args: str, profile: Path) -> subprocess.CompletedProcess[str]:
     """Headless Chromium with a throw-away profile; --no-sandbox because tests may run as root in a container."""
-    return _run([chromium(), "--headless", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
+    return _run([chromium, "--headless", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
                  "--no-first-run", "--hide-scrollbars", f"--user-data-dir={profile}", *args])
 
 
@@ -102,8 +92,8 @@ def run_folder(run_cli, java: toolchain.Java, repo_root: Path, tmp_path_factory:
     return out
 
 
-def test_the_browser_renders_every_plot(run_folder: Path, tmp_path: Path) -> None:
-    result = browser("--dump-dom", (run_folder / "report.html").as_uri(), profile=tmp_path / "profile")
+def test_the_browser_renders_every_plot(run_folder: Path, tmp_path: Path, chromium: str) -> None:
+    result = browser(chromium, "--dump-dom", (run_folder / "report.html").as_uri(), profile=tmp_path / "profile")
     assert result.returncode == 0, result.stderr[-2000:]
     dom = result.stdout
     path = re.search(r'<polyline id="map-robot-path"[^>]*\spoints="([^"]*)"', dom)
@@ -119,9 +109,9 @@ def test_the_browser_renders_every_plot(run_folder: Path, tmp_path: Path) -> Non
     assert "Uncaught" not in result.stderr
 
 
-def test_the_screenshot_shows_the_map(run_folder: Path, tmp_path: Path) -> None:
+def test_the_screenshot_shows_the_map(run_folder: Path, tmp_path: Path, chromium: str) -> None:
     shot = tmp_path / "report.png"
-    result = browser("--window-size=1000,1400", f"--screenshot={shot}", (run_folder / "report.html").as_uri(),
+    result = browser(chromium, "--window-size=1000,1400", f"--screenshot={shot}", (run_folder / "report.html").as_uri(),
                      profile=tmp_path / "profile")
     assert result.returncode == 0 and shot.is_file(), result.stderr[-2000:]
     width, height, pixels = read_png(shot)

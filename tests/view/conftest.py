@@ -7,8 +7,6 @@ scripts/setup-browser.sh installs). These tests never skip: a missing browser fa
 
 from __future__ import annotations
 
-import os
-import shutil
 from collections.abc import Iterator
 
 import pytest
@@ -17,19 +15,10 @@ from playwright.sync_api import Browser, sync_playwright
 from rei.wamp import Router
 
 
-def chromium_path() -> str:
-    for candidate in (os.environ.get("REI_CHROMIUM"), "chromium", "chromium-browser", "google-chrome"):
-        found = shutil.which(candidate) if candidate else None
-        if found:
-            return found
-    pytest.fail("no headless browser: run scripts/setup-browser.sh (apt-get install chromium) or set REI_CHROMIUM",
-                pytrace=False)
-
-
 @pytest.fixture(scope="session")
-def browser() -> Iterator[Browser]:
+def browser(chromium: str) -> Iterator[Browser]:
     with sync_playwright() as playwright:
-        launched = playwright.chromium.launch(executable_path=chromium_path(),
+        launched = playwright.chromium.launch(executable_path=chromium,
                                               args=["--no-sandbox", "--disable-dev-shm-usage"])
         try:
             yield launched
