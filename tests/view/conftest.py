@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: EPL-2.0
-"""Fixtures of the live view's browser tests: Debian's chromium driven by Playwright, a router, a view server.
+"""Fixtures of the live view's browser tests: a router and a view server (the browser is tests/conftest.py's).
 
 Playwright's own browser downloads are never used (`executable_path` points at the system's chromium, which
 scripts/setup-browser.sh installs). These tests never skip: a missing browser fails with the set-up hint.
@@ -10,20 +10,8 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 import pytest
-from playwright.sync_api import Browser, sync_playwright
 
 from rei.wamp import Router
-
-
-@pytest.fixture(scope="session")
-def browser(chromium: str) -> Iterator[Browser]:
-    with sync_playwright() as playwright:
-        launched = playwright.chromium.launch(executable_path=chromium,
-                                              args=["--no-sandbox", "--disable-dev-shm-usage"])
-        try:
-            yield launched
-        finally:
-            launched.close()
 
 
 @pytest.fixture(scope="module")

@@ -1,0 +1,227 @@
+# SPDX-License-Identifier: EPL-2.0
+"""The room editor's HTTP server: the built page and the ``/api/`` of one editing session, on loopback only.
+
+The page may change a file on the user's disk, so every ``/api/`` request must carry the session's token (the
+page has it from its URL) and come from the editor's own origin: another page open in the same browser (or one
+that rebinds a name to 127.0.0.1) can neither read nor write through it. Static files carry no secret and are
+served to anyone on loopback, as the live view's are.
+"""
+
+from __future__ import annotations
+
+import hmac
+import json
+import mimetypes
+import secrets
+import threading
+from collections.abc import Callable
+from http import HTTPStatus
+from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
+from pathlib import Path
+from types import TracebackType
+from typing import Any, Self
+from urllib.parse import urlsplit
+
+from rei.edit.engine import EngineError
+from rei.edit.session import EditSession, SessionConflict
+from rei.view import STATIC_DIR
+
+PAGE = "edit.html"
+TOKEN_HEADER = "X-REI-Token"
+#: A room's text is small; a bigger body is a mistake or an attack.
+MAX_BODY = 4 * 1024 * 1024
+
+
+class EditServerError(RuntimeError):
+    """The page is not built or the server cannot start."""
+
+
+class EditServer:
+    """Serves one ``EditSession`` on ``http://127.0.0.1:<port>/edit.html?token=...`` (a free port unless given)."""
+
+    def __init__(self, session: EditSession, *, host: str = "127.0.0.1", port: int = 0,
+                 static_dir: Path = STATIC_DIR, token: str | None = None) -> None:
+        if not (static_dir / PAGE).is_file():
+            raise EditServerError(f"the room editor's page is not built ({static_dir / PAGE} is missing): "
+                                  "run `npm ci && npm run build` in viewer/")
+        self.session = session
+        self.token = token or secrets.token_urlsafe(24)
+        self._host = host
+        self._port = port
+        self._static = static_dir.resolve()
+        self._server: ThreadingHTTPServer | None = None
+        self._thread: threading.Thread | None = None
+
+    @property
+    def port(self) -> int:
+        if self._server is None:
+            raise EditServerError("edit server not started")
+        return int(self._server.server_address[1])
+
+    @property
+    def url(self) -> str:
+        return f"http://{self._host}:{self.port}/{PAGE}?token={self.token}"
+
+    def start(self) -> EditServer:
+        if self._server is not None:
+            raise EditServerError("edit server already started")
+        try:
+            self._server = ThreadingHTTPServer((self._host, self._port), self._handler_class())
+        except OSError as error:
+            raise EditServerError(f"cannot serve the room editor on {self._host}:{self._port}: {error}") from error
+        self._server.daemon_threads = True
+        self._thread = threading.Thread(target=self._server.serve_forever, kwargs={"poll_interval": 0.2},
+                                        name="rei-edit-http", daemon=True)
+        self._thread.start()
+        return self
+
+    def stop(self) -> None:
+        server, self._server = self._server, None
+        if server is None:
+            return
+        server.shutdown()
+        server.server_close()
+        if self._thread is not None:
+            self._thread.join(timeout=5)
+
+    def __enter__(self) -> Self:
+        return self.start()
+
+    def __exit__(self, exc_type: type[BaseException] | None, exc: BaseException | None,
+                 tb: TracebackType | None) -> None:
+        self.stop()
+
+    # -- requests -----------------------------------------------------------------------------------------------
+
+    def _routes(self) -> dict[tuple[str, str], Callable[[dict[str, Any]], dict[str, Any]]]:
+        session = self.session
+
+        def apply(body: dict[str, Any]) -> dict[str, Any]:
+            operations = body.get("operations")
+            if not isinstance(operations, list) or not operations:
+                raise _BadRequest('expected {"operations": [ ... ]} with at least one operation')
+            return session.apply(operations)
+
+        return {
+            ("GET", "/api/state"): lambda body: session.state(),
+            ("GET", "/api/status"): lambda body: session.status(),
+            ("POST", "/api/apply"): apply,
+            ("POST", "/api/undo"): lambda body: session.undo(),
+            ("POST", "/api/redo"): lambda body: session.redo(),
+            ("POST", "/api/save"): lambda body: session.save(),
+            ("POST", "/api/reload"): lambda body: session.reload(),
+            ("POST", "/api/keep"): lambda body: session.keep(),
+        }
+
+    def _allowed(self, headers: Any) -> str | None:
+        """Why a request to ``/api/`` is refused, or None."""
+        port = self.port
+        host = headers.get("Host", "")
+        if host not in (f"127.0.0.1:{port}", f"localhost:{port}", f"[::1]:{port}"):
+            return f"refused: Host {host!r} is not this editor"
+        origin = headers.get("Origin")
+        if origin is not None and origin not in (f"http://127.0.0.1:{port}", f"http://localhost:{port}"):
+            return f"refused: origin {origin!r} is not this editor"
+        if not hmac.compare_digest(headers.get(TOKEN_HEADER, "").encode(), self.token.encode()):
+            return f"refused: missing or wrong {TOKEN_HEADER} (open the address rei edit printed)"
+        return None
+
+    def _handler_class(self) -> type[BaseHTTPRequestHandler]:
+        editor = self
+        routes = self._routes()
+
+        class Handler(BaseHTTPRequestHandler):
+            server_version = "rei-edit"
+
+            def do_GET(self) -> None:
+                path = urlsplit(self.path).path
+                if path.startswith("/api/"):
+                    self._api("GET", path)
+                    return
+                if path == "/":
+                    self.send_response(HTTPStatus.FOUND)
+                    self.send_header("Location", f"/{PAGE}")
+                    self.send_header("Content-Length", "0")
+                    self.end_headers()
+                    return
+                file = editor._static_file(path)
+                if file is None:
+                    self._send(HTTPStatus.NOT_FOUND, {"error": "not found"})
+                    return
+                kind = mimetypes.guess_type(file.name)[0] or "application/octet-stream"
+                if kind.startswith("text/") or kind.endswith("javascript"):
+                    kind += "; charset=utf-8"
+                self._raw(HTTPStatus.OK, kind, file.read_bytes())
+
+            def do_POST(self) -> None:
+                self._api("POST", urlsplit(self.path).path)
+
+            def _api(self, method: str, path: str) -> None:
+                refusal = editor._allowed(self.headers)
+                if refusal is not None:
+                    self._send(HTTPStatus.FORBIDDEN, {"error": refusal})
+                    return
+                route = routes.get((method, path))
+                if route is None:
+                    self._send(HTTPStatus.NOT_FOUND, {"error": f"no {method} {path}"})
+                    return
+                try:
+                    body = self._body() if method == "POST" else {}
+                    self._send(HTTPStatus.OK, route(body))
+                except _BadRequest as error:
+                    self._send(error.status, {"error": str(error)})
+                except SessionConflict as error:
+                    self._send(HTTPStatus.CONFLICT, {"error": str(error)})
+                except EngineError as error:
+                    status = HTTPStatus.UNPROCESSABLE_ENTITY if error.refused else HTTPStatus.INTERNAL_SERVER_ERROR
+                    self._send(status, {"error": str(error)})
+                except OSError as error:  # the save could not be written
+                    self._send(HTTPStatus.INTERNAL_SERVER_ERROR, {"error": f"cannot write the file: {error}"})
+
+            def _body(self) -> dict[str, Any]:
+                try:
+                    length = int(self.headers.get("Content-Length", "0"))
+                except ValueError:
+                    raise _BadRequest("bad Content-Length") from None
+                if length > MAX_BODY:
+                    raise _BadRequest(f"body over {MAX_BODY} bytes", HTTPStatus.REQUEST_ENTITY_TOO_LARGE)
+                raw = self.rfile.read(length) if length > 0 else b"{}"
+                try:
+                    body = json.loads(raw)
+                except (json.JSONDecodeError, UnicodeDecodeError) as error:
+                    raise _BadRequest(f"the body is not JSON: {error}") from None
+                if not isinstance(body, dict):
+                    raise _BadRequest("the body must be a JSON object")
+                return body
+
+            def _send(self, status: HTTPStatus, answer: dict[str, Any]) -> None:
+                self._raw(status, "application/json", json.dumps(answer, allow_nan=False).encode())
+
+            def _raw(self, status: HTTPStatus, kind: str, body: bytes) -> None:
+                self.send_response(status)
+                self.send_header("Content-Type", kind)
+                self.send_header("Content-Length", str(len(body)))
+                self.send_header("Cache-Control", "no-store")
+                self.send_header("X-Content-Type-Options", "nosniff")
+                self.send_header("Referrer-Policy", "no-referrer")  # the token is in the page's URL
+                self.end_headers()
+                if body:
+                    self.wfile.write(body)
+
+            def log_message(self, format: str, *args: Any) -> None:
+                pass  # every poll would be a line
+
+        return Handler
+
+    def _static_file(self, path: str) -> Path | None:
+        relative = path.lstrip("/")
+        candidate = (self._static / relative).resolve()
+        if not relative or not candidate.is_relative_to(self._static) or not candidate.is_file():
+            return None
+        return candidate
+
+
+class _BadRequest(ValueError):
+    def __init__(self, message: str, status: HTTPStatus = HTTPStatus.BAD_REQUEST) -> None:
+        super().__init__(message)
+        self.status = status
