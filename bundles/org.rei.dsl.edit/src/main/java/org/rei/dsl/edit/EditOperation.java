@@ -28,6 +28,17 @@ public sealed interface EditOperation {
 	record AddObject(String name, String type, String floor) implements EditOperation {
 	}
 
+	/**
+	 * Adds a human that walks through the control points: {@code human NAME (: TYPE)? trajectory [...] loop};
+	 * {@code type} null for the default catalogue's Human. {@code loop} false is written as nothing (the grammar's
+	 * default, which {@code once} only spells out).
+	 */
+	record AddHuman(String name, String type, List<Waypoint> points, boolean loop) implements EditOperation {
+		public AddHuman {
+			points = List.copyOf(points);
+		}
+	}
+
 	/** Removes furniture, a moving object or a human (not the robot: a room has exactly one). */
 	record DeleteObject(String name) implements EditOperation {
 	}

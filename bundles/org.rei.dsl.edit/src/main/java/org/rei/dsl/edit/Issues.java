@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.List;
 
 import org.eclipse.emf.ecore.EObject;
+import org.eclipse.xtext.EcoreUtil2;
 import org.eclipse.xtext.resource.XtextResource;
 import org.eclipse.xtext.util.CancelIndicator;
 import org.eclipse.xtext.validation.CheckMode;
@@ -21,10 +22,12 @@ import org.rei.context.Mission;
 import org.rei.context.MonitorSpec;
 import org.rei.context.NamedElement;
 import org.rei.context.NavigationTask;
+import org.rei.context.PhysicalObject;
 import org.rei.context.Robot;
 import org.rei.context.StaticObject;
 import org.rei.context.TestCase;
 import org.rei.context.Wall;
+import org.rei.dsl.validation.ReiIssueCodes;
 
 /** Runs the language's own validators and says which diagram element each finding is on. */
 final class Issues {
@@ -41,9 +44,34 @@ final class Issues {
 			Target target = target(element);
 			result.add(new ValidationIssue(issue.getSeverity().name().toLowerCase(), issue.getMessage(),
 					orOne(issue.getLineNumber()), orOne(issue.getColumn()), orZero(issue.getOffset()),
-					orZero(issue.getLength()), issue.getCode(), target.name(), target.kind(), target.index()));
+					orZero(issue.getLength()), issue.getCode(), target.name(), target.kind(), target.index(),
+					related(issue.getCode(), element)));
 		}
 		return result;
+	}
+
+	/** The other elements a finding is about: the objects that share a floor with the one it is reported on. */
+	private static List<String> related(String code, EObject element) {
+		if (!ReiIssueCodes.FLOOR_OCCUPIED.equals(code)) {
+			return List.of();
+		}
+		PhysicalObject object = EcoreUtil2.getContainerOfType(element, PhysicalObject.class);
+		Environment environment = object == null ? null : EcoreUtil2.getContainerOfType(object, Environment.class);
+		Floor floor = object == null ? null : object.startFloor();
+		if (environment == null || floor == null || floor.eIsProxy()) {
+			return List.of();
+		}
+		List<PhysicalObject> candidates = new ArrayList<>(environment.getOwnedObjects());
+		if (environment.getOwnedRobot() != null) {
+			candidates.add(environment.getOwnedRobot());
+		}
+		List<String> others = new ArrayList<>();
+		for (PhysicalObject other : candidates) {
+			if (other != object && other.startFloor() == floor && other.getName() != null) {
+				others.add(other.getName());
+			}
+		}
+		return others;
 	}
 
 	private record Target(String name, String kind, Integer index) {

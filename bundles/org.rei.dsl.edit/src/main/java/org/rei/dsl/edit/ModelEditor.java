@@ -6,6 +6,7 @@ package org.rei.dsl.edit;
 
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -30,6 +31,7 @@ import org.rei.context.DynamicObject;
 import org.rei.context.Environment;
 import org.rei.context.Floor;
 import org.rei.context.GridLayout;
+import org.rei.context.Human;
 import org.rei.context.Mission;
 import org.rei.context.NamedElement;
 import org.rei.context.NavigationTask;
@@ -44,6 +46,7 @@ import org.rei.context.Wall;
 import org.rei.context.layout.FloorLayout;
 import org.rei.dsl.edit.EditOperation.AddFloor;
 import org.rei.dsl.edit.EditOperation.AddGoal;
+import org.rei.dsl.edit.EditOperation.AddHuman;
 import org.rei.dsl.edit.EditOperation.AddObject;
 import org.rei.dsl.edit.EditOperation.AddWall;
 import org.rei.dsl.edit.EditOperation.DeleteObject;
@@ -72,6 +75,22 @@ final class ModelEditor {
 	private final IScopeProvider scopes;
 	private final Set<String> reservedWords;
 	private Map<String, BuildingBlock> blocks;
+	/** The elements this batch added so far: a later operation of the batch must not change them (see below). */
+	private final Set<EObject> created = new HashSet<>();
+
+	/**
+	 * An operation would change an element that an earlier operation of the same batch added. Xtext's partial
+	 * serializer cannot place a change on an element the original text does not have and re-writes the whole room
+	 * instead (statement order, blank lines and comments lost), so the document applies such a batch one operation
+	 * after the other.
+	 */
+	static final class ChangesNewElementException extends RuntimeException {
+		private static final long serialVersionUID = 1L;
+
+		ChangesNewElementException(String name) {
+			super("'" + name + "' was added by this batch and is changed again");
+		}
+	}
 
 	/** @param reservedWords keywords that cannot be names (the grammar's, except those ValidID allows) */
 	ModelEditor(TestCase testCase, IScopeProvider scopes, Set<String> reservedWords) {
@@ -88,11 +107,13 @@ final class ModelEditor {
 	void apply(EditOperation operation) {
 		if (operation instanceof MoveObject move) {
 			Floor floor = floor(move.floor());
-			placed(move.name(), "moved").setFloor(floor);
+			changing(placed(move.name(), "moved")).setFloor(floor);
 		} else if (operation instanceof RotateObject rotate) {
-			placed(rotate.name(), "turned").setYaw(rotate.yawDegrees());
+			changing(placed(rotate.name(), "turned")).setYaw(rotate.yawDegrees());
 		} else if (operation instanceof AddObject add) {
 			addObject(add);
+		} else if (operation instanceof AddHuman add) {
+			addHuman(add);
 		} else if (operation instanceof DeleteObject delete) {
 			deleteObject(delete);
 		} else if (operation instanceof AddFloor add) {
@@ -125,6 +146,35 @@ final class ModelEditor {
 		object.setType(type);
 		object.setFloor(floor);
 		environment.getOwnedObjects().add(object);
+		created.add(object);
+	}
+
+	/** Built whole, trajectory included, before it joins the room: the serializer writes it as one statement. */
+	private void addHuman(AddHuman add) {
+		checkNewName(add.name());
+		ObjectType type = add.type() == null ? null : type(add.type());
+		if (add.points().isEmpty()) {
+			throw new EditRefusedException("A trajectory is written with one control point at least (and needs two "
+					+ "to move): human '" + add.name() + "' would have none");
+		}
+		Trajectory trajectory = FACTORY.createTrajectory();
+		for (Waypoint waypoint : add.points()) {
+			ControlPoint point = FACTORY.createControlPoint();
+			point.setFloor(floor(waypoint.floor()));
+			point.setTime(waypoint.seconds());
+			trajectory.getOwnedControlPoints().add(point);
+		}
+		if (add.loop()) {
+			trajectory.setLoop(true);
+		}
+		Human human = FACTORY.createHuman();
+		human.setName(add.name());
+		if (type != null) {
+			human.setType(type);
+		}
+		human.setOwnedTrajectory(trajectory);
+		environment.getOwnedObjects().add(human);
+		created.add(human);
 	}
 
 	private void deleteObject(DeleteObject delete) {
@@ -154,6 +204,7 @@ final class ModelEditor {
 		}
 		owned.add(index, floor);
 		blocks().put(floor.getName(), floor);
+		created.add(floor);
 	}
 
 	private void removeFloor(RemoveFloor remove) {
@@ -178,11 +229,13 @@ final class ModelEditor {
 			throw new EditRefusedException("The " + side(add.side()) + " of floor " + floor.getName() + " is "
 					+ taken.getName() + " already: remove it first");
 		}
+		changing(floor);
 		Wall wall = FACTORY.createWall();
 		wall.setName(add.name());
 		environment.getOwnedBlocks().add(wall);
 		floor.eSet(FloorLayout.feature(add.side()), wall);
 		blocks().put(wall.getName(), wall);
+		created.add(wall);
 	}
 
 	private void removeWall(RemoveWall remove) {
@@ -205,6 +258,7 @@ final class ModelEditor {
 			throw new EditRefusedException("A trajectory is written with one control point at least (and needs two "
 					+ "to move): '" + set.name() + "' would have none");
 		}
+		changing(mover);
 		List<Floor> floors = set.points().stream().map(p -> floor(p.floor())).toList();
 		Trajectory trajectory = mover.getOwnedTrajectory();
 		List<ControlPoint> points = trajectory.getOwnedControlPoints();
@@ -241,6 +295,7 @@ final class ModelEditor {
 			goal.setTimeout(add.timeoutSeconds());
 		}
 		tasks.add(add.index(), goal);
+		created.add(goal);
 	}
 
 	private void moveGoal(MoveGoal move) {
@@ -376,16 +431,27 @@ final class ModelEditor {
 
 	/** Clears every neighbour reference to the block. */
 	private void unlink(BuildingBlock block) {
+		List<Runnable> unsets = new ArrayList<>();
 		for (BuildingBlock other : environment.getOwnedBlocks()) {
 			if (other instanceof Floor floor) {
 				for (Direction side : Direction.VALUES) {
 					EReference feature = FloorLayout.feature(side);
 					if (floor.eGet(feature) == block) {
-						floor.eUnset(feature);
+						changing(floor);
+						unsets.add(() -> floor.eUnset(feature));
 					}
 				}
 			}
 		}
+		unsets.forEach(Runnable::run);
+	}
+
+	/** The element, which this operation changes: refused for this batch when the batch added it. */
+	private <T extends EObject> T changing(T element) {
+		if (created.contains(element)) {
+			throw new ChangesNewElementException(((NamedElement) element).getName());
+		}
+		return element;
 	}
 
 	private static String describe(SimulationObject object) {

@@ -35,6 +35,8 @@ import org.eclipse.xtext.scoping.IScopeProvider;
 import org.rei.context.TestCase;
 import org.rei.dsl.edit.diagram.Diagram;
 import org.rei.dsl.edit.diagram.DiagramBuilder;
+import org.rei.dsl.edit.diagram.Palette;
+import org.rei.dsl.edit.diagram.PaletteType;
 import org.rei.dsl.edit.serializer.TangledListException;
 
 import com.google.inject.Injector;
@@ -100,6 +102,8 @@ public final class RoomDocument {
 	private final Deque<Step> undo = new ArrayDeque<>();
 	private final Deque<Step> redo = new ArrayDeque<>();
 	private Version current;
+	private Version paletteOf;
+	private List<PaletteType> palette;
 
 	private RoomDocument(Injector injector, URI uri, String text) {
 		this.injector = injector;
@@ -143,6 +147,15 @@ public final class RoomDocument {
 		return DiagramBuilder.of(model());
 	}
 
+	/** The catalogue types the text can name: the imported catalogues' and the default one's. */
+	public List<PaletteType> palette() {
+		if (paletteOf != current) {
+			palette = List.copyOf(Palette.of(model(), injector.getInstance(IScopeProvider.class)));
+			paletteOf = current;
+		}
+		return palette;
+	}
+
 	/**
 	 * Takes a text that changed outside the editor (the file was saved by a text editor): the diagram follows it,
 	 * and the undo history, which is made of edits of the previous text, is forgotten.
@@ -173,8 +186,8 @@ public final class RoomDocument {
 
 	/**
 	 * Applies the operations as one change (one undo step). A batch the serializer cannot write in one go (two new
-	 * statements at one place of a list) is applied one operation after the other; its edit is then the one
-	 * replacement that spans all changes.
+	 * statements at one place of a list, an element added and then changed) is applied one operation after the
+	 * other; its edit is then the one replacement that spans all changes.
 	 *
 	 * @throws EditRefusedException when one cannot be expressed; the document is unchanged
 	 * @throws IllegalStateException when the written text would not read back as the edited model; unchanged too
@@ -186,7 +199,7 @@ public final class RoomDocument {
 			Written written;
 			try {
 				written = write(current, operations);
-			} catch (TangledListException | ReadBackException e) {
+			} catch (TangledListException | ReadBackException | ModelEditor.ChangesNewElementException e) {
 				if (operations.size() < 2) {
 					throw e;
 				}
@@ -200,7 +213,7 @@ public final class RoomDocument {
 			redo.clear();
 			current = written.next();
 			return result(written.edits());
-		} catch (RuntimeException e) {
+		} catch (RuntimeException | Error e) {
 			current = parse(before); // the model may be half edited: read the text again
 			throw e;
 		}
@@ -238,7 +251,7 @@ public final class RoomDocument {
 		compareNanos += System.nanoTime() - start;
 		if (!equal) {
 			throw new ReadBackException("The written text does not read back as the edited room; nothing was "
-					+ "changed. Written text:\n" + next.text() + "\nits errors: " + next.resource().getErrors());
+					+ "changed.\nWritten text:\n" + next.text() + "\nits errors: " + next.resource().getErrors());
 		}
 		return new Written(edits, next);
 	}
@@ -256,9 +269,9 @@ public final class RoomDocument {
 		if (undo.isEmpty()) {
 			throw new IllegalStateException("nothing to undo");
 		}
-		Step step = undo.pop();
-		redo.push(step);
+		Step step = undo.peek();
 		current = parse(TextEdits.apply(current.text(), step.backward()));
+		redo.push(undo.pop());
 		return result(step.backward());
 	}
 
@@ -266,9 +279,9 @@ public final class RoomDocument {
 		if (redo.isEmpty()) {
 			throw new IllegalStateException("nothing to redo");
 		}
-		Step step = redo.pop();
-		undo.push(step);
+		Step step = redo.peek();
 		current = parse(TextEdits.apply(current.text(), step.forward()));
+		undo.push(redo.pop());
 		return result(step.forward());
 	}
 

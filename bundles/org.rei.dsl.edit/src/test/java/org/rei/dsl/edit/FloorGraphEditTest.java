@@ -94,6 +94,20 @@ class FloorGraphEditTest {
 	}
 
 	@Test
+	void aBatchThatAddsAFloorAndAWallOnItKeepsTheRestOfTheRoom() {
+		List<EditOperation> batch = List.of(new AddFloor("E", Map.of(Direction.LEFT, "D")),
+				new AddWall("W_E_top", "E", Direction.TOP));
+		EditResult result = document.apply(batch);
+
+		assertEquals(List.of("+\t\tfloor E left D top W_E_top", "+\t\twall W_E_top"),
+				Texts.diff(original, result.text()));
+		Texts.assertReadsBackAsEdited(original, document.uri(), result.text(), batch.toArray(EditOperation[]::new));
+
+		EditResult removed = document.apply(new RemoveWall("W_E_top"), new RemoveFloor("E"));
+		assertEquals(original, removed.text());
+	}
+
+	@Test
 	void aTakenSideIsRefused() {
 		// C names D on its right; D's left is C although D does not say so
 		EditRefusedException refused = assertThrows(EditRefusedException.class,

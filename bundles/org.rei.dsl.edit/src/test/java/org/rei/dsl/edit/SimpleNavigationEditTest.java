@@ -17,6 +17,7 @@ import org.junit.jupiter.api.Test;
 import org.rei.context.Direction;
 import org.rei.dsl.edit.EditOperation.AddFloor;
 import org.rei.dsl.edit.EditOperation.AddGoal;
+import org.rei.dsl.edit.EditOperation.AddHuman;
 import org.rei.dsl.edit.EditOperation.AddObject;
 import org.rei.dsl.edit.EditOperation.DeleteObject;
 import org.rei.dsl.edit.EditOperation.MoveGoal;
@@ -25,6 +26,8 @@ import org.rei.dsl.edit.EditOperation.RemoveGoal;
 import org.rei.dsl.edit.EditOperation.RotateObject;
 import org.rei.dsl.edit.EditOperation.SetTrajectory;
 import org.rei.dsl.edit.EditOperation.Waypoint;
+import org.rei.dsl.edit.diagram.Diagram;
+import org.rei.dsl.edit.diagram.PaletteType;
 import org.rei.dsl.validation.ReiIssueCodes;
 
 /**
@@ -128,6 +131,7 @@ class SimpleNavigationEditTest {
 		assertEquals(8, issue.line());
 		assertEquals(26, issue.column());
 		assertTrue(issue.message().contains("already taken by 'table1'"), issue.message());
+		assertEquals(List.of("table1"), issue.related());
 		Texts.assertReadsBackAsEdited(original, document.uri(), result.text(), new AddObject("box1", "Box", "F_2_1"));
 	}
 
@@ -140,6 +144,82 @@ class SimpleNavigationEditTest {
 		assertEquals("shelf1", issue.element());
 		assertEquals(6, issue.line());
 		assertEquals(30, issue.column());
+	}
+
+	/** Each of three objects on one floor but the first is in error; each error names the other two. */
+	@Test
+	void aTakenFloorsErrorNamesTheOtherObjectsOnIt() {
+		EditResult result = document.apply(new MoveObject("shelf1", "F_2_1"), new AddObject("box1", "Box", "F_2_1"));
+
+		assertEquals(List.of("shelf1 [table1, box1]", "box1 [table1, shelf1]"), result.issues().stream()
+				.map(i -> i.element() + " " + i.related()).toList());
+		assertEquals(List.of(ReiIssueCodes.FLOOR_OCCUPIED, ReiIssueCodes.FLOOR_OCCUPIED), codes(result));
+	}
+
+	@Test
+	void aTakenFloorsErrorOnTheRobotOrAHumanNamesTheObject() {
+		EditResult robot = document.apply(new MoveObject("table1", "F_0_0"));
+		assertEquals(List.of("robot tb3 [table1]"), robot.issues().stream()
+				.map(i -> i.kind() + " " + i.element() + " " + i.related()).toList());
+		document.undo();
+
+		EditResult human = document.apply(new SetTrajectory("walker", List.of(new Waypoint("F_2_1", 0),
+				new Waypoint("F_2_2", 4)), true));
+		assertEquals(List.of("human walker [table1]"), human.issues().stream()
+				.map(i -> i.kind() + " " + i.element() + " " + i.related()).toList());
+		assertEquals(List.of(), document.undo().issues());
+	}
+
+	@Test
+	void anAddedHumanIsOneNewLineAfterTheOtherObjects() {
+		AddHuman add = new AddHuman("visitor", null, List.of(new Waypoint("F_0_1", 0), new Waypoint("F_5_1", 8)),
+				true);
+		EditResult result = document.apply(add);
+
+		assertEquals(List.of("+    human visitor trajectory [F_0_1 @ 0s, F_5_1 @ 8s] loop"),
+				Texts.diff(original, result.text()));
+		assertEquals(1, result.edits().size());
+		assertEquals(List.of(), result.issues());
+		Diagram.Mover visitor = document.diagram().movers().get(1);
+		assertEquals(List.of("visitor", "human", "Human", true), List.of(visitor.name(), visitor.kind(),
+				visitor.footprint().type(), visitor.loop()));
+		assertEquals(new Diagram.Waypoint("F_5_1", 8, 5.5, 1.5), visitor.points().get(1));
+		Texts.assertReadsBackAsEdited(original, document.uri(), result.text(), add);
+		assertEquals(original, document.undo().text());
+	}
+
+	@Test
+	void anAddedHumanOfANamedTypeThatWalksOnce() {
+		AddHuman add = new AddHuman("visitor", "Human", List.of(new Waypoint("F_0_1", 0), new Waypoint("F_5_1", 8.5),
+				new Waypoint("F_5_2", 10)), false);
+		EditResult result = document.apply(add);
+
+		assertEquals(List.of("+    human visitor : Human trajectory [F_0_1 @ 0s, F_5_1 @ 8.5s, F_5_2 @ 10s]"),
+				Texts.diff(original, result.text()));
+		assertEquals(List.of(), result.issues());
+		Texts.assertReadsBackAsEdited(original, document.uri(), result.text(), add);
+	}
+
+	@Test
+	void aHumanTheTextCannotSayIsRefused() {
+		List<Waypoint> points = List.of(new Waypoint("F_0_1", 0), new Waypoint("F_5_1", 8));
+		assertRefused(new AddHuman("walker", null, points, true), "The name 'walker' is taken");
+		assertRefused(new AddHuman("visitor", "Robot", points, true), "No type 'Robot'");
+		assertRefused(new AddHuman("visitor", null, List.of(new Waypoint("F_7_1", 0)), true),
+				"no floor or wall named 'F_7_1'");
+		assertRefused(new AddHuman("visitor", null, List.of(), true), "human 'visitor' would have none");
+	}
+
+	@Test
+	void thePaletteIsTheDefaultCatalogue() {
+		List<PaletteType> palette = document.palette();
+
+		assertEquals(List.of("Floor floor", "Wall wall", "Box object", "Table object", "Chair object",
+				"Shelf object", "Bin object", "Cart dynamic", "Human human", "Waffle robot"), palette.stream()
+						.map(t -> t.name() + " " + t.category()).toList());
+		PaletteType waffle = palette.get(palette.size() - 1);
+		assertEquals(List.of("box", 0.281, 0.306), List.of(waffle.shape(), waffle.sizeX(), waffle.sizeY()));
+		assertTrue(palette.stream().allMatch(t -> t.colour() != null && t.colour().startsWith("#")), palette::toString);
 	}
 
 	@Test
@@ -171,6 +251,21 @@ class SimpleNavigationEditTest {
 		assertEquals(original, undone.text());
 		assertEquals(original, document.text());
 		assertEquals(result.text(), document.redo().text());
+	}
+
+	/** Xtext would re-write the whole room for a change of an element it has no text of: applied one by one. */
+	@Test
+	void aBatchThatAddsAnElementAndChangesItWritesOnlyTheNewStatement() {
+		List<EditOperation> batch = List.of(new AddObject("chair1", "Chair", "F_2_2"), new RotateObject("chair1", 90),
+				new AddHuman("visitor", null, List.of(new Waypoint("F_0_1", 0)), false),
+				new SetTrajectory("visitor", List.of(new Waypoint("F_0_1", 0), new Waypoint("F_0_2", 3)), true));
+		EditResult result = document.apply(batch);
+
+		assertEquals(List.of("+    object chair1 : Chair on F_2_2 yaw 90",
+				"+    human visitor trajectory [F_0_1 @ 0s, F_0_2 @ 3s] loop"), Texts.diff(original, result.text()));
+		assertEquals(1, result.edits().size());
+		Texts.assertReadsBackAsEdited(original, document.uri(), result.text(), batch.toArray(EditOperation[]::new));
+		assertEquals(original, document.undo().text());
 	}
 
 	@Test

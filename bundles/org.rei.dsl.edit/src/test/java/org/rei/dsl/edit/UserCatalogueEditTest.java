@@ -7,11 +7,16 @@ package org.rei.dsl.edit;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.List;
 
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import org.rei.dsl.edit.EditOperation.AddObject;
 import org.rei.dsl.edit.diagram.Diagram;
+import org.rei.dsl.edit.diagram.PaletteType;
 import org.rei.dsl.validation.ReiIssueCodes;
 
 /** examples/own_types.rei imports catalogues/office.rei, relative to itself: its types place and draw as others. */
@@ -34,6 +39,34 @@ class UserCatalogueEditTest {
 		assertEquals("Burger", diagram.robot().footprint().type());
 		assertEquals(0.178, diagram.robot().footprint().sizeY());
 		Texts.assertReadsBackAsEdited(original, document.uri(), result.text(), new AddObject("sofa2", "Sofa", "F_3_3"));
+	}
+
+	/** The imported catalogue's types first, then the default catalogue's. */
+	@Test
+	void thePaletteHasTheImportedTypesAndTheDefaultOnes() {
+		List<PaletteType> palette = Texts.open("examples/own_types.rei").palette();
+
+		assertEquals(List.of("Sofa", "Pillar", "Plant", "Trolley", "Burger", "Floor", "Wall", "Box", "Table", "Chair",
+				"Shelf", "Bin", "Cart", "Human", "Waffle"), palette.stream().map(PaletteType::name).toList());
+		assertEquals(new PaletteType("Sofa", "object", "box", 1.1, 0.8, "#7A5230"), palette.get(0));
+		assertEquals(new PaletteType("Pillar", "object", "cylinder", 0.3, 0.3, "#BFBFBF"), palette.get(1));
+		assertEquals(new PaletteType("Trolley", "dynamic", "box", 0.6, 0.4, "#4682B4"), palette.get(3));
+		assertEquals(new PaletteType("Burger", "robot", "box", 0.138, 0.178, "#202020"), palette.get(4));
+	}
+
+	/** An imported type hides the default type of its name; one without a colour has the metamodel's grey. */
+	@Test
+	void anImportedTypeHidesTheDefaultTypeOfItsName(@TempDir Path dir) throws IOException {
+		Files.writeString(dir.resolve("mine.rei"), "catalogue Mine {\n  type Table : object cylinder 1 x 1 x 0.7\n}\n");
+		Path file = dir.resolve("case.rei");
+		Files.writeString(file, "import \"mine.rei\"\ntestcase T {\n  room R size 2 x 2 {\n"
+				+ "    robot r : Waffle on F_0_0\n  }\n}\n");
+
+		List<PaletteType> palette = RoomDocument.open(file).palette();
+
+		assertEquals(new PaletteType("Table", "object", "cylinder", 1, 1, "#808080"), palette.get(0));
+		assertEquals(1, palette.stream().filter(t -> t.name().equals("Table")).count(), palette::toString);
+		assertEquals(10, palette.size()); // the default ten, one of them hidden
 	}
 
 	@Test
