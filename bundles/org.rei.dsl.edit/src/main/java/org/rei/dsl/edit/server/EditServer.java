@@ -1,0 +1,285 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.dsl.edit.server;
+
+import java.io.BufferedReader;
+import java.io.BufferedWriter;
+import java.io.FileDescriptor;
+import java.io.FileOutputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.InputStreamReader;
+import java.io.OutputStream;
+import java.io.OutputStreamWriter;
+import java.io.PrintStream;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.InvalidPathException;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+import org.rei.dsl.edit.EditOperation;
+import org.rei.dsl.edit.EditRefusedException;
+import org.rei.dsl.edit.RoomDocument;
+import org.rei.dsl.edit.RoomEditSetup;
+import org.rei.dsl.edit.ValidationIssue;
+
+import com.fasterxml.jackson.annotation.JsonIgnore;
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.DeserializationFeature;
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.NullNode;
+
+/**
+ * The room editor's edit engine (main class of rei-room-editor.jar): the HTTP server of {@code rei edit} starts it
+ * as a child process and talks to it in JSON lines, as docs/room-editor.md ("HTTP server ⇄ edit engine") says.
+ * <p>
+ * One request per line on stdin, one answer line on stdout per request, in order (blank lines are skipped); logs go
+ * to stderr, and so does anything else that would print to {@code System.out} (Xtext's log4j configuration logs to
+ * the console): stdout carries answers only. The engine exits 0 when stdin closes.
+ * <p>
+ * Every request is answered, whatever it holds: unreadable JSON, an unknown command or op, a missing field, a
+ * command before {@code open}, a refused edit and a failure inside the engine are answered
+ * {@code {"id": N, "ok": false, "error": "..."}} (id null when the line is not a JSON object) and the document is
+ * as it was before the request.
+ */
+public final class EditServer {
+
+	static final List<String> COMMANDS = List.of("open", "state", "apply", "undo", "redo", "reset");
+
+	/** The answers' mapper: records as their components, ValidationIssue without its convenience getter. */
+	private static final ObjectMapper MAPPER = new ObjectMapper()
+			.enable(DeserializationFeature.FAIL_ON_TRAILING_TOKENS)
+			.addMixIn(ValidationIssue.class, IssueMixIn.class);
+
+	private abstract static class IssueMixIn {
+		@JsonIgnore
+		abstract boolean isError();
+	}
+
+	private final BufferedReader requests;
+	private final Writer answers;
+	private final PrintStream log;
+	private RoomDocument document;
+
+	/**
+	 * @param requests JSON lines, UTF-8
+	 * @param answers receives one JSON line (UTF-8) per request, flushed after each
+	 * @param log human-readable progress and failures
+	 */
+	public EditServer(InputStream requests, OutputStream answers, PrintStream log) {
+		this.requests = new BufferedReader(new InputStreamReader(requests, StandardCharsets.UTF_8));
+		this.answers = new BufferedWriter(new OutputStreamWriter(answers, StandardCharsets.UTF_8), 1 << 16);
+		this.log = log;
+	}
+
+	public static void main(String[] args) {
+		// the real stdout is kept for the answers; whatever else prints (log4j's console appender, EMF, a stray
+		// printStackTrace) goes to stderr
+		OutputStream stdout = new FileOutputStream(FileDescriptor.out);
+		PrintStream stderr = System.err;
+		System.setOut(stderr);
+		EditServer server = new EditServer(System.in, stdout, stderr);
+		int status = 0;
+		try {
+			server.warmUp();
+			server.run();
+		} catch (IOException e) {
+			stderr.println("rei-room-editor: " + e);
+			status = 1;
+		}
+		System.exit(status); // no thread of Xtext's or EMF's keeps the JVM once stdin is closed
+	}
+
+	/** Sets the language up while the first request is on its way: Xtext's injector takes most of a second. */
+	void warmUp() {
+		Thread thread = new Thread(RoomEditSetup::injector, "warm-up");
+		thread.setDaemon(true);
+		thread.start();
+	}
+
+	/** Answers requests until stdin closes. */
+	public void run() throws IOException {
+		log.println("rei-room-editor: ready (JSON lines on stdin: " + String.join(", ", COMMANDS) + ")");
+		for (String line = requests.readLine(); line != null; line = requests.readLine()) {
+			if (line.isBlank()) {
+				continue;
+			}
+			answers.write(answer(line));
+			answers.write('\n');
+			answers.flush();
+		}
+		log.println("rei-room-editor: stdin closed, exiting");
+	}
+
+	/** The answer line to one request line; never throws but for what only kills the JVM anyway. */
+	String answer(String line) {
+		long start = System.nanoTime();
+		JsonNode request;
+		try {
+			request = MAPPER.readTree(line);
+		} catch (JsonProcessingException e) {
+			return error(NullNode.instance, "malformed JSON: " + e.getOriginalMessage() + " (one JSON object per "
+					+ "line expected)", "?", start);
+		}
+		if (request == null || !request.isObject()) {
+			return error(NullNode.instance, "a request is a JSON object {\"id\": N, \"command\": C, ...}, got "
+					+ OperationDecoder.describe(request == null ? NullNode.instance : request), "?", start);
+		}
+		JsonNode id = request.hasNonNull("id") ? request.get("id") : NullNode.instance;
+		String command = request.hasNonNull("command") ? request.get("command").asText() : "?";
+		try {
+			Map<String, Object> state = handle(request);
+			Map<String, Object> answer = new LinkedHashMap<>();
+			answer.put("id", id);
+			answer.put("ok", true);
+			answer.putAll(state);
+			String json = MAPPER.writeValueAsString(answer);
+			log.printf("rei-room-editor: #%s %s ok, %d ms, %,d characters%n", id, command, millis(start),
+					json.length());
+			return json;
+		} catch (RequestException | EditRefusedException e) {
+			return error(id, e.getMessage(), command, start);
+		} catch (Exception | StackOverflowError | LinkageError | AssertionError e) {
+			// a failure of the engine: the document re-read its text (RoomDocument.apply), the server goes on
+			log.println("rei-room-editor: #" + id + " " + command + " failed:");
+			e.printStackTrace(log);
+			return error(id, failure(e), command, start);
+		}
+	}
+
+	private Map<String, Object> handle(JsonNode request) throws RequestException, IOException {
+		JsonNode command = request.get("command");
+		if (command == null || command.isNull()) {
+			throw new RequestException("missing field 'command' (one of " + String.join(", ", COMMANDS) + ")");
+		}
+		if (!command.isTextual()) {
+			throw new RequestException("'command' must be a string (one of " + String.join(", ", COMMANDS)
+					+ "), got " + OperationDecoder.describe(command));
+		}
+		switch (command.asText()) {
+		case "open":
+			open(text(request, "path", "the test case's file"));
+			return state();
+		case "state":
+			open();
+			return state();
+		case "apply":
+			List<EditOperation> operations = OperationDecoder.decodeAll(request.get("operations"));
+			open().apply(operations);
+			return state();
+		case "undo":
+			if (!open().canUndo()) {
+				throw new RequestException("nothing to undo");
+			}
+			document.undo();
+			return state();
+		case "redo":
+			if (!open().canRedo()) {
+				throw new RequestException("nothing to redo");
+			}
+			document.redo();
+			return state();
+		case "reset":
+			String text = text(request, "text", "the file's new text");
+			try {
+				open().reset(text);
+			} catch (IllegalArgumentException e) {
+				throw new RequestException(e.getMessage());
+			}
+			return state();
+		default:
+			throw new RequestException("unknown command '" + command.asText() + "', expected one of "
+					+ String.join(", ", COMMANDS));
+		}
+	}
+
+	/** Opens a file, replacing the open document; a file that cannot be opened leaves the open one as it was. */
+	private void open(String path) throws RequestException, IOException {
+		Path file;
+		try {
+			file = Path.of(path);
+		} catch (InvalidPathException e) {
+			throw new RequestException("cannot open '" + path + "': " + e.getMessage());
+		}
+		try {
+			document = RoomDocument.open(file);
+			log.println("rei-room-editor: opened " + document.uri().toFileString());
+		} catch (NoSuchFileException e) {
+			throw new RequestException("cannot open '" + path + "': no such file");
+		} catch (IllegalArgumentException e) {
+			throw new RequestException("cannot open '" + path + "': " + e.getMessage());
+		} catch (IOException e) {
+			throw new RequestException("cannot open '" + path + "': " + e);
+		}
+	}
+
+	private RoomDocument open() throws RequestException {
+		if (document == null) {
+			throw new RequestException("no test case is open: send {\"id\": N, \"command\": \"open\", \"path\": "
+					+ "\"CASE.rei\"} first");
+		}
+		return document;
+	}
+
+	private Map<String, Object> state() {
+		Map<String, Object> state = new LinkedHashMap<>();
+		state.put("text", document.text());
+		state.put("diagram", document.diagram());
+		state.put("issues", document.issues());
+		state.put("palette", document.palette());
+		state.put("canUndo", document.canUndo());
+		state.put("canRedo", document.canRedo());
+		return state;
+	}
+
+	private static String text(JsonNode request, String field, String what) throws RequestException {
+		JsonNode value = request.get(field);
+		if (value == null || value.isNull()) {
+			throw new RequestException("missing field '" + field + "' (" + what + ")");
+		}
+		if (!value.isTextual()) {
+			throw new RequestException("'" + field + "' must be a string (" + what + "), got "
+					+ OperationDecoder.describe(value));
+		}
+		return value.asText();
+	}
+
+	private String error(JsonNode id, String message, String command, long start) {
+		log.printf("rei-room-editor: #%s %s refused, %d ms: %s%n", id, command, millis(start), firstLine(message));
+		Map<String, Object> answer = new LinkedHashMap<>();
+		answer.put("id", id);
+		answer.put("ok", false);
+		answer.put("error", message);
+		try {
+			return MAPPER.writeValueAsString(answer);
+		} catch (JsonProcessingException e) {
+			throw new IllegalStateException(e); // a node, a boolean and a string always write
+		}
+	}
+
+	/** An engine failure for the user: what failed, without the text a read-back failure appends. */
+	private static String failure(Throwable e) {
+		if (e.getMessage() != null && firstLine(e.getMessage()).contains("nothing was changed")) {
+			return firstLine(e.getMessage()); // the read-back check's own words
+		}
+		String message = e.getMessage() == null ? e.getClass().getSimpleName()
+				: e.getClass().getSimpleName() + ": " + firstLine(e.getMessage());
+		return "The edit engine failed (" + message + "); nothing was changed";
+	}
+
+	private static String firstLine(String text) {
+		int end = text.indexOf('\n');
+		return end < 0 ? text : text.substring(0, end);
+	}
+
+	private static long millis(long start) {
+		return (System.nanoTime() - start) / 1_000_000;
+	}
+}
