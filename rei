@@ -22,6 +22,7 @@ REI_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 REI_JARS=(
     "generators/org.rei.cli/target/rei-cli.jar"
     "bundles/org.rei.dsl.ide/target/rei-language-server.jar"
+    "bundles/org.rei.dsl.edit/target/rei-room-editor.jar"
     "runtime-monitor/target/rei-monitor.jar"
     "sut-kits/java/target/rei-sut-kit.jar"
 )

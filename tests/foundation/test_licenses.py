@@ -595,6 +595,9 @@ def test_the_artifacts_have_the_components_they_are_known_to_have(inventory: dic
             "maven:org.eclipse.lsp4j:org.eclipse.lsp4j"} <= keys[
         "bundles/org.rei.dsl.ide/target/rei-language-server.jar"]
     assert {"rei", "maven:io.netty:netty-common"} <= keys["sut-kits/java/target/rei-sut-kit.jar"]
+    assert {"rei", "maven:org.eclipse.xtext:org.eclipse.xtext", "maven:org.antlr:antlr-runtime",
+            "maven:com.fasterxml.jackson.core:jackson-databind"} <= keys[
+        "bundles/org.rei.dsl.edit/target/rei-room-editor.jar"]
     assert {"python:rei", "python:numpy", "python:autobahn", "python:txaio"} <= keys[PYTHON_ARTIFACT]
     site = next(artifact for artifact in keys if artifact.endswith(".zip"))
     assert {"p2:org.rei.eclipse", "p2:org.eclipse.lsp4j",

@@ -24,6 +24,7 @@ MIN_JAVA_VERSION = 17
 JARS: Mapping[str, str] = {
     "cli": "generators/org.rei.cli/target/rei-cli.jar",
     "language-server": "bundles/org.rei.dsl.ide/target/rei-language-server.jar",
+    "room-editor": "bundles/org.rei.dsl.edit/target/rei-room-editor.jar",  # the edit engine of `rei edit`
     "monitor": "runtime-monitor/target/rei-monitor.jar",
     "sut-kit": "sut-kits/java/target/rei-sut-kit.jar",  # the Java client kit of external SUTs (docs/sut.md)
 }
