@@ -23,7 +23,6 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
-import org.rei.dsl.edit.EditOperation;
 import org.rei.dsl.edit.EditRefusedException;
 import org.rei.dsl.edit.RoomDocument;
 import org.rei.dsl.edit.RoomEditSetup;
@@ -31,16 +30,19 @@ import org.rei.dsl.edit.ValidationIssue;
 
 import com.fasterxml.jackson.annotation.JsonIgnore;
 import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.core.json.JsonWriteFeature;
 import com.fasterxml.jackson.databind.DeserializationFeature;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.json.JsonMapper;
 import com.fasterxml.jackson.databind.node.NullNode;
 
 /**
  * The room editor's edit engine (main class of rei-room-editor.jar): the HTTP server of {@code rei edit} starts it
  * as a child process and talks to it in JSON lines, as docs/room-editor.md ("HTTP server ⇄ edit engine") says.
  * <p>
- * One request per line on stdin, one answer line on stdout per request, in order (blank lines are skipped); logs go
+ * One request per line on stdin (UTF-8), one answer line on stdout per request, in order (blank lines are skipped;
+ * answers are ASCII, JSON's escapes standing for other characters); logs go
  * to stderr, and so does anything else that would print to {@code System.out} (Xtext's log4j configuration logs to
  * the console): stdout carries answers only. The engine exits 0 when stdin closes.
  * <p>
@@ -53,10 +55,15 @@ public final class EditServer {
 
 	static final List<String> COMMANDS = List.of("open", "state", "apply", "undo", "redo", "reset");
 
-	/** The answers' mapper: records as their components, ValidationIssue without its convenience getter. */
-	private static final ObjectMapper MAPPER = new ObjectMapper()
+	/**
+	 * Records as their components, ValidationIssue without its convenience getter; answers in ASCII (other
+	 * characters as \\u escapes), so that they read the same whatever encoding the reader assumes.
+	 */
+	private static final ObjectMapper MAPPER = JsonMapper.builder()
 			.enable(DeserializationFeature.FAIL_ON_TRAILING_TOKENS)
-			.addMixIn(ValidationIssue.class, IssueMixIn.class);
+			.enable(JsonWriteFeature.ESCAPE_NON_ASCII)
+			.addMixIn(ValidationIssue.class, IssueMixIn.class)
+			.build();
 
 	private abstract static class IssueMixIn {
 		@JsonIgnore
@@ -171,8 +178,8 @@ public final class EditServer {
 			open();
 			return state();
 		case "apply":
-			List<EditOperation> operations = OperationDecoder.decodeAll(request.get("operations"));
-			open().apply(operations);
+			RoomDocument edited = open();
+			edited.apply(OperationDecoder.decodeAll(request.get("operations")));
 			return state();
 		case "undo":
 			if (!open().canUndo()) {

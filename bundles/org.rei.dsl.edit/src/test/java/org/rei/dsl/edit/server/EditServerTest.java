@@ -269,6 +269,20 @@ class EditServerTest {
 	}
 
 	@Test
+	void answersAreAsciiAndRequestsUtf8() throws Exception {
+		open();
+		String typed = "// Küche – ☕\n" + original;
+		requests++;
+		stdin.write(("{\"id\": 2, \"command\": \"reset\", \"text\": " + JSON.writeValueAsString(typed) + "}\n")
+				.getBytes(StandardCharsets.UTF_8));
+		stdin.flush();
+		String line = stdout.next();
+		assertTrue(line.chars().allMatch(c -> c < 128), line);
+		assertTrue(line.contains("K\\u00FCche \\u2013 \\u2615"), line);
+		assertEquals(typed, JSON.readTree(line).get("text").asText());
+	}
+
+	@Test
 	void theAnswersCarryTheContractsFields() throws Exception {
 		JsonNode opened = open();
 		assertEquals(List.of("id", "ok", "text", "diagram", "issues", "palette", "canUndo", "canRedo"),
