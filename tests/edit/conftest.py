@@ -29,16 +29,17 @@ def room_editor_jar() -> Path:
 @pytest.fixture
 def open_editor(tmp_path: Path, room_editor_jar: Path, java: toolchain.Java) -> Iterator[Callable[..., Editor]]:
     """``open_editor("examples/simple_navigation.rei")``: a copy of the file in tmp_path, open in an editor
-    served on loopback; ``timeout`` bounds each engine request."""
+    served on loopback (``copy=False``: the file itself, for tests that do not save); ``timeout`` bounds each engine
+    request."""
     opened: list[Editor] = []
 
-    def open_(source: str | Path, *, timeout: float = 120.0) -> Editor:
+    def open_(source: str | Path, *, timeout: float = 120.0, copy: bool = True) -> Editor:
         source = REPO_ROOT / source
-        case = tmp_path / source.name
-        shutil.copyfile(source, case)
+        case = tmp_path / source.name if copy else source
+        if copy:
+            shutil.copyfile(source, case)
         engine = EditEngine(engine_command(room_editor_jar, java.executable), timeout=timeout)
         session = EditSession(case, engine)
-        engine.on_restart = session.note
         server = EditServer(session).start()
         editor = Editor(case, session, server, engine)
         opened.append(editor)

@@ -122,7 +122,7 @@ def test_a_killed_or_hung_engine_is_replaced_and_keeps_the_edits(open_editor) ->
     moved = editor.apply({"op": "rotateObject", "name": "table1", "yawDegrees": 90})
     assert "object table1 : Table on F_3_3 yaw 90" in moved["text"]
     assert moved["text"].replace(" yaw 90", "") == edited
-    assert "started again" in editor.ok("GET", "/api/state")["notice"]
+    assert "started again" in moved["notice"] and editor.ok("GET", "/api/state")["notice"] is None
     assert state["dirty"] is True
 
     _signal_engine(editor, signal.SIGSTOP)  # hangs

@@ -49,7 +49,6 @@ def run(args: argparse.Namespace) -> int:
     except EngineError as error:
         engine.close()
         raise CommandError(f"{case}: {error}") from None
-    engine.on_restart = session.note
     try:
         server = EditServer(session, port=args.port).start()
     except EditServerError as error:

@@ -40,11 +40,10 @@ class EngineError(RuntimeError):
 class EditEngine:
     """Runs ``command`` (``java -jar rei-room-editor.jar``) and talks to it from one thread of its own."""
 
-    def __init__(self, command: Sequence[str], *, timeout: float = REQUEST_TIMEOUT,
-                 on_restart: Callable[[str], None] | None = None) -> None:
+    def __init__(self, command: Sequence[str], *, timeout: float = REQUEST_TIMEOUT) -> None:
         self._command = list(command)
         self._timeout = timeout
-        self.on_restart = on_restart  # told when the engine had to be started again
+        self._restarted = False  # since the last take_restart()
         self._jobs: queue.Queue[tuple[dict[str, Any], Future[dict[str, Any]]] | None] = queue.Queue()
         self._process: subprocess.Popen[str] | None = None
         self._answers: queue.Queue[str | None] = queue.Queue()
@@ -60,6 +59,11 @@ class EditEngine:
         future: Future[dict[str, Any]] = Future()
         self._jobs.put(({"command": command, **fields}, future))
         return future.result()
+
+    def take_restart(self) -> bool:
+        """Whether the engine had to be started again (it died) since the last call: its undo history is gone."""
+        restarted, self._restarted = self._restarted, False
+        return restarted
 
     @property
     def pid(self) -> int | None:
@@ -106,8 +110,8 @@ class EditEngine:
             self._start()
             answer = self._exchange(message)
             restarted = True
-        if restarted and self.on_restart is not None:
-            self.on_restart("the edit engine was started again; the undo history is gone")
+        if restarted:
+            self._restarted = True
         return answer
 
     def _start(self) -> None:
@@ -128,9 +132,10 @@ class EditEngine:
         threading.Thread(target=_pump, args=(process.stderr, self._log), name="rei-edit-engine-err",
                          daemon=True).start()
         if crashed and self._opened is not None:
+            text = self._text  # the open below answers with the file's text
             self._exchange({"command": "open", "path": self._opened})
-            if self._text is not None:
-                self._exchange({"command": "reset", "text": self._text})
+            if text is not None:
+                self._exchange({"command": "reset", "text": text})
 
     def _exchange(self, message: dict[str, Any]) -> dict[str, Any]:
         process = self._process

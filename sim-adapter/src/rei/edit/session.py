@@ -133,12 +133,6 @@ class EditSession:
     def close(self) -> None:
         self._engine.close()
 
-    def note(self, message: str) -> None:
-        """A one-off message for the page (e.g. the engine was restarted)."""
-        with self._lock:
-            self._notice = message
-            self._version += 1
-
     # -- inside ---------------------------------------------------------------------------------------------------
 
     def _status(self) -> dict[str, Any]:
@@ -148,7 +142,12 @@ class EditSession:
 
     def _change(self, command: str, **fields: Any) -> dict[str, Any]:
         with self._lock:
-            self._answer = self._engine.request(command, **fields)
+            try:
+                self._answer = self._engine.request(command, **fields)
+            finally:
+                if self._engine.take_restart():
+                    self._notice = "the edit engine had stopped and was started again: the undo history is gone"
+                    self._version += 1
             self._version += 1
             return self.state()
 
