@@ -5,6 +5,10 @@ import type { Zone } from "../model";
 export const ROBOT_TRUE = "#1f3a93";
 export const ROBOT_BELIEVED = "#e67e22";
 export const HUMAN = "#b5651d";
+/** The room as both the live view and the room editor draw it. */
+export const FLOOR = "#efebe4";
+export const FLOOR_EDGE = "#ddd6ca";
+export const WALL = "#4a4a4a";
 export const LASER = "rgba(214, 22, 106, 0.55)";
 export const ZONE: Readonly<Record<Zone, string>> = { FAR: "#59a14f", CLOSE: "#f28e2b", COLLISION: "#e15759" };
 export const TASK = { PENDING: "#9aa0a6", ACTIVE: "#1f77b4", SUCCEEDED: "#2ca02c", FAILED: "#d62728" } as const;

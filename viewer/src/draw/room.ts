@@ -4,7 +4,7 @@
 import type { PathSpec, World, WorldObject } from "../config";
 import type { Transform } from "../geometry";
 import { boxCorners } from "../geometry";
-import { cssColour, HUMAN } from "./colours";
+import { cssColour, FLOOR, FLOOR_EDGE, HUMAN, WALL } from "./colours";
 
 const ORDER: Readonly<Record<string, number>> = { FLOOR: 0, STATIC: 1, DYNAMIC: 2, WALL: 3 };
 
@@ -31,11 +31,11 @@ export function drawRoom(ctx: CanvasRenderingContext2D, width: number, height: n
     for (const body of bodies) {
       outline(ctx, tf, body);
       if (body.category === "FLOOR") {
-        ctx.fillStyle = "#efebe4";
-        ctx.strokeStyle = "#ddd6ca";
+        ctx.fillStyle = FLOOR;
+        ctx.strokeStyle = FLOOR_EDGE;
         ctx.lineWidth = 0.5;
       } else {
-        ctx.fillStyle = body.category === "WALL" ? "#4a4a4a" : cssColour(body.colour);
+        ctx.fillStyle = body.category === "WALL" ? WALL : cssColour(body.colour);
         ctx.strokeStyle = "#333";
         ctx.lineWidth = 0.8;
       }
