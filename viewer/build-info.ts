@@ -10,7 +10,7 @@ import { readdirSync, readFileSync, statSync, writeFileSync } from "node:fs";
 import { join, sep } from "node:path";
 import type { Plugin } from "vite";
 
-export const SOURCES = ["index.html", "package.json", "package-lock.json", "tsconfig.json", "vite.config.ts",
+export const SOURCES = ["index.html", "edit.html", "package.json", "package-lock.json", "tsconfig.json", "vite.config.ts",
   "build-info.ts", "src"];
 
 function files(root: string, entry: string): string[] {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: EPL-2.0
-// Builds the live view into the Python package (rei/view/static), which ships it: a user needs no Node.js.
+// Builds the two pages into the Python package (rei/view/static), which ships them: a user needs no Node.js.
+// index.html is the live view of a run (`rei run --view`), edit.html the room editor (`rei edit`).
 // That folder is generated (emptied on every build, with build-info.json to prove it): never edit it by hand.
 import { fileURLToPath } from "node:url";
 import { defineConfig } from "vite";
@@ -27,6 +28,9 @@ export default defineConfig({
     sourcemap: false,
     reportCompressedSize: false,
     rolldownOptions: {
+      input: { index: here("index.html"), edit: here("edit.html") },
+      // what both pages use (style.css, colours, geometry) goes into one chunk, named for what it is
+      output: { chunkFileNames: "assets/shared-[hash].js" },
       onwarn(warning, warn) {
         // autobahn's JSON polyfill (json2.js) evals, but only where the browser has no JSON.
         if (warning.code === "EVAL" && (warning.id ?? "").includes("autobahn/lib/polyfill/json.js")) return;

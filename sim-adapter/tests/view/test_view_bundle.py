@@ -16,8 +16,8 @@ from rei.view import STATIC_DIR
 
 VIEWER = Path(__file__).resolve().parents[3] / "viewer"
 #: Keep in step with SOURCES in viewer/build-info.ts.
-SOURCES = ("index.html", "package.json", "package-lock.json", "tsconfig.json", "vite.config.ts", "build-info.ts",
-           "src")
+SOURCES = ("index.html", "edit.html", "package.json", "package-lock.json", "tsconfig.json", "vite.config.ts",
+           "build-info.ts", "src")
 
 
 def sources_digest(root: Path) -> str:

@@ -30,10 +30,13 @@ def test_it_serves_the_built_page_and_its_assets_on_loopback() -> None:
         assert server.url.startswith("http://127.0.0.1:")
         status, kind, body = get(server.url)
         assert status == 200 and kind.startswith("text/html")
+        # the same build holds the room editor's page (rei edit serves it); every asset belongs to one of the two
+        status, kind, editor = get(server.url + "edit.html")
+        assert status == 200 and kind.startswith("text/html")
         assets = [p for p in (STATIC_DIR / "assets").iterdir()]
         assert {p.suffix for p in assets} == {".js", ".css"}
         for asset in assets:
-            assert f"assets/{asset.name}".encode() in body
+            assert f"assets/{asset.name}".encode() in body + editor
             status, kind, served = get(server.url + f"assets/{asset.name}")
             assert status == 200 and served == asset.read_bytes()
             assert "javascript" in kind or kind.startswith("text/css")
