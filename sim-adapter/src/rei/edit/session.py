@@ -72,15 +72,15 @@ class EditSession:
                     "diagram": answer.get("diagram"), "issues": answer.get("issues", []),
                     "palette": answer.get("palette", []), "notice": notice}
 
+    # No lock for these two: `rei edit` asks them when it stops, and a request may hold the lock for as long as a
+    # hung engine takes to be stopped. Each reads references that are replaced whole, never changed in place.
     @property
     def text(self) -> str:
-        with self._lock:
-            return str(self._answer["text"])
+        return str(self._answer["text"])
 
     @property
     def dirty(self) -> bool:
-        with self._lock:
-            return self._answer["text"] != self._disk.text
+        return self._answer["text"] != self._disk.text
 
     # -- what the page does -------------------------------------------------------------------------------------
 

@@ -1,0 +1,222 @@
+# SPDX-License-Identifier: EPL-2.0
+"""The room editor in Debian's chromium: what a test engineer does with the mouse ends up in the `.rei` file, and
+only that; validation shows on the diagram's elements; a change of the file on disk is noticed.
+
+Each test opens a copy of a file in a real edit engine behind a real server (tests/edit/conftest.py) and drives
+the page with Playwright's mouse and keyboard, as a user would.
+"""
+
+from __future__ import annotations
+
+import difflib
+import os
+import re
+import time
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+from edit_helpers import Editor
+from playwright.sync_api import Browser, Locator, Page
+
+PAGE_TIMEOUT_MS = 60_000
+VIEWPORT = {"width": 1400, "height": 900}
+#: Screenshots the tests leave for people (target/ is build output, git-ignored); README's come from here.
+REPO = Path(__file__).resolve().parents[2]
+SHOTS = REPO / "target" / "edit"
+
+
+@pytest.fixture
+def page(browser: Browser) -> Iterator[Page]:
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    opened = browser.new_page(viewport=VIEWPORT)  # type: ignore[arg-type]
+    opened.set_default_timeout(PAGE_TIMEOUT_MS)
+    errors: list[str] = []
+    opened.on("pageerror", lambda error: errors.append(str(error)))
+    yield opened
+    opened.close()
+    assert not errors, f"the page threw: {errors}"
+
+
+def _open(page: Page, editor: Editor) -> None:
+    page.goto(editor.server.url)
+    page.locator('[data-kind="robot"]').wait_for()
+
+
+def _element(page: Page, kind: str, name: str) -> Locator:
+    return page.locator(f'[data-kind="{kind}"][data-name="{name}"]').first
+
+
+def _centre(locator: Locator) -> tuple[float, float]:
+    box = locator.bounding_box()
+    assert box is not None, f"{locator} is not drawn"
+    return box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+
+
+def _click_floor(page: Page, name: str) -> None:
+    x, y = _centre(_element(page, "floor", name))
+    page.mouse.click(x, y)
+
+
+def _settled(editor: Editor, page: Page, version: int, timeout: float = 60.0) -> int:
+    """Waits until an operation the page sent landed (the session moved past ``version``) and the page drew the
+    state that came back."""
+    deadline = time.monotonic() + timeout
+    while (now := int(editor.session.status()["version"])) <= version:
+        if time.monotonic() > deadline:
+            raise AssertionError(f"no change reached the editor within {timeout} s")
+        time.sleep(0.05)
+    page.wait_for_function("v => (window.reiEdit?.state?.version ?? 0) >= v", arg=now)
+    return now
+
+
+def _drag(page: Page, source: Locator, target: Locator) -> None:
+    (x0, y0), (x1, y1) = _centre(source), _centre(target)
+    page.mouse.move(x0, y0)
+    page.mouse.down()
+    page.mouse.move((x0 + x1) / 2, (y0 + y1) / 2, steps=5)
+    page.mouse.move(x1, y1, steps=5)
+    page.mouse.up()
+
+
+def test_drag_add_goal_draw_path_and_save_change_only_those_lines(open_editor, page: Page, run_cli) -> None:
+    editor: Editor = open_editor("examples/simple_navigation.rei")
+    before = editor.case.read_text(encoding="utf-8")
+    _open(page, editor)
+    page.screenshot(path=str(SHOTS / "opened.png"))
+    version = editor.session.status()["version"]
+
+    _drag(page, _element(page, "object", "table1"), _element(page, "floor", "F_3_3"))
+    version = _settled(editor, page, version)
+    page.locator("#dirty").wait_for(state="visible")
+
+    page.click("#add-goal")
+    _click_floor(page, "F_2_3")
+    version = _settled(editor, page, version)
+    page.locator('[data-kind="goal"][data-index="2"]').wait_for()
+
+    _element(page, "human", "walker").click()
+    page.click("#draw-path")
+    for floor in ("F_0_2", "F_2_2", "F_4_3"):
+        _click_floor(page, floor)
+    page.click("#finish-path")
+    version = _settled(editor, page, version)
+
+    page.click("#save")
+    page.locator("#dirty").wait_for(state="hidden")
+    page.screenshot(path=str(SHOTS / "edited.png"))
+    after = editor.case.read_text(encoding="utf-8")
+    assert run_cli("validate", editor.case).returncode == 0
+
+    changed = [line for line in difflib.ndiff(before.splitlines(), after.splitlines()) if line[:1] in "+-"]
+    removed = [line[2:].strip() for line in changed if line.startswith("-")]
+    added = [line[2:].strip() for line in changed if line.startswith("+")]
+    assert removed == ["object table1 : Table on F_2_1",
+                       "human walker trajectory [F_1_2 @ 0s, F_3_2 @ 6s, F_4_2 @ 9s] loop"], changed
+    assert added[0] == "object table1 : Table on F_3_3", changed
+    assert re.fullmatch(r"human walker trajectory \[F_0_2 @ 0s, F_2_2 @ \d+s, F_4_3 @ \d+s\] loop", added[1]), changed
+    assert added[2:] == ["goto F_2_3"], changed
+    assert after.index("goto F_2_3") > after.index("goto F_5_3"), "the new goal is not the last"
+
+
+def test_two_objects_on_one_floor_show_the_validators_message_on_both(open_editor, page: Page) -> None:
+    editor: Editor = open_editor("examples/simple_navigation.rei")
+    _open(page, editor)
+    version = editor.session.status()["version"]
+    page.click('[data-type="Box"]')
+    _click_floor(page, "F_2_1")  # table1's floor
+    _settled(editor, page, version)
+    issues = page.locator("#issues")
+    issues.get_by_text("is already taken by 'table1'").wait_for()
+    for name in ("table1", "box1"):
+        assert "has-issue" in (_element(page, "object", name).get_attribute("class") or "")
+        label = page.locator(f'.issue-label[data-for="{name}"]')
+        label.wait_for(state="visible")
+        assert "already taken" in label.inner_text()
+    page.screenshot(path=str(SHOTS / "issue.png"))
+    assert editor.session.dirty, "the page saved without being asked"
+
+
+def test_a_file_changed_on_disk_is_noticed(open_editor, page: Page) -> None:
+    editor: Editor = open_editor("examples/simple_navigation.rei")
+    _open(page, editor)
+    text = editor.case.read_text(encoding="utf-8")
+    # No unsaved edits: the editor follows the file and says so.
+    _rewrite(editor.case, text.replace("shelf1 : Shelf on F_0_3", "shelf1 : Shelf on F_1_3"))
+    page.locator("#toast").get_by_text("changed on disk").wait_for()
+    page.wait_for_function("""() => {
+        const shelf = document.querySelector('[data-kind="object"][data-name="shelf1"]');
+        return shelf !== null && shelf.getAttribute("data-floor") === "F_1_3";
+    }""")
+    # Unsaved edits: the editor asks, and keeps both versions until the user chooses.
+    version = editor.session.status()["version"]
+    _drag(page, _element(page, "object", "table1"), _element(page, "floor", "F_3_3"))
+    _settled(editor, page, version)
+    theirs = text.replace("close 0.25", "close 0.5")
+    _rewrite(editor.case, theirs)
+    banner = page.locator("#disk-banner")
+    banner.wait_for(state="visible")
+    assert "changed on disk" in banner.inner_text()
+    page.click("#save")
+    page.locator("#toast").get_by_text("changed on disk").wait_for()
+    assert editor.case.read_text(encoding="utf-8") == theirs
+    page.click("#reload")
+    banner.wait_for(state="hidden")
+    page.locator("#dirty").wait_for(state="hidden")
+    assert editor.session.text == theirs
+
+
+def test_graph_rooms_gain_and_lose_floors_and_walls(open_editor, page: Page, run_cli, tmp_path: Path) -> None:
+    editor: Editor = open_editor("tests/edit/rooms/corridor.rei")
+    _open(page, editor)
+    floors = page.locator('[data-kind="floor"]')
+    assert floors.count() == 3
+    version = editor.session.status()["version"]
+    ghost = page.locator('[data-kind="ghost"]').first
+    ghost.click()
+    version = _settled(editor, page, version)
+    page.wait_for_function("document.querySelectorAll('[data-kind=\"floor\"]').length === 4")
+    _element(page, "floor", "A").click(position={"x": 4, "y": 4})  # a corner: the robot stands in the middle
+    page.locator("#wall-bottom").click()  # only free sides get a strip: the new floor may be on top
+    version = _settled(editor, page, version)
+    _element(page, "wall", "W_A_bottom").wait_for()
+    page.click("#save")
+    page.locator("#dirty").wait_for(state="hidden")
+    assert run_cli("validate", editor.case).returncode == 0
+    text = editor.case.read_text(encoding="utf-8")
+    added = re.search(r"floor (\w+) (?:top|right|bottom|left) A", text)
+    assert added is not None and "floor A right B bottom W_A_bottom" in text and "wall W_A_bottom" in text, text
+    assert "// the corridor's comment stays" in text
+
+    _element(page, "wall", "W_A_bottom").click()
+    page.keyboard.press("Delete")
+    version = _settled(editor, page, version)
+    _element(page, "wall", "W_A_bottom").wait_for(state="detached")
+    _element(page, "floor", added.group(1)).click(position={"x": 4, "y": 4})
+    page.keyboard.press("Delete")
+    _settled(editor, page, version)
+    page.click("#save")
+    page.locator("#dirty").wait_for(state="hidden")
+    assert editor.case.read_text(encoding="utf-8") == (REPO / "tests/edit/rooms/corridor.rei").read_text(encoding="utf-8")
+
+
+def test_generated_rooms_and_the_examples_open(open_editor, page: Page, run_cli, tmp_path: Path) -> None:
+    generated = tmp_path / "generated"
+    assert run_cli("gen-rooms", "--size", "small", "--count", "1", "--seed", "3", "-o", generated,
+                   "--no-check").returncode == 0
+    cases = [*sorted(generated.glob("*.rei")), *sorted(Path("examples").glob("*.rei"))]
+    for case in cases:
+        editor: Editor = open_editor(case.resolve(), copy=False)  # in place: own_types imports a neighbour
+        _open(page, editor)
+        diagram = editor.session.state()["diagram"]
+        assert page.locator('[data-kind="floor"]').count() == len(diagram["room"]["floors"]), case
+        assert page.locator('[data-kind="object"]').count() == len(diagram["objects"]), case
+        assert page.locator('[data-kind="goal"]').count() == len(diagram["mission"]["goals"]), case
+
+
+def _rewrite(path: Path, text: str) -> None:
+    """Writes as another program would, with a modification time the editor has not seen."""
+    stamp = path.stat().st_mtime_ns
+    path.write_text(text, encoding="utf-8")
+    if path.stat().st_mtime_ns == stamp:
+        os.utime(path, ns=(stamp + 1_000_000, stamp + 1_000_000))
