@@ -153,6 +153,12 @@ def monitor_jar() -> Path:
 
 
 @pytest.fixture(scope="session")
+def room_editor_jar() -> Path:
+    """`rei-room-editor.jar`, the room editor's edit engine (JSON lines over stdio)."""
+    return _jar("room-editor")
+
+
+@pytest.fixture(scope="session")
 def sut_kit_jar() -> Path:
     """`rei-sut-kit.jar`, the Java client kit of external SUTs."""
     return _jar("sut-kit")

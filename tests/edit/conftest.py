@@ -16,16 +16,6 @@ from rei.edit import EditEngine, EditServer, EditSession, engine_command
 REPO_ROOT = Path(__file__).resolve().parents[2]
 
 
-@pytest.fixture(scope="session")
-def room_editor_jar() -> Path:
-    """`rei-room-editor.jar`, the edit engine."""
-    try:
-        return toolchain.find_jar("room-editor", REPO_ROOT)
-    except toolchain.ToolchainError as error:
-        problem = str(error)
-    pytest.fail(problem, pytrace=False)
-
-
 @pytest.fixture
 def open_editor(tmp_path: Path, room_editor_jar: Path, java: toolchain.Java) -> Iterator[Callable[..., Editor]]:
     """``open_editor("examples/simple_navigation.rei")``: a copy of the file in tmp_path, open in an editor

@@ -19,6 +19,8 @@ import pytest
 
 from rei.artifacts import ArtifactError
 from rei.artifacts.monitor import read_monitor
+from rei.edit import TOKEN_HEADER
+from rei.edit.server import ROUTES
 from rei.evaluation import DEFAULT_UTILITIES, load_declared_transitions, load_declared_utilities
 from rei.evaluation.signals import DEFAULT_TRANSITIONS, SIGNAL_RECORD, Signal
 from rei.mission.executor import MissionEventKind
@@ -36,8 +38,8 @@ def contract(repo_root: Path) -> dict:
 
 
 @pytest.fixture(scope="module")
-def java_facts(java, monitor_jar: Path, sut_kit_jar: Path) -> dict:
-    result = subprocess.run([java.executable, "-cp", f"{monitor_jar}:{sut_kit_jar}",
+def java_facts(java, monitor_jar: Path, sut_kit_jar: Path, room_editor_jar: Path) -> dict:
+    result = subprocess.run([java.executable, "-cp", f"{monitor_jar}:{sut_kit_jar}:{room_editor_jar}",
                              str(HERE / "contract" / "JavaVocabulary.java")],
                             capture_output=True, text=True, timeout=120, check=False)
     assert result.returncode == 0, result.stderr
@@ -74,6 +76,39 @@ def test_java_copies(contract: dict, java_facts: dict) -> None:
     assert java_facts["sut_environment"] == sut["environment"]
     assert java_facts["warm_jvm_request"] == contract["warm_jvm"]["request"]
     assert java_facts["warm_jvm_answer"] == contract["warm_jvm"]["answer"]
+    editor = contract["room_editor"]
+    assert java_facts["room_editor_commands"] == editor["engine_commands"]
+    assert java_facts["room_editor_operations"] == editor["operations"]
+    assert java_facts["room_editor_point"] == editor["point"]
+    assert java_facts["room_editor_sides"] == editor["sides"]
+
+
+def test_room_editor_python_copies(contract: dict) -> None:
+    editor = contract["room_editor"]
+    assert TOKEN_HEADER == editor["token_header"]
+    assert [f"{method} {path}" for method, path in ROUTES] == editor["api"]
+
+
+def test_room_editor_typescript_copies(contract: dict, repo_root: Path) -> None:
+    editor = contract["room_editor"]
+    source = repo_root / "viewer" / "src" / "edit"
+    types = (source / "types.ts").read_text(encoding="utf-8")
+    operations = {op: re.findall(r"(\w+)\??:", fields) for op, fields in
+                  re.findall(r'\{ op: "(\w+)";([^}]*)\}', types)}
+    assert operations == editor["operations"]
+    point = re.search(r"export interface PointSpec \{([^}]*)\}", types)
+    assert point is not None, "viewer/src/edit/types.ts: no `export interface PointSpec`"
+    assert re.findall(r"(\w+):", point[1]) == editor["point"]
+    side = re.search(r"export type Side = ([^;]+);", types)
+    assert side is not None, "viewer/src/edit/types.ts: no `export type Side = ...;`"
+    assert re.findall(r'"(\w+)"', side[1]) == editor["sides"]
+    api = (source / "api.ts").read_text(encoding="utf-8")
+    assert set(re.findall(r'"(X-REI-[\w-]+)"', api)) == {editor["token_header"]}
+    calls = {f"{method} {path}" for method, path in re.findall(r'"(GET|POST)", "(/api/\w+)"', api)}
+    commands = re.search(r"command\(name: ([^)]*)\)", api)
+    assert commands is not None, "viewer/src/edit/api.ts: no `command(name: ...)`"
+    calls |= {f"POST /api/{name}" for name in re.findall(r'"(\w+)"', commands[1])}
+    assert calls == set(editor["api"])
 
 
 def test_typescript_copies(contract: dict, repo_root: Path) -> None:

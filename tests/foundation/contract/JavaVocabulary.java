@@ -7,6 +7,8 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
+import org.rei.dsl.edit.EditOperation;
+import org.rei.dsl.edit.server.Protocol;
 import org.rei.monitor.config.MonitorSpec;
 import org.rei.monitor.signals.Signal;
 import org.rei.sut.kit.SutClient;
@@ -18,7 +20,7 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 
 /**
  * The Java copies of contract/vocabulary.json's facts, read from the built jars' constants and printed as JSON for
- * test_vocabulary_contract.py ({@code java -cp rei-monitor.jar:rei-sut-kit.jar JavaVocabulary.java}).
+ * test_vocabulary_contract.py ({@code java -cp rei-monitor.jar:rei-sut-kit.jar:rei-room-editor.jar JavaVocabulary.java}).
  */
 public final class JavaVocabulary {
 	public static void main(String[] args) throws Exception {
@@ -37,6 +39,17 @@ public final class JavaVocabulary {
 				SutClient.ENV_AUTH_FILE));
 		facts.put("warm_jvm_request", CommandServer.REQUEST);
 		facts.put("warm_jvm_answer", CommandServer.ANSWER);
+		facts.put("room_editor_commands", Protocol.COMMANDS);
+		facts.put("room_editor_sides", Protocol.SIDES);
+		Map<String, List<String>> operations = new LinkedHashMap<>();
+		for (String op : Protocol.OPERATIONS) {
+			Class<?> record = Class.forName(EditOperation.class.getName() + "$" + Character.toUpperCase(op.charAt(0))
+					+ op.substring(1));
+			operations.put(op, Arrays.stream(record.getRecordComponents()).map(c -> c.getName()).toList());
+		}
+		facts.put("room_editor_operations", operations);
+		facts.put("room_editor_point", Arrays.stream(EditOperation.Waypoint.class.getRecordComponents())
+				.map(c -> c.getName()).toList());
 		System.out.println(new ObjectMapper().writeValueAsString(facts));
 	}
 }

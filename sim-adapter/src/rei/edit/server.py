@@ -14,7 +14,7 @@ import json
 import mimetypes
 import secrets
 import threading
-from collections.abc import Callable
+from collections.abc import Mapping
 from http import HTTPStatus
 from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 from pathlib import Path
@@ -28,6 +28,12 @@ from rei.view import STATIC_DIR
 
 PAGE = "edit.html"
 TOKEN_HEADER = "X-REI-Token"
+#: The page's requests (docs/room-editor.md) and the ``EditSession`` method that answers each.
+ROUTES: Mapping[tuple[str, str], str] = {
+    ("GET", "/api/state"): "state", ("GET", "/api/status"): "status", ("POST", "/api/apply"): "apply",
+    ("POST", "/api/undo"): "undo", ("POST", "/api/redo"): "redo", ("POST", "/api/save"): "save",
+    ("POST", "/api/reload"): "reload", ("POST", "/api/keep"): "keep",
+}
 #: A room's text is small; a bigger body is a mistake or an attack.
 MAX_BODY = 4 * 1024 * 1024
 
@@ -93,25 +99,14 @@ class EditServer:
 
     # -- requests -----------------------------------------------------------------------------------------------
 
-    def _routes(self) -> dict[tuple[str, str], Callable[[dict[str, Any]], dict[str, Any]]]:
-        session = self.session
-
-        def apply(body: dict[str, Any]) -> dict[str, Any]:
+    def _answer(self, name: str, body: dict[str, Any]) -> dict[str, Any]:
+        if name == "apply":
             operations = body.get("operations")
             if not isinstance(operations, list) or not operations:
                 raise _BadRequest('expected {"operations": [ ... ]} with at least one operation')
-            return session.apply(operations)
-
-        return {
-            ("GET", "/api/state"): lambda body: session.state(),
-            ("GET", "/api/status"): lambda body: session.status(),
-            ("POST", "/api/apply"): apply,
-            ("POST", "/api/undo"): lambda body: session.undo(),
-            ("POST", "/api/redo"): lambda body: session.redo(),
-            ("POST", "/api/save"): lambda body: session.save(),
-            ("POST", "/api/reload"): lambda body: session.reload(),
-            ("POST", "/api/keep"): lambda body: session.keep(),
-        }
+            return self.session.apply(operations)
+        answer: dict[str, Any] = getattr(self.session, name)()
+        return answer
 
     def _allowed(self, headers: Any) -> str | None:
         """Why a request to ``/api/`` is refused, or None."""
@@ -128,7 +123,6 @@ class EditServer:
 
     def _handler_class(self) -> type[BaseHTTPRequestHandler]:
         editor = self
-        routes = self._routes()
 
         class Handler(BaseHTTPRequestHandler):
             server_version = "rei-edit"
@@ -161,13 +155,13 @@ class EditServer:
                 if refusal is not None:
                     self._send(HTTPStatus.FORBIDDEN, {"error": refusal})
                     return
-                route = routes.get((method, path))
+                route = ROUTES.get((method, path))
                 if route is None:
                     self._send(HTTPStatus.NOT_FOUND, {"error": f"no {method} {path}"})
                     return
                 try:
                     body = self._body() if method == "POST" else {}
-                    self._send(HTTPStatus.OK, route(body))
+                    self._send(HTTPStatus.OK, editor._answer(route, body))
                 except _BadRequest as error:
                     self._send(error.status, {"error": str(error)})
                 except SessionConflict as error:

@@ -53,8 +53,6 @@ import com.fasterxml.jackson.databind.node.NullNode;
  */
 public final class EditServer {
 
-	static final List<String> COMMANDS = List.of("open", "state", "apply", "undo", "redo", "reset");
-
 	/**
 	 * Records as their components, ValidationIssue without its convenience getter; answers in ASCII (other
 	 * characters as \\u escapes), so that they read the same whatever encoding the reader assumes.
@@ -113,7 +111,7 @@ public final class EditServer {
 
 	/** Answers requests until stdin closes. */
 	public void run() throws IOException {
-		log.println("rei-room-editor: ready (JSON lines on stdin: " + String.join(", ", COMMANDS) + ")");
+		log.println("rei-room-editor: ready (JSON lines on stdin: " + String.join(", ", Protocol.COMMANDS) + ")");
 		for (String line = requests.readLine(); line != null; line = requests.readLine()) {
 			if (line.isBlank()) {
 				continue;
@@ -164,10 +162,10 @@ public final class EditServer {
 	private Map<String, Object> handle(JsonNode request) throws RequestException, IOException {
 		JsonNode command = request.get("command");
 		if (command == null || command.isNull()) {
-			throw new RequestException("missing field 'command' (one of " + String.join(", ", COMMANDS) + ")");
+			throw new RequestException("missing field 'command' (one of " + String.join(", ", Protocol.COMMANDS) + ")");
 		}
 		if (!command.isTextual()) {
-			throw new RequestException("'command' must be a string (one of " + String.join(", ", COMMANDS)
+			throw new RequestException("'command' must be a string (one of " + String.join(", ", Protocol.COMMANDS)
 					+ "), got " + OperationDecoder.describe(command));
 		}
 		switch (command.asText()) {
@@ -203,7 +201,7 @@ public final class EditServer {
 			return state();
 		default:
 			throw new RequestException("unknown command '" + command.asText() + "', expected one of "
-					+ String.join(", ", COMMANDS));
+					+ String.join(", ", Protocol.COMMANDS));
 		}
 	}
 

@@ -8,7 +8,9 @@ import java.util.ArrayList;
 import java.util.EnumMap;
 import java.util.Iterator;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
+import java.util.stream.Collectors;
 
 import org.rei.context.Direction;
 import org.rei.dsl.edit.EditOperation;
@@ -37,11 +39,9 @@ import com.fasterxml.jackson.databind.JsonNode;
  */
 final class OperationDecoder {
 
-	static final List<String> OPS = List.of("moveObject", "rotateObject", "addObject", "deleteObject", "addHuman",
-			"addFloor", "removeFloor", "addWall", "removeWall", "setTrajectory", "addGoal", "removeGoal", "moveGoal");
-
-	private static final Map<String, Direction> SIDES = Map.of("top", Direction.TOP, "right", Direction.RIGHT,
-			"bottom", Direction.BOTTOM, "left", Direction.LEFT);
+	/** The protocol's side names onto the metamodel's directions (TOP for "top", ...). */
+	private static final Map<String, Direction> SIDES = Protocol.SIDES.stream()
+			.collect(Collectors.toUnmodifiableMap(side -> side, side -> Direction.valueOf(side.toUpperCase(Locale.ROOT))));
 
 	private OperationDecoder() {
 	}
@@ -72,7 +72,7 @@ final class OperationDecoder {
 		}
 		JsonNode op = node.get("op");
 		if (op == null || !op.isTextual()) {
-			throw new RequestException("operation " + index + " has no 'op' (its kind, one of " + String.join(", ", OPS)
+			throw new RequestException("operation " + index + " has no 'op' (its kind, one of " + String.join(", ", Protocol.OPERATIONS)
 					+ ")" + (op == null ? "" : ", got " + describe(op)));
 		}
 		Fields f = new Fields(node, "operation " + index + " (" + op.asText() + ")");
@@ -105,7 +105,7 @@ final class OperationDecoder {
 			return new MoveGoal(f.integer("from"), f.integer("to"));
 		default:
 			throw new RequestException("operation " + index + ": unknown op '" + op.asText() + "', expected one of "
-					+ String.join(", ", OPS));
+					+ String.join(", ", Protocol.OPERATIONS));
 		}
 	}
 

@@ -1,0 +1,31 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.dsl.edit.server;
+
+import java.util.List;
+
+/**
+ * The engine's words in the room editor's protocol (docs/room-editor.md), public so that the contract test reads
+ * them from the built jar and compares them with contract/vocabulary.json, the Python server's and the page's.
+ */
+public final class Protocol {
+
+	/** The requests the engine answers. */
+	public static final List<String> COMMANDS = List.of("open", "state", "apply", "undo", "redo", "reset");
+
+	/**
+	 * The operations' {@code op} names: each is its {@link org.rei.dsl.edit.EditOperation} record's simple name with
+	 * a lower-case first letter, and its fields are that record's components.
+	 */
+	public static final List<String> OPERATIONS = List.of("moveObject", "rotateObject", "addObject", "deleteObject",
+			"addHuman", "addFloor", "removeFloor", "addWall", "removeWall", "setTrajectory", "addGoal", "removeGoal",
+			"moveGoal");
+
+	/** Sides of a floor and neighbour keys: the grammar's keywords. */
+	public static final List<String> SIDES = List.of("top", "right", "bottom", "left");
+
+	private Protocol() {
+	}
+}
