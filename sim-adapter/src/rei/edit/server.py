@@ -11,20 +11,18 @@ from __future__ import annotations
 
 import hmac
 import json
-import mimetypes
 import secrets
-import threading
 from collections.abc import Mapping
 from http import HTTPStatus
-from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
+from http.server import BaseHTTPRequestHandler
 from pathlib import Path
-from types import TracebackType
-from typing import Any, Self
+from typing import Any
 from urllib.parse import urlsplit
 
 from rei.edit.engine import EngineError
 from rei.edit.session import EditSession, SessionConflict
 from rei.view import STATIC_DIR
+from rei.view.loopback import LoopbackServer, content_type, send, static_file
 
 PAGE = "edit.html"
 TOKEN_HEADER = "X-REI-Token"
@@ -42,60 +40,30 @@ class EditServerError(RuntimeError):
     """The page is not built or the server cannot start."""
 
 
-class EditServer:
+class EditServer(LoopbackServer):
     """Serves one ``EditSession`` on ``http://127.0.0.1:<port>/edit.html?token=...`` (a free port unless given)."""
+
+    error = EditServerError
+    thread_name = "rei-edit-http"
 
     def __init__(self, session: EditSession, *, host: str = "127.0.0.1", port: int = 0,
                  static_dir: Path = STATIC_DIR, token: str | None = None) -> None:
         if not (static_dir / PAGE).is_file():
             raise EditServerError(f"the room editor's page is not built ({static_dir / PAGE} is missing): "
                                   "run `npm ci && npm run build` in viewer/")
+        super().__init__(host, port)
         self.session = session
         self.token = token or secrets.token_urlsafe(24)
-        self._host = host
-        self._port = port
         self._static = static_dir.resolve()
-        self._server: ThreadingHTTPServer | None = None
-        self._thread: threading.Thread | None = None
 
     @property
     def port(self) -> int:
-        if self._server is None:
-            raise EditServerError("edit server not started")
-        return int(self._server.server_address[1])
+        return self.address[1]
 
     @property
     def url(self) -> str:
-        return f"http://{self._host}:{self.port}/{PAGE}?token={self.token}"
-
-    def start(self) -> EditServer:
-        if self._server is not None:
-            raise EditServerError("edit server already started")
-        try:
-            self._server = ThreadingHTTPServer((self._host, self._port), self._handler_class())
-        except OSError as error:
-            raise EditServerError(f"cannot serve the room editor on {self._host}:{self._port}: {error}") from error
-        self._server.daemon_threads = True
-        self._thread = threading.Thread(target=self._server.serve_forever, kwargs={"poll_interval": 0.2},
-                                        name="rei-edit-http", daemon=True)
-        self._thread.start()
-        return self
-
-    def stop(self) -> None:
-        server, self._server = self._server, None
-        if server is None:
-            return
-        server.shutdown()
-        server.server_close()
-        if self._thread is not None:
-            self._thread.join(timeout=5)
-
-    def __enter__(self) -> Self:
-        return self.start()
-
-    def __exit__(self, exc_type: type[BaseException] | None, exc: BaseException | None,
-                 tb: TracebackType | None) -> None:
-        self.stop()
+        host, port = self.address
+        return f"http://{host}:{port}/{PAGE}?token={self.token}"
 
     # -- requests -----------------------------------------------------------------------------------------------
 
@@ -133,19 +101,13 @@ class EditServer:
                     self._api("GET", path)
                     return
                 if path == "/":
-                    self.send_response(HTTPStatus.FOUND)
-                    self.send_header("Location", f"/{PAGE}")
-                    self.send_header("Content-Length", "0")
-                    self.end_headers()
+                    send(self, HTTPStatus.FOUND, "text/plain", b"", {"Location": f"/{PAGE}"})
                     return
-                file = editor._static_file(path)
+                file = static_file(editor._static, path)
                 if file is None:
                     self._send(HTTPStatus.NOT_FOUND, {"error": "not found"})
                     return
-                kind = mimetypes.guess_type(file.name)[0] or "application/octet-stream"
-                if kind.startswith("text/") or kind.endswith("javascript"):
-                    kind += "; charset=utf-8"
-                self._raw(HTTPStatus.OK, kind, file.read_bytes())
+                self._raw(HTTPStatus.OK, content_type(file), file.read_bytes())
 
             def do_POST(self) -> None:
                 self._api("POST", urlsplit(self.path).path)
@@ -192,28 +154,13 @@ class EditServer:
                 self._raw(status, "application/json", json.dumps(answer, allow_nan=False).encode())
 
             def _raw(self, status: HTTPStatus, kind: str, body: bytes) -> None:
-                self.send_response(status)
-                self.send_header("Content-Type", kind)
-                self.send_header("Content-Length", str(len(body)))
-                self.send_header("Cache-Control", "no-store")
-                self.send_header("X-Content-Type-Options", "nosniff")
-                self.send_header("Referrer-Policy", "no-referrer")  # the token is in the page's URL
-                self.end_headers()
-                if body:
-                    self.wfile.write(body)
+                # No sniffing, and no Referer: the token is in the page's URL.
+                send(self, status, kind, body, {"X-Content-Type-Options": "nosniff", "Referrer-Policy": "no-referrer"})
 
             def log_message(self, format: str, *args: Any) -> None:
                 pass  # every poll would be a line
 
         return Handler
-
-    def _static_file(self, path: str) -> Path | None:
-        relative = path.lstrip("/")
-        candidate = (self._static / relative).resolve()
-        if not relative or not candidate.is_relative_to(self._static) or not candidate.is_file():
-            return None
-        return candidate
-
 
 class _BadRequest(ValueError):
     def __init__(self, message: str, status: HTTPStatus = HTTPStatus.BAD_REQUEST) -> None:
