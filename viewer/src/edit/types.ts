@@ -163,6 +163,7 @@ export type Operation =
   | { op: "addObject"; name: string; type: string; floor: string }
   | { op: "deleteObject"; name: string }
   | { op: "addHuman"; name: string; type: string | null; points: PointSpec[]; loop: boolean }
+  | { op: "addDynamic"; name: string; type: string; points: PointSpec[]; loop: boolean }
   | { op: "addFloor"; name: string; neighbours: Partial<Record<Side, string>> }
   | { op: "removeFloor"; name: string }
   | { op: "addWall"; name: string; floor: string; side: Side }

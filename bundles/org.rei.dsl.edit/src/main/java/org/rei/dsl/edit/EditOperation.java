@@ -39,6 +39,17 @@ public sealed interface EditOperation {
 		}
 	}
 
+	/**
+	 * Adds a moving object that follows the control points: {@code dynamic NAME : TYPE trajectory [...] loop}; the
+	 * type is required (the grammar has no default for it). {@code loop} false is written as nothing, as for humans.
+	 */
+	record AddDynamic(String name, String type, List<Waypoint> points, boolean loop) implements EditOperation {
+		public AddDynamic {
+			Objects.requireNonNull(type, "type");
+			points = List.copyOf(points);
+		}
+	}
+
 	/** Removes furniture, a moving object or a human (not the robot: a room has exactly one). */
 	record DeleteObject(String name) implements EditOperation {
 	}

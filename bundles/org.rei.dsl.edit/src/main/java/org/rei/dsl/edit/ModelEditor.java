@@ -44,6 +44,7 @@ import org.rei.context.TestCase;
 import org.rei.context.Trajectory;
 import org.rei.context.Wall;
 import org.rei.context.layout.FloorLayout;
+import org.rei.dsl.edit.EditOperation.AddDynamic;
 import org.rei.dsl.edit.EditOperation.AddFloor;
 import org.rei.dsl.edit.EditOperation.AddGoal;
 import org.rei.dsl.edit.EditOperation.AddHuman;
@@ -114,6 +115,8 @@ final class ModelEditor {
 			addObject(add);
 		} else if (operation instanceof AddHuman add) {
 			addHuman(add);
+		} else if (operation instanceof AddDynamic add) {
+			addDynamic(add);
 		} else if (operation instanceof DeleteObject delete) {
 			deleteObject(delete);
 		} else if (operation instanceof AddFloor add) {
@@ -153,28 +156,45 @@ final class ModelEditor {
 	private void addHuman(AddHuman add) {
 		checkNewName(add.name());
 		ObjectType type = add.type() == null ? null : type(add.type());
-		if (add.points().isEmpty()) {
-			throw new EditRefusedException("A trajectory is written with one control point at least (and needs two "
-					+ "to move): human '" + add.name() + "' would have none");
-		}
-		Trajectory trajectory = FACTORY.createTrajectory();
-		for (Waypoint waypoint : add.points()) {
-			ControlPoint point = FACTORY.createControlPoint();
-			point.setFloor(floor(waypoint.floor()));
-			point.setTime(waypoint.seconds());
-			trajectory.getOwnedControlPoints().add(point);
-		}
-		if (add.loop()) {
-			trajectory.setLoop(true);
-		}
 		Human human = FACTORY.createHuman();
 		human.setName(add.name());
 		if (type != null) {
 			human.setType(type);
 		}
-		human.setOwnedTrajectory(trajectory);
+		human.setOwnedTrajectory(trajectory("human '" + add.name() + "'", add.points(), add.loop()));
 		environment.getOwnedObjects().add(human);
 		created.add(human);
+	}
+
+	/** As a human, with the type the grammar requires of a moving object. */
+	private void addDynamic(AddDynamic add) {
+		checkNewName(add.name());
+		ObjectType type = type(add.type());
+		DynamicObject mover = FACTORY.createDynamicObject();
+		mover.setName(add.name());
+		mover.setType(type);
+		mover.setOwnedTrajectory(trajectory("moving object '" + add.name() + "'", add.points(), add.loop()));
+		environment.getOwnedObjects().add(mover);
+		created.add(mover);
+	}
+
+	/** A new trajectory through the waypoints; {@code loop} false is left unset (the grammar's default). */
+	private Trajectory trajectory(String owner, List<Waypoint> waypoints, boolean loop) {
+		if (waypoints.isEmpty()) {
+			throw new EditRefusedException("A trajectory is written with one control point at least (and needs two "
+					+ "to move): " + owner + " would have none");
+		}
+		Trajectory trajectory = FACTORY.createTrajectory();
+		for (Waypoint waypoint : waypoints) {
+			ControlPoint point = FACTORY.createControlPoint();
+			point.setFloor(floor(waypoint.floor()));
+			point.setTime(waypoint.seconds());
+			trajectory.getOwnedControlPoints().add(point);
+		}
+		if (loop) {
+			trajectory.setLoop(true);
+		}
+		return trajectory;
 	}
 
 	private void deleteObject(DeleteObject delete) {

@@ -15,6 +15,7 @@ import java.util.Map;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.rei.context.Direction;
+import org.rei.dsl.edit.EditOperation.AddDynamic;
 import org.rei.dsl.edit.EditOperation.AddFloor;
 import org.rei.dsl.edit.EditOperation.AddGoal;
 import org.rei.dsl.edit.EditOperation.AddHuman;
@@ -208,6 +209,39 @@ class SimpleNavigationEditTest {
 		assertRefused(new AddHuman("visitor", null, List.of(new Waypoint("F_7_1", 0)), true),
 				"no floor or wall named 'F_7_1'");
 		assertRefused(new AddHuman("visitor", null, List.of(), true), "human 'visitor' would have none");
+	}
+
+	@Test
+	void anAddedMovingObjectIsOneNewLineAfterTheOtherObjects() {
+		AddDynamic add = new AddDynamic("cart1", "Cart", List.of(new Waypoint("F_1_1", 0), new Waypoint("F_3_1", 2),
+				new Waypoint("F_3_3", 4)), false);
+		EditResult result = document.apply(add);
+
+		assertEquals(List.of("+    dynamic cart1 : Cart trajectory [F_1_1 @ 0s, F_3_1 @ 2s, F_3_3 @ 4s]"),
+				Texts.diff(original, result.text()));
+		assertEquals(1, result.edits().size());
+		Diagram.Mover cart = document.diagram().movers().get(1);
+		assertEquals(List.of("cart1", "dynamic", "Cart", false), List.of(cart.name(), cart.kind(),
+				cart.footprint().type(), cart.loop()));
+		Texts.assertReadsBackAsEdited(original, document.uri(), result.text(), add);
+		assertEquals(original, document.undo().text());
+
+		AddDynamic looping = new AddDynamic("cart1", "Cart", List.of(new Waypoint("F_5_0", 0),
+				new Waypoint("F_5_2", 3.5)), true);
+		assertEquals(List.of("+    dynamic cart1 : Cart trajectory [F_5_0 @ 0s, F_5_2 @ 3.5s] loop"),
+				Texts.diff(original, document.apply(looping).text()));
+	}
+
+	@Test
+	void aMovingObjectTheTextCannotSayIsRefused() {
+		List<Waypoint> points = List.of(new Waypoint("F_1_1", 0), new Waypoint("F_3_1", 2));
+		assertRefused(new AddDynamic("cart1", "Trolley", points, false),
+				"No type 'Trolley' in the default catalogue or the imported ones");
+		assertRefused(new AddDynamic("table1", "Cart", points, false), "The name 'table1' is taken");
+		assertRefused(new AddDynamic("cart1", "Cart", List.of(new Waypoint("F_9_9", 0)), false),
+				"no floor or wall named 'F_9_9'");
+		assertRefused(new AddDynamic("cart1", "Cart", List.of(), false), "moving object 'cart1' would have none");
+		assertThrows(NullPointerException.class, () -> new AddDynamic("cart1", null, points, false));
 	}
 
 	@Test

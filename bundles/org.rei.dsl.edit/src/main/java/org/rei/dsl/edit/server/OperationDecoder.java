@@ -14,6 +14,7 @@ import java.util.stream.Collectors;
 
 import org.rei.context.Direction;
 import org.rei.dsl.edit.EditOperation;
+import org.rei.dsl.edit.EditOperation.AddDynamic;
 import org.rei.dsl.edit.EditOperation.AddFloor;
 import org.rei.dsl.edit.EditOperation.AddGoal;
 import org.rei.dsl.edit.EditOperation.AddHuman;
@@ -87,6 +88,8 @@ final class OperationDecoder {
 			return new DeleteObject(f.string("name"));
 		case "addHuman":
 			return new AddHuman(f.string("name"), f.optionalString("type"), f.waypoints("points"), f.bool("loop"));
+		case "addDynamic":
+			return new AddDynamic(f.string("name"), f.string("type"), f.waypoints("points"), f.bool("loop"));
 		case "addFloor":
 			return new AddFloor(f.string("name"), f.neighbours("neighbours"));
 		case "removeFloor":

@@ -20,8 +20,8 @@ public final class Protocol {
 	 * a lower-case first letter, and its fields are that record's components.
 	 */
 	public static final List<String> OPERATIONS = List.of("moveObject", "rotateObject", "addObject", "deleteObject",
-			"addHuman", "addFloor", "removeFloor", "addWall", "removeWall", "setTrajectory", "addGoal", "removeGoal",
-			"moveGoal");
+			"addHuman", "addDynamic", "addFloor", "removeFloor", "addWall", "removeWall", "setTrajectory", "addGoal",
+			"removeGoal", "moveGoal");
 
 	/** Sides of a floor and neighbour keys: the grammar's keywords. */
 	public static final List<String> SIDES = List.of("top", "right", "bottom", "left");

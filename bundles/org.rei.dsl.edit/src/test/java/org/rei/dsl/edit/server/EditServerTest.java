@@ -139,6 +139,8 @@ class EditServerTest {
 				+ "{\"op\": \"rotateObject\", \"name\": \"chair1\", \"yawDegrees\": 90},"
 				+ "{\"op\": \"addHuman\", \"name\": \"visitor\", \"type\": null, \"points\": "
 				+ "[{\"floor\": \"F_0_1\", \"seconds\": 0}, {\"floor\": \"F_5_1\", \"seconds\": 8}], \"loop\": true},"
+				+ "{\"op\": \"addDynamic\", \"name\": \"cart1\", \"type\": \"Cart\", \"points\": "
+				+ "[{\"floor\": \"F_1_1\", \"seconds\": 0}, {\"floor\": \"F_1_3\", \"seconds\": 2}], \"loop\": false},"
 				+ "{\"op\": \"setTrajectory\", \"name\": \"walker\", \"points\": "
 				+ "[{\"floor\": \"F_1_2\", \"seconds\": 0}, {\"floor\": \"F_3_1\", \"seconds\": 5.5}], \"loop\": false},"
 				+ "{\"op\": \"addGoal\", \"floor\": \"F_4_3\", \"index\": 2, \"timeoutSeconds\": 30},"
@@ -148,6 +150,7 @@ class EditServerTest {
 		String text = result.get("text").asText();
 		assertTrue(text.contains("    object chair1 : Chair on F_2_2 yaw 90\n"), text);
 		assertTrue(text.contains("    human visitor trajectory [F_0_1 @ 0s, F_5_1 @ 8s] loop\n"), text);
+		assertTrue(text.contains("    dynamic cart1 : Cart trajectory [F_1_1 @ 0s, F_1_3 @ 2s]\n"), text);
 		assertTrue(text.contains("    human walker trajectory [F_1_2 @ 0s, F_3_1 @ 5.5s]\n"), text);
 		assertTrue(text.contains("    goto F_5_3\n    goto F_4_3 within 30s\n  }"), text);
 		assertEquals(0, result.get("issues").size(), () -> result.get("issues").toString());
@@ -201,11 +204,14 @@ class EditServerTest {
 		assertRefused(ask("{\"id\": 12, \"command\": \"redo\"}"), 12, "nothing to redo");
 		assertRefused(apply(13, "{\"op\": \"fly\", \"name\": \"table1\"}"), 13,
 				"operation 0: unknown op 'fly', expected one of moveObject, rotateObject, addObject, deleteObject, "
-						+ "addHuman, addFloor, removeFloor, addWall, removeWall, setTrajectory, addGoal, removeGoal, "
-						+ "moveGoal");
+						+ "addHuman, addDynamic, addFloor, removeFloor, addWall, removeWall, setTrajectory, addGoal, "
+						+ "removeGoal, moveGoal");
 		assertRefused(apply(14, "{\"name\": \"table1\"}"), 14, "operation 0 has no 'op'");
 		assertRefused(apply(15, "{\"op\": \"moveObject\", \"name\": \"table1\"}"), 15,
 				"operation 0 (moveObject): missing field 'floor' (a string)");
+		assertRefused(apply(15, "{\"op\": \"addDynamic\", \"name\": \"cart1\", \"type\": null, \"points\": "
+				+ "[{\"floor\": \"F_1_1\", \"seconds\": 0}], \"loop\": false}"), 15,
+				"operation 0 (addDynamic): missing field 'type' (a string)");
 		assertRefused(apply(16, "{\"op\": \"removeGoal\", \"index\": 0.5}"), 16,
 				"operation 0 (removeGoal): 'index' must be a whole number, got 0.5");
 		assertRefused(apply(17, "{\"op\": \"addWall\", \"name\": \"W\", \"floor\": \"F_0_0\", \"side\": \"TOP\"}"),
