@@ -11,7 +11,7 @@ import { goalKey, issuesByKey, KINDS, nameKey } from "./model";
 import type { Actions } from "./panels";
 import { layoutHint, Panels } from "./panels";
 import { RoomIndex } from "./room";
-import { draftOf, finishOperation, newHumanDraft } from "./tools/path";
+import { draftOf, finishOperation, newDynamicDraft, newHumanDraft } from "./tools/path";
 import type { Issue, Operation, PaletteType, PointSpec, State, Status } from "./types";
 
 export const POLL_MS = 1000;
@@ -169,9 +169,10 @@ export class Editor implements Actions {
     if (index === null) return;
     const current = this.tool;
     if (current.kind === "place" && current.type.name === type.name) return this.setTool({ kind: "select" });
-    if (type.category === "human") {
+    if (type.category === "human" || type.category === "dynamic") {
       this.selection = null;
-      return this.setTool({ kind: "path", draft: newHumanDraft(index, type.name) });
+      const draft = type.category === "human" ? newHumanDraft(index, type.name) : newDynamicDraft(index, type);
+      return this.setTool({ kind: "path", draft });
     }
     if (type.category === "object") return this.setTool({ kind: "place", type });
     this.chrome.toast(`${type.name} is a ${type.category} type: it cannot be placed from the palette`, "error");
@@ -305,7 +306,7 @@ export class Editor implements Actions {
       return;
     }
     if (await this.apply(finishOperation(tool.draft))) {
-      const kind = this.index?.diagram.movers.find((m) => m.name === tool.draft.name)?.kind ?? "human";
+      const kind = this.index?.diagram.movers.find((m) => m.name === tool.draft.name)?.kind ?? tool.draft.kind;
       this.tool = { kind: "select" };
       this.select({ kind, name: tool.draft.name });
     }

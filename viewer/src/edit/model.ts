@@ -2,7 +2,7 @@
 // The editor's own state around the server's State: what is selected, which tool is active, and which diagram
 // elements the validation issues are on. Elements are found by name (names are unique in a test case); goals
 // have no name and are found by their place in the mission.
-import type { Issue, PaletteType, PointSpec } from "./types";
+import type { Footprint, Issue, PaletteType, PointSpec } from "./types";
 
 export type Kind = "floor" | "wall" | "object" | "robot" | "human" | "dynamic" | "goal" | "ghost";
 /** The kinds that can be selected (a ghost is clicked to add a floor, never selected). */
@@ -14,12 +14,18 @@ export interface Selection {
   name: string;
 }
 
-/** A trajectory being drawn: an existing mover's (setTrajectory) or a new human's (addHuman). */
+/**
+ * A trajectory being drawn: an existing mover's (setTrajectory), a new human's (addHuman) or a new moving
+ * object's (addDynamic).
+ */
 export interface PathDraft {
   name: string;
   isNew: boolean;
-  /** addHuman's type: null for the default Human. */
+  kind: "human" | "dynamic";
+  /** addHuman's type (null for the default Human) or addDynamic's (never null: the grammar requires it). */
   type: string | null;
+  /** A new moving object's outline, drawn at the first point in its type's colour; null otherwise. */
+  footprint: Footprint | null;
   points: PointSpec[];
   loop: boolean;
 }

@@ -76,7 +76,10 @@ export class Panels {
     this.renderIssues(state.issues);
   }
 
-  /** Furniture places an object, a human type starts a new human's path; robots, floors and walls are not placed. */
+  /**
+   * Furniture places an object, a human or moving type starts a new human's or moving object's path; robots,
+   * floors and walls are not placed.
+   */
   private renderPalette(types: readonly PaletteType[], tool: Tool): void {
     this.palette.replaceChildren();
     const list = [...types];
@@ -86,7 +89,7 @@ export class Panels {
     const groups: [string, PaletteType["category"], string][] = [
       ["Furniture", "object", "choose, then click a floor to place it"],
       ["Humans", "human", "choose, then click floors for the path; Finish (Enter) adds the human"],
-      ["Moving objects", "dynamic", "not placeable here yet: write `dynamic NAME : TYPE trajectory [...]` in the text"],
+      ["Moving objects", "dynamic", "choose, then click floors for the path; Finish (Enter) adds the moving object"],
     ];
     const chosen = tool.kind === "place" ? tool.type.name
       : tool.kind === "path" && tool.draft.isNew ? tool.draft.type ?? "Human" : null;
@@ -99,7 +102,6 @@ export class Panels {
           () => this.actions.choosePalette(type), "palette-entry");
         entry.dataset.type = type.name;
         entry.dataset.category = type.category;
-        entry.disabled = category === "dynamic";
         entry.classList.toggle("active", type.name === chosen);
         const swatch = el("span", { class: `swatch ${type.shape}` }, entry);
         // humans are drawn in the live view's human colour, whatever their type's
@@ -115,7 +117,8 @@ export class Panels {
     const d = index.diagram;
     const draft = tool.kind === "path" ? tool.draft : null;
     if (draft !== null) {
-      el("p", { text: draft.isNew ? `New human ${draft.name}${draft.type === null ? "" : ` : ${draft.type}`}`
+      const what = draft.kind === "dynamic" ? "moving object" : "human";
+      el("p", { text: draft.isNew ? `New ${what} ${draft.name}${draft.type === null ? "" : ` : ${draft.type}`}`
         : `Path of ${draft.name}`, class: "title" }, box);
       el("p", { class: "hint", text: draft.isNew || draft.points.length > 0
         ? "Click floors to add points; Finish (Enter) saves the path, Escape cancels."

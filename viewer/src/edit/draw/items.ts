@@ -12,7 +12,8 @@ import type { Footprint, Item, Mover } from "../types";
 import { trajectoryPath } from "./spline";
 
 export const GOAL = "#1f77b4";
-const OBJECT_FALLBACK = "#9a9a9a";
+/** A type without a colour. */
+export const OBJECT_FALLBACK = "#9a9a9a";
 const ROBOT_SIZE: Footprint = { type: "robot", shape: "box", sizeX: 0.3, sizeY: 0.3, height: 0.2, colour: null };
 const HUMAN_SIZE: Footprint = { type: "Human", shape: "cylinder", sizeX: 0.5, sizeY: 0.5, height: 1.7, colour: null };
 

@@ -6,7 +6,7 @@ import type { PlacedFloor, RoomIndex } from "../room";
 import { r, svg, Y } from "../svg";
 import type { Footprint, Side } from "../types";
 import { SIDES } from "../types";
-import { formatSeconds, outline } from "./items";
+import { formatSeconds, OBJECT_FALLBACK, outline } from "./items";
 import { trajectoryPath } from "./spline";
 
 export const DRAFT = "#7b1fa2";
@@ -52,18 +52,27 @@ export function drawDragPreview(layer: SVGGElement, at: [number, number], footpr
   });
 }
 
-/** The trajectory being drawn: the spline so far, its points numbered and timed. */
+/**
+ * The trajectory being drawn: the spline so far, its points numbered and timed. A new moving object's is drawn
+ * as moving objects are: in its type's colour, its outline at the first point.
+ */
 export function drawDraft(layer: SVGGElement, labels: SVGGElement, index: RoomIndex, draft: PathDraft): void {
   const placed = draft.points.flatMap((p) => {
     const floor = index.floors.get(p.floor);
     return floor === undefined || floor.centreX === null || floor.centreY === null ? []
       : [{ x: floor.centreX, y: floor.centreY, t: p.seconds }];
   });
-  if (placed.length === 0) return;
-  svg("path", { d: trajectoryPath(placed, draft.loop), fill: "none", stroke: DRAFT, "stroke-width": 2.5,
+  const first = placed[0];
+  if (first === undefined) return;
+  const colour = draft.footprint === null ? DRAFT : draft.footprint.colour ?? OBJECT_FALLBACK;
+  svg("path", { d: trajectoryPath(placed, draft.loop), fill: "none", stroke: colour, "stroke-width": 2.5,
     "stroke-dasharray": "5 3", class: "draft-path", "pointer-events": "none" }, layer);
+  if (draft.footprint !== null) {
+    outline(layer, first.x, first.y, draft.footprint, 0, { fill: colour, "fill-opacity": 0.85, stroke: "#5a2f08",
+      class: "draft-body", "pointer-events": "none" });
+  }
   placed.forEach((p, i) => {
-    svg("circle", { cx: r(p.x), cy: r(Y(p.y)), r: r(index.size * 0.12), fill: DRAFT, class: "draft-point",
+    svg("circle", { cx: r(p.x), cy: r(Y(p.y)), r: r(index.size * 0.12), fill: colour, class: "draft-point",
       "data-point": i, "pointer-events": "none" }, layer);
     const text = svg("text", { x: r(p.x + index.size * 0.15), y: r(Y(p.y - index.size * 0.15)), class: "time draft",
       "data-point": i }, labels);
