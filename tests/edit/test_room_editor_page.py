@@ -137,6 +137,27 @@ def test_two_objects_on_one_floor_show_the_validators_message_on_both(open_edito
     assert editor.session.dirty, "the page saved without being asked"
 
 
+def test_a_moving_object_from_the_palette_is_one_new_line(open_editor, page: Page, run_cli) -> None:
+    editor: Editor = open_editor("examples/simple_navigation.rei")
+    before = editor.case.read_text(encoding="utf-8")
+    _open(page, editor)
+    version = editor.session.status()["version"]
+    page.click('[data-type="Cart"]')
+    for floor in ("F_1_1", "F_3_1", "F_3_3"):
+        _click_floor(page, floor)
+    page.click("#finish-path")
+    _settled(editor, page, version)
+    _element(page, "dynamic", "cart1").wait_for()
+    page.click("#save")
+    page.locator("#dirty").wait_for(state="hidden")
+
+    after = editor.case.read_text(encoding="utf-8")
+    changed = [line for line in difflib.ndiff(before.splitlines(), after.splitlines()) if line[:1] in "+-"]
+    assert len(changed) == 1 and re.fullmatch(
+        r"\+     dynamic cart1 : Cart trajectory \[F_1_1 @ 0s, F_3_1 @ \d+s, F_3_3 @ \d+s\]", changed[0]), changed
+    assert run_cli("validate", editor.case).returncode == 0
+
+
 def test_a_file_changed_on_disk_is_noticed(open_editor, page: Page) -> None:
     editor: Editor = open_editor("examples/simple_navigation.rei")
     _open(page, editor)
