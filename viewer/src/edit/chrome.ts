@@ -5,12 +5,7 @@
 import type { Selection, Tool } from "./model";
 import type { RoomIndex } from "./room";
 import type { Status } from "./types";
-
-function byId<T extends HTMLElement = HTMLElement>(id: string): T {
-  const found = document.getElementById(id);
-  if (found === null) throw new Error(`page element #${id} is missing`);
-  return found as T;
-}
+import { byId } from "./dom";
 
 const TOAST_MS = 6000;
 

@@ -11,17 +11,12 @@ import { Editor } from "./editor";
 import { Gestures } from "./tools/gestures";
 import { installKeys } from "./tools/keys";
 import { installPointer } from "./tools/pointer";
+import { byId } from "./dom";
 
 declare global {
   interface Window {
     reiEdit?: Editor;
   }
-}
-
-function byId<T extends Element = HTMLElement>(id: string): T {
-  const found = document.getElementById(id);
-  if (found === null) throw new Error(`page element #${id} is missing`);
-  return found as unknown as T;
 }
 
 function start(): void {

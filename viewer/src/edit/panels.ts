@@ -7,6 +7,7 @@ import { formatSeconds } from "./draw/items";
 import type { Selection, Tool } from "./model";
 import type { RoomIndex } from "./room";
 import type { Issue, PaletteType, PointSpec, State } from "./types";
+import { byId } from "./dom";
 
 const MAX_ISSUE_ROWS = 300;
 
@@ -24,12 +25,6 @@ export interface Actions {
   startPath(extend?: boolean): void;
   finishPath(): void;
   cancelPath(): void;
-}
-
-function byId<T extends HTMLElement = HTMLElement>(id: string): T {
-  const found = document.getElementById(id);
-  if (found === null) throw new Error(`page element #${id} is missing`);
-  return found as T;
 }
 
 interface Props {

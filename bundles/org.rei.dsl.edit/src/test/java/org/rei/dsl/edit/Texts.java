@@ -18,13 +18,13 @@ import org.eclipse.xtext.scoping.IScopeProvider;
 import org.rei.context.TestCase;
 
 /** Files of the repository and the assertions the editing tests share. */
-final class Texts {
+public final class Texts {
 
 	private Texts() {
 	}
 
 	/** Repository root, found from the module's working directory. */
-	static Path repository() {
+	public static Path repository() {
 		Path dir = Path.of("").toAbsolutePath();
 		while (dir != null && !dir.resolve("examples").toFile().isDirectory()) {
 			dir = dir.getParent();

@@ -16,6 +16,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 
+import org.rei.dsl.edit.Texts;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -32,7 +33,7 @@ class EditServerProcessTest {
 	@Test
 	void stdoutCarriesOnlyTheAnswersAndClosingStdinEndsTheProcess(@TempDir Path dir) throws Exception {
 		Path file = dir.resolve("case.rei");
-		Files.copy(EditServerTest.repository().resolve("examples/simple_navigation.rei"), file);
+		Files.copy(Texts.repository().resolve("examples/simple_navigation.rei"), file);
 		Path stdout = dir.resolve("stdout");
 		Path stderr = dir.resolve("stderr");
 		Process process = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),

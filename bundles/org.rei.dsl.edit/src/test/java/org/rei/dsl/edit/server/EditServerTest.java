@@ -28,6 +28,7 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.rei.dsl.edit.Texts;
 import org.rei.dsl.validation.ReiIssueCodes;
 
 import com.fasterxml.jackson.databind.JsonNode;
@@ -57,7 +58,7 @@ class EditServerTest {
 	@BeforeEach
 	void start() throws IOException {
 		file = dir.resolve("simple_navigation.rei");
-		Files.copy(repository().resolve("examples/simple_navigation.rei"), file);
+		Files.copy(Texts.repository().resolve("examples/simple_navigation.rei"), file);
 		original = Files.readString(file);
 		PipedInputStream in = new PipedInputStream(1 << 20);
 		stdin = new PipedOutputStream(in);
@@ -195,7 +196,7 @@ class EditServerTest {
 		assertRefused(ask("{\"id\": 9, \"command\": \"open\", \"path\": \"" + dir + "/missing.rei\"}"), 9,
 				"no such file");
 		Path catalogue = dir.resolve("office.rei");
-		Files.copy(repository().resolve("examples/catalogues/office.rei"), catalogue);
+		Files.copy(Texts.repository().resolve("examples/catalogues/office.rei"), catalogue);
 		assertRefused(ask("{\"id\": 10, \"command\": \"open\", \"path\": " + JSON.writeValueAsString(catalogue.toString())
 				+ "}"), 10, "is not a test case");
 
@@ -340,17 +341,6 @@ class EditServerTest {
 		List<String> names = new ArrayList<>();
 		node.fieldNames().forEachRemaining(names::add);
 		return names;
-	}
-
-	static Path repository() {
-		Path dir = Path.of("").toAbsolutePath();
-		while (dir != null && !dir.resolve("examples").toFile().isDirectory()) {
-			dir = dir.getParent();
-		}
-		if (dir == null) {
-			throw new IllegalStateException("examples/ not found above " + Path.of("").toAbsolutePath());
-		}
-		return dir;
 	}
 
 	/** The server's stdout, cut into lines as they are written. */
