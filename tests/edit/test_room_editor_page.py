@@ -158,6 +158,36 @@ def test_a_moving_object_from_the_palette_is_one_new_line(open_editor, page: Pag
     assert run_cli("validate", editor.case).returncode == 0
 
 
+def test_rotate_delete_reorder_goals_and_undo_redo(open_editor, page: Page) -> None:
+    editor: Editor = open_editor("examples/simple_navigation.rei")
+    before = editor.case.read_text(encoding="utf-8")
+    _open(page, editor)
+    version = editor.session.status()["version"]
+    _element(page, "object", "table1").click()
+    page.click("#rotate-left")
+    version = _settled(editor, page, version)
+    assert re.search(r"object table1 : Table on F_2_1 yaw -?90\b", editor.session.text)
+    _element(page, "object", "shelf1").click()
+    page.keyboard.press("Delete")
+    version = _settled(editor, page, version)
+    assert "shelf1" not in editor.session.text
+    page.locator('#goals li[data-index="1"] .up').click()
+    version = _settled(editor, page, version)
+    goals = re.findall(r"goto (\w+)", editor.session.text)
+    assert goals == ["F_5_3", "F_4_0"], goals
+
+    for _ in range(3):
+        page.keyboard.press("Control+z")
+        version = _settled(editor, page, version)
+    assert editor.session.text == before and not editor.session.dirty
+    page.keyboard.press("Control+Shift+z")
+    version = _settled(editor, page, version)
+    page.click("#redo")
+    _settled(editor, page, version)
+    assert "shelf1" not in editor.session.text and "yaw" in editor.session.text
+    assert re.findall(r"goto (\w+)", editor.session.text) == ["F_4_0", "F_5_3"], "redo went past its step"
+
+
 def test_a_file_changed_on_disk_is_noticed(open_editor, page: Page) -> None:
     editor: Editor = open_editor("examples/simple_navigation.rei")
     _open(page, editor)
