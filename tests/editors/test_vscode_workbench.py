@@ -33,7 +33,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from playwright.sync_api import Browser, Page, Playwright, sync_playwright
+from playwright.sync_api import Browser, BrowserContext, Page
 
 from rei import toolchain
 
@@ -131,8 +131,7 @@ class Workbench:
     profile: Path
     log: Path
     tmp: Path
-    playwright: Playwright
-    browser: Browser
+    context: BrowserContext
     page: Page
     stopped: bool = False
     left_over: list[tuple[int, str]] = field(default_factory=list)
@@ -200,8 +199,7 @@ class Workbench:
             return self.left_over
         self.stopped = True
         try:
-            self.browser.close()
-            self.playwright.stop()
+            self.context.close()
         finally:
             pgid = self.server.pid  # its own session: code-server leads its process group
             self.server.send_signal(signal.SIGTERM)
@@ -290,7 +288,9 @@ def wait_until_healthy(server: subprocess.Popen[bytes], base: str, log: Path, ti
 
 
 @pytest.fixture(scope="module")
-def workbench(tmp_path_factory: pytest.TempPathFactory, chromium: str) -> Iterator[Workbench]:
+def workbench(tmp_path_factory: pytest.TempPathFactory, browser: Browser) -> Iterator[Workbench]:
+    """The session's one Playwright browser (tests/conftest.py), in a context of its own: a second Playwright
+    started in the same process would refuse to run inside the first one's event loop."""
     vsix = find_vsix()
     code_server = find_code_server()
     profile = tmp_path_factory.mktemp("vscode")
@@ -305,7 +305,7 @@ def workbench(tmp_path_factory: pytest.TempPathFactory, chromium: str) -> Iterat
     tmp = Path(tempfile.mkdtemp(prefix="rei-vscode-"))
     env = code_server_env(profile, tmp)
     server = None
-    playwright = None
+    context = None
     try:
         installed = subprocess.run([str(code_server), *dirs, "--install-extension", str(vsix)], env=env,
                                    capture_output=True, text=True, timeout=PROCESS_TIMEOUT_S,
@@ -319,19 +319,17 @@ def workbench(tmp_path_factory: pytest.TempPathFactory, chromium: str) -> Iterat
                                       stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL, start_new_session=True)
         base = f"http://127.0.0.1:{port}"
         wait_until_healthy(server, base, log)
-        playwright = sync_playwright().start()
-        browser = playwright.chromium.launch(executable_path=chromium,
-                                             args=["--no-sandbox", "--disable-dev-shm-usage"])
-        page = browser.new_page(viewport={"width": 1280, "height": 800})
+        context = browser.new_context(viewport={"width": 1280, "height": 800})
+        page = context.new_page()
         page.set_default_timeout(PAGE_TIMEOUT_MS)
         page.goto(f"{base}/?folder={folder}")
         page.fill("input[name=password]", password)  # code-server's login page
         page.keyboard.press("Enter")
         page.wait_for_selector(".monaco-workbench .explorer-folders-view")
-        bench = Workbench(server, folder, profile, log, tmp, playwright, browser, page)
+        bench = Workbench(server, folder, profile, log, tmp, context, page)
     except BaseException:
-        if playwright is not None:
-            playwright.stop()
+        if context is not None:
+            context.close()
         if server is not None:
             os.killpg(server.pid, signal.SIGKILL)
             server.wait()
