@@ -13,7 +13,7 @@ import urllib.request
 from pathlib import Path
 from urllib.parse import parse_qs, urlsplit
 
-from edit_helpers import Editor
+from edit_helpers import Editor, write_as_another_program
 
 from rei.edit import TOKEN_HEADER
 
@@ -88,14 +88,14 @@ def test_refused_operations_and_bad_requests_change_nothing(open_editor) -> None
 def test_a_change_on_disk_is_followed_without_unsaved_edits_and_asked_about_with_them(open_editor) -> None:
     editor: Editor = open_editor(CASE)
     text = editor.case.read_text(encoding="utf-8")
-    _write_later(editor.case, text.replace("close 0.25", "close 0.3"))
+    write_as_another_program(editor.case, text.replace("close 0.25", "close 0.3"))
     state = editor.ok("GET", "/api/state")
     assert state["diagram"]["monitor"]["close"] == 0.3 and state["dirty"] is False
     assert state["diskChanged"] is False and "changed on disk" in state["notice"]
 
     edited = editor.apply(MOVE)["text"]
     theirs = text.replace("close 0.25", "close 0.4")
-    _write_later(editor.case, theirs)
+    write_as_another_program(editor.case, theirs)
     status = editor.ok("GET", "/api/status")
     assert status["diskChanged"] is True and status["dirty"] is True
     code, answer = editor.call("POST", "/api/save", {})
@@ -107,7 +107,7 @@ def test_a_change_on_disk_is_followed_without_unsaved_edits_and_asked_about_with
     editor.ok("POST", "/api/save", {})
     assert editor.case.read_text(encoding="utf-8") == edited
 
-    _write_later(editor.case, theirs)
+    write_as_another_program(editor.case, theirs)
     editor.apply({**MOVE, "floor": "F_3_2"})
     assert editor.ok("GET", "/api/status")["diskChanged"] is True
     reloaded = editor.ok("POST", "/api/reload", {})
@@ -160,14 +160,6 @@ def test_rei_edit_keeps_unsaved_edits_when_stopped(rei_script: Path, tmp_path: P
     assert f"they are in {rescue}" in out
     assert "on F_3_3" in rescue.read_text(encoding="utf-8")
     assert "on F_2_1" in case.read_text(encoding="utf-8"), "stopping the editor saved unasked"
-
-
-def _write_later(path: Path, text: str) -> None:
-    """Writes as another program would, with a newer modification time than the last one seen."""
-    stamp = path.stat().st_mtime_ns
-    path.write_text(text, encoding="utf-8")
-    if path.stat().st_mtime_ns == stamp:
-        os.utime(path, ns=(stamp + 1_000_000, stamp + 1_000_000))
 
 
 def _signal_engine(editor: Editor, sig: signal.Signals) -> None:

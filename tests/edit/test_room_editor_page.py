@@ -9,14 +9,13 @@ the page with Playwright's mouse and keyboard, as a user would.
 from __future__ import annotations
 
 import difflib
-import os
 import re
 import time
 from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
-from edit_helpers import Editor
+from edit_helpers import Editor, write_as_another_program
 from playwright.sync_api import Browser, Locator, Page
 
 PAGE_TIMEOUT_MS = 60_000
@@ -193,7 +192,7 @@ def test_a_file_changed_on_disk_is_noticed(open_editor, page: Page) -> None:
     _open(page, editor)
     text = editor.case.read_text(encoding="utf-8")
     # No unsaved edits: the editor follows the file and says so.
-    _rewrite(editor.case, text.replace("shelf1 : Shelf on F_0_3", "shelf1 : Shelf on F_1_3"))
+    write_as_another_program(editor.case, text.replace("shelf1 : Shelf on F_0_3", "shelf1 : Shelf on F_1_3"))
     page.locator("#toast").get_by_text("changed on disk").wait_for()
     page.wait_for_function("""() => {
         const shelf = document.querySelector('[data-kind="object"][data-name="shelf1"]');
@@ -204,7 +203,7 @@ def test_a_file_changed_on_disk_is_noticed(open_editor, page: Page) -> None:
     _drag(page, _element(page, "object", "table1"), _element(page, "floor", "F_3_3"))
     _settled(editor, page, version)
     theirs = text.replace("close 0.25", "close 0.5")
-    _rewrite(editor.case, theirs)
+    write_as_another_program(editor.case, theirs)
     banner = page.locator("#disk-banner")
     banner.wait_for(state="visible")
     assert "changed on disk" in banner.inner_text()
@@ -263,11 +262,3 @@ def test_generated_rooms_and_the_examples_open(open_editor, page: Page, run_cli,
         assert page.locator('[data-kind="floor"]').count() == len(diagram["room"]["floors"]), case
         assert page.locator('[data-kind="object"]').count() == len(diagram["objects"]), case
         assert page.locator('[data-kind="goal"]').count() == len(diagram["mission"]["goals"]), case
-
-
-def _rewrite(path: Path, text: str) -> None:
-    """Writes as another program would, with a modification time the editor has not seen."""
-    stamp = path.stat().st_mtime_ns
-    path.write_text(text, encoding="utf-8")
-    if path.stat().st_mtime_ns == stamp:
-        os.utime(path, ns=(stamp + 1_000_000, stamp + 1_000_000))

@@ -162,6 +162,7 @@ class EditServer(LoopbackServer):
 
         return Handler
 
+
 class _BadRequest(ValueError):
     def __init__(self, message: str, status: HTTPStatus = HTTPStatus.BAD_REQUEST) -> None:
         super().__init__(message)

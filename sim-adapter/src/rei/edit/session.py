@@ -31,14 +31,23 @@ class _Disk:
     text: str | None
 
     @staticmethod
-    def read(path: Path) -> _Disk:
+    def stamp_of(path: Path) -> tuple[int, int] | None:
+        """Modification time and size: a cheap look, before reading the file when it differs."""
         try:
             stat = path.stat()
+        except FileNotFoundError:
+            return None
+        return stat.st_mtime_ns, stat.st_size
+
+    @staticmethod
+    def read(path: Path) -> _Disk:
+        stamp = _Disk.stamp_of(path)
+        try:
             data = path.read_bytes()
         except FileNotFoundError:
             return _Disk(None, None)
         # Bytes decoded as they are: a CRLF file keeps its CRLF through the round trip.
-        return _Disk((stat.st_mtime_ns, stat.st_size), data.decode("utf-8", errors="replace"))
+        return _Disk(stamp, data.decode("utf-8", errors="replace"))
 
 
 class EditSession:
@@ -136,7 +145,7 @@ class EditSession:
     # -- inside ---------------------------------------------------------------------------------------------------
 
     def _status(self) -> dict[str, Any]:
-        return {"version": self._version, "dirty": self._answer["text"] != self._disk.text,
+        return {"version": self._version, "dirty": self.dirty,
                 "diskChanged": self._disk_changed, "canUndo": bool(self._answer.get("canUndo")),
                 "canRedo": bool(self._answer.get("canRedo"))}
 
@@ -155,20 +164,14 @@ class EditSession:
         """Follows a change of the file on disk: at once without unsaved edits, else flags it for the user."""
         if self._disk_changed:
             return
-        try:
-            stat = self.path.stat()
-            stamp: tuple[int, int] | None = (stat.st_mtime_ns, stat.st_size)
-        except FileNotFoundError:
-            stamp = None
-        if stamp == self._disk.stamp:
+        if _Disk.stamp_of(self.path) == self._disk.stamp:
             return
         disk = _Disk.read(self.path)
         if disk.text == self._disk.text:
             self._disk = disk  # touched, same text
             return
-        dirty = self._answer["text"] != self._disk.text
         self._version += 1
-        if disk.text is None or dirty:
+        if disk.text is None or self.dirty:
             self._disk_changed = True
             return
         try:
