@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: EPL-2.0
-// The page's fixed elements by id (edit.html): a missing one is a bug of the page, said at once and by name.
+// A page's fixed elements by id (index.html, edit.html): a missing one is a bug of the page, said at once and by name.
 export function byId<T extends Element = HTMLElement>(id: string): T {
   const found = document.getElementById(id);
   if (found === null) throw new Error(`page element #${id} is missing`);

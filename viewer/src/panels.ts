@@ -2,6 +2,7 @@
 // The HTML around the map: status bar, banners (gap, stall, end), the mission's tasks and the signal list.
 // Updated at most once per frame, and the lists only when the model's revision changed.
 import type { ViewConfig } from "./config";
+import { byId } from "./dom";
 import { signalColour, ZONE } from "./draw/colours";
 import type { LiveModel, SignalEntry } from "./model";
 import { wallMs } from "./model";
@@ -14,12 +15,6 @@ const GAP_BANNER_MS = 8000;
 /** No state for this long while the run goes on: the stream stalled. */
 export const STALL_MS = 1500;
 
-function element<T extends HTMLElement>(id: string): T {
-  const found = document.getElementById(id);
-  if (found === null) throw new Error(`page element #${id} is missing`);
-  return found as T;
-}
-
 function signed(value: number): string {
   return `${value > 0 ? "+" : ""}${Number.isInteger(value) ? value : value.toFixed(1)}`;
 }
@@ -27,15 +22,15 @@ function signed(value: number): string {
 export type Condition = "connecting" | "waiting" | "live" | "stalled" | "ended" | "disconnected";
 
 export class Panels {
-  private readonly status = element("status");
-  private readonly clock = element("clock");
-  private readonly zone = element("zone");
-  private readonly total = element("total");
-  private readonly perf = element("perf");
-  private readonly banners = element("banners");
-  private readonly tasks = element<HTMLOListElement>("tasks");
-  private readonly list = element<HTMLOListElement>("signal-list");
-  private readonly count = element("signal-count");
+  private readonly status = byId("status");
+  private readonly clock = byId("clock");
+  private readonly zone = byId("zone");
+  private readonly total = byId("total");
+  private readonly perf = byId("perf");
+  private readonly banners = byId("banners");
+  private readonly tasks = byId<HTMLOListElement>("tasks");
+  private readonly list = byId<HTMLOListElement>("signal-list");
+  private readonly count = byId("signal-count");
   private shownRevision = -1;
   private bannerKey = "";
   link: LinkStatus = "connecting";
@@ -43,8 +38,8 @@ export class Panels {
   subscribed = false;
 
   constructor(private readonly config: ViewConfig, private readonly model: LiveModel) {
-    element("run").textContent = `run ${config.run_id}`;
-    element("mission-name").textContent = config.mission?.name ?? "";
+    byId("run").textContent = `run ${config.run_id}`;
+    byId("mission-name").textContent = config.mission?.name ?? "";
   }
 
   /** What the stream is doing now, as one word (also exposed to tests). */

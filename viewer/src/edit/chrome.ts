@@ -2,10 +2,10 @@
 // The page's frame: title and file name, the dirty indicator, which toolbar buttons apply now, the banner for a
 // file changed on disk, and the toast for refusals and notices. Updated from every Status (the poll) as well
 // as every State, so that the banner and the dirty mark follow the server even when the diagram did not change.
+import { byId } from "../dom";
 import type { Selection, Tool } from "./model";
 import type { RoomIndex } from "./room";
 import type { Status } from "./types";
-import { byId } from "./dom";
 
 const TOAST_MS = 6000;
 

@@ -4,6 +4,7 @@
 // (docs/room-editor.md) and draws the State the server answers. `window.reiEdit` exposes the editor's state
 // for tests and the curious.
 import "./edit.css";
+import { byId } from "../dom";
 import { Api } from "./api";
 import { Chrome } from "./chrome";
 import { DiagramView } from "./draw/diagram";
@@ -11,7 +12,6 @@ import { Editor } from "./editor";
 import { Gestures } from "./tools/gestures";
 import { installKeys } from "./tools/keys";
 import { installPointer } from "./tools/pointer";
-import { byId } from "./dom";
 
 declare global {
   interface Window {

@@ -2,12 +2,12 @@
 // The HTML around the diagram: the palette, the selection (with a trajectory's points), the mission and its
 // goals, the monitor's thresholds and the issues. Rebuilt from the State on every change; lists are short,
 // except issues, which are capped so a room full of errors does not build thousands of rows.
+import { byId } from "../dom";
 import { HUMAN } from "../draw/colours";
 import { formatSeconds } from "./draw/items";
 import type { Selection, Tool } from "./model";
 import type { RoomIndex } from "./room";
 import type { Issue, PaletteType, PointSpec, State } from "./types";
-import { byId } from "./dom";
 
 const MAX_ISSUE_ROWS = 300;
 
@@ -48,6 +48,20 @@ function button(text: string, title: string, parent: Element, onClick: () => voi
   b.type = "button";
   b.addEventListener("click", onClick);
   return b;
+}
+
+/** A number field whose committed value, when it is a finite number, goes to ``onValue`` (blank or junk: ignored). */
+function numberField(parent: Element, value: string, step: string, onValue: (value: number) => void,
+                     props: Props = {}): HTMLInputElement {
+  const input = el("input", props, parent);
+  input.type = "number";
+  input.step = step;
+  input.value = value;
+  input.addEventListener("change", () => {
+    const parsed = Number(input.value);
+    if (input.value.trim() !== "" && Number.isFinite(parsed)) onValue(parsed);
+  });
+  return input;
 }
 
 const metres = (value: number): string => `${Math.round(value * 1000) / 1000} m`;
@@ -146,16 +160,8 @@ export class Panels {
       fact("floor", item.floor ?? "?");
       const yaw = el("dd", {}, facts);
       facts.insertBefore(el("dt", { text: "yaw" }), yaw);
-      const input = el("input", {}, yaw);
-      input.id = "yaw";
-      input.type = "number";
-      input.step = "15";
-      input.value = String(item.yaw);
+      numberField(yaw, String(item.yaw), "15", (value) => this.actions.setYaw(value)).id = "yaw";
       el("span", { text: " °" }, yaw);
-      input.addEventListener("change", () => {
-        const value = Number(input.value);
-        if (input.value.trim() !== "" && Number.isFinite(value)) this.actions.setYaw(value);
-      });
     } else if (selection.kind === "human" || selection.kind === "dynamic") {
       const mover = d.movers.find((m) => m.name === selection.name);
       if (mover === undefined) return;
@@ -192,17 +198,10 @@ export class Panels {
       const row = el("li", {}, list);
       row.dataset.point = String(i);
       el("span", { text: point.floor, class: "floor" }, row);
-      const seconds = el("input", { class: "seconds", title: "time of this point, seconds" }, row);
-      seconds.type = "number";
-      seconds.min = "0";
-      seconds.step = "1";
-      seconds.value = formatSeconds(point.seconds);
+      numberField(row, formatSeconds(point.seconds), "1",
+        (value) => this.actions.editPoints(points.map((p, j) => (j === i ? { ...p, seconds: value } : p)), loop),
+        { class: "seconds", title: "time of this point, seconds" }).min = "0";
       el("span", { text: "s" }, row);
-      seconds.addEventListener("change", () => {
-        const value = Number(seconds.value);
-        if (seconds.value.trim() === "" || !Number.isFinite(value)) return;
-        this.actions.editPoints(points.map((p, j) => (j === i ? { ...p, seconds: value } : p)), loop);
-      });
       const remove = button("×", "remove this point", row, () =>
         this.actions.editPoints(points.filter((_, j) => j !== i), loop), "remove-point");
       remove.disabled = !drafting && points.length <= 1;
