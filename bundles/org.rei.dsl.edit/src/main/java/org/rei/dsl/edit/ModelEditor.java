@@ -180,21 +180,29 @@ final class ModelEditor {
 
 	/** A new trajectory through the waypoints; {@code loop} false is left unset (the grammar's default). */
 	private Trajectory trajectory(String owner, List<Waypoint> waypoints, boolean loop) {
-		if (waypoints.isEmpty()) {
-			throw new EditRefusedException("A trajectory is written with one control point at least (and needs two "
-					+ "to move): " + owner + " would have none");
-		}
+		requirePoints(owner, waypoints);
 		Trajectory trajectory = FACTORY.createTrajectory();
 		for (Waypoint waypoint : waypoints) {
-			ControlPoint point = FACTORY.createControlPoint();
-			point.setFloor(floor(waypoint.floor()));
-			point.setTime(waypoint.seconds());
-			trajectory.getOwnedControlPoints().add(point);
+			trajectory.getOwnedControlPoints().add(controlPoint(floor(waypoint.floor()), waypoint.seconds()));
 		}
 		if (loop) {
 			trajectory.setLoop(true);
 		}
 		return trajectory;
+	}
+
+	private static void requirePoints(String owner, List<Waypoint> waypoints) {
+		if (waypoints.isEmpty()) {
+			throw new EditRefusedException("A trajectory is written with one control point at least (and needs two "
+					+ "to move): " + owner + " would have none");
+		}
+	}
+
+	private static ControlPoint controlPoint(Floor floor, double seconds) {
+		ControlPoint point = FACTORY.createControlPoint();
+		point.setFloor(floor);
+		point.setTime(seconds);
+		return point;
 	}
 
 	private void deleteObject(DeleteObject delete) {
@@ -274,10 +282,7 @@ final class ModelEditor {
 			throw new EditRefusedException("'" + set.name() + "' stands on a floor and has no trajectory: move it "
 					+ "instead");
 		}
-		if (set.points().isEmpty()) {
-			throw new EditRefusedException("A trajectory is written with one control point at least (and needs two "
-					+ "to move): '" + set.name() + "' would have none");
-		}
+		requirePoints("'" + set.name() + "'", set.points());
 		changing(mover);
 		List<Floor> floors = set.points().stream().map(p -> floor(p.floor())).toList();
 		Trajectory trajectory = mover.getOwnedTrajectory();
@@ -293,10 +298,7 @@ final class ModelEditor {
 					point.setTime(wanted.seconds());
 				}
 			} else {
-				ControlPoint point = FACTORY.createControlPoint();
-				point.setFloor(floors.get(i));
-				point.setTime(wanted.seconds());
-				points.add(point);
+				points.add(controlPoint(floors.get(i), wanted.seconds()));
 			}
 		}
 		while (points.size() > set.points().size()) {
