@@ -14,6 +14,7 @@ from concurrent.futures import FIRST_COMPLETED, Future, ThreadPoolExecutor, wait
 from pathlib import Path
 from typing import Any
 
+from rei.campaign.forkserver import ForkServer, ForkServerError
 from rei.campaign.plan import RunTask
 from rei.campaign.supervise import Outcome, supervise
 from rei.campaign.worker import MONITOR_SERVER_ENV
@@ -23,7 +24,8 @@ OnOutcome = Callable[[RunTask, Outcome], None]
 
 
 class LocalBackend:
-    """``workers`` runs at a time, each in its own process, supervised by one thread each.
+    """``workers`` runs at a time, each in its own process (forked by one rei.campaign.forkserver), supervised by
+    one thread each.
 
     ``monitor_log``: keep one warm monitor JVM for every run's replay (rei.run.jvm.JarServer), its log there; the
     workers find its socket in ``$REI_MONITOR_SERVER`` (rei.campaign.worker). ``command`` (for tests) replaces the
@@ -44,6 +46,15 @@ class LocalBackend:
     def run(self, tasks: Sequence[RunTask], on_outcome: OnOutcome, stop: threading.Event) -> None:
         with contextlib.ExitStack() as stack:
             env = None
+            forks = None
+            if self._command is None and tasks:
+                # beside the runs' folders; its CPU and its workers' count as this process's children's
+                forks = ForkServer(Path(tasks[0].run_dir).parent / "forkserver.log")
+                try:
+                    stack.enter_context(forks)
+                except ForkServerError as error:  # each worker then starts as a new process
+                    print(f"campaign: {error}; each run's worker starts as a new process", flush=True)
+                    forks = None
             if self._monitor_log is not None and tasks:
                 server = JarServer("monitor", self._monitor_log)
                 # registered first, so it runs after the server has stopped (and its CPU is known)
@@ -53,13 +64,13 @@ class LocalBackend:
                     env = {MONITOR_SERVER_ENV: str(server.socket)}
                 except (JarServerError, OSError) as error:  # each replay then starts a JVM of its own
                     print(f"campaign: no warm monitor JVM ({error}); each run replays in a JVM of its own", flush=True)
-            self._run(tasks, on_outcome, stop, env)
+            self._run(tasks, on_outcome, stop, env, forks)
 
     def _run(self, tasks: Sequence[RunTask], on_outcome: OnOutcome, stop: threading.Event,
-             env: dict[str, str] | None) -> None:
+             env: dict[str, str] | None, forks: ForkServer | None) -> None:
         with ThreadPoolExecutor(self.workers, thread_name_prefix="rei-campaign") as pool:
             pending: dict[Future[Outcome], RunTask] = {
-                pool.submit(supervise, task, stop, self._command(task) if self._command else None, env): task
+                pool.submit(supervise, task, stop, self._command(task) if self._command else None, env, forks): task
                 for task in tasks}
             try:
                 while pending:

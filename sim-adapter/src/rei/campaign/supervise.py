@@ -3,7 +3,8 @@
 
 The worker gets its own session (process group), so stopping it also stops what it started (the monitor's JVM,
 ``rei run``'s router and children). ``os.wait4`` gives the CPU time of the worker and of every child it waited
-for, which the campaign reports per run. Shared by the local pool and the Ray tasks.
+for, which the campaign reports per run. Shared by the local pool (whose workers are forked by
+rei.campaign.forkserver) and the Ray tasks (new processes).
 """
 
 from __future__ import annotations
@@ -18,12 +19,12 @@ import time
 from collections.abc import Mapping, Sequence
 from dataclasses import asdict, dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, Protocol
 
+from rei.campaign.forkserver import WORKER_LOG, ForkServer, ForkServerError
 from rei.campaign.plan import RunTask
 from rei.run.jvm import tail
 
-WORKER_LOG = "worker.log"
 #: Seconds a stopped worker gets for SIGTERM before SIGKILL.
 KILL_GRACE = 3.0
 _POLL = 0.05
@@ -65,9 +66,11 @@ def worker_command(run_dir: Path) -> list[str]:
 
 
 def supervise(task: RunTask, stop: threading.Event | None = None,
-              command: Sequence[str] | None = None, env: Mapping[str, str] | None = None) -> Outcome:
-    """Write ``task.json`` into the run folder and run the worker (or ``command``) there, with ``env`` added to
-    this process's environment."""
+              command: Sequence[str] | None = None, env: Mapping[str, str] | None = None,
+              forks: ForkServer | None = None) -> Outcome:
+    """Write ``task.json`` into the run folder and run the worker there: forked by ``forks`` when given (and
+    answering), else ``command`` or ``worker_command`` as a new process, with ``env`` added to this process's
+    environment."""
     run_dir = Path(task.run_dir)
     run_dir.mkdir(parents=True, exist_ok=True)
     for stale in ("summary.json", "result.json"):
@@ -78,47 +81,75 @@ def supervise(task: RunTask, stop: threading.Event | None = None,
     timed_out = interrupted = False
     if stop is not None and stop.is_set():
         return Outcome(task.key, None, False, True, 0.0, 0.0, "", os.uname().nodename)
-    with open(log, "wb") as out:
-        process = subprocess.Popen(list(command or worker_command(run_dir)), stdout=out, stderr=subprocess.STDOUT,
-                                   stdin=subprocess.DEVNULL, cwd=run_dir, start_new_session=True,
-                                   env={**os.environ, **env} if env else None)
-        try:
-            while True:
-                pid, status, usage = os.wait4(process.pid, os.WNOHANG)
-                if pid:
-                    break
-                if stop is not None and stop.is_set():
-                    interrupted = True
-                elif time.perf_counter() - started > task.timeout:
-                    timed_out = True
-                if timed_out or interrupted:
-                    status, usage = _stop(process.pid)
-                    break
-                time.sleep(_POLL)
-        except BaseException:  # Ctrl-C, a cancelled Ray task: the worker must not outlive us
-            _stop(process.pid)
-            process.returncode = -1
-            raise
+    worker = _start(run_dir, command, env, forks)
+    try:
+        while True:
+            ended = worker.poll(_POLL)
+            if ended is not None:
+                break
+            if stop is not None and stop.is_set():
+                interrupted = True
+            elif time.perf_counter() - started > task.timeout:
+                timed_out = True
+            if timed_out or interrupted:
+                ended = _stop(worker)
+                break
+    except BaseException:  # Ctrl-C, a cancelled Ray task: the worker must not outlive us
+        _stop(worker)
+        raise
+    status, cpu = ended
     if not (timed_out or interrupted) and status != 0:
-        _signal_group(process.pid, signal.SIGKILL)  # a crashed worker's children (a monitor JVM) go with it
-    process.returncode = code = os.waitstatus_to_exitcode(status)
-    return Outcome(task.key, code, timed_out, interrupted, time.perf_counter() - started,
-                   usage.ru_utime + usage.ru_stime, tail(log, 15), os.uname().nodename)
+        _signal_group(worker.pid, signal.SIGKILL)  # a crashed worker's children (a monitor JVM) go with it
+    return Outcome(task.key, os.waitstatus_to_exitcode(status), timed_out, interrupted, time.perf_counter() - started,
+                   cpu, tail(log, 15), os.uname().nodename)
 
 
-def _stop(pid: int) -> tuple[int, Any]:
-    """SIGTERM to the worker's process group, SIGKILL after the grace; reap the worker."""
-    _signal_group(pid, signal.SIGTERM)
-    deadline = time.perf_counter() + KILL_GRACE
-    while time.perf_counter() < deadline:
-        found, status, usage = os.wait4(pid, os.WNOHANG)
-        if found:
-            _signal_group(pid, signal.SIGKILL)  # children that outlived it
-            return status, usage
-        time.sleep(_POLL)
-    _signal_group(pid, signal.SIGKILL)
-    _, status, usage = os.wait4(pid, 0)
-    return status, usage
+class _Worker(Protocol):
+    pid: int
+
+    def poll(self, timeout: float = 0.0) -> tuple[int, float] | None: ...
+
+
+class _Spawned:
+    """A worker started as a new process (os.wait4 gives its CPU and that of every child it waited for)."""
+
+    def __init__(self, command: Sequence[str], run_dir: Path, env: Mapping[str, str] | None) -> None:
+        with open(run_dir / WORKER_LOG, "wb") as out:
+            self._process = subprocess.Popen(list(command), stdout=out, stderr=subprocess.STDOUT,
+                                             stdin=subprocess.DEVNULL, cwd=run_dir, start_new_session=True,
+                                             env={**os.environ, **env} if env else None)
+        self.pid = self._process.pid
+
+    def poll(self, timeout: float = 0.0) -> tuple[int, float] | None:
+        deadline = time.perf_counter() + timeout
+        while True:
+            pid, status, usage = os.wait4(self.pid, os.WNOHANG)
+            if pid:
+                self._process.returncode = os.waitstatus_to_exitcode(status)  # reaped here, not by Popen
+                return status, usage.ru_utime + usage.ru_stime
+            if time.perf_counter() >= deadline:
+                return None
+            time.sleep(min(_POLL, max(deadline - time.perf_counter(), 0.0)))
+
+
+def _start(run_dir: Path, command: Sequence[str] | None, env: Mapping[str, str] | None,
+           forks: ForkServer | None) -> _Worker:
+    if forks is not None and command is None:
+        try:
+            return forks.fork(run_dir, env)
+        except ForkServerError as error:
+            print(f"campaign: {error}; this run's worker starts as a new process", flush=True)
+    return _Spawned(command or worker_command(run_dir), run_dir, env)
+
+
+def _stop(worker: _Worker) -> tuple[int, float]:
+    """SIGTERM to the worker's process group, SIGKILL after the grace; its status and CPU once it ended."""
+    _signal_group(worker.pid, signal.SIGTERM)
+    ended = worker.poll(KILL_GRACE)
+    _signal_group(worker.pid, signal.SIGKILL)  # it, or children that outlived it
+    while ended is None:
+        ended = worker.poll(_POLL)
+    return ended
 
 
 def _signal_group(pid: int, sig: int) -> None:
