@@ -28,28 +28,33 @@ class LocalBackend:
     one thread each.
 
     ``monitor_log``: keep one warm monitor JVM for every run's replay (rei.run.jvm.JarServer), its log there; the
-    workers find its socket in ``$REI_MONITOR_SERVER`` (rei.campaign.worker). ``command`` (for tests) replaces the
+    workers find its socket in ``$REI_MONITOR_SERVER`` (rei.campaign.worker). ``fork_log``: fork the workers from
+    one rei.campaign.forkserver, its log there; else each is a new process. ``command`` (for tests) replaces the
     worker command line of every run.
     """
 
     name = "local"
 
     def __init__(self, workers: int, command: Callable[[RunTask], Sequence[str]] | None = None,
-                 monitor_log: Path | None = None) -> None:
+                 monitor_log: Path | None = None, fork_log: Path | None = None) -> None:
         if workers < 1:
             raise ValueError(f"workers must be >= 1, got {workers}")
         self.workers = workers
         self._command = command
         self._monitor_log = monitor_log
-        self.monitor_cpu = 0.0  # CPU seconds of the warm monitor JVM, once stopped
+        # without ``command``: workers forked by a rei.campaign.forkserver logging there
+        self._forks = ForkServer(fork_log) if fork_log is not None and command is None else None
+
+    def warm_up(self) -> None:
+        """Launches the fork server, which imports the workers' modules while the cases are generated."""
+        if self._forks is not None:
+            self._forks.launch()
 
     def run(self, tasks: Sequence[RunTask], on_outcome: OnOutcome, stop: threading.Event) -> None:
         with contextlib.ExitStack() as stack:
             env = None
-            forks = None
-            if self._command is None and tasks:
-                # beside the runs' folders; its CPU and its workers' count as this process's children's
-                forks = ForkServer(Path(tasks[0].run_dir).parent / "forkserver.log")
+            forks = self._forks
+            if forks is not None:
                 try:
                     stack.enter_context(forks)
                 except ForkServerError as error:  # each worker then starts as a new process
@@ -57,8 +62,6 @@ class LocalBackend:
                     forks = None
             if self._monitor_log is not None and tasks:
                 server = JarServer("monitor", self._monitor_log)
-                # registered first, so it runs after the server has stopped (and its CPU is known)
-                stack.callback(lambda: setattr(self, "monitor_cpu", self.monitor_cpu + server.cpu))
                 try:
                     stack.enter_context(server)
                     env = {MONITOR_SERVER_ENV: str(server.socket)}
@@ -84,7 +87,8 @@ class LocalBackend:
                 raise
 
     def close(self) -> None:
-        pass
+        if self._forks is not None:
+            self._forks.stop()  # launched by warm_up for a campaign that then did not run
 
 
 class RayBackend:
@@ -110,6 +114,9 @@ class RayBackend:
             ray.init(address=address, **init)
         self.workers = int(ray.cluster_resources().get("CPU", 1))
         self._remote = ray.remote(num_cpus=1, max_retries=0)(_ray_supervise)
+
+    def warm_up(self) -> None:
+        pass
 
     def run(self, tasks: Sequence[RunTask], on_outcome: OnOutcome, stop: threading.Event) -> None:
         ray = self._ray

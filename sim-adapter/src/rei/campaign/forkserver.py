@@ -77,12 +77,20 @@ class ForkServer:
             raise RuntimeError("the fork server is not started")
         return self._folder / "fork.sock"
 
-    def start(self) -> Self:
+    def launch(self) -> Self:
+        """Starts the server without waiting for it: it imports while the caller does something else."""
         self._folder = Path(tempfile.mkdtemp(prefix="rei-forks-"))  # 0700: whoever connects runs workers
         self.log.parent.mkdir(parents=True, exist_ok=True)
         with open(self.log, "wb") as log:
             self._process = subprocess.Popen([sys.executable, "-c", _MAIN, str(self.socket)],
                                              stdin=subprocess.PIPE, stdout=log, stderr=subprocess.STDOUT)
+        return self
+
+    def start(self) -> Self:
+        """Launches the server unless it was, and waits until it accepts requests."""
+        if self._process is None:
+            self.launch()
+        assert self._process is not None
         deadline = time.monotonic() + START_TIMEOUT
         while not self.socket.exists():
             if self._process.poll() is not None or time.monotonic() > deadline:
@@ -133,7 +141,7 @@ class ForkServer:
             self._folder = None
 
     def __enter__(self) -> Self:
-        return self.start() if self._process is None else self
+        return self.start()
 
     def __exit__(self, *exc: object) -> None:
         self.stop()

@@ -39,6 +39,8 @@ class Backend(Protocol):
     name: str
     workers: int
 
+    def warm_up(self) -> None: ...  # starts what run() needs, while the cases are generated
+
     def run(self, tasks: Any, on_outcome: Callable[[RunTask, Outcome], None], stop: threading.Event) -> None: ...
 
     def close(self) -> None: ...
@@ -76,6 +78,7 @@ def run_campaign(spec: Spec, out: Path, backend: Backend, *, retry_errors: bool 
     interrupted = False
     metrics: dict[str, Any] = {}
     try:
+        backend.warm_up()
         prepared, prepare_cpu = _prepare(plan, out, prepare_workers, log)
         metrics["prepare"] = {"cases": len(plan.cases), "generated": sum(p.generated for p in prepared.values()),
                               "cpu": round(prepare_cpu, 3),

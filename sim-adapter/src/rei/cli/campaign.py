@@ -53,7 +53,8 @@ def run(args: argparse.Namespace) -> int:
         except Exception as error:  # noqa: BLE001 - any failure to reach the cluster is the user's to fix
             raise CommandError(f"cannot connect to Ray at {args.ray}: {error}") from None
     else:
-        backend = LocalBackend(workers, monitor_log=args.output.resolve() / "runs" / "monitor-server.log")
+        runs = args.output.resolve() / "runs"
+        backend = LocalBackend(workers, monitor_log=runs / "monitor-server.log", fork_log=runs / "forkserver.log")
     try:
         result = run_campaign(spec, args.output, backend, retry_errors=args.retry_errors, prepare_workers=workers)
     except SpecError as error:
