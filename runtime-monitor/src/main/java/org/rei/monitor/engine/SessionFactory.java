@@ -9,6 +9,8 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionException;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.stream.Collectors;
 
@@ -34,8 +36,13 @@ public final class SessionFactory {
 	private SessionFactory() {
 	}
 
-	/** Rule bases already built in this JVM (a warm JVM serves many runs with the same rules). */
-	private static final Map<List<DrlSources.Source>, KieBase> BUILT = new ConcurrentHashMap<>();
+	/**
+	 * Rule bases of this JVM (a warm JVM serves many runs with the same rules), each built once: a caller that asks
+	 * while the same rules are being built waits for that build instead of building them again beside it (a
+	 * background service's first run arrives while the service builds the default rules; a campaign's first
+	 * replays arrive together).
+	 */
+	private static final Map<List<DrlSources.Source>, CompletableFuture<KieBase>> BUILT = new ConcurrentHashMap<>();
 	/** More distinct rule sets than this in one JVM: start over rather than grow without bound. */
 	private static final int MAX_BUILT = 16;
 
@@ -44,17 +51,43 @@ public final class SessionFactory {
 	 * session per call (rule bases are shared safely between sessions and threads).
 	 */
 	public static KieSession build(List<DrlSources.Source> sources) {
-		KieBase base = BUILT.get(sources);
-		if (base == null) {
-			base = kieBase(sources); // outside the map's lock: a failing build throws and caches nothing
-			if (BUILT.size() >= MAX_BUILT) {
-				BUILT.clear();
-			}
-			BUILT.putIfAbsent(List.copyOf(sources), base);
-		}
 		KieSessionConfiguration conf = KieServices.Factory.get().newKieSessionConfiguration();
 		conf.setOption(ClockTypeOption.PSEUDO);
-		return base.newKieSession(conf, null);
+		return base(sources).newKieSession(conf, null);
+	}
+
+	private static KieBase base(List<DrlSources.Source> sources) {
+		List<DrlSources.Source> key = List.copyOf(sources);
+		CompletableFuture<KieBase> building = BUILT.get(key);
+		if (building == null) {
+			if (BUILT.size() >= MAX_BUILT) {
+				BUILT.clear(); // builds under way go on for those waiting on them
+			}
+			CompletableFuture<KieBase> mine = new CompletableFuture<>();
+			building = BUILT.putIfAbsent(key, mine);
+			if (building == null) {
+				try {
+					KieBase base = kieBase(sources);
+					mine.complete(base);
+					return base;
+				} catch (RuntimeException | Error e) {
+					BUILT.remove(key, mine); // a failing build is not kept: the next caller tries again
+					mine.completeExceptionally(e);
+					throw e;
+				}
+			}
+		}
+		try {
+			return building.join();
+		} catch (CompletionException e) {
+			if (e.getCause() instanceof RuntimeException cause) {
+				throw cause; // the builder's own error (file and line), as if this caller had built
+			}
+			if (e.getCause() instanceof Error cause) {
+				throw cause;
+			}
+			throw e;
+		}
 	}
 
 	private static KieBase kieBase(List<DrlSources.Source> sources) {
