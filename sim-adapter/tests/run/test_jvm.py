@@ -3,12 +3,13 @@
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import pytest
 
 from rei import toolchain
-from rei.run.jvm import CDS_ENV, cds_archive, run_jar
+from rei.run.jvm import CDS_ENV, _class_sharing, _keep_archive, cds_archive, run_jar
 
 
 def test_the_first_run_dumps_the_archive_and_later_runs_use_it(tmp_path: Path, monkeypatch: pytest.MonkeyPatch):
@@ -31,3 +32,29 @@ def test_a_failed_run_leaves_no_archive_and_off_means_off(tmp_path: Path, monkey
     assert list((tmp_path / "cds").iterdir()) == []
     monkeypatch.setenv(CDS_ENV, "off")
     assert cds_archive(toolchain.find_jar("monitor"), toolchain.find_java()) is None
+
+
+def test_a_rebuilt_jar_replaces_its_archive_and_leaves_other_checkouts_alone(tmp_path: Path,
+                                                                               monkeypatch: pytest.MonkeyPatch):
+    monkeypatch.setenv(CDS_ENV, str(tmp_path / "cds"))
+    java = toolchain.find_java()
+    jar, other = tmp_path / "a" / "rei-monitor.jar", tmp_path / "b" / "rei-monitor.jar"  # two checkouts
+    for path in (jar, other):
+        path.parent.mkdir()
+        path.write_bytes(b"jar")
+
+    def dump(path: Path) -> Path:  # what a run with sharing does: dump to a temporary name, keep it on success
+        flags, pending = _class_sharing(path, java)
+        assert pending is not None and any(flag.startswith("-XX:ArchiveClassesAtExit=") for flag in flags)
+        pending[0].write_bytes(b"archive")
+        _keep_archive(pending, ok=True)
+        return pending[1]
+
+    legacy = tmp_path / "cds" / "rei-monitor-05b804d74e41dc2b.jsa"  # named as before owners were
+    first, others = dump(jar), dump(other)
+    legacy.write_bytes(b"old")
+    assert _class_sharing(jar, java) == ([f"-XX:SharedArchiveFile={first}"], None)
+    os.utime(jar, ns=(jar.stat().st_atime_ns, jar.stat().st_mtime_ns + 10**9))  # rebuilt
+    second = dump(jar)
+    assert second != first
+    assert sorted(p.name for p in (tmp_path / "cds").iterdir()) == sorted([second.name, others.name])

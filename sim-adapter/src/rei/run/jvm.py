@@ -21,6 +21,7 @@ from __future__ import annotations
 import contextlib
 import hashlib
 import os
+import re
 import shutil
 import socket
 import subprocess
@@ -289,14 +290,34 @@ def run_jar(role: str, args: Sequence[str], log: Path, timeout: float | None = N
 
 
 def cds_archive(jar: Path, java: toolchain.Java) -> Path | None:
-    """Where the class-data-sharing archive of this build of ``jar`` under ``java`` is (or would be); None: off."""
+    """Where the class-data-sharing archive of this build of ``jar`` under ``java`` is (or would be); None: off.
+
+    Named ``<jar>-<owner>-<build>.jsa``: the owner is the jar's path and the Java it runs under, the build its size,
+    time and Java's version. A new build's archive replaces its owner's older ones (``_keep_archive``), so
+    rebuilding REI does not pile up archives of jars that are gone (each is 10-30 MB)."""
     setting = os.environ.get(CDS_ENV, "")
     if setting == "off":
         return None
     folder = Path(setting) if setting else Path.home() / ".cache" / "rei" / "cds"
     stat = jar.stat()
-    build = f"{jar.resolve()}|{stat.st_size}|{stat.st_mtime_ns}|{java.executable}|{java.version}"
-    return folder / f"{jar.stem}-{hashlib.sha256(build.encode()).hexdigest()[:16]}.jsa"
+    owner = _digest(f"{jar.resolve()}|{java.executable}")
+    build = _digest(f"{stat.st_size}|{stat.st_mtime_ns}|{java.version}")
+    return folder / f"{jar.stem}-{owner}-{build}.jsa"
+
+
+def _digest(text: str) -> str:
+    return hashlib.sha256(text.encode()).hexdigest()[:8]
+
+
+def _stale_archives(archive: Path) -> list[Path]:
+    """The same owner's archives of other builds, and archives named as before owners were (``<jar>-<16 hex>``),
+    which nothing uses any more."""
+    stem, owner, _ = archive.stem.rsplit("-", 2)
+    stale = [p for p in archive.parent.glob(f"{stem}-{owner}-*.jsa") if p != archive]
+    return stale + [p for p in archive.parent.glob(f"{stem}-*.jsa") if _OLD_NAME.fullmatch(p.name[len(stem) + 1:])]
+
+
+_OLD_NAME = re.compile(r"[0-9a-f]{16}\.jsa")
 
 
 def _class_sharing(jar: Path, java: toolchain.Java) -> tuple[list[str], tuple[Path, Path] | None]:
@@ -321,6 +342,8 @@ def _keep_archive(dump: tuple[Path, Path], *, ok: bool) -> None:
     try:
         if ok and pending.is_file():
             os.replace(pending, archive)
+            for stale in _stale_archives(archive):  # a running JVM keeps its mapping of an unlinked archive
+                stale.unlink(missing_ok=True)
         else:
             pending.unlink(missing_ok=True)  # a failed run's classes are not worth keeping
     except OSError:
