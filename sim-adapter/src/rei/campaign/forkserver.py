@@ -6,9 +6,11 @@ pybullet, the simulation, the evaluator and the report before its run's first st
 thesis campaign, 7 % of its CPU). A fork of a process that has done so costs milliseconds, and keeps what a
 process per run is for: a run that crashes or hangs takes nothing else with it, and memory never accumulates.
 
-The server (``rei.campaign.forkserver.main``, started by ``ForkServer``) is single-threaded, as forking requires, and a child of
-the campaign. It exits when its standard input ends, so it never outlives the campaign, and stops the workers it
-still has. One request per connection on a Unix socket in a private folder (0700), in JSON lines:
+The server (``rei.campaign.forkserver.main``, started by ``ForkServer``) runs no threads of its own: a fork copies
+only the forking thread, and a lock another thread held would stay locked in the child (numpy's OpenBLAS pool
+re-creates itself after a fork). It is a child of the campaign and exits when its standard input ends, so it
+never outlives the campaign, stopping the workers it still has. One request per connection on a Unix socket in a
+private folder (0700), in JSON lines:
 
     client: {"run_dir": PATH, "env": {NAME: VALUE, ...}}
     server: {"pid": PID}                         the worker runs, in a session of its own, its output in
