@@ -53,7 +53,7 @@ class LocalBackend:
     def run(self, tasks: Sequence[RunTask], on_outcome: OnOutcome, stop: threading.Event) -> None:
         with contextlib.ExitStack() as stack:
             env = None
-            forks = self._forks
+            forks = self._forks if tasks else None
             if forks is not None:
                 try:
                     stack.enter_context(forks)

@@ -22,11 +22,13 @@ A client that hangs up does not stop the worker: the campaign stops workers by s
 
 from __future__ import annotations
 
+import ctypes
 import importlib
 import json
 import os
 import select
 import selectors
+import shutil
 import signal
 import socket
 import subprocess
@@ -47,8 +49,10 @@ PRELOAD = ("rei.campaign.worker", "rei.run.mission_run", "rei.run.reevaluate", "
 WORKER_LOG = "worker.log"
 #: Seconds the server may take to import PRELOAD and listen.
 START_TIMEOUT = 60.0
-#: Seconds a request may wait for its fork (the server answers at once unless it is stuck).
-FORK_TIMEOUT = 10.0
+#: Seconds a client waits for its fork's pid (the server answers at once unless it is stuck).
+FORK_TIMEOUT = 30.0
+#: Seconds the server waits for a request's line once connected (its client sends it at once).
+REQUEST_TIMEOUT = 2.0
 _TICK = 0.05
 # not ``-m rei.campaign.forkserver``: the package imports this module first, which runpy warns about
 _MAIN = "import sys; from rei.campaign.forkserver import main; sys.exit(main())"
@@ -84,8 +88,10 @@ class ForkServer:
         self._folder = Path(tempfile.mkdtemp(prefix="rei-forks-"))  # 0700: whoever connects runs workers
         self.log.parent.mkdir(parents=True, exist_ok=True)
         with open(self.log, "wb") as log:
+            # a session of its own: Ctrl-C reaches the campaign, which stops the workers and then the server
             self._process = subprocess.Popen([sys.executable, "-c", _MAIN, str(self.socket)],
-                                             stdin=subprocess.PIPE, stdout=log, stderr=subprocess.STDOUT)
+                                             stdin=subprocess.PIPE, stdout=log, stderr=subprocess.STDOUT,
+                                             start_new_session=True)
         return self
 
     def start(self) -> Self:
@@ -125,21 +131,21 @@ class ForkServer:
             if process.stdin is not None:
                 process.stdin.close()
             deadline = time.monotonic() + timeout
-            usage = None
-            while usage is None:
-                pid, _, found = os.wait4(process.pid, os.WNOHANG)
+            while process.returncode is None:  # not reaped yet (start's poll reaps a server that died at once)
+                try:
+                    pid, status, usage = os.wait4(process.pid, os.WNOHANG)
+                except ChildProcessError:
+                    break
                 if pid:
-                    usage = found
+                    process.returncode = os.waitstatus_to_exitcode(status)
+                    self.cpu += usage.ru_utime + usage.ru_stime
                 elif time.monotonic() > deadline:
                     process.kill()
-                    _, _, usage = os.wait4(process.pid, 0)
+                    time.sleep(_TICK)
                 else:
                     time.sleep(_TICK)
-            process.returncode = 0
-            self.cpu += usage.ru_utime + usage.ru_stime
         if self._folder is not None:
-            self.socket.unlink(missing_ok=True)
-            self._folder.rmdir()
+            shutil.rmtree(self._folder, ignore_errors=True)
             self._folder = None
 
     def __enter__(self) -> Self:
@@ -218,6 +224,15 @@ def serve(path: Path) -> int:
     listener.listen(16)
     os.rename(str(path) + ".new", path)  # the client waits for the name: it appears once it accepts
     running: dict[int, socket.socket] = {}
+    try:
+        _loop(listener, running)
+    finally:  # whatever ended the loop, the workers do not outlive the server
+        listener.close()
+        _stop_all(running)
+    return 0
+
+
+def _loop(listener: socket.socket, running: dict[int, socket.socket]) -> None:
     with selectors.DefaultSelector() as selector:
         selector.register(listener, selectors.EVENT_READ)
         selector.register(sys.stdin.fileno(), selectors.EVENT_READ)
@@ -226,25 +241,26 @@ def serve(path: Path) -> int:
             for key, _ in selector.select(_TICK):
                 if key.fileobj is listener:
                     connection, _ = listener.accept()
-                    _start(connection, running, keep=(listener, selector))
+                    try:
+                        _start(connection, running, keep=(listener, selector))
+                    except Exception as error:  # noqa: BLE001 - one failed fork (no memory, no fds) is that run's
+                        _answer(connection, {"error": f"cannot fork: {error}"})
+                        connection.close()
                 elif not os.read(sys.stdin.fileno(), 4096):
                     serving = False
             _reap(running)
-    listener.close()
-    _stop_all(running)
-    return 0
 
 
 def _start(connection: socket.socket, running: dict[int, socket.socket], keep: tuple[Any, ...]) -> None:
     try:
-        connection.settimeout(FORK_TIMEOUT)
+        connection.settimeout(REQUEST_TIMEOUT)
         request = json.loads(connection.makefile("rb").readline())
-        run_dir, env = Path(request["run_dir"]), {str(k): str(v) for k, v in request.get("env", {}).items()}
+        run_dir, env = Path(request["run_dir"]), {str(k): str(v) for k, v in dict(request.get("env", {})).items()}
     except (OSError, ValueError, TypeError, KeyError) as error:
         _answer(connection, {"error": f"bad request: {error}"})
         connection.close()
         return
-    sys.stdout.flush()
+    _flush_all()
     pid = os.fork()
     if pid == 0:
         for inherited in (*keep, *running.values(), connection):
@@ -260,8 +276,12 @@ def _become_worker(run_dir: Path, env: Mapping[str, str]) -> None:
     code = 1
     try:
         os.setsid()
-        for name in ("SIGTERM", "SIGINT", "SIGCHLD", "SIGPIPE"):
-            signal.signal(getattr(signal, name), signal.SIG_DFL)
+        # as in a new interpreter: SIGPIPE and SIGXFSZ ignored (writes raise instead), Ctrl-C a KeyboardInterrupt
+        signal.signal(signal.SIGTERM, signal.SIG_DFL)
+        signal.signal(signal.SIGCHLD, signal.SIG_DFL)
+        signal.signal(signal.SIGINT, signal.default_int_handler)
+        signal.signal(signal.SIGPIPE, signal.SIG_IGN)
+        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
         run_dir.mkdir(parents=True, exist_ok=True)
         log = os.open(run_dir / WORKER_LOG, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o644)
         null = os.open(os.devnull, os.O_RDONLY)
@@ -278,8 +298,12 @@ def _become_worker(run_dir: Path, env: Mapping[str, str]) -> None:
         for thread in threading.enumerate():  # what the interpreter's own exit would wait for
             if thread is not threading.main_thread() and not thread.daemon:
                 thread.join()
-    except SystemExit as stop:
-        code = stop.code if isinstance(stop.code, int) else 1
+    except SystemExit as stop:  # as the interpreter reports it
+        if stop.code is None or isinstance(stop.code, int):
+            code = stop.code or 0
+        else:
+            print(stop.code, file=sys.stderr)
+            code = 1
     except BaseException:  # noqa: BLE001 - the worker's log gets it, the campaign sees a crash
         traceback.print_exc()
         code = 1
@@ -289,7 +313,16 @@ def _become_worker(run_dir: Path, env: Mapping[str, str]) -> None:
                 stream.flush()
             except (OSError, ValueError):
                 pass
+        _flush_all()
         os._exit(code)  # never back into the server's loop in this process
+
+
+def _flush_all() -> None:
+    """Python's and C's output buffers (pybullet prints with printf): a fork would copy what they hold into the
+    child, and ``os._exit`` would drop what the child wrote."""
+    sys.stdout.flush()
+    sys.stderr.flush()
+    ctypes.CDLL(None).fflush(None)
 
 
 def _reap(running: dict[int, socket.socket]) -> None:

@@ -70,7 +70,7 @@ public final class SessionFactory {
 					KieBase base = kieBase(sources);
 					mine.complete(base);
 					return base;
-				} catch (RuntimeException | Error e) {
+				} catch (Throwable e) { // whatever it is, those waiting must not wait for ever
 					BUILT.remove(key, mine); // a failing build is not kept: the next caller tries again
 					mine.completeExceptionally(e);
 					throw e;
