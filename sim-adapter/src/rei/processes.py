@@ -127,3 +127,25 @@ class ManagedProcess:
             self._log.write(line)
             self._log.flush()
             on_line(line.rstrip("\n"))
+
+
+def close_and_reap(process: subprocess.Popen[bytes], timeout: float) -> float:
+    """End a server that exits when its standard input ends (a warm JVM, the campaign's fork server): close its
+    input, wait up to ``timeout`` seconds, then kill it. Returns its CPU seconds, those of the children it waited
+    for included (0.0 when it was reaped already, by a ``poll()`` that saw it die)."""
+    if process.stdin is not None:
+        with contextlib.suppress(OSError):
+            process.stdin.close()
+    deadline = time.monotonic() + timeout
+    while process.returncode is None:
+        try:
+            pid, status, usage = os.wait4(process.pid, os.WNOHANG)
+        except ChildProcessError:
+            break
+        if pid:
+            process.returncode = os.waitstatus_to_exitcode(status)
+            return usage.ru_utime + usage.ru_stime
+        if time.monotonic() > deadline:
+            process.kill()
+        time.sleep(0.02)
+    return 0.0

@@ -41,6 +41,7 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import Any, Self
 
+from rei.processes import close_and_reap
 from rei.run.jvm import tail
 
 #: Imported once, before the first fork: what every worker needs (rei.campaign.worker's replay path).
@@ -127,23 +128,8 @@ class ForkServer:
     def stop(self, timeout: float = 10.0) -> None:
         """Closes the server's standard input (it stops its workers and exits), kills it after ``timeout``."""
         process, self._process = self._process, None
-        if process is not None:
-            if process.stdin is not None:
-                process.stdin.close()
-            deadline = time.monotonic() + timeout
-            while process.returncode is None:  # not reaped yet (start's poll reaps a server that died at once)
-                try:
-                    pid, status, usage = os.wait4(process.pid, os.WNOHANG)
-                except ChildProcessError:
-                    break
-                if pid:
-                    process.returncode = os.waitstatus_to_exitcode(status)
-                    self.cpu += usage.ru_utime + usage.ru_stime
-                elif time.monotonic() > deadline:
-                    process.kill()
-                    time.sleep(_TICK)
-                else:
-                    time.sleep(_TICK)
+        if process is not None:  # start's poll() may have reaped a server that died at once
+            self.cpu += close_and_reap(process, timeout)
         if self._folder is not None:
             shutil.rmtree(self._folder, ignore_errors=True)
             self._folder = None

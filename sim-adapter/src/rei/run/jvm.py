@@ -34,6 +34,7 @@ from pathlib import Path
 from typing import IO, Self
 
 from rei import toolchain
+from rei.processes import close_and_reap
 
 FAST_START_FLAGS: tuple[str, ...] = ("-XX:TieredStopAtLevel=1", "-XX:+UseSerialGC")
 CDS_ENV = "REI_CDS_DIR"
@@ -108,24 +109,7 @@ class JarServer:
         if process is None:
             return
         self._process = None
-        if process.stdin is not None:
-            try:
-                process.stdin.close()
-            except OSError:
-                pass
-        deadline = time.perf_counter() + timeout
-        while process.returncode is None:  # not reaped yet (alive() reaps a JVM that died by itself)
-            try:
-                pid, status, usage = os.wait4(process.pid, os.WNOHANG)
-            except ChildProcessError:
-                break
-            if pid:
-                process.returncode = os.waitstatus_to_exitcode(status)
-                self.cpu = usage.ru_utime + usage.ru_stime
-                break
-            if time.perf_counter() > deadline:
-                process.kill()
-            time.sleep(0.02)
+        self.cpu = close_and_reap(process, timeout) or self.cpu  # alive() may have reaped a JVM that died by itself
         if self._dump is not None:
             _keep_archive(self._dump, ok=process.returncode == 0)
         if self._log_file is not None:
