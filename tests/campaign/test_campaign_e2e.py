@@ -178,7 +178,8 @@ groups:
     variants: [{{name: short, controller: "script:SHORT"}}]
 """)
         out = tmp_path / mode
-        result = run_cli("campaign", spec, "-o", out, "--workers", "1", timeout=300)
+        # --no-service: the campaign's own warm JVMs, whether or not an earlier test left a service running
+        result = run_cli("campaign", spec, "-o", out, "--workers", "1", "--no-service", timeout=300)
         assert result.returncode == 0, result.stdout + result.stderr
         run = out / "runs" / "example__simple_navigation__short__r0"
         summaries[mode] = json.loads((run / "summary.json").read_text())

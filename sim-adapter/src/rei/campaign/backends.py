@@ -28,7 +28,8 @@ class LocalBackend:
     one thread each.
 
     ``monitor_log``: keep one warm monitor JVM for every run's replay (rei.run.jvm.JarServer), its log there; the
-    workers find its socket in ``$REI_MONITOR_SERVER`` (rei.campaign.worker). ``fork_log``: fork the workers from
+    workers find its socket in ``$REI_MONITOR_SERVER`` (rei.campaign.worker). ``monitor_server``: replay in that
+    warm monitor JVM instead (the background service's), started by someone else. ``fork_log``: fork the workers from
     one rei.campaign.forkserver, its log there; else each is a new process. ``command`` (for tests) replaces the
     worker command line of every run.
     """
@@ -36,12 +37,14 @@ class LocalBackend:
     name = "local"
 
     def __init__(self, workers: int, command: Callable[[RunTask], Sequence[str]] | None = None,
-                 monitor_log: Path | None = None, fork_log: Path | None = None) -> None:
+                 monitor_log: Path | None = None, fork_log: Path | None = None,
+                 monitor_server: Path | None = None) -> None:
         if workers < 1:
             raise ValueError(f"workers must be >= 1, got {workers}")
         self.workers = workers
         self._command = command
         self._monitor_log = monitor_log
+        self._monitor_server = monitor_server
         # without ``command``: workers forked by a rei.campaign.forkserver logging there
         self._forks = ForkServer(fork_log) if fork_log is not None and command is None else None
 
@@ -60,7 +63,9 @@ class LocalBackend:
                 except ForkServerError as error:  # each worker then starts as a new process
                     print(f"campaign: {error}; each run's worker starts as a new process", flush=True)
                     forks = None
-            if self._monitor_log is not None and tasks:
+            if self._monitor_server is not None:
+                env = {MONITOR_SERVER_ENV: str(self._monitor_server)}
+            elif self._monitor_log is not None and tasks:
                 server = JarServer("monitor", self._monitor_log)
                 try:
                     stack.enter_context(server)

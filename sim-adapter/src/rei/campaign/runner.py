@@ -19,7 +19,7 @@ import json
 import shutil
 import signal
 import threading
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
@@ -64,12 +64,16 @@ class _Interrupted(Exception):
 
 
 def run_campaign(spec: Spec, out: Path, backend: Backend, *, retry_errors: bool = False,
-                 prepare_workers: int = 2, log: Callable[[str], None] = print) -> CampaignResult:
+                 prepare_workers: int = 2, generator: Path | None = None, helpers: Sequence[int] = (),
+                 log: Callable[[str], None] = print) -> CampaignResult:
+    """``generator``: the socket of a warm generator JVM to generate the cases in (the background service's),
+    else the campaign starts one; ``helpers``: pids of processes that work for the campaign without being its
+    children (that service), whose CPU counts as the campaign's."""
     out = out.resolve()
     out.mkdir(parents=True, exist_ok=True)
     if spec.source is not None and spec.source.resolve() != (out / "spec.yaml"):
         shutil.copyfile(spec.source, out / "spec.yaml")
-    start = Sample.now()
+    start = Sample.now(helpers)
     plan = plan_campaign(spec, out)
     stop = threading.Event()
     previous = signal.signal(signal.SIGTERM, _on_sigterm) if threading.current_thread() is threading.main_thread() \
@@ -79,7 +83,7 @@ def run_campaign(spec: Spec, out: Path, backend: Backend, *, retry_errors: bool 
     metrics: dict[str, Any] = {}
     try:
         backend.warm_up()
-        prepared, prepare_cpu = _prepare(plan, out, prepare_workers, log)
+        prepared, prepare_cpu = _prepare(plan, out, prepare_workers, generator, log)
         metrics["prepare"] = {"cases": len(plan.cases), "generated": sum(p.generated for p in prepared.values()),
                               "cpu": round(prepare_cpu, 3),
                               "wall": round(Sample.now().wall - start.wall, 3)}
@@ -114,7 +118,7 @@ def run_campaign(spec: Spec, out: Path, backend: Backend, *, retry_errors: bool 
         if previous is not None:
             signal.signal(signal.SIGTERM, previous)
     results = tuple(r for r in (finished_result(t) for t in plan.runs) if r is not None)
-    metrics["campaign"] = usage(start, Sample.now())
+    metrics["campaign"] = usage(start, Sample.now(helpers))
     metrics["runs"] = _run_metrics(results)
     result = CampaignResult(results, len(plan.runs), executed, interrupted, metrics)
     write_outputs(spec, out, plan, result)
@@ -156,15 +160,17 @@ def _json_or_none(path: Path) -> Any:
         return None
 
 
-def _prepare(plan: Plan, out: Path, workers: int, log: Callable[[str], None]) -> tuple[dict[str, Prepared], float]:
-    """Every case generated (in one warm generator JVM when any needs it); and that JVM's CPU seconds."""
+def _prepare(plan: Plan, out: Path, workers: int, generator: Path | None,
+             log: Callable[[str], None]) -> tuple[dict[str, Prepared], float]:
+    """Every case generated (in one warm generator JVM when any needs it: ``generator``, else one started here);
+    and the CPU seconds generation took."""
     server = None
-    if any(needs_generation(source, out) for source in plan.cases):
+    if generator is None and any(needs_generation(source, out) for source in plan.cases):
         try:
             server = JarServer("cli", out / "cases" / "generator.log").start()
         except (JarServerError, OSError) as error:  # each case then starts a JVM of its own
             log(f"campaign: no warm generator JVM ({error}); each case is generated in a JVM of its own")
-    socket = server.socket if server is not None else None
+    socket = server.socket if server is not None else generator
     try:
         with ThreadPoolExecutor(max(1, workers), thread_name_prefix="rei-prepare") as pool:
             prepared = {p.key: p for p in pool.map(lambda source: prepare_case(source, out, server=socket),
@@ -172,6 +178,7 @@ def _prepare(plan: Plan, out: Path, workers: int, log: Callable[[str], None]) ->
     finally:
         if server is not None:
             server.stop()
+    # started here: the whole JVM's; else what each command's thread took (in the helper's JVM, or in a JVM each)
     cpu = server.cpu if server is not None else sum(p.cpu for p in prepared.values())
     for p in prepared.values():
         if p.error:

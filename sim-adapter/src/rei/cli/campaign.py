@@ -5,7 +5,9 @@ The spec lists test cases or room-generator settings, variants (humans on/off, f
 repetitions and seeds (docs/campaigns.md). Runs go to worker processes on this machine (`--workers`, default:
 one per core) or to a Ray cluster (`--ray ADDRESS`, or `--ray local` for a Ray instance started here). A run
 that crashes or exceeds the spec's timeout is recorded as ERROR and the campaign goes on; an interrupted
-campaign resumes where it stopped when started again with the same OUT. Writes OUT/summary.csv (the thesis's
+campaign resumes where it stopped when started again with the same OUT. When the background service of `rei run`
+runs already, the cases are generated and the runs replayed in its warm JVMs (`--no-service`: in the campaign's
+own); a campaign never starts one. Writes OUT/summary.csv (the thesis's
 Tables 5 and 7), OUT/runs.csv and OUT/report.html. Exit 0: every run completed; 1: some ended in ERROR;
 2: bad spec or arguments; 130: interrupted.
 """
@@ -13,6 +15,7 @@ Tables 5 and 7), OUT/runs.csv and OUT/report.html. Exit 0: every run completed; 
 from __future__ import annotations
 
 import argparse
+import contextlib
 import os
 from pathlib import Path
 from typing import Any
@@ -30,6 +33,8 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
                         help=f"runs at a time on this machine (default: the number of cores, {os.cpu_count()})")
     parser.add_argument("--ray", metavar="ADDRESS", help="run on a Ray cluster (HOST:PORT, or 'local')")
     parser.add_argument("--retry-errors", action="store_true", help="run again the runs that ended in ERROR")
+    parser.add_argument("--no-service", action="store_true",
+                        help="start the campaign's own JVMs even when the background service runs")
     parser.set_defaults(handler=run)
 
 
@@ -52,11 +57,25 @@ def run(args: argparse.Namespace) -> int:
             raise CommandError("--ray needs Ray: pip install 'rei[campaign-ray]'") from None
         except Exception as error:  # noqa: BLE001 - any failure to reach the cluster is the user's to fix
             raise CommandError(f"cannot connect to Ray at {args.ray}: {error}") from None
-    else:
+    service = None
+    if not args.ray:
+        from rei.service.client import running
+
+        service = None if args.no_service else running()
         runs = args.output.resolve() / "runs"
-        backend = LocalBackend(workers, monitor_log=runs / "monitor-server.log", fork_log=runs / "forkserver.log")
+        backend = LocalBackend(workers, monitor_log=runs / "monitor-server.log", fork_log=runs / "forkserver.log",
+                               monitor_server=service.monitor if service is not None else None)
     try:
-        result = run_campaign(spec, args.output, backend, retry_errors=args.retry_errors, prepare_workers=workers)
+        with contextlib.ExitStack() as stack:
+            if service is not None:
+                from rei.service.client import Lease
+
+                print(f"campaign: generating and replaying in the background service's warm JVMs (pid {service.pid}; "
+                      "--no-service for the campaign's own)", flush=True)
+                stack.enter_context(Lease(service))
+            result = run_campaign(spec, args.output, backend, retry_errors=args.retry_errors, prepare_workers=workers,
+                                  generator=service.cli if service is not None else None,
+                                  helpers=(service.pid,) if service is not None else ())
     except SpecError as error:
         raise CommandError(str(error)) from None
     finally:

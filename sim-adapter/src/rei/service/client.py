@@ -8,14 +8,15 @@ import os
 import socket
 import subprocess
 import sys
+import threading
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, Self
 
 from rei.lifetime import alive
-from rei.service import DIR_ENV, LOG_NAME, PID_NAME, SOCKET_NAME, fingerprint, service_dir
+from rei.service import DIR_ENV, IDLE_SECONDS, LOG_NAME, PID_NAME, SOCKET_NAME, fingerprint, service_dir
 from rei.wamp.auth import private_dir
 
 #: The longest path of a Unix socket (Linux: 108 bytes with the terminating zero).
@@ -35,6 +36,7 @@ class Service:
     fingerprint: str
     monitor: Path | None  # the warm monitor JVM's socket (rei.run.jvm), None while it is being replaced
     cli: Path | None  # the warm generator JVM's socket
+    idle: float = IDLE_SECONDS  # it stops after this many seconds without a request
 
     def take_router(self, owner: int, wait: float) -> dict[str, Any] | None:
         """The spare router's description (``Router.adopt``), now this run's; None when none is ready in time."""
@@ -92,9 +94,9 @@ def connect(log: Callable[[str], None] = print, folder: Path | None = None) -> S
             time.sleep(0.05)
 
 
-def running_monitor(folder: Path | None = None) -> Path | None:
-    """The warm monitor JVM's socket of a service that runs already and is current, else None (never starts one:
-    a command that needs a monitor once is not worth a router and two JVMs)."""
+def running(folder: Path | None = None) -> Service | None:
+    """The service if it runs already and is of this build, else None. Never starts one: for commands whose own JVMs
+    cost less than a router and two JVMs would (``rei evaluate``, ``rei campaign``)."""
     from rei.service import enabled
 
     if not enabled():
@@ -103,7 +105,40 @@ def running_monitor(folder: Path | None = None) -> Path | None:
         found = _hello(folder or service_dir())
     except (ServiceError, ValueError, KeyError):
         return None
-    return found.monitor if found.fingerprint == fingerprint() else None
+    return found if found.fingerprint == fingerprint() else None
+
+
+def running_monitor(folder: Path | None = None) -> Path | None:
+    """The warm monitor JVM's socket of a service that runs already and is current, else None."""
+    found = running(folder)
+    return found.monitor if found is not None else None
+
+
+class Lease:
+    """Keeps a service from stopping for idleness while a long job (a campaign) uses its JVMs without asking it
+    anything: says hello four times per idle period until the ``with`` block ends. Should the service go away,
+    the job's commands fall back to JVMs of their own (rei.run.jvm.run_jar) and ``log`` says so once."""
+
+    def __init__(self, service: Service, log: Callable[[str], None] = print) -> None:
+        self.service, self.every, self.log = service, max(0.1, service.idle / 4), log
+        self._done = threading.Event()
+        self._thread = threading.Thread(target=self._renew, name="rei-service-lease", daemon=True)
+
+    def __enter__(self) -> Self:
+        self._thread.start()
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self._done.set()
+        self._thread.join()
+
+    def _renew(self) -> None:
+        while not self._done.wait(self.every):
+            try:
+                request(self.service.folder, {"op": "hello"}, timeout=5.0)
+            except ServiceError as error:
+                self.log(f"rei: {error}; commands start JVMs of their own from now on")
+                return
 
 
 def stop(folder: Path | None = None) -> bool:
@@ -121,7 +156,8 @@ def stop(folder: Path | None = None) -> bool:
 def _hello(folder: Path) -> Service:
     answer = request(folder, {"op": "hello"}, timeout=5.0)
     return Service(folder, int(answer["pid"]), str(answer.get("fingerprint")),
-                   *(Path(answer[r]) if answer.get(r) else None for r in ("monitor", "cli")))
+                   *(Path(answer[r]) if answer.get(r) else None for r in ("monitor", "cli")),
+                   idle=float(answer.get("idle", IDLE_SECONDS)))
 
 
 def _await_released(folder: Path, pid: int) -> None:
@@ -153,4 +189,4 @@ def _spawn(folder: Path) -> None:
                          env={**os.environ, "REI_SERVICE_DIR": str(folder)})
 
 
-__all__ = ["Service", "ServiceError", "connect", "request", "running_monitor", "stop"]
+__all__ = ["Lease", "Service", "ServiceError", "connect", "request", "running", "running_monitor", "stop"]

@@ -3,7 +3,8 @@
 
 Control protocol, one request per connection on ``service.sock`` (a JSON object per line each way):
 
-    {"op": "hello"}                       -> {"pid": P, "fingerprint": F, "monitor": SOCKET, "cli": SOCKET}
+    {"op": "hello"}                       -> {"pid": P, "fingerprint": F, "monitor": SOCKET, "cli": SOCKET,
+                                              "idle": SECONDS (it stops after that long without a request)}
     {"op": "router", "owner": PID, "wait": S}
                                           -> {"router": Router.describe()} or {"router": null} (none within S)
     {"op": "status"}                      -> {"pid", "monitor", "cli", "spare": RUN_ID|null, "handed": N,
@@ -229,7 +230,7 @@ class Service:
         with self.lock:
             self.last_request = time.monotonic()
         if op == "hello":
-            return {"pid": os.getpid(), "fingerprint": self.fingerprint,
+            return {"pid": os.getpid(), "fingerprint": self.fingerprint, "idle": self.idle,
                     **{role: self._jvm_socket(role) for role in self.jvms}}
         if op == "router":
             return {"router": self._hand_over(int(request["owner"]), float(request.get("wait", 0.0)))}
