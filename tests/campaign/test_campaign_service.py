@@ -5,6 +5,7 @@ service's CPU as its own, and judges every run as a campaign with its own JVMs d
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import shutil
@@ -22,7 +23,7 @@ from rei.service import DIR_ENV
 from rei.service import client as service_client
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
-IDLE_S = 2.0  # the service's idle time: far shorter than the campaign, which keeps it alive
+IDLE_S = 4.0  # the service's idle time: far shorter than the campaign, which keeps it alive
 
 
 @pytest.fixture
@@ -43,7 +44,8 @@ def idle_service(monkeypatch: pytest.MonkeyPatch) -> Iterator[tuple[service_clie
         time.sleep(0.1)
         found = service_client.running(folder)  # a hello: it also keeps the service from stopping meanwhile
     yield found, process
-    service_client.stop(folder)
+    with contextlib.suppress(service_client.ServiceError):  # it may have stopped for idleness meanwhile
+        service_client.request(folder, {"op": "stop"})
     process.wait(timeout=30)
     shutil.rmtree(folder, ignore_errors=True)
 
@@ -58,7 +60,7 @@ name: served
 groups:
   - name: example
     cases: [{REPO_ROOT / "examples" / "simple_navigation.rei"}]
-    repetitions: 2
+    repetitions: 3
     variants: [{{name: nav}}]
 """, encoding="utf-8")
     summaries: dict[str, list[Any]] = {}
@@ -71,7 +73,7 @@ groups:
         assert result.returncode == 0, result.stdout + result.stderr
         usage = json.loads((out / "campaign.json").read_text())["metrics"]["campaign"]
         keys = sorted(p.name for p in (out / "runs").iterdir() if p.is_dir())
-        assert len(keys) == 2
+        assert len(keys) == 3
         if setting == "service":
             assert f"background service's warm JVMs (pid {service.pid}" in result.stdout
             # hellos kept it: without them it would have stopped IDLE_S seconds after the campaign's first request

@@ -29,22 +29,23 @@ class LocalBackend:
 
     ``monitor_log``: keep one warm monitor JVM for every run's replay (rei.run.jvm.JarServer), its log there; the
     workers find its socket in ``$REI_MONITOR_SERVER`` (rei.campaign.worker). ``monitor_server``: replay in that
-    warm monitor JVM instead (the background service's), started by someone else. ``fork_log``: fork the workers from
-    one rei.campaign.forkserver, its log there; else each is a new process. ``command`` (for tests) replaces the
-    worker command line of every run.
+    warm monitor JVM instead (the background service's), started by someone else. ``worker_env``: added to every
+    worker's environment. ``fork_log``: fork the workers from one rei.campaign.forkserver, its log there; else
+    each is a new process. ``command`` (for tests) replaces the worker command line of every run.
     """
 
     name = "local"
 
     def __init__(self, workers: int, command: Callable[[RunTask], Sequence[str]] | None = None,
                  monitor_log: Path | None = None, fork_log: Path | None = None,
-                 monitor_server: Path | None = None) -> None:
+                 monitor_server: Path | None = None, worker_env: dict[str, str] | None = None) -> None:
         if workers < 1:
             raise ValueError(f"workers must be >= 1, got {workers}")
         self.workers = workers
         self._command = command
         self._monitor_log = monitor_log
         self._monitor_server = monitor_server
+        self._worker_env = dict(worker_env or {})
         # without ``command``: workers forked by a rei.campaign.forkserver logging there
         self._forks = ForkServer(fork_log) if fork_log is not None and command is None else None
 
@@ -55,7 +56,7 @@ class LocalBackend:
 
     def run(self, tasks: Sequence[RunTask], on_outcome: OnOutcome, stop: threading.Event) -> None:
         with contextlib.ExitStack() as stack:
-            env = None
+            env = dict(self._worker_env)
             forks = self._forks if tasks else None
             if forks is not None:
                 try:
@@ -64,12 +65,12 @@ class LocalBackend:
                     print(f"campaign: {error}; each run's worker starts as a new process", flush=True)
                     forks = None
             if self._monitor_server is not None:
-                env = {MONITOR_SERVER_ENV: str(self._monitor_server)}
+                env[MONITOR_SERVER_ENV] = str(self._monitor_server)
             elif self._monitor_log is not None and tasks:
                 server = JarServer("monitor", self._monitor_log)
                 try:
                     stack.enter_context(server)
-                    env = {MONITOR_SERVER_ENV: str(server.socket)}
+                    env[MONITOR_SERVER_ENV] = str(server.socket)
                 except (JarServerError, OSError) as error:  # each replay then starts a JVM of its own
                     print(f"campaign: no warm monitor JVM ({error}); each run replays in a JVM of its own", flush=True)
             self._run(tasks, on_outcome, stop, env, forks)

@@ -62,15 +62,21 @@ def run(args: argparse.Namespace) -> int:
         from rei.service.client import running
 
         service = None if args.no_service else running()
+        if service is not None and service.monitor is None and service.cli is None:
+            service = None  # both its JVMs are being replaced: nothing of it to use
         runs = args.output.resolve() / "runs"
         backend = LocalBackend(workers, monitor_log=runs / "monitor-server.log", fork_log=runs / "forkserver.log",
-                               monitor_server=service.monitor if service is not None else None)
+                               monitor_server=service.monitor if service is not None else None,
+                               # mode: pipeline runs `rei run`, which would use (or start) the service
+                               worker_env={"REI_SERVICE": "off"} if args.no_service else None)
     try:
         with contextlib.ExitStack() as stack:
             if service is not None:
                 from rei.service.client import Lease
 
-                print(f"campaign: generating and replaying in the background service's warm JVMs (pid {service.pid}; "
+                used = " and ".join(what for what, socket in (("generating", service.cli),
+                                                                ("replaying", service.monitor)) if socket)
+                print(f"campaign: {used} in the background service's warm JVMs (pid {service.pid}; "
                       "--no-service for the campaign's own)", flush=True)
                 stack.enter_context(Lease(service))
             result = run_campaign(spec, args.output, backend, retry_errors=args.retry_errors, prepare_workers=workers,

@@ -116,8 +116,9 @@ def running_monitor(folder: Path | None = None) -> Path | None:
 
 class Lease:
     """Keeps a service from stopping for idleness while a long job (a campaign) uses its JVMs without asking it
-    anything: says hello four times per idle period until the ``with`` block ends. Should the service go away,
-    the job's commands fall back to JVMs of their own (rei.run.jvm.run_jar) and ``log`` says so once."""
+    anything: says hello four times per idle period until the ``with`` block ends. A hello that fails is tried
+    again while the service's process lives. Should the service go away or be replaced by another (its JVMs' sockets
+    are then gone), the job's commands fall back to JVMs of their own (rei.run.jvm.run_jar) and ``log`` says so."""
 
     def __init__(self, service: Service, log: Callable[[str], None] = print) -> None:
         self.service, self.every, self.log = service, max(0.1, service.idle / 4), log
@@ -135,9 +136,16 @@ class Lease:
     def _renew(self) -> None:
         while not self._done.wait(self.every):
             try:
-                request(self.service.folder, {"op": "hello"}, timeout=5.0)
-            except ServiceError as error:
-                self.log(f"rei: {error}; commands start JVMs of their own from now on")
+                answer = request(self.service.folder, {"op": "hello"}, timeout=5.0)
+            except (ServiceError, ValueError) as error:  # busy, or a reply cut short: again, unless it is gone
+                if alive(self.service.pid):
+                    continue
+                self.log(f"rei: the background service (pid {self.service.pid}) is gone ({error}); commands start "
+                         "JVMs of their own from now on")
+                return
+            if answer.get("pid") != self.service.pid:
+                self.log(f"rei: the background service (pid {self.service.pid}) was replaced; commands start JVMs "
+                         "of their own from now on")
                 return
 
 
