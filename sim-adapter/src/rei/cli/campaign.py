@@ -65,7 +65,9 @@ def run(args: argparse.Namespace) -> int:
         if service is not None and service.monitor is None and service.cli is None:
             service = None  # both its JVMs are being replaced: nothing of it to use
         runs = args.output.resolve() / "runs"
-        backend = LocalBackend(workers, monitor_log=runs / "monitor-server.log", fork_log=runs / "forkserver.log",
+        # mode: pipeline runs `rei run`, whose monitor is live: a warm JVM for replays would idle
+        backend = LocalBackend(workers, monitor_log=runs / "monitor-server.log" if spec.mode == "replay" else None,
+                               fork_log=runs / "forkserver.log",
                                monitor_server=service.monitor if service is not None else None,
                                # mode: pipeline runs `rei run`, which would use (or start) the service
                                worker_env={"REI_SERVICE": "off"} if args.no_service else None)
