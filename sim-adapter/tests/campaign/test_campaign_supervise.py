@@ -78,3 +78,16 @@ def _processes_running(needle: str) -> bool:
         if needle in cmd and stat.split(") ", 1)[1].split()[0] != "Z":
             mine.append(pid)
     return bool(mine)
+
+
+def test_the_workers_get_the_backends_environment(tmp_path: Path) -> None:
+    # what `rei campaign --no-service` relies on: REI_SERVICE=off reaches the runs (mode: pipeline runs `rei run`)
+    seen = python("import os; open('seen', 'w').write(os.environ.get('REI_SERVICE', '-') + ' ' "
+                  "+ os.environ.get('REI_MONITOR_SERVER', '-'))\n" + WRITES_SUMMARY)
+    tasks = [task(tmp_path, "one")]
+    outcomes: dict[str, Outcome] = {}
+    LocalBackend(1, command=lambda t: seen, worker_env={"REI_SERVICE": "off"},
+                 monitor_server=tmp_path / "jvm.sock").run(tasks, lambda t, o: outcomes.__setitem__(t.key, o),
+                                                           threading.Event())
+    assert make_result(tasks[0], outcomes["one"]).status == "COMPLETED"
+    assert (Path(tasks[0].run_dir) / "seen").read_text() == f"off {tmp_path / 'jvm.sock'}"
