@@ -19,7 +19,7 @@ from typing import Any
 
 import pytest
 
-from rei.service import DIR_ENV
+from rei.service import DIR_ENV, SWITCH_ENV
 from rei.service import client as service_client
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
@@ -32,7 +32,7 @@ def idle_service(monkeypatch: pytest.MonkeyPatch) -> Iterator[tuple[service_clie
     process (a child of the test's: it stays a zombie when it ends, so ``poll()`` says whether it runs)."""
     folder = Path(tempfile.mkdtemp(prefix="rei-svc-"))  # short: a Unix socket's path has 107 bytes
     monkeypatch.setenv(DIR_ENV, str(folder))
-    monkeypatch.delenv("REI_SERVICE", raising=False)
+    monkeypatch.delenv(SWITCH_ENV, raising=False)
     with open(folder / "service.log", "ab") as log:
         process = subprocess.Popen([sys.executable, "-m", "rei.service", "--idle", str(IDLE_S)], cwd=folder,
                                    stdin=subprocess.DEVNULL, stdout=log, stderr=subprocess.STDOUT,

@@ -17,6 +17,19 @@ import sys
 from collections.abc import Iterator, Sequence
 
 
+def stat_fields(pid: int) -> list[str] | None:
+    """The fields of ``/proc/PID/stat`` after the command name (state, ppid, pgrp, ...: proc(5)'s fields 3 on, so
+    index ``i`` is field ``i + 3``); None when the process is gone or there is no /proc. The name is cut at its
+    last ``)``: it may hold spaces and parentheses."""
+    try:
+        with open(f"/proc/{pid}/stat", encoding="ascii", errors="replace") as f:
+            stat = f.read()
+    except OSError:
+        return None
+    _, paren, fields = stat.rpartition(")")
+    return fields.split() if paren else None
+
+
 def alive(pid: int) -> bool:
     """Whether process ``pid`` exists (one of another user counts; a zombie too, until its parent reaps it)."""
     try:

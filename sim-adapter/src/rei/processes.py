@@ -21,7 +21,7 @@ import time
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
-from rei.lifetime import die_with_parent
+from rei.lifetime import die_with_parent, stat_fields
 
 _TAIL_BYTES = 64 * 1024
 
@@ -108,12 +108,9 @@ class ManagedProcess:
         """Whether a process of the group is still running (zombies aside; the leader is reaped here)."""
         self._process.poll()
         group = self._process.pid
-        for stat in Path("/proc").glob("[0-9]*/stat"):
-            try:
-                fields = stat.read_text().rsplit(")", 1)[1].split()
-            except (OSError, IndexError):
-                continue
-            if fields[0] != "Z" and int(fields[2]) == group:  # state, then ppid, then pgrp
+        for entry in Path("/proc").glob("[0-9]*"):
+            fields = stat_fields(int(entry.name))
+            if fields is not None and fields[0] != "Z" and int(fields[2]) == group:  # state, then ppid, then pgrp
                 return True
         return False
 

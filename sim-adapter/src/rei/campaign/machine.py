@@ -16,6 +16,8 @@ import time
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+from rei.lifetime import stat_fields
+
 
 @dataclass(frozen=True, slots=True)
 class Sample:
@@ -44,14 +46,9 @@ def tree_cpu(pid: int) -> float:
     except OSError:
         return 0.0
     for name in names:
-        if not name.isdigit():
+        fields = stat_fields(int(name)) if name.isdigit() else None
+        if fields is None:  # not a process, or ended meanwhile
             continue
-        try:
-            with open(f"/proc/{name}/stat", encoding="ascii", errors="replace") as f:
-                stat = f.read()
-        except OSError:  # ended meanwhile
-            continue
-        fields = stat[stat.rindex(")") + 2:].split()  # after the command, which may hold spaces and parentheses
         parents.setdefault(int(fields[1]), []).append(int(name))
         # utime, stime, cutime, cstime: its own and its reaped children's
         times[int(name)] = sum(int(x) for x in fields[11:15]) / tick

@@ -59,6 +59,7 @@ def run(args: argparse.Namespace) -> int:
             raise CommandError(f"cannot connect to Ray at {args.ray}: {error}") from None
     service = None
     if not args.ray:
+        from rei.service import SWITCH_ENV
         from rei.service.client import running
 
         service = None if args.no_service else running()
@@ -70,7 +71,7 @@ def run(args: argparse.Namespace) -> int:
                                fork_log=runs / "forkserver.log",
                                monitor_server=service.monitor if service is not None else None,
                                # mode: pipeline runs `rei run`, which would use (or start) the service
-                               worker_env={"REI_SERVICE": "off"} if args.no_service else None)
+                               worker_env={SWITCH_ENV: "off"} if args.no_service else None)
     try:
         with contextlib.ExitStack() as stack:
             if service is not None:

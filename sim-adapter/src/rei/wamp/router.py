@@ -33,7 +33,7 @@ from pathlib import Path
 from types import TracebackType
 from typing import Any, Self
 
-from rei.lifetime import die_with_parent
+from rei.lifetime import die_with_parent, stat_fields
 from rei.wamp.auth import (
     Credentials,
     load_credentials,
@@ -468,10 +468,7 @@ class _Foreign:
 
     def poll(self) -> int | None:
         if self.returncode is None:
-            try:
-                fields = Path(f"/proc/{self.pid}/stat").read_text().rsplit(")", 1)[1].split()
-            except (OSError, IndexError):
-                fields = ["gone"]
+            fields = stat_fields(self.pid) or ["gone"]
             if fields[0] == "Z" and len(fields) > 49:  # a zombie's wait status (field 52), until its parent reaps it
                 self.returncode = os.waitstatus_to_exitcode(int(fields[49]))
             elif fields[0] in ("Z", "X", "gone"):
