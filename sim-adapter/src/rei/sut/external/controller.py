@@ -75,7 +75,8 @@ class ExternalController(Controller):
     """A controller in another process, reached through ``client`` (the simulation's session)."""
 
     def __init__(self, client: WampClient, run_id: str, *, clock: Clock, deadline: float, limits: RobotLimits,
-                 scan_time: float, first_deadline: float | None = None, log: Callable[[str], None] = print) -> None:
+                 scan_time: float, first_deadline: float | None = None, now: Callable[[], float] | None = None,
+                 log: Callable[[str], None] = print) -> None:
         self._client = client
         self._run_id = run_id
         self.clock: Clock = clock
@@ -98,7 +99,10 @@ class ExternalController(Controller):
         self._joined = False
         self._hello: dict[str, Any] | None = None
         self.name: str | None = None  # what the SUT called itself in hello
-        self._t = 0.0
+        self._t = 0.0  # the last tick's time
+        # the simulation clock: the mission executor sets a goal (or cancels it) at the time of the tick that
+        # follows, before ``step`` sees that tick, so stamping with the last tick's time would be a period early
+        self._now = now if now is not None else (lambda: self._t)
 
     # -- set-up ------------------------------------------------------------------------------------------------
 
@@ -136,11 +140,11 @@ class ExternalController(Controller):
     def set_goal(self, goal: NavGoal) -> None:
         self._goal = goal.index
         self._status, self._text = NavStatus.ACTIVE, ""  # the action client's view until the server reports
-        self._client.publish(protocol.uri(self._run_id, "goal"), protocol.goal_message(self._t, goal))
+        self._client.publish(protocol.uri(self._run_id, "goal"), protocol.goal_message(self._now(), goal))
 
     def cancel(self) -> None:
         if self._goal is not None:
-            self._client.publish(protocol.uri(self._run_id, "cancel"), protocol.cancel_message(self._t, self._goal))
+            self._client.publish(protocol.uri(self._run_id, "cancel"), protocol.cancel_message(self._now(), self._goal))
         if self._status is NavStatus.ACTIVE:
             self._status, self._text = NavStatus.CANCELLED, "cancelled by the client"
 

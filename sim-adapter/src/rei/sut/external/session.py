@@ -26,7 +26,8 @@ def external_sut(options: SutOptions, client: WampClient, run_id: str, out_dir: 
     robot = case.world.robot
     limits = protocol.RobotLimits(robot.drive.max_linear_velocity, robot.drive.max_angular_velocity)
     controller = ExternalController(client, run_id, clock=options.clock, deadline=options.deadline, limits=limits,
-                                    scan_time=1.0 / robot.lidar.rate, first_deadline=options.join_timeout, log=log)
+                                    scan_time=1.0 / robot.lidar.rate, first_deadline=options.join_timeout, now=now,
+                                    log=log)
     controller.attach(protocol.hello_answer(
         run_id=run_id, clock=options.clock, control_rate=control_rate, deadline=options.deadline,
         start=case.mission.start, goals=len(case.mission.goals),
