@@ -7,6 +7,7 @@ the world, the mission and the monitor name the world's robot, the SDF holds exa
 
 from __future__ import annotations
 
+import json
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -22,6 +23,20 @@ WORLD_JSON = "world.json"
 MISSION_XML = "mission.xml"
 ANIMATION_JSON = "animation.json"
 MONITOR_JSON = "monitor.json"
+
+
+def case_of_run(out: Path) -> Path | None:
+    """The generated case a run was made from: ``OUT/case`` (rei run, campaigns, rei import), else the folder
+    ``OUT/sim.json`` names (rei sim GEN -o OUT simulates a case that lives elsewhere); None when neither exists."""
+    if (out / "case" / WORLD_JSON).is_file():
+        return out / "case"
+    try:
+        recorded = json.loads((out / "sim.json").read_text(encoding="utf-8")).get("case")
+    except (OSError, ValueError, AttributeError):
+        return None
+    if isinstance(recorded, str) and (Path(recorded) / WORLD_JSON).is_file():
+        return Path(recorded)
+    return None
 
 
 @dataclass(frozen=True, slots=True)

@@ -29,6 +29,7 @@ from typing import Any
 from rei.evaluation.context import CaseContext, VerdictSettings
 from rei.evaluation.junit import write_junit
 from rei.evaluation.log import EventLog, format_number
+from rei.evaluation.metrics import LIST_KEYS, NAMES, MetricsError, compute_metrics
 from rei.evaluation.mission_info import MissionInfo, MissionInfoError
 from rei.evaluation.outcome import Evidence
 from rei.evaluation.signals import (
@@ -258,6 +259,7 @@ class Evaluator:
                           mission_recorded=self.settings.mission, transitions=self.transitions)
             context = CaseContext.from_configs(self._mission, self.monitor_config, self.world, self.settings)
             verdicts = judge(trace, context)
+            metrics, metrics_error = _metrics(self.out_dir)
             testcase = (self._mission.testcase if self._mission and self._mission.testcase
                         else _text((self.monitor_config or {}).get("testcase")))
             mission = self._mission.name if self._mission else None
@@ -270,6 +272,7 @@ class Evaluator:
                 tasks=_tasks(signals, self._task_reasons), verdicts=verdicts,
                 problems=(*problems, *self._notes), utility_source=self.utilities.source,
                 files={"events": EVENTS_FILE, "verdicts": VERDICTS_FILE},
+                metrics=metrics, metrics_error=metrics_error,
             )
             self._log.close()
             properties = {"run_id": run_id, "testcase": testcase or "", "mission": mission or "",
@@ -337,3 +340,12 @@ def _finite(value: float | None) -> float | None:
 
 def _text(value: Any) -> str | None:
     return value if isinstance(value, str) else None
+
+
+def _metrics(out_dir: Path) -> tuple[dict[str, Any], str | None]:
+    """The run's navigation metrics from what it recorded, or all None and why (a run that broke before it
+    recorded anything, an evaluator fed by hand)."""
+    try:
+        return compute_metrics(out_dir), None
+    except (MetricsError, OSError, ValueError) as error:
+        return dict.fromkeys((*NAMES, *LIST_KEYS)), str(error)

@@ -3,7 +3,9 @@
 counts, tasks), which requirements held (verdicts with evidence) and whether the run itself completed.
 
 Format ``rei-summary/1``; keys in the order below. ``status`` is the run's (COMPLETED or ERROR, with
-``error``); the robot's performance is in ``total_utility``, ``tasks`` and ``verdicts``.
+``error``); the robot's performance is in ``total_utility``, ``tasks``, ``verdicts`` and ``metrics`` (the
+navigation metrics of docs/metrics.md: every name of rei.evaluation.metrics.METRICS and ``task_times``, None
+where one does not apply; all None with ``metrics_error`` saying why when the recording could not be measured).
 """
 
 from __future__ import annotations
@@ -52,6 +54,8 @@ class Summary:
     problems: tuple[Evidence, ...] = ()
     utility_source: str = "defaults"
     files: Mapping[str, str] = field(default_factory=dict)
+    metrics: Mapping[str, Any] = field(default_factory=dict)
+    metrics_error: str | None = None
 
     @property
     def tasks_started(self) -> int:
@@ -97,6 +101,8 @@ class Summary:
                       "failed": self.tasks_failed, "list": [t.to_dict() for t in self.tasks]},
             "verdicts": [v.to_dict() for v in self.verdicts],
             "verdict_counts": {str(s): sum(v.status == s for v in self.verdicts) for s in Status},
+            "metrics": dict(self.metrics),
+            "metrics_error": self.metrics_error,
             "problems": [p.to_dict() for p in self.problems],
             "files": dict(self.files),
         }

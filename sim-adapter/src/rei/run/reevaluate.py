@@ -21,6 +21,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from rei.artifacts.case import case_of_run
 from rei.run.jvm import JvmResult, run_jar
 from rei.run.patterns import UTILITIES_FILE, PatternSelection
 from rei.wamp.recording import RecordingWriter, read_recording, stream_path
@@ -57,19 +58,6 @@ class RunSettings:
         options = sim.get("options", {})
         return cls(humans=bool(options.get("humans", True)), laser=options.get("laser", "min") != "none",
                    mission=bool(options.get("mission", True)), run_id=str(sim.get("run_id", "replay")), sim_duration=sim.get("sim_time"))
-
-
-def case_of_run(out: Path) -> Path | None:
-    """The generated case a run was made from: ``OUT/case`` (rei run, campaigns, rei import), else the folder
-    ``OUT/sim.json`` names (rei sim GEN -o OUT simulates a case that lives elsewhere); None when neither exists."""
-    if (out / "case" / "world.json").is_file():
-        return out / "case"
-    sim = out / "sim.json"
-    if sim.is_file():
-        recorded = _json(sim).get("case")
-        if isinstance(recorded, str) and (Path(recorded) / "world.json").is_file():
-            return Path(recorded)
-    return None
 
 
 def replay_monitor(out: Path, case_dir: Path, *, patterns: PatternSelection | None = None,

@@ -1,0 +1,345 @@
+# SPDX-License-Identifier: EPL-2.0
+"""Computing the metrics of docs/metrics.md from a run folder.
+
+Why from the recordings and not inside the simulation: a run judged again (``rei evaluate``), a campaign's run
+and an imported bag have the same streams, so they get the same figures. The robot's footprint gaps are the
+monitor's (rei.geometry.footprint_gaps, one definition with the JTS geometry), so a clearance and the monitor's
+CLOSE and COLLISION zones never disagree.
+"""
+
+from __future__ import annotations
+
+import itertools
+import json
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from rei.artifacts import ArtifactError, Category, Shape, read_mission, read_monitor, read_world
+from rei.artifacts.case import case_of_run
+from rei.evaluation.metrics.definitions import NAMES
+from rei.evaluation.mission_info import MissionInfo, MissionInfoError
+from rei.geometry import footprint_gaps, wrap_angle
+from rei.wamp.recording import iter_recording, stream_path
+
+Value = float | int | bool | None
+#: Below this speed (m/s) the robot counts as standing: its turning is rotation in place, and a change of
+#: its direction of travel is only a reversal when it moved faster than this on both sides.
+STANDING = 0.02
+#: Rows of robot poses per block of the gap computation (bounds the temporary arrays to a few MB).
+_BLOCK = 2048
+#: The mission executor's record of mission_info (rei.mission.executor.MISSION_INFO_FILE).
+_MISSION_INFO = "mission_info.json"
+
+
+class MetricsError(ValueError):
+    """A run folder the metrics can not be computed from (no state recording, no case); the message says why."""
+
+
+@dataclass(frozen=True, slots=True)
+class _Obstacles:
+    names: tuple[str, ...]
+    boxes: np.ndarray  # (N, 5): x, y, yaw, size_x, size_y
+    circle: np.ndarray  # (N,)
+
+
+@dataclass(slots=True)
+class _States:
+    t: np.ndarray
+    pose: np.ndarray  # (T, 3) true x, y, yaw
+    twist: np.ndarray  # (T, 3) vx, vy (world), wz
+    odom: np.ndarray  # (T, 2), NaN where not published
+    moving: np.ndarray  # (T, M, 3) x, y, yaw of world.json's moving objects, NaN where not published
+    contacts: list[frozenset[str]]
+
+
+def compute_metrics(run_dir: Path, case_dir: Path | None = None) -> dict[str, Any]:
+    """Every metric of the run in ``run_dir`` (its recorded streams, its case), in the order of ``METRICS``,
+    then ``task_times``. Raises MetricsError when there is no state recording or no world.json."""
+    run_dir = Path(run_dir)
+    case_dir = Path(case_dir) if case_dir is not None else case_of_run(run_dir)
+    if case_dir is None:
+        raise MetricsError(f"{run_dir}: no generated case (case/world.json, or the folder sim.json names)")
+    try:
+        world = read_world(case_dir / "world.json")
+    except ArtifactError as error:
+        raise MetricsError(str(error)) from None
+    statics = _obstacles([o for o in world.objects if o.category in (Category.WALL, Category.STATIC)])
+    movers = [o for o in world.objects if o.category.moving]
+    moving = _obstacles(movers)
+    humans = np.array([o.category == Category.HUMAN for o in movers], dtype=bool)
+    states = _read_states(run_dir, world.robot.name, moving.names)
+    missions = _read_stream(run_dir, "mission")
+    recorded = _mission_recorded(run_dir) and bool(missions)
+    t0 = next((m["t"] for m in missions if m.get("event") == "BEGIN"), None) if recorded else None
+    t1 = next((m["t"] for m in reversed(missions) if m.get("event") == "END"), None) if recorded else None
+    t0 = float(t0) if t0 is not None else float(states.t[0])
+    t1 = float(t1) if t1 is not None else float(states.t[-1])
+    window = (states.t >= t0 - 1e-9) & (states.t <= t1 + 1e-9)
+    if window.sum() < 1:
+        window = np.ones(len(states.t), dtype=bool)
+    s = _States(states.t[window], states.pose[window], states.twist[window], states.odom[window],
+                states.moving[window], [c for c, w in zip(states.contacts, window, strict=True) if w])
+    robot_size = (world.robot.size[0], world.robot.size[1])
+    static_gaps = _gaps(s.pose, robot_size, statics.boxes, statics.circle)
+    moving_gaps = _gaps(s.pose, robot_size, _moving_boxes(s.moving, moving.boxes), moving.circle)
+    out: dict[str, Any] = dict.fromkeys(NAMES)
+    out.update(_goal_metrics(run_dir, case_dir, missions if recorded else None, s, t0, t1, robot_size))
+    out["path_length"] = _path_length(s.pose)
+    out.update(_clearances("static", static_gaps))
+    out.update(_clearances("humans", moving_gaps[:, humans]))
+    out.update(_zones(run_dir, case_dir, s, np.hstack((static_gaps, moving_gaps)), (*statics.names, *moving.names)))
+    out.update(_motion(s, t1 - t0, out["path_length"]))
+    return {k: None if isinstance(v, float) and not math.isfinite(v) else v for k, v in out.items()}
+
+
+# -- reading ---------------------------------------------------------------------------------------------------
+
+
+def _obstacles(objects: Sequence[Any]) -> _Obstacles:
+    """The monitor's footprints (runtime-monitor Monitor.shape): cylinders are circles of their larger
+    extent, boxes and meshes rectangles of their size."""
+    boxes = np.array([(o.pose[0], o.pose[1], o.pose[3],
+                       max(o.size[0], o.size[1]) if o.shape == Shape.CYLINDER else o.size[0],
+                       max(o.size[0], o.size[1]) if o.shape == Shape.CYLINDER else o.size[1]) for o in objects],
+                     dtype=float).reshape(-1, 5)
+    return _Obstacles(tuple(o.name for o in objects), boxes,
+                      np.array([o.shape == Shape.CYLINDER for o in objects], dtype=bool))
+
+
+def _read_states(run_dir: Path, robot: str, moving: Sequence[str]) -> _States:
+    path = stream_path(run_dir, "state")
+    if not path.is_file():
+        raise MetricsError(f"{path}: no recorded state stream")
+    column = {name: k for k, name in enumerate(moving)}
+    t: list[float] = []
+    pose: list[tuple[float, float, float]] = []
+    twist: list[tuple[float, float, float]] = []
+    odom: list[tuple[float, float]] = []
+    places: list[np.ndarray] = []
+    contacts: list[frozenset[str]] = []
+    try:
+        for state in iter_recording(path):
+            r = state.get("robot") if isinstance(state, Mapping) else None
+            p = _floats(r.get("pose"), 4) if isinstance(r, Mapping) else None
+            if p is None or not isinstance(state.get("t"), int | float):
+                continue
+            t.append(float(state["t"]))
+            pose.append((p[0], p[1], p[3]))
+            v = _floats(r.get("twist"), 3)
+            twist.append(v if v is not None else (math.nan,) * 3)
+            o = _floats(r.get("odom"), 2)
+            odom.append(o if o is not None else (math.nan, math.nan))
+            row = np.full((len(moving), 3), math.nan)
+            for body in state.get("objects") or ():
+                k = column.get(body.get("name")) if isinstance(body, Mapping) else None
+                q = _floats(body.get("pose"), 4) if k is not None else None
+                if q is not None:
+                    row[k] = (q[0], q[1], q[3])
+            places.append(row)
+            contacts.append(frozenset(b if a == robot else a for a, b in (state.get("contacts") or ())
+                                      if robot in (a, b)))
+    except ValueError:
+        pass  # a torn last message (a crashed writer): what was recorded before it is measured
+    if not t:
+        raise MetricsError(f"{path}: no state with a robot pose")
+    return _States(np.array(t), np.array(pose), np.array(twist), np.array(odom),
+                   np.array(places).reshape(len(t), len(moving), 3), contacts)
+
+
+def _floats(value: Any, size: int) -> tuple[float, ...] | None:
+    if not isinstance(value, list | tuple) or len(value) < size:
+        return None
+    if not all(isinstance(v, int | float) and not isinstance(v, bool) for v in value[:size]):
+        return None
+    return tuple(float(v) for v in value[:size])
+
+
+def _read_stream(run_dir: Path, name: str) -> list[dict[str, Any]]:
+    path = stream_path(run_dir, name)
+    messages: list[dict[str, Any]] = []
+    if path.is_file():
+        try:
+            messages.extend(m for m in iter_recording(path) if isinstance(m, dict))
+        except ValueError:
+            pass
+    return messages
+
+
+def _json(path: Path) -> Any:
+    try:
+        return json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+
+
+def _mission_recorded(run_dir: Path) -> bool:
+    """False for an imported recording without goals (sim.json ``options.mission``)."""
+    sim = _json(run_dir / "sim.json")
+    options = sim.get("options") if isinstance(sim, Mapping) else None
+    return not isinstance(options, Mapping) or bool(options.get("mission", True))
+
+
+def _goals(run_dir: Path, case_dir: Path) -> list[tuple[float, float]] | None:
+    recorded = _json(run_dir / _MISSION_INFO)
+    if isinstance(recorded, Mapping):
+        try:
+            return [(g.x, g.y) for g in MissionInfo.from_message(recorded).goals]
+        except MissionInfoError:
+            pass
+    try:
+        return [(g.pose.x, g.pose.y) for g in read_mission(case_dir / "mission.xml").goals]
+    except (ArtifactError, OSError):
+        return None
+
+
+# -- metrics ---------------------------------------------------------------------------------------------------
+
+
+def _goal_metrics(run_dir: Path, case_dir: Path, missions: list[dict[str, Any]] | None, s: _States,
+                  t0: float, t1: float, robot_size: tuple[float, float]) -> dict[str, Any]:
+    goals = _goals(run_dir, case_dir) if missions is not None else None
+    if missions is None or not goals:
+        return {"success": None, "time": None, "spl": None, "task_times": None}
+    started: dict[int, float] = {}
+    ended: dict[int, tuple[str, float]] = {}
+    for m in missions:
+        index, event = m.get("task_index"), m.get("event")
+        if not isinstance(index, int) or not isinstance(m.get("t"), int | float):
+            continue
+        if event == "TASK_START":
+            started.setdefault(index, float(m["t"]))
+        elif event in ("TASK_SUCCESS", "TASK_FAIL"):
+            ended[index] = (str(event), float(m["t"]))
+    success = all(ended.get(i, ("", 0.0))[0] == "TASK_SUCCESS" for i in range(len(goals)))
+    end = max(t for _, t in ended.values()) if success else t1
+    task_times = [round(ended[i][1] - started[i], 6) if i in ended and i in started else None
+                  for i in range(len(goals))]
+    spl: float | None = 0.0
+    if success:
+        driven = _path_length(s.pose[s.t <= end + 1e-9])
+        shortest = _shortest_path(case_dir, (float(s.pose[0, 0]), float(s.pose[0, 1])), goals, robot_size)
+        spl = None if shortest is None else shortest / max(shortest, driven, 1e-9)
+    return {"success": success, "time": end - t0, "spl": spl, "task_times": task_times}
+
+
+def _shortest_path(case_dir: Path, start: tuple[float, float], goals: Sequence[tuple[float, float]],
+                   robot_size: tuple[float, float]) -> float | None:
+    """start -> goal 1 -> goal 2 ... by the reference global planner on the static map, with its cost gradient
+    and inflation margin off: the shortest way the footprint fits at any heading. None when a leg has none."""
+    from rei.sut.api import StaticMap
+    from rei.sut.nav.config import NavConfig
+    from rei.sut.nav.global_planner import PlanningError, plan
+    from rei.sut.nav.grid import CostGrid
+
+    world = read_world(case_dir / "world.json")
+    obstacles = tuple((o.pose[0], o.pose[1], o.pose[3], o.size[0], o.size[1]) for o in world.objects
+                      if o.category in (Category.WALL, Category.STATIC))
+    config = NavConfig(footprint_x=robot_size[0], footprint_y=robot_size[1], inflation_margin=0.0,
+                       cost_scale=0.0)
+    grid = CostGrid(StaticMap(bounds=world.bounds, obstacles=obstacles, robot_size=robot_size), config)
+    total = 0.0
+    points = [start, *goals]
+    for a, b in itertools.pairwise(points):
+        try:
+            total += plan(grid, grid.cost, a, b, goal_radius=0.25).length
+        except PlanningError:
+            return None
+    return total
+
+
+def _path_length(pose: np.ndarray) -> float:
+    return float(np.hypot(np.diff(pose[:, 0]), np.diff(pose[:, 1])).sum())
+
+
+def _gaps(pose: np.ndarray, robot_size: tuple[float, float], boxes: np.ndarray, circle: np.ndarray) -> np.ndarray:
+    n = boxes.shape[-2] if boxes.ndim >= 2 else 0
+    out = np.empty((len(pose), n))
+    if n == 0:
+        return out
+    for a in range(0, len(pose), _BLOCK):
+        block = boxes[a:a + _BLOCK] if boxes.ndim == 3 else boxes
+        out[a:a + _BLOCK] = footprint_gaps(pose[a:a + _BLOCK], robot_size, block, circle)
+    return out
+
+
+def _moving_boxes(places: np.ndarray, boxes: np.ndarray) -> np.ndarray:
+    """(T, M, 5): each moving object's footprint at its published place (world.json's size)."""
+    out = np.empty((places.shape[0], places.shape[1], 5))
+    out[..., :3] = places
+    out[..., 3:] = boxes[None, :, 3:] if len(boxes) else 0.0
+    return out
+
+
+def _clearances(which: str, gaps: np.ndarray) -> dict[str, float | None]:
+    """The least gap, and the mean over the samples of each sample's least gap (samples that saw none of them
+    are left out)."""
+    seen = ~np.isnan(gaps)
+    rows = seen.any(axis=1) if gaps.size else np.zeros(len(gaps), dtype=bool)
+    if not rows.any():
+        return {f"clearance_{which}_min": None, f"clearance_{which}_mean_min": None}
+    least = np.where(seen, gaps, np.inf)[rows].min(axis=1)
+    return {f"clearance_{which}_min": float(least.min()), f"clearance_{which}_mean_min": float(least.mean())}
+
+
+def _zones(run_dir: Path, case_dir: Path, s: _States, gaps: np.ndarray,
+           names: Sequence[str]) -> dict[str, Value]:
+    """The monitor's zones (queries/geometry.drl): COLLISION with an object when the simulator reports contact
+    or the gap is below the collision threshold, CLOSE when it is below the close threshold; the robot is in
+    COLLISION when it collides with anything, else CLOSE when it is close to anything."""
+    try:
+        spec = read_monitor(case_dir / "monitor.json")
+    except (ArtifactError, OSError):
+        return {"close_time": None, "collision_time": None, "collision_episodes": None, "collision_objects": None}
+    column = {name: k for k, name in enumerate(names)}
+    contact = np.zeros(gaps.shape, dtype=bool)
+    for row, touched in enumerate(s.contacts):
+        for name in touched:
+            if name in column:
+                contact[row, column[name]] = True
+    with np.errstate(invalid="ignore"):
+        collides = contact | (gaps < spec.collision_threshold)
+        close = ~contact & (gaps >= spec.collision_threshold) & (gaps < spec.close_threshold)
+    in_collision = collides.any(axis=1)
+    in_close = close.any(axis=1) & ~in_collision
+    hold = np.append(np.diff(s.t), 0.0)  # a sample stands until the next one
+    starts = collides & ~np.vstack((np.zeros((1, collides.shape[1]), dtype=bool), collides[:-1]))
+    return {"close_time": float(hold[in_close].sum()), "collision_time": float(hold[in_collision].sum()),
+            "collision_episodes": int(starts.sum()), "collision_objects": int(collides.any(axis=0).sum())}
+
+
+def _motion(s: _States, duration: float, path_length: float) -> dict[str, Value]:
+    t, (x, y, yaw) = s.t, s.pose.T
+    vx, vy, wz = s.twist.T
+    speed = np.hypot(vx, vy)
+    forward = vx * np.cos(yaw) + vy * np.sin(yaw)
+    step = np.hypot(np.diff(x), np.diff(y))
+    dt = np.diff(t)
+    turn = np.abs([wrap_angle(a) for a in np.diff(yaw)])
+    standing = step < STANDING * dt
+    moving = forward[np.abs(forward) > STANDING]
+    drift = np.hypot(s.odom[:, 0] - x, s.odom[:, 1] - y)
+    return {
+        "speed_mean": path_length / duration if duration > 0 else None,
+        "speed_peak": float(np.nanmax(speed)) if np.isfinite(speed).any() else None,
+        "jerk_linear": _squared_jerk(t, forward),
+        "jerk_angular": _squared_jerk(t, wz),
+        "rotation_in_place": float(np.sum(turn[standing])) if len(turn) else 0.0,
+        "oscillations": int(np.count_nonzero(np.diff(np.sign(moving)))),
+        "odom_drift": float(np.nanmax(drift)) if np.isfinite(drift).any() else None,
+    }
+
+
+def _squared_jerk(t: np.ndarray, velocity: np.ndarray) -> float | None:
+    """The integral of the squared second derivative of ``velocity`` over time, by finite differences."""
+    if len(t) < 3 or not np.isfinite(velocity).all():
+        return None
+    dt = np.diff(t)
+    acceleration = np.diff(velocity) / dt
+    middle = (t[:-1] + t[1:]) / 2
+    jerk = np.diff(acceleration) / np.diff(middle)
+    return float(np.sum(jerk**2 * np.diff(middle)))
