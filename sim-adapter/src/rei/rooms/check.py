@@ -11,6 +11,7 @@ catalogue footprints. Humans are not in the static map, as for the robot.
 from __future__ import annotations
 
 import itertools
+from collections.abc import Sequence
 
 from rei.rooms.model import FLOOR, Room, floor_centre
 from rei.sut.api import StaticMap
@@ -39,13 +40,20 @@ def static_map(room: Room) -> StaticMap:
 
 def unplannable_legs(room: Room, config: NavConfig | None = None) -> list[str]:
     """One message per leg the reference global planner finds no path for; empty when the room is navigable."""
+    cells = [room.start, *(goal.cell for goal in room.goals)]
+    return unplannable(static_map(room), [(str(c), floor_centre(c)) for c in cells], config)
+
+
+def unplannable(static: StaticMap, stops: Sequence[tuple[str, tuple[float, float]]],
+                config: NavConfig | None = None) -> list[str]:
+    """One message per leg between consecutive named ``stops`` (the start, then each goal) that the reference
+    global planner finds no path for in ``static``; shared with rei.search, which checks edited test cases."""
     config = config or NavConfig()
-    grid = CostGrid(static_map(room), config)
+    grid = CostGrid(static, config)
     problems = []
-    points = [room.start, *(goal.cell for goal in room.goals)]
-    for leg, (a, b) in enumerate(itertools.pairwise(points)):
+    for leg, ((a, pa), (b, pb)) in enumerate(itertools.pairwise(stops)):
         try:
-            plan(grid, grid.cost, floor_centre(a), floor_centre(b), goal_radius=0.1)
+            plan(grid, grid.cost, pa, pb, goal_radius=0.1)
         except PlanningError as error:
             problems.append(f"leg {leg} {a} -> {b}: {error}")
     return problems
