@@ -27,9 +27,11 @@ from rei.geometry import footprint_gaps, wrap_angle
 from rei.wamp.recording import iter_recording, stream_path
 
 Value = float | int | bool | None
-#: Below this speed (m/s) the robot counts as standing: its turning is rotation in place, and a change of
-#: its direction of travel is only a reversal when it moved faster than this on both sides.
+#: Below this speed (m/s) the robot counts as standing: its turning is rotation in place.
 STANDING = 0.02
+#: A back-and-forth reversal: the robot moved at least this far (m) along its heading one way, then as far the
+#: other way (a robot that settles or rocks by millimetres when it stops does not oscillate).
+REVERSAL = 0.02
 #: Rows of robot poses per block of the gap computation (bounds the temporary arrays to a few MB).
 _BLOCK = 2048
 #: The mission executor's record of mission_info (rei.mission.executor.MISSION_INFO_FILE).
@@ -321,7 +323,6 @@ def _motion(s: _States, duration: float, path_length: float) -> dict[str, Value]
     dt = np.diff(t)
     turn = np.abs([wrap_angle(a) for a in np.diff(yaw)])
     standing = step < STANDING * dt
-    moving = forward[np.abs(forward) > STANDING]
     drift = np.hypot(s.odom[:, 0] - x, s.odom[:, 1] - y)
     return {
         "speed_mean": path_length / duration if duration > 0 else None,
@@ -329,9 +330,26 @@ def _motion(s: _States, duration: float, path_length: float) -> dict[str, Value]
         "jerk_linear": _squared_jerk(t, forward),
         "jerk_angular": _squared_jerk(t, wz),
         "rotation_in_place": float(np.sum(turn[standing])) if len(turn) else 0.0,
-        "oscillations": int(np.count_nonzero(np.diff(np.sign(moving)))),
+        "oscillations": _reversals(np.diff(x) * np.cos(yaw[:-1]) + np.diff(y) * np.sin(yaw[:-1])),
         "odom_drift": float(np.nanmax(drift)) if np.isfinite(drift).any() else None,
     }
+
+
+def _reversals(advance: np.ndarray) -> int:
+    """How often the travel along the heading (``advance``: signed steps, m) turned round after at least
+    REVERSAL one way and then at least REVERSAL the other way."""
+    count, direction, travelled, against = 0, 0.0, 0.0, 0.0
+    for step in advance.tolist():
+        if direction == 0.0 or step * direction >= 0:
+            direction = direction or (math.copysign(1.0, step) if step else 0.0)
+            travelled += abs(step)
+            against = 0.0
+        else:
+            against += abs(step)
+            if against >= REVERSAL:
+                count += travelled >= REVERSAL
+                direction, travelled, against = -direction, against, 0.0
+    return count
 
 
 def _squared_jerk(t: np.ndarray, velocity: np.ndarray) -> float | None:
