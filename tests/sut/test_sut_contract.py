@@ -31,11 +31,13 @@ from typing import Any
 
 import msgpack
 import pytest
+
 from rei import toolchain
 from rei.geometry import Pose2D
 from rei.mission.executor import task_outcome
 from rei.sut.api import NavStatus
 from rei.sut.external import protocol
+from rei.sut.external.process import Connection
 from rei.wamp.client import WampClient
 from rei.wamp.recording import read_recording
 from rei.wamp.router import Router
@@ -176,6 +178,14 @@ def test_the_examples_follow_the_tables_and_use_every_field(doc: dict[str, Messa
     assert math.isinf(scan["ranges"][0]) and scan["angle_max"] == pytest.approx(
         scan["angle_min"] + (len(scan["ranges"]) - 1) * scan["angle_increment"])
     assert tick["odom"]["pose"] == doc["hello"].examples[0]["start"]  # tick 0's odometry is the start pose
+
+
+def test_the_environment_table_names_exactly_what_a_started_sut_gets(repo_root: Path) -> None:
+    section = DOC.read_text(encoding="utf-8").split("## Environment of a started SUT")[1].split("\n## ")[0]
+    documented = re.findall(r"^\| `(REI_\w+)` \|", section, flags=re.MULTILINE)
+    contract = json.loads((repo_root / "contract" / "vocabulary.json").read_text(encoding="utf-8"))["sut"]
+    given = Connection("ws://127.0.0.1:1/ws", "rei", "r1", Path("sut.json"), "rs://127.0.0.1:2").environment()
+    assert sorted(documented) == sorted(given) == sorted(contract["environment"] + contract["optional_environment"])
 
 
 def test_tolerance_is_a_distance_in_the_plane_and_the_yaw_is_not_judged() -> None:

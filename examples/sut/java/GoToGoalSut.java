@@ -6,8 +6,8 @@
 //   ./rei run examples/simple_navigation.rei -o out \
 //       --sut "java -cp sut-kits/java/target/rei-sut-kit.jar examples/sut/java/GoToGoalSut.java"
 //
-// It knows only what a real robot would: wheel odometry (which starts at the mission's start pose, so it is
-// comparable with goal poses) and the laser. No map, no planner: a room with furniture in the way needs more.
+// It knows only what a real robot would: wheel odometry (in world coordinates: the mission's start pose at
+// tick 0, so it is comparable with goal poses) and the laser. No map, no planner: a room with furniture in the way needs more.
 
 import java.util.Locale;
 

@@ -4,8 +4,8 @@ close ahead (a person crossing). Written with REI's Python kit; see docs/sut.md.
 
     ./rei run examples/simple_navigation.rei -o out --sut "python3 examples/sut/python/go_to_goal.py"
 
-It knows only what a real robot would: wheel odometry (which starts at the mission's start pose, so it is
-comparable with goal poses) and the laser. No map, no planner: a room with furniture in the way needs more.
+It knows only what a real robot would: wheel odometry (in world coordinates: the mission's start pose at
+tick 0, so it is comparable with goal poses) and the laser. No map, no planner: a room with furniture in the way needs more.
 """
 
 from __future__ import annotations

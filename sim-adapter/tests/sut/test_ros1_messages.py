@@ -66,3 +66,14 @@ def test_a_goal_is_a_move_base_goal_in_the_map_frame() -> None:
     pose = goal.target_pose
     assert pose.header.frame_id == "map" and (pose.pose.position.x, pose.pose.position.y) == (4.5, 0.5)
     assert abs(m.yaw_of(pose.pose.orientation)) == pytest.approx(math.pi)
+
+
+def test_odometry_keeps_world_coordinates_so_map_to_odom_is_the_identity() -> None:
+    start = Pose2D(0.5, 0.5, 0.7)  # tick 0's odometry is hello's start pose, in map coordinates (docs/sut.md)
+    pose = m.odometry(0.0, start, Twist2D(), FRAMES).pose.pose
+    assert (pose.position.x, pose.position.y) == (0.5, 0.5) and m.yaw_of(pose.orientation) == pytest.approx(0.7)
+    map_odom, odom_base = m.transforms(0.0, start, FRAMES, with_map=True).transforms
+    assert (map_odom.header.frame_id, map_odom.child_frame_id) == ("map", "odom")
+    move, turn = map_odom.transform.translation, map_odom.transform.rotation
+    assert (move.x, move.y, move.z, turn.x, turn.y, turn.z, turn.w) == (0, 0, 0, 0, 0, 0, 1)
+    assert (odom_base.transform.translation.x, odom_base.transform.translation.y) == (0.5, 0.5)

@@ -18,6 +18,7 @@ import sys
 from pathlib import Path
 
 import msgpack
+
 from rei.sut.external import protocol
 from rei.wamp.auth import load_credentials
 from rei.wamp.client import WampClient

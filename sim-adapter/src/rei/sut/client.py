@@ -14,7 +14,8 @@ it until the run ends::
 
     main(Forward())
 
-Every callback runs on the calling thread, one message at a time in arrival order, so a SUT needs no locks. The
+Every callback runs on the calling thread, one message at a time in arrival order, so a SUT needs no locks;
+``on_start`` runs first, also when the first goal and tick overtook ``hello``'s result (they wait). The
 kit publishes a changed status before the command of the same tick, as the protocol asks. Any in-process
 :class:`~rei.sut.api.Controller` runs as an external SUT through :class:`ControllerSut` (``rei nav-sut``).
 """

@@ -8,8 +8,9 @@ package org.rei.sut.kit;
  * One control period: answer it with a {@link Command}.
  *
  * @param number    the tick, counted from 0 without gaps
- * @param t         the simulation clock (s): {@code number / control_rate}
- * @param odom      wheel odometry: starts at {@code hello}'s start pose and drifts from the true pose
+ * @param t         the simulation clock (s): {@code number / control_rate} up to rounding
+ * @param odom      wheel odometry in world (map) coordinates: {@code hello}'s start pose at tick 0, then drifting
+ *                  from the true pose
  * @param odomTwist the velocity odometry measured
  * @param scan      the newest scan: taken since the previous tick if {@code scanIsNew}, else the last one (null
  *                  before the first)
