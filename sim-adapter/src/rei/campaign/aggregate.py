@@ -6,6 +6,8 @@
   because a crashed run has no utility to average.
 * Signal counts per room (Tables 6, 8) and per variant, e.g. per fault level (Tables 9, 10).
 * Verdict pass rates per requirement: pass / (pass + fail + error); not-applicable verdicts are left out.
+* Navigation metrics (docs/metrics.md) with the same rows: mean, median and the 95 % bootstrap interval of the
+  mean of each; success as a rate with its Wilson interval (rei.campaign.stats).
 """
 
 from __future__ import annotations
@@ -16,7 +18,9 @@ import statistics
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
+from rei.campaign import stats
 from rei.campaign.results import RunResult
+from rei.evaluation.metrics import LIST_KEYS, METRICS, NAMES, Kind
 
 SUMMARY_COLUMNS = ("group", "room", "variant", "executions", "errors", "mean_time", "median_time",
                    "mean_utility", "median_utility", "max_utility", "min_utility", "missions_succeeded",
@@ -77,6 +81,67 @@ def summary_rows(results: Sequence[RunResult]) -> list[Row]:
     return rows
 
 
+METRIC_COLUMNS = ("group", "room", "variant", "metric", "n", "mean", "median", "ci_low", "ci_high")
+
+
+@dataclass(frozen=True, slots=True)
+class MetricRow:
+    """One metric over the COMPLETED runs of a row (as ``summary_rows``): for ``success`` the rate (``mean``) and
+    its Wilson interval, else the mean with its bootstrap interval and the median."""
+
+    group: str
+    room: str
+    variant: str
+    metric: str
+    n: int
+    mean: float | None
+    median: float | None
+    low: float | None
+    high: float | None
+
+    def values(self) -> tuple[object, ...]:
+        return (self.group, self.room, self.variant, self.metric, self.n, self.mean, self.median, self.low,
+                self.high)
+
+
+def describe(group: str, room: str, variant: str, runs: Sequence[RunResult]) -> list[MetricRow]:
+    done = [r for r in runs if r.status == "COMPLETED"]
+    rows = []
+    for metric in METRICS:
+        values = [r.metrics.get(metric.name) for r in done]
+        if metric.kind == Kind.BOOL:
+            s = stats.rate([v for v in values if isinstance(v, bool)])
+            rows.append(MetricRow(group, room, variant, metric.name, s.n, s.rate, None, s.low, s.high))
+        else:
+            e = stats.estimate([float(v) for v in values if isinstance(v, int | float) and not isinstance(v, bool)])
+            rows.append(MetricRow(group, room, variant, metric.name, e.n, e.mean, e.median, e.low, e.high))
+    return rows
+
+
+def metric_rows(results: Sequence[RunResult]) -> list[MetricRow]:
+    """Per group: every metric per room, for the group's total, then per variant (all rooms)."""
+    rows = []
+    for group in _ordered(r.group for r in results):
+        runs = [r for r in results if r.group == group]
+        for room in _ordered(r.case for r in runs):
+            rows += describe(group, room, ALL, [r for r in runs if r.case == room])
+        rows += describe(group, TOTAL, ALL, runs)
+        variants = _ordered(r.variant for r in runs)
+        if len(variants) > 1:
+            for variant in variants:
+                rows += describe(group, ALL, variant, [r for r in runs if r.variant == variant])
+    return rows
+
+
+def metrics_csv(rows: Sequence[MetricRow]) -> str:
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(METRIC_COLUMNS)
+    for row in rows:
+        writer.writerow(_cell(v) for v in row.values())
+    return buffer.getvalue()
+
+
 def signal_table(runs: Sequence[RunResult], by: str) -> tuple[list[str], list[tuple[str, list[int]]]]:
     """(column names, [(signal, counts per column)]) with columns the rooms (``by="case"``) or variants."""
     from rei.report.colours import signal_sort_key
@@ -118,11 +183,13 @@ RUN_COLUMNS = ("key", "group", "case", "variant", "repetition", "seed", "humans"
 def runs_csv(results: Sequence[RunResult]) -> str:
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow((*RUN_COLUMNS, "verdicts_passed", "verdicts_failed"))
+    writer.writerow((*RUN_COLUMNS, "verdicts_passed", "verdicts_failed", *NAMES, *LIST_KEYS))
     for r in results:
         passed = sum(s == "pass" for s in r.verdicts.values())
         failed = sum(s == "fail" for s in r.verdicts.values())
-        writer.writerow((*(_cell(getattr(r, c)) for c in RUN_COLUMNS), passed, failed))
+        metrics = [_cell(r.metrics.get(name)) for name in NAMES]
+        lists = [" ".join("" if v is None else f"{v:g}" for v in r.metrics.get(key) or ()) for key in LIST_KEYS]
+        writer.writerow((*(_cell(getattr(r, c)) for c in RUN_COLUMNS), passed, failed, *metrics, *lists))
     return buffer.getvalue()
 
 

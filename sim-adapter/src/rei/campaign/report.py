@@ -13,8 +13,18 @@ from html import escape
 from pathlib import Path
 from typing import Any
 
-from rei.campaign.aggregate import ALL, Row, signal_table, summary_rows, verdict_table
+from rei.campaign.aggregate import (
+    ALL,
+    TOTAL,
+    MetricRow,
+    Row,
+    metric_rows,
+    signal_table,
+    summary_rows,
+    verdict_table,
+)
 from rei.campaign.results import RunResult
+from rei.evaluation.metrics import BY_NAME
 from rei.report.colours import signal_colour, signal_sort_key
 from rei.report.svg import nice_ticks, num
 
@@ -27,13 +37,14 @@ tr.total td{font-weight:600;background:#fafafa}.error{color:#b00}svg text{font-s
 
 
 def write_campaign_report(out: Path, name: str, results: Sequence[RunResult], metrics: dict[str, Any],
-                          planned: int) -> Path:
+                          planned: int, navigation: Sequence[MetricRow] | None = None) -> Path:
     path = out / REPORT
-    path.write_text(render(out, name, results, metrics, planned), encoding="utf-8")
+    path.write_text(render(out, name, results, metrics, planned, navigation), encoding="utf-8")
     return path
 
 
-def render(out: Path, name: str, results: Sequence[RunResult], metrics: dict[str, Any], planned: int) -> str:
+def render(out: Path, name: str, results: Sequence[RunResult], metrics: dict[str, Any], planned: int,
+           navigation: Sequence[MetricRow] | None = None) -> str:
     errors = [r for r in results if r.status != "COMPLETED"]
     campaign = metrics.get("campaign", {})
     parts = [f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>{_e(name)} - REI campaign</title>",
@@ -42,6 +53,7 @@ def render(out: Path, name: str, results: Sequence[RunResult], metrics: dict[str
               f"{campaign.get('wall', 0):.0f} s, CPU {campaign.get('cpu', 0):.0f} s on {campaign.get('cores', '?')} "
               f"cores ({100 * campaign.get('cpu_utilisation', 0):.0f} % used by the campaign).</p>")]
     rows = summary_rows(results)
+    navigation = metric_rows(results) if navigation is None else navigation
     for group in dict.fromkeys(r.group for r in results):
         runs = [r for r in results if r.group == group]
         parts.append(f"<h2>Group {_e(group)}</h2>")
@@ -51,6 +63,8 @@ def render(out: Path, name: str, results: Sequence[RunResult], metrics: dict[str
         if by_variant:
             parts.append("<h3>Per variant</h3>")
             parts.append(_summary_table(by_variant, "variant"))
+        parts.append("<h3>Navigation metrics (mean [95 % CI], median; success: rate [Wilson 95 %])</h3>")
+        parts.append(_navigation_html([r for r in navigation if r.group == group], f"metrics-{group}"))
         parts.append("<h3>Signals per room (Tables 6, 8)</h3>")
         parts.append(_signal_html(*signal_table(runs, "case"), f"signals-{group}"))
         parts.append("<h3>Signals per variant (Tables 9, 10)</h3>")
@@ -81,6 +95,32 @@ def _summary_table(rows: Sequence[Row], first: str) -> str:
                                                               r.median_utility, r.max_utility, r.min_utility))
                     + f"<td>{r.missions_succeeded}</td><td>{rate}</td></tr>")
     return f"<table class='summary'>{head}{''.join(body)}</table>"
+
+
+def _navigation_html(rows: Sequence[MetricRow], ident: str) -> str:
+    """One column per metric, one line per room, the group's total and each variant (docs/metrics.md)."""
+    lines = list(dict.fromkeys((r.room, r.variant) for r in rows))
+    metrics = list(dict.fromkeys(r.metric for r in rows))
+    cell = {(r.room, r.variant, r.metric): r for r in rows}
+    head = "<tr><th>room / variant</th><th>runs</th>" + "".join(
+        f"<th title='{_e(BY_NAME[m].label)}'>{_e(m)}{f' [{BY_NAME[m].unit}]' if BY_NAME[m].unit else ''}</th>"
+        for m in metrics) + "</tr>"
+    body = []
+    for room, variant in lines:
+        label = variant if room == ALL else room
+        cls = " class='total'" if room == TOTAL else ""
+        runs = max((cell[(room, variant, m)].n for m in metrics), default=0)
+        body.append(f"<tr{cls}><td>{_e(label)}</td><td>{runs}</td>" + "".join(
+            f"<td>{_estimate(cell[(room, variant, m)])}</td>" for m in metrics) + "</tr>")
+    return f"<table id='{_e(ident)}' class='metrics'>{head}{''.join(body)}</table>"
+
+
+def _estimate(row: MetricRow) -> str:
+    if row.mean is None:
+        return ""
+    interval = "" if row.low is None else f" [{row.low:.3g}, {row.high:.3g}]"
+    median = "" if row.median is None else f"; {row.median:.3g}"
+    return f"{row.mean:.3g}{interval}{median}"
 
 
 def _signal_html(columns: list[str], table: list[tuple[str, list[int]]], ident: str) -> str:

@@ -47,6 +47,7 @@ class RunResult:
     counts: dict[str, int] = field(default_factory=dict)
     verdicts: dict[str, str] = field(default_factory=dict)
     timing: dict[str, Any] = field(default_factory=dict)
+    metrics: dict[str, Any] = field(default_factory=dict)  # summary.json's navigation metrics (docs/metrics.md)
 
     def to_dict(self) -> dict[str, Any]:
         return {"format": FORMAT, **asdict(self)}
@@ -81,7 +82,8 @@ def make_result(task: RunTask, outcome: Outcome) -> RunResult:
         mission_succeeded=goals is not None and tasks.get("succeeded") == goals,
         tasks_started=int(tasks.get("started") or 0), tasks_succeeded=int(tasks.get("succeeded") or 0),
         tasks_failed=int(tasks.get("failed") or 0), counts=dict(summary.get("counts") or {}),
-        verdicts={v["requirement"]: v["status"] for v in summary.get("verdicts") or []})
+        verdicts={v["requirement"]: v["status"] for v in summary.get("verdicts") or []},
+        metrics=dict(summary.get("metrics") or {}))
 
 
 def write_result(task: RunTask, result: RunResult) -> Path:

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Protocol
 
-from rei.campaign.aggregate import runs_csv, summary_csv
+from rei.campaign.aggregate import metric_rows, metrics_csv, runs_csv, summary_csv
 from rei.campaign.machine import Sample, usage
 from rei.campaign.plan import Plan, RunTask, plan_campaign
 from rei.campaign.prepare import Prepared, needs_generation, prepare_case
@@ -130,12 +130,14 @@ def write_outputs(spec: Spec, out: Path, plan: Plan, result: CampaignResult) -> 
 
     (out / "summary.csv").write_text(summary_csv(result.results), encoding="utf-8")
     (out / "runs.csv").write_text(runs_csv(result.results), encoding="utf-8")
+    navigation = metric_rows(result.results)
+    (out / "metrics.csv").write_text(metrics_csv(navigation), encoding="utf-8")
     document = {"format": "rei-campaign/1", "name": spec.name, "planned": result.planned,
                 "finished": len(result.results), "executed": result.executed, "errors": result.errors,
                 "interrupted": result.interrupted, "metrics": result.metrics,
                 "runs": [t.key for t in plan.runs]}
     (out / "campaign.json").write_text(json.dumps(document, indent=2) + "\n", encoding="utf-8")
-    write_campaign_report(out, spec.name, result.results, result.metrics, result.planned)
+    write_campaign_report(out, spec.name, result.results, result.metrics, result.planned, navigation)
 
 
 def longest_first(tasks: list[RunTask]) -> list[RunTask]:
