@@ -1,0 +1,79 @@
+# SPDX-License-Identifier: EPL-2.0
+"""`rei search SPEC.yaml -o OUT [--workers N | --ray ADDRESS] [--budget N] [--sampler S]`: find the situations
+that break the robot.
+
+The spec names a base case, the SUT, what may change (objects' floors and yaw, humans' paths and timing, the
+robot's start, goals, the seed, laser fault parameters) and what counts as worse (utility, time, navigation
+metrics, a requirement's verdict, a signal): docs/search.md. Candidates are the base case edited by the room
+editor's engine and checked by the language's validators and the navigability check; valid ones run on the
+campaign's workers (or Ray) while Optuna's sampler (tpe, cmaes, nsga2, qmc, or random as a baseline) picks the
+next. Each distinct failure is then shrunk to a smaller case that fails the same way. Writes OUT/search.json,
+OUT/verdicts.xml, OUT/search.html, every candidate as OUT/candidates/*.rei and its run in OUT/runs/. A stopped
+search resumes when started again with the same OUT. Exit 0: no failure found; 1: failures found; 2: bad spec
+or arguments; 130: interrupted.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import threading
+from pathlib import Path
+from typing import Any
+
+from rei.cli.errors import EXIT_INVALID, EXIT_OK, CommandError
+
+EXIT_FOUND = 1
+
+
+def register(subparsers: argparse._SubParsersAction[Any]) -> None:
+    """Add the `search` subcommand."""
+    from rei.search.spec import SAMPLERS
+
+    parser = subparsers.add_parser("search", help="search for situations that make the robot fail (falsification)",
+                                   description=__doc__.split("\n\n", 1)[1] if __doc__ else None)
+    parser.add_argument("spec", type=Path, metavar="SPEC.yaml", help="search spec")
+    parser.add_argument("-o", "--output", required=True, type=Path, metavar="OUT", help="output folder")
+    parser.add_argument("--workers", type=int, metavar="N",
+                        help=f"runs at a time on this machine (default: the number of cores, {os.cpu_count()})")
+    parser.add_argument("--ray", metavar="ADDRESS", help="run on a Ray cluster (HOST:PORT, or 'local')")
+    parser.add_argument("--budget", type=int, metavar="N", help="simulated evaluations (default: the spec's)")
+    parser.add_argument("--sampler", choices=SAMPLERS, help="the optimizer (default: the spec's, else tpe)")
+    parser.add_argument("--no-shrink", action="store_true", help="do not shrink the failures found")
+    parser.set_defaults(handler=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    from rei.campaign.spec import SpecError
+    from rei.search.run import run_search
+    from rei.search.spec import load_search_spec
+
+    workers = args.workers or os.cpu_count() or 1
+    if workers < 1:
+        raise CommandError(f"--workers must be at least 1, got {workers}")
+    if args.budget is not None and args.budget < 1:
+        raise CommandError(f"--budget must be at least 1, got {args.budget}")
+    try:
+        spec = load_search_spec(args.spec).with_options(budget=args.budget, sampler=args.sampler)
+    except SpecError as error:
+        raise CommandError(str(error)) from None
+    stop = threading.Event()
+    try:
+        result = run_search(spec, args.output, workers=workers, ray=args.ray, stop=stop,
+                            shrink_failures=not args.no_shrink)
+    except SpecError as error:
+        raise CommandError(str(error)) from None
+    counts = result["counts"]
+    print(f"{counts['simulated']} evaluations ({counts['errors']} in ERROR), {counts['invalid']} invalid and "
+          f"{counts['unplannable']} unplannable candidates not simulated; {counts['failing']} failing, "
+          f"{counts['distinct_failures']} distinct failure(s)")
+    for failure in result["failures"]:
+        shrunk = failure.get("shrunk") or {}
+        print(f"  {failure['signature']}: {len(failure['evaluations'])} evaluation(s), worst utility "
+              f"{failure['worst_utility']:g}; case {shrunk.get('case') or failure['case']}")
+    print(f"report:  {args.output / 'search.html'}")
+    if result.get("interrupted"):
+        return 130
+    if result["failures"]:
+        return EXIT_FOUND
+    return EXIT_OK if counts["simulated"] else EXIT_INVALID

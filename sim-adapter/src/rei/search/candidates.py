@@ -1,0 +1,148 @@
+# SPDX-License-Identifier: EPL-2.0
+"""Candidates: the base case edited by the room editor's engine, checked, written and generated.
+
+One edit engine (``rei-room-editor.jar``, rei.edit.engine) holds the base case for the whole search: each candidate
+is a ``reset`` to the base text and one ``apply`` of its operations (tens of milliseconds, no JVM start), so it is
+``.rei`` text in the base's layout, checked by the language's own validators. A candidate the validators refuse,
+or whose mission the reference global planner finds no path for (the room generator's check,
+rei.rooms.check), is never simulated. Valid ones are written to ``OUT/candidates/<key>.rei`` and generated into
+``OUT/cases/<key>/`` in one warm generator JVM.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from rei import toolchain
+from rei.campaign.spec import SpecError
+from rei.edit import EditEngine, EngineError, engine_command
+from rei.rooms.check import unplannable
+from rei.run.jvm import JarServer, JarServerError, run_jar
+from rei.search.space import Edit
+from rei.sut.api import StaticMap
+
+VALID, INVALID, UNPLANNABLE = "valid", "invalid", "unplannable"
+
+
+@dataclass(frozen=True, slots=True)
+class Candidate:
+    """One edited test case. ``status``: valid, invalid (the validators refused it) or unplannable (no path);
+    ``problems``: why not valid, one message each."""
+
+    key: str
+    edit: Edit
+    status: str
+    text: str | None
+    problems: tuple[str, ...] = ()
+    diagram: dict[str, Any] = field(default_factory=dict, compare=False, repr=False)
+
+
+class CandidateMaker:
+    """Edits the base case ``base`` (a .rei file) into candidates; ``out``: the search's folder."""
+
+    def __init__(self, base: Path, out: Path) -> None:
+        self.out = out
+        if _imports(base.read_text(encoding="utf-8")):
+            raise SpecError(f"{base}: a base case that imports catalogues is not supported by rei search yet "
+                            "(its candidates are written to another folder, where the imports would not resolve)")
+        self._engine = EditEngine(engine_command(toolchain.find_jar("room-editor"), toolchain.find_java().executable))
+        try:
+            answer = self._engine.request("open", path=str(base.resolve()))
+        except EngineError as error:
+            self._engine.close()
+            raise SpecError(f"{base}: {error}") from None
+        errors = [i for i in answer.get("issues") or [] if i.get("severity") == "error"]
+        if errors:
+            self._engine.close()
+            first = errors[0]
+            raise SpecError(f"{base}:{first['line']}:{first['column']}: the base case is not valid: {first['message']}")
+        self.base_text: str = answer["text"]
+        self.diagram: dict[str, Any] = answer["diagram"]
+        self._generator: JarServer | None = None
+
+    def make(self, key: str, edit: Edit) -> Candidate:
+        """The candidate ``key`` from the base case and ``edit``; nothing is written for one that is not valid."""
+        try:
+            self._engine.request("reset", text=self.base_text)
+            answer = self._engine.request("apply", operations=list(edit.operations))
+        except EngineError as error:
+            if not error.refused:
+                raise
+            return Candidate(key, edit, INVALID, None, (f"refused by the room editor: {error}",))
+        errors = [f"{i['line']}:{i['column']}: {i['message']}" for i in answer.get("issues") or []
+                  if i.get("severity") == "error"]
+        if errors:
+            return Candidate(key, edit, INVALID, answer["text"], tuple(errors))
+        diagram = answer["diagram"]
+        no_path = unplannable(static_map(diagram), stops(diagram))
+        if no_path:
+            return Candidate(key, edit, UNPLANNABLE, answer["text"], tuple(no_path))
+        return Candidate(key, edit, VALID, answer["text"], diagram=diagram)
+
+    def write(self, candidate: Candidate, path: Path | None = None) -> Path:
+        """``OUT/candidates/<key>.rei`` (or ``path``), its seed and fault in a comment at its top (`rei run
+        --seed`)."""
+        assert candidate.text is not None
+        path = path or self.out / "candidates" / f"{candidate.key}.rei"
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fault = f" --fault {candidate.edit.fault}" if candidate.edit.fault else ""
+        header = (f"// rei search candidate {candidate.key}: rei run {path.name} --seed {candidate.edit.seed}"
+                  f"{fault}\n")
+        path.write_text(header + candidate.text, encoding="utf-8")
+        return path
+
+    def generate(self, candidate: Candidate) -> tuple[Path, str | None]:
+        """Writes the candidate and generates its case folder; (folder, None) or (folder, why it failed)."""
+        rei = self.write(candidate)
+        target = self.out / "cases" / candidate.key
+        target.mkdir(parents=True, exist_ok=True)
+        if self._generator is None:
+            try:
+                self._generator = JarServer("cli", self.out / "cases" / "generator.log").start()
+            except (JarServerError, OSError):
+                self._generator = None  # each generation then starts a JVM of its own
+        result = run_jar("cli", ["generate", str(rei), "-o", str(target), "--quiet"],
+                         target.parent / f"{candidate.key}.log",
+                         server=self._generator.socket if self._generator is not None else None)
+        if result.code != 0:
+            return target, f"{rei} could not be generated (exit {result.code}): {result.log_tail}"
+        return target, None
+
+    def close(self) -> None:
+        self._engine.close()
+        if self._generator is not None:
+            self._generator.stop()
+            self._generator = None
+
+
+def static_map(diagram: dict[str, Any]) -> StaticMap:
+    """The walls and furniture of a room editor diagram as the navigation's static map."""
+    room = diagram["room"]
+    size = float(room["floorSize"])
+    obstacles = [(float(w["x"]), float(w["y"]), 0.0, float(w["sizeX"]), float(w["sizeY"])) for w in room["walls"]]
+    for item in diagram.get("objects") or []:
+        fp = item["footprint"]
+        obstacles.append((float(item["x"]), float(item["y"]), math.radians(float(item["yaw"])),
+                          float(fp["sizeX"]), float(fp["sizeY"])))
+    xs = [float(f["x"]) * size for f in room["floors"]]
+    ys = [float(f["y"]) * size for f in room["floors"]]
+    robot = diagram["robot"]["footprint"]
+    return StaticMap(bounds=(min(xs), min(ys), max(xs) + size, max(ys) + size), obstacles=tuple(obstacles),
+                     robot_size=(float(robot["sizeX"]), float(robot["sizeY"])))
+
+
+def stops(diagram: dict[str, Any]) -> list[tuple[str, tuple[float, float]]]:
+    """The robot's start, then each goal, named by floor."""
+    robot = diagram["robot"]
+    goals = (diagram.get("mission") or {}).get("goals") or []
+    return [(robot["floor"], (float(robot["x"]), float(robot["y"]))),
+            *((g["floor"], (float(g["x"]), float(g["y"]))) for g in goals)]
+
+
+def _imports(text: str) -> bool:
+    from rei.campaign.prepare import _IMPORT
+
+    return bool(_IMPORT.search(text))

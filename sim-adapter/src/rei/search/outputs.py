@@ -1,0 +1,103 @@
+# SPDX-License-Identifier: EPL-2.0
+"""What a search leaves besides its runs: ``search.json`` (every figure), ``verdicts.xml`` (JUnit, one test case
+per distinct failure) and ``search.html`` (rei.search.report).
+
+``search.json`` (format ``rei-search/1``): the spec's name, sampler, budget and objectives; ``evaluations``, one
+record per trial in order (key, status: COMPLETED, ERROR, invalid, unplannable or interrupted; the parameter
+values, objective values, utility, failures, metrics, seed, fault, candidate and run folder, wall and CPU
+seconds, or why it was not simulated); counts; ``failures``, the distinct failures most severe first with every
+evaluation that found them and their shrunk case; and ``baseline``, the records of a random search in the same
+folder (``--sampler random``) for the report's comparison.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+from typing import Any
+
+import optuna
+from optuna.trial import TrialState
+
+from rei.evaluation.junit import write_junit
+from rei.search.failures import DistinctFailure, distinct, failure_verdicts
+from rei.search.spec import SearchSpec
+
+FORMAT = "rei-search/1"
+
+
+def records(study: optuna.Study, out: Path) -> list[dict[str, Any]]:
+    """One record per trial of ``study``, in order."""
+    found = []
+    for trial in study.get_trials(deepcopy=False):
+        attrs = trial.user_attrs
+        key = attrs.get("key") or f"{study.study_name}-{trial.number:04d}"
+        status = attrs.get("status") or ("running" if trial.state == TrialState.RUNNING else "interrupted")
+        record: dict[str, Any] = {"key": key, "number": trial.number, "status": status, "params": dict(trial.params)}
+        if attrs.get("simulated"):
+            record.update({
+                "values": list(trial.values) if trial.state == TrialState.COMPLETE else None,
+                "utility": attrs.get("utility"), "sim_duration": attrs.get("sim_duration"),
+                "failures": attrs.get("failures") or [], "metrics": attrs.get("metrics"),
+                "error": attrs.get("error"), "seed": attrs.get("seed"), "fault": attrs.get("fault"),
+                "case": attrs.get("case"), "run": str(out / "runs" / key),
+                "report": str(out / "runs" / key / "report.html"),
+                "wall": attrs.get("wall"), "cpu": attrs.get("cpu")})
+        elif attrs.get("problems"):
+            record["problems"] = attrs["problems"]
+        found.append(record)
+    return found
+
+
+def counts(evaluations: Sequence[Mapping[str, Any]]) -> dict[str, Any]:
+    simulated = [r for r in evaluations if r["status"] in ("COMPLETED", "ERROR")]
+    first = next((i + 1 for i, r in enumerate(simulated) if r.get("failures")), None)
+    return {"simulated": len(simulated), "errors": sum(r["status"] == "ERROR" for r in simulated),
+            "failing": sum(bool(r.get("failures")) for r in simulated),
+            "invalid": sum(r["status"] == "invalid" for r in evaluations),
+            "unplannable": sum(r["status"] == "unplannable" for r in evaluations),
+            "interrupted": sum(r["status"] == "interrupted" for r in evaluations),
+            "distinct_failures": len(distinct(simulated)), "first_failure_at": first}
+
+
+def write_outputs(spec: SearchSpec, out: Path, study: optuna.Study, shrunk: Mapping[str, Mapping[str, Any]],
+                  baseline: list[dict[str, Any]] | None = None) -> dict[str, Any]:
+    evaluations = records(study, out)
+    groups = distinct([r for r in evaluations if r["status"] == "COMPLETED"])
+    document = {
+        "format": FORMAT, "name": spec.name, "case": str(spec.case), "sampler": spec.sampler, "budget": spec.budget,
+        "objectives": [{"kind": o.kind, "key": o.key, "direction": o.direction, "of": o.of, "label": o.label}
+                       for o in spec.objectives],
+        "counts": counts(evaluations),
+        "failures": [_failure(group, evaluations, shrunk.get(group.failure.signature)) for group in groups],
+        "evaluations": evaluations,
+        "baseline": baseline if baseline is not None else None,
+    }
+    _write_json(out / "search.json", document)
+    cases = {g.failure.signature: (shrunk.get(g.failure.signature) or {}).get("case") or _case_of(g, evaluations)
+             for g in groups}
+    write_junit(out / "verdicts.xml", failure_verdicts(groups, cases), suite=f"rei search {spec.name}",
+                properties={"sampler": spec.sampler, "budget": str(spec.budget),
+                            "evaluations": str(document["counts"]["simulated"])})
+    return document
+
+
+def _case_of(group: DistinctFailure, evaluations: Sequence[Mapping[str, Any]]) -> str:
+    return next(str(r.get("case")) for r in evaluations if r["key"] == group.first)
+
+
+def _failure(group: DistinctFailure, evaluations: Sequence[Mapping[str, Any]],
+             shrunk: Mapping[str, Any] | None) -> dict[str, Any]:
+    first = next(r for r in evaluations if r["key"] == group.first)
+    return {**group.failure.to_dict(), "severity": group.severity, "worst_utility": group.worst_utility,
+            "evaluations": list(group.keys), "first": group.first, "case": first.get("case"), "seed": first.get("seed"),
+            "fault": first.get("fault"), "run": first.get("run"), "report": first.get("report"),
+            "shrunk": dict(shrunk) if shrunk else None}
+
+
+def _write_json(path: Path, document: Mapping[str, Any]) -> None:
+    tmp = path.with_name(path.name + ".tmp")
+    tmp.write_text(json.dumps(document, indent=2, allow_nan=False, default=str) + "\n", encoding="utf-8")
+    os.replace(tmp, path)

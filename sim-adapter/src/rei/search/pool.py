@@ -1,0 +1,95 @@
+# SPDX-License-Identifier: EPL-2.0
+"""Where a search's evaluations run: the campaign's backends, one run at a time per worker, as futures.
+
+A search asks for the next candidate as soon as a worker is free (Optuna's ask/tell), so it needs single runs
+it can wait on, where a campaign hands its backend the whole plan. Both pools run the campaign's ``supervise``
+(a process per run, its timeout, its process group stopped with it): locally forked from one
+rei.campaign.forkserver with one warm monitor JVM for the replays, as the local campaign backend does; on Ray
+through the campaign's Ray backend, one task per run.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import threading
+from concurrent.futures import Future, ThreadPoolExecutor
+from pathlib import Path
+from typing import Protocol
+
+from rei.campaign.backends import RayBackend
+from rei.campaign.forkserver import ForkServer, ForkServerError
+from rei.campaign.plan import RunTask
+from rei.campaign.supervise import Outcome, supervise
+from rei.campaign.worker import MONITOR_SERVER_ENV
+from rei.run.jvm import JarServer, JarServerError
+
+
+class Pool(Protocol):
+    name: str
+    workers: int
+
+    def submit(self, task: RunTask) -> Future[Outcome]: ...
+
+    def close(self) -> None: ...
+
+
+class LocalPool:
+    """``workers`` runs at a time on this machine. ``stop``: set to stop the running workers (their outcome then
+    says interrupted)."""
+
+    name = "local"
+
+    def __init__(self, workers: int, logs: Path, stop: threading.Event) -> None:
+        if workers < 1:
+            raise ValueError(f"workers must be >= 1, got {workers}")
+        self.workers = workers
+        self._stop = stop
+        self._stack = contextlib.ExitStack()
+        logs.mkdir(parents=True, exist_ok=True)
+        self._env: dict[str, str] = {}
+        self._forks: ForkServer | None = ForkServer(logs / "forkserver.log")
+        try:
+            self._stack.enter_context(self._forks)
+        except ForkServerError as error:  # each worker then starts as a new process
+            print(f"search: {error}; each run's worker starts as a new process", flush=True)
+            self._forks = None
+        server = JarServer("monitor", logs / "monitor-server.log")
+        try:
+            self._stack.enter_context(server)
+            self._env[MONITOR_SERVER_ENV] = str(server.socket)
+        except (JarServerError, OSError) as error:  # each replay then starts a JVM of its own
+            print(f"search: no warm monitor JVM ({error}); each run replays in a JVM of its own", flush=True)
+        self._threads = ThreadPoolExecutor(workers, thread_name_prefix="rei-search")
+
+    def submit(self, task: RunTask) -> Future[Outcome]:
+        return self._threads.submit(supervise, task, self._stop, None, self._env, self._forks)
+
+    def close(self) -> None:
+        self._threads.shutdown(wait=True)
+        self._stack.close()
+
+
+class RayPool:
+    """Runs as Ray tasks through the campaign's Ray backend (``address``: a cluster's, or ``local``)."""
+
+    name = "ray"
+
+    def __init__(self, address: str, workers: int | None, stop: threading.Event) -> None:
+        self._backend = RayBackend(address, workers)
+        self.workers = self._backend.workers
+        self._stop = stop
+        self._threads = ThreadPoolExecutor(self.workers, thread_name_prefix="rei-search-ray")
+
+    def submit(self, task: RunTask) -> Future[Outcome]:
+        return self._threads.submit(self._one, task)
+
+    def _one(self, task: RunTask) -> Outcome:
+        outcomes: list[Outcome] = []
+        self._backend.run([task], lambda _task, outcome: outcomes.append(outcome), self._stop)
+        if not outcomes:  # stopped before it ran
+            return Outcome(task.key, None, False, True, 0.0, 0.0, "", "-")
+        return outcomes[0]
+
+    def close(self) -> None:
+        self._threads.shutdown(wait=True)
+        self._backend.close()

@@ -1,0 +1,190 @@
+# SPDX-License-Identifier: EPL-2.0
+"""``OUT/search.html``: one page, no script: each objective over the evaluations (search and, when one ran in
+the same folder, the random baseline) with the best so far, the Pareto front for two objectives, parameter
+importance (optuna.importance, fANOVA), and each distinct failure with a small map of its run (the run
+report's map, rei.report.map_svg) and links to its case, report and shrunk case.
+"""
+
+from __future__ import annotations
+
+import html
+import warnings
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+from typing import Any
+
+from optuna.trial import TrialState
+
+PAGE = "search.html"
+_W, _H, _PAD = 560, 220, 36
+_CSS = """body{font-family:system-ui,sans-serif;margin:24px;color:#222;max-width:1100px}
+table{border-collapse:collapse;font-size:13px}td,th{border:1px solid #ddd;padding:3px 8px;text-align:left}
+section{margin:18px 0}.failure{border:1px solid #ddd;padding:10px;margin:10px 0}.failure svg{max-width:520px;height:auto}
+.muted{color:#666;font-size:12px}"""
+
+
+def write_search_report(out: Path, document: Mapping[str, Any]) -> Path:
+    path = out / PAGE
+    path.write_text(render(out, document), encoding="utf-8")
+    return path
+
+
+def render(out: Path, document: Mapping[str, Any]) -> str:
+    counts = document["counts"]
+    title = f"rei search {document['name']} ({document['sampler']})"
+    parts = [f"<h1>{_e(title)}</h1>",
+             (f"<p id=\"counts\">{counts['simulated']} evaluations of {document['budget']} ({counts['errors']} in ERROR); "
+             f"{counts['invalid']} invalid and {counts['unplannable']} unplannable candidates not simulated; "
+             f"{counts['failing']} failing evaluations, {counts['distinct_failures']} distinct failure(s); first "
+             f"failure at evaluation {counts['first_failure_at'] or '-'}.</p>")]
+    for i, objective in enumerate(document["objectives"]):
+        parts.append(_objective_section(i, objective, document["evaluations"], document.get("baseline")))
+    if len(document["objectives"]) == 2:
+        parts.append(_pareto(document))
+    parts.append(_importance(out, document))
+    parts.append(_failures(out, document))
+    return ("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
+            f"<title>{_e(title)}</title><style>{_CSS}</style></head><body>\n" + "\n".join(parts) + "\n</body></html>\n")
+
+
+def _values(evaluations: Sequence[Mapping[str, Any]] | None, i: int) -> list[float]:
+    return [r["values"][i] for r in evaluations or () if r.get("values")]
+
+
+def _objective_section(i: int, objective: Mapping[str, Any], evaluations: Sequence[Mapping[str, Any]],
+                       baseline: Sequence[Mapping[str, Any]] | None) -> str:
+    minimize = objective["direction"] == "minimize"
+    series = [("search", _values(evaluations, i), "#1f77b4")]
+    if baseline:
+        series.append(("random baseline", _values(baseline, i), "#ff7f0e"))
+    svg = _chart(series, minimize)
+    return (f"<section id=\"objective-{i}\"><h2>{_e(objective['label'])} ({_e(objective['direction'])})</h2>{svg}"
+            "<p class=\"muted\">dots: each evaluation; line: the best so far. "
+            + ", ".join(f"<span style=\"color:{c}\">{_e(n)}</span>" for n, _, c in series) + "</p></section>")
+
+
+def _chart(series: Sequence[tuple[str, list[float], str]], minimize: bool) -> str:
+    values = [v for _, vs, _ in series for v in vs]
+    if not values:
+        return "<p class=\"muted\">no completed evaluation</p>"
+    lo, hi = min(values), max(values)
+    hi = hi if hi > lo else lo + 1
+    n = max(len(vs) for _, vs, _ in series)
+
+    def x(k: int) -> float:
+        return _PAD + (_W - 2 * _PAD) * (k / max(1, n - 1))
+
+    def y(v: float) -> float:
+        return _H - _PAD - (_H - 2 * _PAD) * (v - lo) / (hi - lo)
+
+    parts = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{_W}" height="{_H}" role="img">',
+             f'<text x="4" y="{_PAD}" font-size="11">{hi:g}</text>',
+             f'<text x="4" y="{_H - _PAD}" font-size="11">{lo:g}</text>',
+             f'<text x="{_W - _PAD}" y="{_H - 8}" font-size="11">{n}</text>']
+    for _, vs, colour in series:
+        best: list[float] = []
+        for v in vs:
+            best.append(v if not best else (min(best[-1], v) if minimize else max(best[-1], v)))
+        parts += [f'<circle cx="{x(k):.1f}" cy="{y(v):.1f}" r="3" fill="{colour}" opacity=".6"/>'
+                  for k, v in enumerate(vs)]
+        if best:
+            points = " ".join(f"{x(k):.1f},{y(v):.1f}" for k, v in enumerate(best))
+            parts.append(f'<polyline points="{points}" fill="none" stroke="{colour}" stroke-width="2"/>')
+    parts.append("</svg>")
+    return "".join(parts)
+
+
+def _pareto(document: Mapping[str, Any]) -> str:
+    points = [(r["values"][0], r["values"][1], r["key"]) for r in document["evaluations"] if r.get("values")]
+    if not points:
+        return ""
+    d = [o["direction"] == "minimize" for o in document["objectives"]]
+
+    def dominates(a: tuple[float, float, str], b: tuple[float, float, str]) -> bool:
+        better = [(a[i] <= b[i]) if d[i] else (a[i] >= b[i]) for i in (0, 1)]
+        return all(better) and a[:2] != b[:2]
+
+    front = [p for p in points if not any(dominates(q, p) for q in points)]
+    rows = "".join(f"<tr><td>{_e(k)}</td><td>{a:g}</td><td>{b:g}</td></tr>" for a, b, k in sorted(front))
+    labels = [o["label"] for o in document["objectives"]]
+    return (f"<section id=\"pareto\"><h2>Pareto front</h2><table><tr><th>evaluation</th><th>{_e(labels[0])}</th>"
+            f"<th>{_e(labels[1])}</th></tr>{rows}</table></section>")
+
+
+def _importance(out: Path, document: Mapping[str, Any]) -> str:
+    import optuna
+
+    from rei.search.study import JOURNAL
+
+    try:
+        from optuna.storages import JournalStorage
+        from optuna.storages.journal import JournalFileBackend
+
+        stored = optuna.load_study(study_name=document["sampler"],
+                                   storage=JournalStorage(JournalFileBackend(str(out / JOURNAL))))
+        # the simulated evaluations only: an invalid candidate's penalty says nothing about the robot
+        study = optuna.create_study(directions=stored.directions)
+        study.add_trials([t for t in stored.get_trials(deepcopy=False, states=(TrialState.COMPLETE,))
+                          if t.user_attrs.get("simulated")])
+        rows = []
+        for i, objective in enumerate(document["objectives"]):
+            sign = 1.0 if objective["direction"] == "minimize" else -1.0  # PED-ANOVA ranks towards low targets
+            with warnings.catch_warnings():  # PED-ANOVA's reminder that it ranks towards low targets: signed above
+                warnings.simplefilter("ignore", UserWarning)
+                importance = optuna.importance.get_param_importances(
+                    study, target=lambda t, i=i, sign=sign: sign * t.values[i])
+            rows += [f"<tr><td>{_e(objective['label'])}</td><td>{_e(name)}</td><td>{value:.2f}</td></tr>"
+                     for name, value in importance.items()]
+    except (ValueError, RuntimeError, KeyError) as error:  # too few completed evaluations, one parameter
+        return f"<section id=\"importance\"><h2>Parameter importance</h2><p class=\"muted\">{_e(str(error))}</p></section>"
+    return ("<section id=\"importance\"><h2>Parameter importance</h2><table><tr><th>objective</th><th>parameter</th>"
+            f"<th>importance</th></tr>{''.join(rows)}</table></section>")
+
+
+def _failures(out: Path, document: Mapping[str, Any]) -> str:
+    failures = document["failures"]
+    if not failures:
+        return "<section id=\"failures\"><h2>Distinct failures</h2><p>none found</p></section>"
+    parts = ["<section id=\"failures\"><h2>Distinct failures (most severe first)</h2>"]
+    for failure in failures:
+        shrunk = failure.get("shrunk") or {}
+        links = [f"<a href=\"{_rel(out, failure['case'])}\">case</a>",
+                 f"<a href=\"{_rel(out, failure['report'])}\">run report</a>"]
+        if shrunk.get("case"):
+            links.append(f"<a href=\"{_rel(out, shrunk['case'])}\">shrunk case</a> (removed "
+                         f"{_e(', '.join(shrunk.get('removed') or []) or 'nothing')})")
+        parts.append(f"<div class=\"failure\"><h3>{_e(failure['signature'])}</h3><p>{_e(failure['message'])}; "
+                     f"worst utility {failure['worst_utility']:g}; found in {len(failure['evaluations'])} "
+                     f"evaluation(s), first {_e(failure['first'])} (seed {failure.get('seed')}). "
+                     + " · ".join(links) + "</p>" + _map(Path(failure["run"])) + "</div>")
+    parts.append("</section>")
+    return "\n".join(parts)
+
+
+def _map(run_dir: Path) -> str:
+    from rei.report.map_svg import render_map
+    from rei.report.run_data import load_run
+    from rei.report.tracks import collect_tracks
+
+    task = run_dir / "task.json"
+    try:
+        import json
+
+        case_dir = Path(json.loads(task.read_text(encoding="utf-8"))["case_dir"])
+        data = load_run(run_dir, case_dir)
+        return render_map(data.world, collect_tracks(data.states()), data.goals, data.signals)
+    except (OSError, ValueError, KeyError) as error:
+        return f"<p class=\"muted\">no map: {_e(str(error))}</p>"
+
+
+def _rel(out: Path, path: str | None) -> str:
+    if not path:
+        return "#"
+    try:
+        return html.escape(str(Path(path).resolve().relative_to(out.resolve())), quote=True)
+    except ValueError:
+        return html.escape(Path(path).as_uri(), quote=True)
+
+
+def _e(text: str) -> str:
+    return html.escape(str(text))

@@ -1,0 +1,124 @@
+# SPDX-License-Identifier: EPL-2.0
+"""``rei search`` from spec to report: the pool, the search, shrinking each distinct failure, the outputs."""
+
+from __future__ import annotations
+
+import json
+import threading
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+from rei.search.failures import Failure, distinct
+from rei.search.outputs import records, write_outputs
+from rei.search.pool import LocalPool, Pool, RayPool
+from rei.search.shrink import shrink
+from rei.search.spec import SearchSpec
+from rei.search.study import Search, open_study
+
+SHRUNK = "shrunk.json"
+
+
+def make_pool(workers: int, ray: str | None, out: Path, stop: threading.Event) -> Pool:
+    if ray:
+        return RayPool(ray, workers if ray == "local" else None, stop)
+    return LocalPool(workers, out / "runs", stop)
+
+
+def run_search(spec: SearchSpec, out: Path, *, workers: int = 1, ray: str | None = None,
+               stop: threading.Event | None = None, shrink_failures: bool = True,
+               log: Callable[[str], None] = print) -> dict[str, Any]:
+    """Runs (or resumes) the search and writes its outputs; search.json's document, with ``interrupted``."""
+    out = out.resolve()
+    out.mkdir(parents=True, exist_ok=True)
+    stop = stop or threading.Event()
+    pool = _LazyPool(lambda: make_pool(workers, ray, out, stop), workers, "ray" if ray else "local")
+    search = Search(spec, out, pool, stop, log)
+    try:
+        progress = search.run()
+        shrunk = _load(out / SHRUNK)
+        if shrink_failures and not progress.interrupted and spec.shrink_budget > 0:
+            shrunk = _shrink_all(search, shrunk, log)
+        baseline = None
+        if spec.sampler != "random" and _has_study(out, "random"):
+            baseline = records(open_study(out, spec.with_options(sampler="random")), out)
+        document = write_outputs(spec, out, search.study, shrunk, baseline)
+        _report(spec, out, document, log)
+    finally:
+        search.close()
+        search.pool.close()
+    document["interrupted"] = progress.interrupted
+    return document
+
+
+def _shrink_all(search: Search, shrunk: dict[str, Any], log: Callable[[str], None]) -> dict[str, Any]:
+    evaluations = records(search.study, search.out)
+    completed = [r for r in evaluations if r["status"] == "COMPLETED"]
+    seen: dict[str, tuple[list[str], str]] = {}  # cases simulated while shrinking, shared between failures
+    for index, group in enumerate(distinct(completed), start=1):
+        signature = group.failure.signature
+        if signature in shrunk:
+            continue
+        first = next(r for r in completed if r["key"] == group.first)
+        failure = next(Failure.from_dict(f) for f in first["failures"] if f["signature"] == signature)
+        log(f"shrinking {signature} (from {group.first})")
+        result = shrink(failure, first["params"], search.space, search.maker, search.pool,
+                        lambda key, cand, case_dir, run_dir: search.task(key, cand, case_dir, run_dir), search.out,
+                        index, search.spec.shrink_budget, log, seen)
+        shrunk[signature] = result.to_dict()
+        (search.out / SHRUNK).write_text(json.dumps(shrunk, indent=2, default=str) + "\n", encoding="utf-8")
+        log(f"  shrunk: {result.kept} of {result.steps} steps kept, removed {', '.join(result.removed) or 'nothing'}"
+            f": {result.case}")
+    return shrunk
+
+
+def _report(spec: SearchSpec, out: Path, document: dict[str, Any], log: Callable[[str], None]) -> None:
+    from rei.search.report import write_search_report
+
+    try:
+        write_search_report(out, document)
+    except (OSError, ValueError) as error:  # the figures are in search.json whatever happens to the page
+        log(f"search: search.html could not be written: {error}")
+
+
+def _has_study(out: Path, name: str) -> bool:
+    import optuna
+
+    from rei.search.study import JOURNAL
+
+    if not (out / JOURNAL).is_file():
+        return False
+    from optuna.storages import JournalStorage
+    from optuna.storages.journal import JournalFileBackend
+
+    storage = JournalStorage(JournalFileBackend(str(out / JOURNAL)))
+    return any(s.study_name == name for s in optuna.get_all_study_summaries(storage, include_best_trial=False))
+
+
+def _load(path: Path) -> dict[str, Any]:
+    try:
+        return json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return {}
+
+
+class _LazyPool:
+    """Starts the pool (fork server, warm monitor JVM, Ray) at the first run, not for a search that has nothing
+    left to run."""
+
+    def __init__(self, start: Callable[[], Pool], workers: int, name: str) -> None:
+        self._start, self.workers, self.name = start, workers, name
+        self._pool: Pool | None = None
+
+    def _get(self) -> Pool:
+        if self._pool is None:
+            self._pool = self._start()
+            self.workers = self._pool.workers
+        return self._pool
+
+    def submit(self, task: Any) -> Any:
+        return self._get().submit(task)
+
+    def close(self) -> None:
+        if self._pool is not None:
+            self._pool.close()

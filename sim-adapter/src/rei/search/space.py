@@ -1,0 +1,182 @@
+# SPDX-License-Identifier: EPL-2.0
+"""The search space: the spec's parameters, checked against the base case, as Optuna distributions, and a
+point of it as the room editor's operations (docs/room-editor.md, "Operations") plus the run's seed and fault.
+
+Every value is named as in search.json (``bin1.floor``, ``walker.points.1``, ``walker.start``, ``seed``); the base
+case's own values are a point of the space too (``base_values``), which is where shrinking moves elements back to.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+from optuna.distributions import BaseDistribution, CategoricalDistribution, FloatDistribution, IntDistribution
+
+from rei.campaign.spec import SpecError
+from rei.search.spec import Parameter, Range
+
+Values = Mapping[str, Any]
+
+
+@dataclass(frozen=True, slots=True)
+class Edit:
+    """A point of the space as what to do to the base case: edit operations, the run's seed and fault."""
+
+    operations: tuple[dict[str, Any], ...]
+    seed: int
+    fault: str | None
+
+
+class Space:
+    """The parameters of a spec over one base case (its room editor diagram)."""
+
+    def __init__(self, parameters: Sequence[Parameter], diagram: Mapping[str, Any]) -> None:
+        self.parameters = tuple(parameters)
+        self._diagram = diagram
+        self._floors = {f["name"]: (float(f["centreX"]), float(f["centreY"])) for f in diagram["room"]["floors"]}
+        objects = {o["name"]: o for o in diagram.get("objects") or []}
+        robot = diagram.get("robot")
+        self._humans = {m["name"]: m for m in diagram.get("movers") or []}
+        self._goals = list((diagram.get("mission") or {}).get("goals") or [])
+        self._items = {**objects, **({robot["name"]: robot} if robot else {})}
+        taken = {item["floor"]: name for name, item in self._items.items()}
+        self.distributions: dict[str, BaseDistribution] = {}
+        self._base: dict[str, Any] = {}
+        for p in self.parameters:
+            self._add(p, objects, robot, taken)
+
+    # -- the spec against the base case -------------------------------------------------------------------------
+
+    def _add(self, p: Parameter, objects: Mapping[str, Any], robot: Mapping[str, Any] | None,
+             taken: Mapping[str, str]) -> None:
+        if p.target == "object" and p.name not in objects:
+            raise SpecError(f"{p.where}: the base case has no object named {p.name!r}; it has "
+                            f"{', '.join(objects) or 'none'}")
+        if p.target == "robot" and (robot is None or robot["name"] != p.name):
+            raise SpecError(f"{p.where}: the base case's robot is {robot['name'] if robot else 'missing'}, "
+                            f"not {p.name!r}")
+        if p.target == "human" and p.name not in self._humans:
+            raise SpecError(f"{p.where}: the base case has no human or moving object named {p.name!r}; it has "
+                            f"{', '.join(self._humans) or 'none'}")
+        if p.target == "goal" and int(p.name) >= len(self._goals):
+            raise SpecError(f"{p.where}: the mission has {len(self._goals)} goal(s): index {p.name} is not one")
+        if p.prop == "floor":
+            own = self._items[p.name]["floor"] if p.target in ("object", "robot") else None
+            base = own if own is not None else self._goals[int(p.name)]["floor"]
+            free = [f for f in self._floors if f not in taken or taken[f] == p.name] if p.target != "goal" \
+                else list(self._floors)
+            self._categorical(p.key, self._checked_floors(p, p.domain, free), base, p.where)
+        elif p.prop == "yaw":
+            self._float(p.key, p.domain, float(self._items[p.name]["yaw"]))
+        elif p.prop == "points":
+            points = self._humans[p.name]["points"]
+            if len(p.domain) != len(points):
+                raise SpecError(f"{p.where}: {p.name} has {len(points)} control points in the base case, the spec "
+                                f"gives floors for {len(p.domain)}")
+            for i, floors in enumerate(p.domain):
+                self._categorical(f"{p.key}.{i}", self._checked_floors(p, floors, list(self._floors)),
+                                  points[i]["floor"], p.where)
+        elif p.prop == "start":
+            self._float(p.key, p.domain, float(self._humans[p.name]["points"][0]["seconds"]))
+        elif p.prop == "speed":
+            self._float(p.key, p.domain, self._base_speed(p.name))
+        elif p.prop == "loop":
+            self._categorical(p.key, list(p.domain), bool(self._humans[p.name]["loop"]), p.where)
+        elif p.target == "seed":
+            self._float(p.key, p.domain, 0)
+        elif p.target == "fault":
+            self._float(p.key, p.domain, None)
+        else:
+            raise AssertionError(p)
+
+    def _checked_floors(self, p: Parameter, floors: Sequence[str] | None, default: list[str]) -> list[str]:
+        if floors is None:
+            return default
+        unknown = [f for f in floors if f not in self._floors]
+        if unknown:
+            raise SpecError(f"{p.where}: the base case's room has no floor {unknown[0]!r}")
+        return list(floors)
+
+    def _categorical(self, key: str, choices: list[Any], base: Any, where: str) -> None:
+        if not choices:
+            raise SpecError(f"{where}: {key} has no floor to choose from")
+        self.distributions[key] = CategoricalDistribution(choices)
+        self._base[key] = base
+
+    def _float(self, key: str, domain: Range, base: Any) -> None:
+        if domain.integer:
+            self.distributions[key] = IntDistribution(int(domain.low), int(domain.high))
+        else:
+            self.distributions[key] = FloatDistribution(domain.low, domain.high)
+        self._base[key] = base
+
+    def _base_speed(self, human: str) -> float:
+        points = self._humans[human]["points"]
+        length = sum(math.dist((a["x"], a["y"]), (b["x"], b["y"])) for a, b in itertools.pairwise(points))
+        duration = float(points[-1]["seconds"]) - float(points[0]["seconds"])
+        return length / duration if duration > 0 else 1.0
+
+    # -- a point of the space ------------------------------------------------------------------------------------
+
+    def base_values(self) -> dict[str, Any]:
+        """The base case's own value of every parameter (None for a fault's value: no fault)."""
+        return dict(self._base)
+
+    def edit(self, values: Values, removed: Sequence[str] = ()) -> Edit:
+        """The operations that make ``values`` of the base case, with the objects and humans ``removed``
+        deleted (a shrunk case)."""
+        operations: list[dict[str, Any]] = []
+        for p in self.parameters:
+            if p.name in removed and p.target in ("object", "human"):
+                continue
+            if p.target in ("object", "robot") and p.prop == "floor":
+                operations.append({"op": "moveObject", "name": p.name, "floor": values[p.key]})
+            elif p.prop == "yaw":
+                operations.append({"op": "rotateObject", "name": p.name, "yawDegrees": float(values[p.key])})
+        for human in dict.fromkeys(p.name for p in self.parameters if p.target == "human" and p.name not in removed):
+            operations.append(self._trajectory(human, values))
+        goals = [p for p in self.parameters if p.target == "goal"]
+        for p in sorted(goals, key=lambda p: int(p.name)):
+            index = int(p.name)
+            operations += [{"op": "removeGoal", "index": index},
+                           {"op": "addGoal", "floor": values[p.key], "index": index,
+                            "timeoutSeconds": self._goals[index].get("timeout")}]
+        operations += [{"op": "deleteObject", "name": name} for name in removed]
+        seed = int(values.get("seed", 0) or 0)
+        return Edit(tuple(operations), seed, self._fault(values))
+
+    def _trajectory(self, human: str, values: Values) -> dict[str, Any]:
+        base = self._humans[human]
+        points = base["points"]
+        floors = [values.get(f"{human}.points.{i}", point["floor"]) for i, point in enumerate(points)]
+        start = float(values.get(f"{human}.start", points[0]["seconds"]))
+        speed = values.get(f"{human}.speed")
+        if speed is None:
+            times = [start + float(p["seconds"]) - float(points[0]["seconds"]) for p in points]
+        else:
+            times = [start]
+            for a, b in itertools.pairwise(floors):
+                times.append(times[-1] + math.dist(self._floors[a], self._floors[b]) / float(speed))
+        loop = values.get(f"{human}.loop", base["loop"])
+        return {"op": "setTrajectory", "name": human, "loop": bool(loop),
+                "points": [{"floor": f, "seconds": round(t, 3)} for f, t in zip(floors, times, strict=True)]}
+
+    def _fault(self, values: Values) -> str | None:
+        faults = [p for p in self.parameters if p.target == "fault"]
+        if not faults or all(values.get(p.key) is None for p in faults):
+            return None
+        settings = ",".join(f"{p.prop}={int(values[p.key]) if p.prop == 'width' else round(values[p.key], 6)}"
+                            for p in faults if values.get(p.key) is not None)
+        return f"{faults[0].base},{settings}"
+
+    def removable(self) -> list[str]:
+        """The objects and humans of the base case: what shrinking may try to remove (never the robot)."""
+        return [name for name, item in self._items.items() if item["kind"] == "object"] + list(self._humans)
+
+    def floor_at(self, x: float, y: float) -> str:
+        """The floor whose centre is nearest to (x, y): where something happened, as the test case names it."""
+        return min(self._floors, key=lambda name: math.dist(self._floors[name], (x, y)))

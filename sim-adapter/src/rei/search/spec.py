@@ -1,0 +1,417 @@
+# SPDX-License-Identifier: EPL-2.0
+"""The search spec (``rei search SPEC.yaml``): a base case, the SUT, what may change, what counts as worse.
+
+Checked completely at the door; every mistake is reported as ``FILE:LINE:COLUMN: message`` at the YAML value
+(or key) it is about, as ``rei validate`` reports a test case's. Format (docs/search.md)::
+
+    name: crossing              # optional, default: the file's stem
+    case: crossing.rei          # the base case, relative to the spec file
+    controller: nav             # or sut: {command: ..., map: true, ...} as in campaign specs
+    seed: 0                     # the sampler's seed
+    budget: 20                  # simulated evaluations (--budget overrides)
+    sampler: tpe                # tpe, cmaes, nsga2, qmc or random (--sampler overrides)
+    timeout: 120                # wall seconds per run before it is stopped and recorded as ERROR
+    humans: true
+    parameters:
+      - {object: bin1, floor: any}              # any floor free in the base case, or a list of floors
+      - {object: bin1, yaw: [0, 180]}           # degrees
+      - {human: walker, points: [[F_2_0, F_2_2], any]}  # per control point: its floors (or 'any')
+      - {human: walker, start: [0, 20], speed: [0.4, 1.5], loop: [true, false]}
+      - {robot: tb3, floor: [F_0_1, F_1_1]}
+      - {goal: 1, floor: any}
+      - {seed: [0, 1000]}
+      - {fault: "laser:1%", rate: [0.0, 0.05]}  # and gain, width
+    objectives:                 # one, or several (a Pareto search)
+      - utility                 # or {utility: minimize}
+      - {metric: clearance_humans_min}          # summary.json's metrics, default: towards the worse side
+      - {verdict: MISSION_WITH_HUMAN_TRAJECTORY}  # 0 when it fails, 1 when it holds: minimized
+      - {signal: SIG_OBJECT_COLLISION_BEGIN, of: count}  # or of: first (its first time)
+    shrink: {budget: 8}         # simulations per distinct failure to shrink it; budget 0 turns it off
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import re
+from collections.abc import Mapping
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+from rei.campaign.spec import ExternalSut, SpecError, _Reader, _sut
+from rei.evaluation.metrics import BY_NAME, NAMES, Better
+
+SAMPLERS = ("tpe", "cmaes", "nsga2", "qmc", "random")
+DIRECTIONS = ("minimize", "maximize")
+#: The direction in which each kind of objective is worse for the robot (what a falsification looks for).
+_WORSE = {"utility": "minimize", "time": "maximize", "verdict": "minimize"}
+
+
+@dataclass(frozen=True, slots=True)
+class Range:
+    low: float
+    high: float
+    integer: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class Parameter:
+    """One searched property of one element. ``target``: object, human, robot, goal, seed or fault;
+    ``name``: the element (a goal's index as text; empty for seed and fault); ``prop``: floor, yaw, points,
+    start, speed, loop, value (seed), rate, gain, width; ``domain``: a Range, a tuple of choices, or for
+    ``points`` a tuple with one tuple of floors (or None: any floor) per control point; None for 'any'."""
+
+    target: str
+    name: str
+    prop: str
+    domain: Any
+    where: str  # FILE:LINE:COLUMN of the entry, for later messages
+    base: str | None = None  # fault: the preset the searched values are added to
+
+    @property
+    def key(self) -> str:
+        """Its name in the study and in search.json: ``bin1.floor``, ``goal1.floor``, ``seed``."""
+        if self.target == "seed":
+            return "seed"
+        if self.target == "fault":
+            return f"fault.{self.prop}"
+        owner = f"goal{self.name}" if self.target == "goal" else self.name
+        return f"{owner}.{self.prop}"
+
+
+@dataclass(frozen=True, slots=True)
+class Objective:
+    """``kind``: utility, time, metric, verdict or signal; ``key``: the metric, requirement or signal
+    (``any`` for every verdict); ``of``: count or first (signals)."""
+
+    kind: str
+    key: str
+    direction: str
+    of: str = ""
+
+    @property
+    def label(self) -> str:
+        if self.kind in ("utility", "time"):
+            return self.kind
+        return f"{self.kind}:{self.key}" + (f":{self.of}" if self.of else "")
+
+
+@dataclass(frozen=True, slots=True)
+class SearchSpec:
+    name: str
+    case: Path
+    controller: str
+    sut: ExternalSut | None
+    seed: int
+    budget: int
+    sampler: str
+    timeout: float
+    humans: bool
+    parameters: tuple[Parameter, ...]
+    objectives: tuple[Objective, ...]
+    shrink_budget: int
+    source: Path | None = None
+
+    def with_options(self, **changes: Any) -> SearchSpec:
+        return dataclasses.replace(self, **{k: v for k, v in changes.items() if v is not None})
+
+
+class _Located:
+    """A YAML document's nodes with their marks: every value comes with where it was written."""
+
+    def __init__(self, file: str) -> None:
+        self.file = file
+        self._constructor = yaml.SafeLoader("")
+
+    def at(self, node: yaml.Node) -> str:
+        mark = node.start_mark
+        return f"{self.file}:{mark.line + 1}:{mark.column + 1}"
+
+    def value(self, node: yaml.Node) -> Any:
+        return self._constructor.construct_object(node, deep=True)
+
+    def mapping(self, node: yaml.Node, what: str) -> dict[str, tuple[yaml.Node, yaml.Node]]:
+        if not isinstance(node, yaml.MappingNode):
+            raise SpecError(f"{self.at(node)}: {what} must be a mapping")
+        items: dict[str, tuple[yaml.Node, yaml.Node]] = {}
+        for key, value in node.value:
+            name = str(self.value(key))
+            if name in items:
+                raise SpecError(f"{self.at(key)}: '{name}' is given twice")
+            items[name] = (key, value)
+        return items
+
+
+def load_search_spec(path: Path) -> SearchSpec:
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError as error:
+        raise SpecError(f"{path}: cannot read: {error.strerror or error}") from None
+    spec = parse_search_spec(text, base=path.resolve().parent, file=str(path), default_name=path.stem)
+    return dataclasses.replace(spec, source=path)
+
+
+def parse_search_spec(text: str, *, base: Path, file: str = "spec", default_name: str = "search") -> SearchSpec:
+    """A checked ``SearchSpec`` from YAML text; the case path is resolved against ``base``."""
+    loc = _Located(file)
+    try:
+        root = yaml.compose(text, Loader=yaml.SafeLoader)
+    except yaml.MarkedYAMLError as error:
+        mark = error.problem_mark
+        where = f"{file}:{mark.line + 1}:{mark.column + 1}" if mark is not None else file
+        raise SpecError(f"{where}: not YAML: {error.problem}") from None
+    if root is None:
+        raise SpecError(f"{file}:1:1: the spec is empty: expected 'case', 'parameters' and 'objectives'")
+    top = loc.mapping(root, "the spec")
+    known = ("name", "case", "controller", "sut", "seed", "budget", "sampler", "timeout", "humans", "parameters",
+             "objectives", "shrink")
+    for name, (key, _) in top.items():
+        if name not in known:
+            raise SpecError(f"{loc.at(key)}: unknown key '{name}'; known: {', '.join(known)}")
+    plain = {name: loc.value(value) for name, (_, value) in top.items()
+             if name not in ("parameters", "objectives", "sut")}
+    reader = _PositionedReader(plain, top, loc)
+    for required in ("case", "parameters", "objectives"):
+        if required not in top:
+            raise SpecError(f"{loc.at(root)}: '{required}' is required")
+    case_node = top["case"][1]
+    case = (base / str(loc.value(case_node))).resolve()
+    if case.suffix != ".rei" or not case.is_file():
+        raise SpecError(f"{loc.at(case_node)}: the base case {case} is not a .rei file")
+    if "controller" in top and "sut" in top:
+        raise SpecError(f"{loc.at(top['sut'][0])}: give either 'controller' (in-process) or 'sut' (external), "
+                        "not both")
+    controller = reader.call("controller", lambda r: r.str("controller", "nav"))
+    _check_controller(controller, loc.at(top["controller"][1]) if "controller" in top else file)
+    sut = None
+    if "sut" in top:
+        sut_node = top["sut"][1]
+        sut = _at(loc.at(sut_node), lambda: _sut(_Reader({"sut": loc.value(sut_node)}, ""), base))
+    shrink_budget = 8
+    if "shrink" in top:
+        shrink = loc.mapping(top["shrink"][1], "'shrink'")
+        for name, (key, _) in shrink.items():
+            if name != "budget":
+                raise SpecError(f"{loc.at(key)}: unknown key '{name}'; known: budget")
+        if "budget" in shrink:
+            shrink_budget = _PositionedReader({"budget": loc.value(shrink["budget"][1])}, shrink, loc).call(
+                "budget", lambda r: r.int("budget", 8, minimum=0))
+    parameters = _parameters(top["parameters"][1], loc)
+    objectives = _objectives(top["objectives"][1], loc)
+    return SearchSpec(
+        name=reader.call("name", lambda r: r.name("name", default_name)), case=case, controller=controller, sut=sut,
+        seed=reader.call("seed", lambda r: r.int("seed", 0, minimum=0)),
+        budget=reader.call("budget", lambda r: r.int("budget", 20, minimum=1)),
+        sampler=reader.call("sampler", lambda r: r.choice("sampler", SAMPLERS, "tpe")),
+        timeout=reader.call("timeout", lambda r: r.number("timeout", 300.0)),
+        humans=reader.call("humans", lambda r: r.bool("humans", True)),
+        parameters=parameters, objectives=objectives, shrink_budget=shrink_budget)
+
+
+class _PositionedReader:
+    """The campaign spec's typed reader, its messages placed at the value they are about."""
+
+    def __init__(self, plain: dict[str, Any], nodes: Mapping[str, tuple[yaml.Node, yaml.Node]], loc: _Located) -> None:
+        self._plain, self._nodes, self._loc = plain, nodes, loc
+
+    def call(self, key: str, read: Any) -> Any:
+        where = self._loc.at(self._nodes[key][1]) if key in self._nodes else self._loc.file
+        return _at(where, lambda: read(_Reader(self._plain, "")))
+
+
+#: What the campaign reader puts before its messages when its own position is empty.
+_OWN_PREFIX = re.compile(r"^:\s*(sut:\s*)?")
+
+
+def _at(where: str, read: Any) -> Any:
+    """``read()``, a SpecError from it placed at ``where`` (the campaign reader's own prefix dropped)."""
+    try:
+        return read()
+    except SpecError as error:
+        raise SpecError(f"{where}: {_OWN_PREFIX.sub('', str(error))}") from None
+
+
+def _check_controller(controller: str, where: str) -> None:
+    from rei.sut.registry import available_controllers
+
+    if controller.partition(":")[0] not in available_controllers():
+        raise SpecError(f"{where}: unknown controller {controller!r}; available: {', '.join(available_controllers())}")
+
+
+_PROPS = {"object": ("floor", "yaw"), "robot": ("floor",), "human": ("points", "start", "speed", "loop"),
+          "goal": ("floor",), "seed": (), "fault": ("rate", "gain", "width")}
+
+
+def _parameters(node: yaml.Node, loc: _Located) -> tuple[Parameter, ...]:
+    if not isinstance(node, yaml.SequenceNode) or not node.value:
+        raise SpecError(f"{loc.at(node)}: 'parameters' must be a non-empty list")
+    parameters: list[Parameter] = []
+    for item in node.value:
+        entry = loc.mapping(item, "a parameter")
+        targets = [name for name in entry if name in _PROPS]
+        if len(targets) != 1:
+            raise SpecError(f"{loc.at(item)}: a parameter names exactly one of {', '.join(_PROPS)}, "
+                            f"got {', '.join(targets) or 'none'}")
+        target = targets[0]
+        key_node, name_node = entry[target]
+        name_value = loc.value(name_node)
+        props = [name for name in entry if name != target]
+        for prop in props:
+            if prop not in _PROPS[target]:
+                raise SpecError(f"{loc.at(entry[prop][0])}: '{prop}' is not a property of {_article(target)} {target}; "
+                                f"expected {', '.join(_PROPS[target]) or 'no other key'}")
+        if target == "seed":
+            parameters.append(Parameter("seed", "", "value", _range(name_value, name_node, loc, integer=True),
+                                        loc.at(item)))
+            continue
+        if target == "fault":
+            from rei.sim.faults import parse_fault
+
+            if not isinstance(name_value, str):
+                raise SpecError(f"{loc.at(name_node)}: 'fault' is the fault the values change, such as \"laser:1%\"")
+            _at(loc.at(name_node), lambda text=name_value: _fault_checked(parse_fault, text))
+            if not props:
+                raise SpecError(f"{loc.at(item)}: give at least one of rate, gain, width")
+            for prop in props:
+                parameters.append(Parameter("fault", "", prop, _range(loc.value(entry[prop][1]), entry[prop][1], loc,
+                                                                      integer=prop == "width"),
+                                            loc.at(entry[prop][1]), base=name_value))
+            continue
+        if target == "goal":
+            if isinstance(name_value, bool) or not isinstance(name_value, int) or name_value < 0:
+                raise SpecError(f"{loc.at(name_node)}: 'goal' is the goal's index in the mission (0 is the first), "
+                                f"got {name_value!r}")
+        elif not isinstance(name_value, str) or not name_value:
+            raise SpecError(f"{loc.at(name_node)}: '{target}' must name an element of the base case")
+        if not props:
+            raise SpecError(f"{loc.at(key_node)}: give what to change of {name_value}: "
+                            f"{', '.join(_PROPS[target])}")
+        for prop in props:
+            value_node = entry[prop][1]
+            parameters.append(Parameter(target, str(name_value), prop, _domain(prop, value_node, loc),
+                                        loc.at(value_node)))
+    keys = [p.key for p in parameters]
+    for i, parameter in enumerate(parameters):
+        if parameter.key in keys[:i]:
+            raise SpecError(f"{parameter.where}: {parameter.key} is searched twice")
+    return tuple(parameters)
+
+
+def _fault_checked(parse: Any, text: str) -> None:
+    try:
+        parse(text)
+    except ValueError as error:
+        raise SpecError(f": {error}") from None
+
+
+def _domain(prop: str, node: yaml.Node, loc: _Located) -> Any:
+    value = loc.value(node)
+    if prop == "floor":
+        return _floors(value, node, loc)
+    if prop == "points":
+        if not isinstance(node, yaml.SequenceNode) or len(node.value) < 2:
+            raise SpecError(f"{loc.at(node)}: 'points' lists each control point's floors (or 'any'), "
+                            "at least two points")
+        return tuple(_floors(loc.value(point), point, loc) for point in node.value)
+    if prop == "loop":
+        if not isinstance(value, list) or not value or not all(isinstance(v, bool) for v in value):
+            raise SpecError(f"{loc.at(node)}: 'loop' lists the choices, such as [true, false]")
+        return tuple(dict.fromkeys(value))
+    if prop == "yaw":
+        return _range(value, node, loc)
+    if prop in ("start", "speed"):
+        domain = _range(value, node, loc)
+        if prop == "speed" and domain.low <= 0:
+            raise SpecError(f"{loc.at(node)}: a speed (m/s) must be positive, got {domain.low:g}")
+        if prop == "start" and domain.low < 0:
+            raise SpecError(f"{loc.at(node)}: a start time must not be negative, got {domain.low:g}")
+        return domain
+    raise AssertionError(prop)
+
+
+def _floors(value: Any, node: yaml.Node, loc: _Located) -> tuple[str, ...] | None:
+    if value == "any":
+        return None
+    if not isinstance(value, list) or not value or not all(isinstance(v, str) and v for v in value):
+        raise SpecError(f"{loc.at(node)}: expected 'any' or a list of floor names, got {value!r}")
+    return tuple(dict.fromkeys(value))
+
+
+def _range(value: Any, node: yaml.Node, loc: _Located, integer: bool = False) -> Range:
+    kinds = (int,) if integer else (int, float)
+    if (not isinstance(value, list) or len(value) != 2
+            or not all(isinstance(v, kinds) and not isinstance(v, bool) for v in value)):
+        what = "integers" if integer else "numbers"
+        raise SpecError(f"{loc.at(node)}: expected a range [low, high] of two {what}, got {value!r}")
+    low, high = value
+    if not low < high:
+        raise SpecError(f"{loc.at(node)}: the range's low end must be below its high end, got [{low}, {high}]")
+    return Range(float(low), float(high), integer)
+
+
+_KINDS = ("utility", "time", "metric", "verdict", "signal")
+
+
+def _objectives(node: yaml.Node, loc: _Located) -> tuple[Objective, ...]:
+    if not isinstance(node, yaml.SequenceNode) or not node.value:
+        raise SpecError(f"{loc.at(node)}: 'objectives' must be a non-empty list")
+    objectives: list[Objective] = []
+    for item in node.value:
+        if isinstance(item, yaml.ScalarNode):
+            name = loc.value(item)
+            if name not in ("utility", "time"):
+                raise SpecError(f"{loc.at(item)}: unknown objective {name!r}: expected utility, time, or a mapping "
+                                "{metric: KEY}, {verdict: REQUIREMENT}, {signal: NAME}")
+            objectives.append(Objective(name, name, _WORSE[name]))
+            continue
+        entry = loc.mapping(item, "an objective")
+        kinds = [k for k in entry if k in _KINDS]
+        if len(kinds) != 1:
+            raise SpecError(f"{loc.at(item)}: an objective names exactly one of {', '.join(_KINDS)}")
+        kind = kinds[0]
+        for extra, (key, _) in entry.items():
+            if extra not in (kind, "direction", "of"):
+                raise SpecError(f"{loc.at(key)}: unknown key '{extra}'; known: {kind}, direction"
+                                + (", of" if kind == "signal" else ""))
+        value_node = entry[kind][1]
+        value = loc.value(value_node)
+        direction_node = entry.get("direction", (None, None))[1]
+        if kind in ("utility", "time"):
+            if value not in DIRECTIONS:
+                raise SpecError(f"{loc.at(value_node)}: expected minimize or maximize, got {value!r}")
+            objectives.append(Objective(kind, kind, value))
+            continue
+        if not isinstance(value, str) or not value:
+            raise SpecError(f"{loc.at(value_node)}: '{kind}' names a {'metric key' if kind == 'metric' else kind}")
+        if kind == "metric" and value not in NAMES:
+            raise SpecError(f"{loc.at(value_node)}: unknown metric {value!r}; known: {', '.join(NAMES)}")
+        if kind == "verdict":
+            from rei.evaluation.verdicts import REQUIREMENTS
+
+            if value != "any" and value not in REQUIREMENTS:
+                raise SpecError(f"{loc.at(value_node)}: unknown requirement {value!r}; known: any, "
+                                f"{', '.join(REQUIREMENTS)}")
+        of = ""
+        if kind == "signal":
+            of_node = entry.get("of", (None, None))[1]
+            of = "count" if of_node is None else loc.value(of_node)
+            if of not in ("count", "first"):
+                raise SpecError(f"{loc.at(of_node)}: 'of' is count or first, got {of!r}")
+        if kind == "metric":  # worse for the robot: away from the metric's better side
+            default = "minimize" if BY_NAME[value].better == Better.HIGHER else "maximize"
+        else:
+            default = _WORSE.get(kind) or ("maximize" if of == "count" else "minimize")
+        direction = default if direction_node is None else loc.value(direction_node)
+        if direction not in DIRECTIONS:
+            raise SpecError(f"{loc.at(direction_node)}: expected minimize or maximize, got {direction!r}")
+        objectives.append(Objective(kind, value, direction, of))
+    labels = [o.label for o in objectives]
+    if len(set(labels)) != len(labels):
+        raise SpecError(f"{loc.at(node)}: an objective is given twice")
+    return tuple(objectives)
+
+
+def _article(word: str) -> str:
+    return "an" if word[0] in "aeiou" else "a"

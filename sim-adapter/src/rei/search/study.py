@@ -1,0 +1,275 @@
+# SPDX-License-Identifier: EPL-2.0
+"""A whole search: ask Optuna for candidates, simulate the valid ones on the pool, tell the scores, resume.
+
+    OUT/spec.yaml               the spec as given (a copy)
+    OUT/study.journal           Optuna's journal (one study per sampler): a stopped search resumes from it
+    OUT/candidates/<key>.rei    every valid candidate (its seed and fault in its first line)
+    OUT/cases/<key>/            its generated case
+    OUT/runs/<key>/             its run (the campaign's run folder: summary.json, events.csv, streams/, ...)
+
+Evaluations are named ``<sampler>-<trial number>`` (``tpe-0003``). Budget counts simulated evaluations (those in
+ERROR too); candidates that are not valid are told to the study as infeasible (``constraints``), counted apart and never
+simulated. A trial still running when the search stopped was not finished: it is closed as failed on resume and
+its point asked again first, so nothing finished runs twice.
+"""
+
+from __future__ import annotations
+
+import json
+import shutil
+import signal
+import threading
+from collections.abc import Callable
+from concurrent.futures import FIRST_COMPLETED, Future, wait
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import optuna
+from optuna.storages import JournalStorage
+from optuna.storages.journal import JournalFileBackend
+from optuna.trial import TrialState
+
+from rei.campaign.plan import RunTask
+from rei.campaign.results import make_result, write_result
+from rei.campaign.supervise import Outcome
+from rei.search.candidates import VALID, Candidate, CandidateMaker
+from rei.search.failures import failures_of
+from rei.search.objectives import ABSENT, better, score
+from rei.search.pool import Pool
+from rei.search.space import Space
+from rei.search.spec import SearchSpec
+
+JOURNAL = "study.journal"
+#: Candidates asked per simulated evaluation at most: a space of mostly invalid points ends the search instead of
+#: spinning.
+MAX_TRIES_PER_EVALUATION = 20
+
+
+def make_sampler(name: str, seed: int, budget: int) -> optuna.samplers.BaseSampler:
+    if name == "tpe":
+        return optuna.samplers.TPESampler(seed=seed, n_startup_trials=max(2, min(10, budget // 4)),
+                                          multivariate=True, constant_liar=True, constraints_func=constraints)
+    if name == "cmaes":
+        return optuna.samplers.CmaEsSampler(seed=seed, n_startup_trials=1, warn_independent_sampling=False)
+    if name == "nsga2":
+        return optuna.samplers.NSGAIISampler(seed=seed, population_size=max(4, min(50, budget // 4)),
+                                             constraints_func=constraints)
+    if name == "qmc":
+        return optuna.samplers.QMCSampler(seed=seed, qmc_type="sobol", warn_independent_sampling=False)
+    if name == "random":
+        return optuna.samplers.RandomSampler(seed=seed)
+    raise ValueError(f"unknown sampler {name!r}")
+
+
+def constraints(trial: optuna.trial.FrozenTrial) -> list[float]:
+    """Optuna's constraint of a trial: 1 (violated) for a candidate that was not valid. The samplers that take
+    constraints rank such trials below every simulated one, so the search learns where the valid cases are;
+    the others see the penalty values (``penalty``)."""
+    return [float(trial.user_attrs.get("constraint", 0.0))]
+
+
+def penalty(spec: SearchSpec) -> list[float]:
+    """What an invalid candidate is told: each objective's value on the side the search moves away from."""
+    return [ABSENT if o.direction == "minimize" else -ABSENT for o in spec.objectives]
+
+
+def open_study(out: Path, spec: SearchSpec, seed: int | None = None) -> optuna.Study:
+    """The study of ``spec.sampler`` in ``OUT/study.journal``, created or loaded."""
+    optuna.logging.set_verbosity(optuna.logging.WARNING)
+    storage = JournalStorage(JournalFileBackend(str(out / JOURNAL)))
+    directions = [o.direction for o in spec.objectives]
+    return optuna.create_study(storage=storage, study_name=spec.sampler, directions=directions, load_if_exists=True,
+                               sampler=make_sampler(spec.sampler, spec.seed if seed is None else seed, spec.budget))
+
+
+@dataclass(slots=True)
+class SearchProgress:
+    simulated: int = 0
+    executed: int = 0  # by this invocation
+    invalid: int = 0
+    errors: int = 0
+    failing: int = 0
+    interrupted: bool = False
+
+
+class _Interrupted(Exception):
+    pass
+
+
+class Search:
+    """One search of ``spec`` into ``out`` on ``pool``; ``log`` gets the progress lines."""
+
+    def __init__(self, spec: SearchSpec, out: Path, pool: Pool, stop: threading.Event,
+                 log: Callable[[str], None] = print) -> None:
+        self.spec, self.out, self.pool, self.stop, self.log = spec, out.resolve(), pool, stop, log
+        self.out.mkdir(parents=True, exist_ok=True)
+        if spec.source is not None and spec.source.resolve() != self.out / "spec.yaml":
+            shutil.copyfile(spec.source, self.out / "spec.yaml")
+        self.maker = CandidateMaker(spec.case, self.out)
+        self.space = Space(spec.parameters, self.maker.diagram)
+        started = open_study(self.out, spec)
+        # a resumed sampler must not replay the draws of the first invocation (qmc's sequence is indexed instead)
+        self.study = started if spec.sampler == "qmc" else open_study(self.out, spec, spec.seed + len(started.trials))
+        self.progress = SearchProgress()
+
+    def key(self, number: int) -> str:
+        return f"{self.spec.sampler}-{number:04d}"
+
+    def run(self) -> SearchProgress:
+        previous = signal.signal(signal.SIGTERM, _on_sigterm) \
+            if threading.current_thread() is threading.main_thread() else None
+        try:
+            self._resume()
+            self._loop()
+        except (KeyboardInterrupt, _Interrupted):
+            self.progress.interrupted = True
+            self.stop.set()
+            self.log("search interrupted: finished evaluations are kept; run the same command to resume")
+        finally:
+            if previous is not None:
+                signal.signal(signal.SIGTERM, previous)
+        return self.progress
+
+    def close(self) -> None:
+        self.maker.close()
+
+    # -- the loop -------------------------------------------------------------------------------------------------
+
+    def _resume(self) -> None:
+        for trial in self.study.get_trials(deepcopy=False):
+            if trial.state == TrialState.RUNNING:  # the last invocation stopped while it ran: ask it again
+                self.study.tell(trial.number, state=TrialState.FAIL)
+                self.study.enqueue_trial(trial.params, skip_if_exists=False)
+            elif trial.user_attrs.get("simulated"):
+                self.progress.simulated += 1
+                self.progress.errors += trial.user_attrs.get("status") == "ERROR"
+                self.progress.failing += bool(trial.user_attrs.get("failures"))
+            elif trial.user_attrs.get("status") in ("invalid", "unplannable"):
+                self.progress.invalid += 1
+        done = self.progress.simulated
+        self.log(f"search {self.spec.name} ({self.spec.sampler}): budget {self.spec.budget} evaluations, "
+                 f"{done} finished already, {max(0, self.spec.budget - done)} to run on {self.pool.workers} "
+                 f"{self.pool.name} worker(s)")
+
+    def _loop(self) -> None:
+        running: dict[Future[Outcome], tuple[optuna.Trial, Candidate, RunTask]] = {}
+        tries = 0
+        cap = MAX_TRIES_PER_EVALUATION * self.spec.budget
+        while True:
+            while (len(running) < self.pool.workers and self.progress.simulated + len(running) < self.spec.budget
+                   and tries < cap and not self.stop.is_set()):
+                tries += 1
+                started = self._start()
+                if started is not None:
+                    future, trial, candidate, task = started
+                    running[future] = (trial, candidate, task)
+            if not running:
+                if tries >= cap and self.progress.simulated < self.spec.budget:
+                    self.log(f"search: stopped after {tries} candidates, most of them not valid: widen the domains")
+                return
+            done, _ = wait(running, timeout=0.5, return_when=FIRST_COMPLETED)
+            for future in done:
+                trial, candidate, task = running.pop(future)
+                self._finish(trial, candidate, task, future.result())
+
+    def _start(self) -> tuple[Future[Outcome], optuna.Trial, Candidate, RunTask] | None:
+        trial = self.study.ask(self.space.distributions)
+        key = self.key(trial.number)
+        candidate = self.maker.make(key, self.space.edit(trial.params))
+        if candidate.status != VALID:
+            self._invalid(trial, candidate.status, candidate.problems)
+            return None
+        case_dir, problem = self.maker.generate(candidate)
+        if problem is not None:
+            self._invalid(trial, "invalid", (problem,))
+            return None
+        task = self.task(key, candidate, case_dir)
+        for name, value in (("key", key), ("seed", candidate.edit.seed), ("fault", candidate.edit.fault),
+                            ("case", str(self.out / "candidates" / f"{key}.rei"))):
+            trial.set_user_attr(name, value)
+        return self.pool.submit(task), trial, candidate, task
+
+    def task(self, key: str, candidate: Candidate, case_dir: Path, run_dir: Path | None = None) -> RunTask:
+        spec = self.spec
+        return RunTask(key=key, group="search", case=key, variant=spec.sampler, repetition=0,
+                       seed=candidate.edit.seed, humans=spec.humans, fault=candidate.edit.fault,
+                       controller=spec.controller, sut=spec.sut.to_dict() if spec.sut else None, mode="replay",
+                       timeout=spec.timeout, report=True, case_dir=str(case_dir),
+                       run_dir=str(run_dir or self.out / "runs" / key))
+
+    def _invalid(self, trial: optuna.Trial, status: str, problems: tuple[str, ...]) -> None:
+        self.progress.invalid += 1
+        trial.set_user_attr("key", self.key(trial.number))
+        trial.set_user_attr("status", status)
+        trial.set_user_attr("problems", list(problems))
+        trial.set_user_attr("constraint", 1.0)
+        values = penalty(self.spec)
+        self.study.tell(trial, values if len(values) > 1 else values[0])
+        self.log(f"  {self.key(trial.number)}: {status}, not simulated: {problems[0]}")
+
+    def _finish(self, trial: optuna.Trial, candidate: Candidate, task: RunTask, outcome: Outcome) -> None:
+        if outcome.interrupted:
+            return  # left running in the journal: asked again on resume
+        result = make_result(task, outcome)
+        write_result(task, result)
+        self.progress.simulated += 1
+        self.progress.executed += 1
+        attrs: dict[str, Any] = {"simulated": True, "status": result.status, "wall": result.wall_time,
+                                 "cpu": result.cpu_time, "utility": result.total_utility,
+                                 "sim_duration": result.sim_duration}
+        values = None
+        if result.status == "COMPLETED":
+            summary = json.loads((Path(task.run_dir) / "summary.json").read_text(encoding="utf-8"))
+            values = score(self.spec.objectives, summary, Path(task.run_dir))
+            found = failures_of(summary, Path(task.run_dir), Path(task.case_dir), self.space.floor_at)
+            attrs["failures"] = [f.to_dict() for f in found]
+            attrs["metrics"] = summary.get("metrics")
+            self.progress.failing += bool(found)
+        else:
+            attrs["error"] = result.error
+            self.progress.errors += 1
+        for name, value in attrs.items():
+            trial.set_user_attr(name, value)
+        if values is None:
+            self.study.tell(trial, state=TrialState.FAIL)
+        else:
+            self.study.tell(trial, values if len(values) > 1 else values[0])
+        self.log(self._line(trial.number, result.status, values, attrs))
+
+    def _line(self, number: int, status: str, values: list[float] | None, attrs: dict[str, Any]) -> str:
+        p = self.progress
+        if status != "COMPLETED":
+            how = f"ERROR {attrs.get('error')}"
+        else:
+            failed = ", ".join(f["signature"] for f in attrs.get("failures") or []) or "no failure"
+            how = f"{_figures(self.spec, values)}; {failed}"
+        best = self.best_text()
+        return (f"[{p.simulated}/{self.spec.budget}] {self.key(number)}: {how} | failing {p.failing}, "
+                f"invalid {p.invalid}, errors {p.errors}{', best ' + best if best else ''}")
+
+    def best_text(self) -> str:
+        objectives = self.spec.objectives
+        complete = [t for t in self.study.get_trials(deepcopy=False, states=(TrialState.COMPLETE,))
+                    if t.user_attrs.get("simulated")]
+        if not complete:
+            return ""
+        parts = []
+        for i, objective in enumerate(objectives):
+            best = complete[0].values[i]
+            for trial in complete[1:]:
+                if better(objective, trial.values[i], best):
+                    best = trial.values[i]
+            parts.append(f"{objective.label} {best:g}")
+        return ", ".join(parts)
+
+
+def _figures(spec: SearchSpec, values: list[float] | None) -> str:
+    if values is None:
+        return "-"
+    return ", ".join(f"{o.label} {v:g}" for o, v in zip(spec.objectives, values, strict=True))
+
+
+def _on_sigterm(signum: int, frame: object) -> None:
+    raise _Interrupted()
+
