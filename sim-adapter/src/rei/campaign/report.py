@@ -31,7 +31,7 @@ from rei.report.svg import nice_ticks, num
 REPORT = "report.html"
 _PALETTE = ("#1f3a93", "#c0392b", "#27ae60", "#8e44ad", "#d35400", "#16a085", "#7f8c8d", "#2c3e50")
 _W, _H, _L, _R, _T, _B = 900.0, 320.0, 60.0, 150.0, 14.0, 34.0
-_CSS = """body{font-family:system-ui,sans-serif;margin:24px;color:#222}table{border-collapse:collapse;margin:8px 0 20px}
+CSS = """body{font-family:system-ui,sans-serif;margin:24px;color:#222}table{border-collapse:collapse;margin:8px 0 20px}
 td,th{border:1px solid #ccc;padding:3px 8px;text-align:right}th{background:#f3f3f3}td:first-child,th:first-child{text-align:left}
 tr.total td{font-weight:600;background:#fafafa}.error{color:#b00}svg text{font-size:12px}"""
 
@@ -48,7 +48,7 @@ def render(out: Path, name: str, results: Sequence[RunResult], metrics: dict[str
     errors = [r for r in results if r.status != "COMPLETED"]
     campaign = metrics.get("campaign", {})
     parts = [f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>{_e(name)} - REI campaign</title>",
-             f"<style>{_CSS}</style></head><body>", f"<h1>Campaign {_e(name)}</h1>",
+             f"<style>{CSS}</style></head><body>", f"<h1>Campaign {_e(name)}</h1>",
              (f"<p id='facts'>{len(results)} of {planned} runs finished, {len(errors)} in ERROR; wall "
               f"{campaign.get('wall', 0):.0f} s, CPU {campaign.get('cpu', 0):.0f} s on {campaign.get('cores', '?')} "
               f"cores ({100 * campaign.get('cpu_utilisation', 0):.0f} % used by the campaign).</p>")]

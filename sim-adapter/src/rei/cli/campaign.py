@@ -8,18 +8,23 @@ that crashes or exceeds the spec's timeout is recorded as ERROR and the campaign
 campaign resumes where it stopped when started again with the same OUT. When the background service of `rei run`
 runs already, the cases are generated and the runs replayed in its warm JVMs (`--no-service`: in the campaign's
 own); a campaign never starts one. Writes OUT/summary.csv (the thesis's
-Tables 5 and 7), OUT/runs.csv and OUT/report.html. Exit 0: every run completed; 1: some ended in ERROR;
-2: bad spec or arguments; 130: interrupted.
+Tables 5 and 7), OUT/runs.csv, OUT/metrics.csv (the navigation metrics per room and variant, docs/metrics.md) and
+OUT/report.html. `--controller` runs every variant with that in-process controller instead of the spec's (the
+same spec against another system under test); `--compare BASELINE` then compares the campaign with an earlier
+one as `rei compare BASELINE OUT -o OUT/compare` does. Exit 0: every run completed (and no metric regressed);
+1: some ended in ERROR, or a metric regressed; 2: bad spec or arguments; 130: interrupted.
 """
 
 from __future__ import annotations
 
 import argparse
 import contextlib
+import dataclasses
 import os
 from pathlib import Path
 from typing import Any
 
+from rei.cli.compare import add_compare_options, compare_and_report, load_thresholds_option
 from rei.cli.errors import EXIT_INVALID, EXIT_OK, CommandError
 
 
@@ -35,6 +40,12 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
     parser.add_argument("--retry-errors", action="store_true", help="run again the runs that ended in ERROR")
     parser.add_argument("--no-service", action="store_true",
                         help="start the campaign's own JVMs even when the background service runs")
+    parser.add_argument("--controller", metavar="NAME[:ARGS]",
+                        help="run every variant with this in-process controller instead of the spec's controller "
+                        "or sut (e.g. nav:inflation_margin=0, docs/sut.md)")
+    parser.add_argument("--compare", type=Path, metavar="BASELINE",
+                        help="then compare with the campaign in BASELINE (rei compare; output in OUT/compare)")
+    add_compare_options(parser, output=False)
     parser.set_defaults(handler=run)
 
 
@@ -48,6 +59,15 @@ def run(args: argparse.Namespace) -> int:
         spec = load_spec(args.spec)
     except SpecError as error:
         raise CommandError(str(error)) from None
+    if args.controller:
+        spec = _with_controller(spec, args.controller)
+    thresholds = None
+    if args.compare is not None:
+        if not args.compare.is_dir():
+            raise CommandError(f"--compare {args.compare}: no such campaign folder")
+        thresholds = load_thresholds_option(args.thresholds)
+    elif args.thresholds is not None:
+        raise CommandError("--thresholds needs --compare BASELINE")
     if args.ray:
         try:
             from rei.campaign import RayBackend
@@ -97,4 +117,20 @@ def run(args: argparse.Namespace) -> int:
     print(f"report:  {args.output / 'report.html'}")
     if result.interrupted:
         return 130
-    return EXIT_INVALID if result.errors or len(result.results) < result.planned else EXIT_OK
+    code = EXIT_INVALID if result.errors or len(result.results) < result.planned else EXIT_OK
+    if args.compare is not None:
+        code = max(code, compare_and_report(args.compare, args.output, args.output / "compare", thresholds))
+    return code
+
+
+def _with_controller(spec: Any, controller: str) -> Any:
+    """The spec with every variant run by ``controller`` (checked here, before any run)."""
+    from rei.sut.registry import UnknownControllerError, create_controller
+
+    try:
+        create_controller(controller)
+    except (UnknownControllerError, ValueError) as error:
+        raise CommandError(f"--controller {controller}: {error}") from None
+    groups = tuple(dataclasses.replace(g, variants=tuple(dataclasses.replace(v, controller=controller, sut=None)
+                                                          for v in g.variants)) for g in spec.groups)
+    return dataclasses.replace(spec, groups=groups)

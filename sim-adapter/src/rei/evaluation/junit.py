@@ -25,7 +25,7 @@ _NOT_XML = re.compile("[^\t\n\r\x20-\ud7ff\ue000-\ufffd\U00010000-\U0010ffff]")
 
 
 def junit_tree(verdicts: Sequence[Verdict], *, suite: str, properties: Mapping[str, str],
-               time: float = 0.0) -> ET.ElementTree:
+               time: float = 0.0, classname: str = CLASSNAME) -> ET.ElementTree:
     counts = {status: sum(v.status == status for v in verdicts) for status in Status}
     root = ET.Element("testsuite", {
         "name": suite, "tests": str(len(verdicts)), "failures": str(counts[Status.FAIL]),
@@ -36,7 +36,7 @@ def junit_tree(verdicts: Sequence[Verdict], *, suite: str, properties: Mapping[s
     for name, value in properties.items():
         ET.SubElement(props, "property", {"name": _clean(name), "value": _clean(value)})
     for verdict in verdicts:
-        case = ET.SubElement(root, "testcase", {"classname": CLASSNAME, "name": verdict.requirement,
+        case = ET.SubElement(root, "testcase", {"classname": classname, "name": verdict.requirement,
                                                 "time": "0"})
         body = _clean("\n".join(e.line() for e in verdict.evidence))
         message = _clean(verdict.message)
@@ -55,10 +55,11 @@ def junit_tree(verdicts: Sequence[Verdict], *, suite: str, properties: Mapping[s
 
 
 def write_junit(path: str | os.PathLike[str], verdicts: Sequence[Verdict], *, suite: str,
-                properties: Mapping[str, str], time: float = 0.0) -> Path:
+                properties: Mapping[str, str], time: float = 0.0, classname: str = CLASSNAME) -> Path:
+    """``classname``: the test cases' class (``rei compare`` files its metric verdicts as ``rei.metrics``)."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    tree = junit_tree(verdicts, suite=suite, properties=properties, time=time)
+    tree = junit_tree(verdicts, suite=suite, properties=properties, time=time, classname=classname)
     tmp = path.with_name(path.name + ".tmp")
     tree.write(tmp, encoding="utf-8", xml_declaration=True)
     os.replace(tmp, path)

@@ -1,0 +1,113 @@
+# SPDX-License-Identifier: EPL-2.0
+"""The runs of the two sides of a comparison, and their pairs.
+
+A side is a campaign folder (``OUT/runs/<key>/result.json``, as ``rei campaign`` writes them) or one run folder
+(``summary.json``, as ``rei run`` and ``rei evaluate`` write it). Runs pair when they have the same group, case,
+variant and seed - the same room driven under the same conditions - so the difference of a pair is the change of
+the system under test alone. Runs without a partner, and runs that ended in ERROR (they have no metrics), are
+listed, never silently dropped.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from rei.campaign.results import RESULT_FILE
+
+
+class CompareError(ValueError):
+    """A side that is neither a campaign nor a run folder; the message names the folder."""
+
+
+@dataclass(frozen=True, slots=True)
+class Run:
+    key: str
+    group: str
+    case: str
+    variant: str
+    seed: int
+    status: str
+    folder: Path
+    metrics: dict[str, Any] = field(default_factory=dict)
+    error: str | None = None
+
+    @property
+    def pair_key(self) -> tuple[str, str, str, int]:
+        return (self.group, self.case, self.variant, self.seed)
+
+    @property
+    def report(self) -> Path | None:
+        path = self.folder / "report.html"
+        return path if path.is_file() else None
+
+
+@dataclass(frozen=True, slots=True)
+class Pairing:
+    pairs: tuple[tuple[Run, Run], ...]  # (baseline, candidate), both COMPLETED
+    only_baseline: tuple[Run, ...]
+    only_candidate: tuple[Run, ...]
+    errors: tuple[Run, ...]  # runs of either side in ERROR (their partner is not compared either)
+
+
+def load_side(folder: Path) -> list[Run]:
+    folder = Path(folder)
+    if not folder.is_dir():
+        raise CompareError(f"{folder}: no such folder")
+    runs_dir = folder / "runs"
+    results = sorted(runs_dir.glob(f"*/{RESULT_FILE}")) if runs_dir.is_dir() else []
+    if results:
+        return [_campaign_run(path) for path in results]
+    if (folder / "summary.json").is_file():
+        return [_single_run(folder)]
+    raise CompareError(f"{folder}: neither a campaign folder (runs/*/{RESULT_FILE}) nor a run folder "
+                       "(summary.json)")
+
+
+def pair(baseline: list[Run], candidate: list[Run]) -> Pairing:
+    theirs = {r.pair_key: r for r in candidate}
+    ours = {r.pair_key: r for r in baseline}
+    pairs, errors = [], []
+    for key, b in ours.items():
+        c = theirs.get(key)
+        if c is None:
+            continue
+        if b.status != "COMPLETED" or c.status != "COMPLETED":
+            errors += [r for r in (b, c) if r.status != "COMPLETED"]
+            continue
+        pairs.append((b, c))
+    return Pairing(tuple(pairs), tuple(r for k, r in ours.items() if k not in theirs),
+                   tuple(r for k, r in theirs.items() if k not in ours), tuple(errors))
+
+
+def _campaign_run(path: Path) -> Run:
+    data = _json(path)
+    try:
+        return Run(key=str(data["key"]), group=str(data["group"]), case=str(data["case"]),
+                   variant=str(data["variant"]), seed=int(data["seed"]), status=str(data["status"]),
+                   folder=path.parent, metrics=dict(data.get("metrics") or {}), error=data.get("error"))
+    except (KeyError, TypeError, ValueError) as error:
+        raise CompareError(f"{path}: not a campaign run's result ({error})") from None
+
+
+def _single_run(folder: Path) -> Run:
+    """A run folder pairs with the other side's by its test case and seed (group and variant are empty)."""
+    summary = _json(folder / "summary.json")
+    sim = _json(folder / "sim.json") if (folder / "sim.json").is_file() else {}
+    seed = (sim.get("options") or {}).get("seed", 0) if isinstance(sim, dict) else 0
+    case = str(summary.get("testcase") or folder.name)
+    return Run(key=folder.name, group="", case=case, variant="", seed=int(seed or 0),
+               status=str(summary.get("status", "ERROR")), folder=folder,
+               metrics=dict(summary.get("metrics") or {}), error=summary.get("error"))
+
+
+def _json(path: Path) -> Any:
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError) as error:
+        raise CompareError(f"{path}: cannot read: {error}") from None
+    if not isinstance(data, dict):
+        raise CompareError(f"{path}: expected a JSON object")
+    return data

@@ -1,0 +1,173 @@
+# SPDX-License-Identifier: EPL-2.0
+"""When a difference is a regression: the thresholds file of ``rei compare --thresholds FILE.yaml``.
+
+Format (docs/metrics.md, "Regression thresholds")::
+
+    metrics:
+      success: {p: 0.05}                    # success rate lower, McNemar's exact test p < 0.05
+      clearance_static_min: {worse_by: 0.05} # mean paired minimum clearance lower by more than 0.05 m
+      time: {worse_by: 5, p: 0.05}          # slower by more than 5 s on average, and Wilcoxon p < 0.05
+      speed_mean: {better: higher, worse_by: 0.02}
+
+A metric is regressed when its mean paired difference (candidate - baseline) is worse, in the metric's better
+direction, by more than ``worse_by`` (default 0: any worsening) and, when ``p`` is given, the paired test's p is
+below it. ``better`` is needed only for the metrics that have no direction of their own (the speeds). Every
+mistake is reported with the file, line and column, as ``rei validate`` reports a test case's.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import yaml
+
+from rei.evaluation.metrics import BY_NAME, Better
+
+KEYS = ("worse_by", "p", "better")
+
+
+class ThresholdsError(ValueError):
+    """A thresholds file that can not be used; the message starts with ``FILE:LINE:COLUMN:``."""
+
+
+@dataclass(frozen=True, slots=True)
+class Threshold:
+    metric: str
+    better: Better
+    worse_by: float = 0.0
+    p: float | None = None
+
+    def describe(self) -> str:
+        unit = BY_NAME[self.metric].unit
+        size = f" by more than {self.worse_by:g}{f' {unit}' if unit else ''}" if self.worse_by else ""
+        direction = "lower" if self.better == Better.HIGHER else "higher"
+        test = f" at p < {self.p:g}" if self.p is not None else "" if size else " at all"
+        return f"{self.metric} {direction}{size}{test}"
+
+
+@dataclass(frozen=True, slots=True)
+class Thresholds:
+    items: tuple[Threshold, ...]
+    source: str  # the file, or "defaults"
+
+
+def default_thresholds() -> Thresholds:
+    """Without a file: fewer successes, worse SPL or more collisions beyond chance (p < 0.05), and minimum
+    clearances 5 cm closer on average."""
+    return Thresholds((
+        Threshold("success", Better.HIGHER, 0.0, 0.05),
+        Threshold("spl", Better.HIGHER, 0.0, 0.05),
+        Threshold("collision_episodes", Better.LOWER, 0.0, 0.05),
+        Threshold("clearance_static_min", Better.HIGHER, 0.05),
+        Threshold("clearance_humans_min", Better.HIGHER, 0.05),
+    ), "defaults")
+
+
+def load_thresholds(path: Path) -> Thresholds:
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError as error:
+        raise ThresholdsError(f"{path}: cannot read: {error.strerror or error}") from None
+    return parse_thresholds(text, str(path))
+
+
+def parse_thresholds(text: str, source: str = "thresholds") -> Thresholds:
+    try:
+        root = yaml.compose(text, Loader=yaml.SafeLoader)
+    except yaml.MarkedYAMLError as error:
+        mark = error.problem_mark
+        where = f"{source}:{mark.line + 1}:{mark.column + 1}" if mark is not None else source
+        raise ThresholdsError(f"{where}: not YAML: {error.problem}") from None
+    except yaml.YAMLError as error:
+        raise ThresholdsError(f"{source}: not YAML: {error}") from None
+    if root is None:
+        raise ThresholdsError(f"{source}:1:1: empty: expected a mapping with 'metrics'")
+    top = _mapping(root, source, "the file")
+    for key in top:
+        if key != "metrics":
+            raise _error(source, _key_node(root, key), f"unknown key {key!r}; expected 'metrics'")
+    if "metrics" not in top:
+        raise _error(source, root, "'metrics' is required: a mapping of metric names to thresholds")
+    metrics_node = top["metrics"]
+    metrics = _mapping(metrics_node, source, "'metrics'")
+    if not metrics:
+        raise _error(source, metrics_node, "'metrics' is empty: name at least one metric")
+    items = []
+    for name, node in metrics.items():
+        if name not in BY_NAME:
+            raise _error(source, _key_node(metrics_node, name),
+                         f"unknown metric {name!r}; known: {', '.join(BY_NAME)}")
+        items.append(_threshold(name, node, source))
+    return Thresholds(tuple(items), source)
+
+
+def _threshold(name: str, node: yaml.Node, source: str) -> Threshold:
+    fields = _mapping(node, source, f"metric {name!r}")
+    for key in fields:
+        if key not in KEYS:
+            raise _error(source, _key_node(node, key), f"{name}: unknown key {key!r}; expected one of "
+                         f"{', '.join(KEYS)}")
+    if "worse_by" not in fields and "p" not in fields:
+        raise _error(source, node, f"{name}: give 'worse_by' (a size), 'p' (a significance level) or both")
+    better = BY_NAME[name].better
+    if "better" in fields:
+        value = _scalar(fields["better"])
+        if value not in ("higher", "lower"):
+            raise _error(source, fields["better"], f"{name}: 'better' must be higher or lower, got {value!r}")
+        better = Better(value)
+    elif better == Better.NEITHER:
+        raise _error(source, node, f"{name} has no better direction of its own: say 'better: higher' or "
+                                   "'better: lower'")
+    worse_by = 0.0
+    if "worse_by" in fields:
+        worse_by = _number(fields["worse_by"], source, f"{name}: 'worse_by'")
+        if worse_by < 0:
+            raise _error(source, fields["worse_by"], f"{name}: 'worse_by' must be >= 0 (a size, in the "
+                         f"metric's unit), got {worse_by:g}")
+    p = None
+    if "p" in fields:
+        p = _number(fields["p"], source, f"{name}: 'p'")
+        if not 0 < p <= 1:
+            raise _error(source, fields["p"], f"{name}: 'p' must be a significance level in (0, 1], got {p:g}")
+    return Threshold(name, better, worse_by, p)
+
+
+def _mapping(node: yaml.Node, source: str, what: str) -> dict[str, yaml.Node]:
+    if not isinstance(node, yaml.MappingNode):
+        raise _error(source, node, f"{what} must be a mapping")
+    out: dict[str, yaml.Node] = {}
+    for key, value in node.value:
+        name = _scalar(key)
+        if name in out:
+            raise _error(source, key, f"{name!r} is given twice")
+        out[str(name)] = value
+    return out
+
+
+def _key_node(mapping: yaml.Node, key: str) -> yaml.Node:
+    return next(k for k, _ in mapping.value if _scalar(k) == key)
+
+
+def _scalar(node: yaml.Node) -> object:
+    if not isinstance(node, yaml.ScalarNode):
+        return None
+    return yaml.constructor.SafeConstructor().construct_object(node)
+
+
+def _number(node: yaml.Node, source: str, what: str) -> float:
+    value = _scalar(node)
+    if isinstance(value, str):  # YAML 1.1 reads 1e-2 (no dot) as text
+        try:
+            value = float(value)
+        except ValueError:
+            pass
+    if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
+        raise _error(source, node, f"{what} must be a number, got {value!r}")
+    return float(value)
+
+
+def _error(source: str, node: yaml.Node, message: str) -> ThresholdsError:
+    mark = node.start_mark
+    return ThresholdsError(f"{source}:{mark.line + 1}:{mark.column + 1}: {message}")
