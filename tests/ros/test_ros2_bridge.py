@@ -1,18 +1,128 @@
 # SPDX-License-Identifier: EPL-2.0
-"""The ROS 2 bridge (docs/ros.md) on real DDS, with a navigation stack speaking ROS 2's wire conventions in its own
-process (examples/sut/ros2: no ROS 2 distribution installs here, so no rclcpp node could be the stack)."""
+"""The ROS 2 bridge (docs/ros.md) on real DDS, with two navigation stacks as ROS 2 nodes in their own processes:
+a node written on ros2-client (Rust, on RustDDS: a ROS 2 implementation independent of the Cyclone DDS the bridge
+uses, with ros2-client's own action server; examples/sut/ros2/rust_nav_node, built by scripts/setup-ros2-node.sh
+in run-tests' stage 1), and REI's reference navigation on Cyclone DDS (examples/sut/ros2/reference_nav_node.py).
+No ROS 2 distribution installs here, so no rclcpp node is the stack."""
 
 from __future__ import annotations
 
 import json
+import os
+import re
+import subprocess
+import threading
+import time
 from pathlib import Path
+
+import pytest
 
 EXAMPLE = "examples/simple_navigation.rei"
 NODES = "examples/sut/ros2"
+DOMAIN_LINE = re.compile(r"rei ros2-bridge: ROS domain (\d+) \(the run's own\)")
+
+
+@pytest.fixture(scope="module")
+def rust_node(repo_root: Path) -> Path:
+    """The ros2-client node's binary, up to date (scripts/setup-ros2-node.sh: nothing to do after stage 1)."""
+    done = subprocess.run(["bash", str(repo_root / "scripts" / "setup-ros2-node.sh")], check=False,
+                          capture_output=True, text=True, timeout=1200)
+    assert done.returncode == 0, done.stderr
+    binary = Path(done.stdout.strip().splitlines()[-1])
+    assert binary.is_file(), done.stdout + done.stderr
+    return binary
 
 
 def _summary(out: Path) -> dict:
     return json.loads((out / "summary.json").read_text())
+
+
+def _text(path: Path) -> str:
+    return path.read_text() if path.is_file() else ""
+
+
+def _domain(out: Path) -> int:
+    match = DOMAIN_LINE.search((out / "sut.log").read_text())
+    assert match, (out / "sut.log").read_text()
+    return int(match.group(1))
+
+
+def _assert_completed(result, out: Path) -> dict:  # type: ignore[no-untyped-def]
+    assert result.returncode == 0, result.stdout + result.stderr + (out / "sut.log").read_text()
+    summary = _summary(out)
+    assert summary["status"] == "COMPLETED"
+    assert summary["tasks"]["succeeded"] == summary["tasks"]["goals"] == 2
+    assert {v["status"] for v in summary["verdicts"]} <= {"pass", "not-applicable"}
+    return summary
+
+
+def _stack_gone(out: Path) -> None:
+    """The node the bridge started, and its process group, no longer exist."""
+    match = re.search(r"pid (\d+)", (out / "ros" / "stack.log").read_text())
+    assert match, (out / "ros" / "stack.log").read_text()
+    with pytest.raises(ProcessLookupError):
+        os.killpg(int(match.group(1)), 0)
+
+
+def test_a_ros2_client_node_on_rustdds_completes_the_simple_navigation_example_through_the_action(
+    run_cli, repo_root: Path, tmp_path: Path, rust_node: Path, processes_mentioning
+) -> None:
+    """Unmodified ros2-client and RustDDS: discovery with the bridge's Cyclone participant, every topic's CDR, the
+    action's services in rmw_cyclonedds's mapping, and ros2-client's AsyncActionServer, which publishes a goal's
+    final status only after the client asked for the result: without REI's get_result, no goal would end."""
+    out = tmp_path / "out"
+    result = run_cli("run", repo_root / EXAMPLE, "-o", out, "--sut", f"ros2:{rust_node} {out}", "--sut-map",
+                     timeout=400)
+    _assert_completed(result, out)
+    stack_log = (out / "ros" / "stack.log").read_text()
+    assert f"on ROS domain {_domain(out)}" in stack_log  # the node got the run's domain from ROS_DOMAIN_ID
+    assert "map 140x100 cells" in stack_log  # REI's transient-local /map reached a late RustDDS reader
+    assert stack_log.count("goal ended: Succeeded") == 2, stack_log  # result sent: REI asked for it
+    assert processes_mentioning(out) == []
+    _stack_gone(out)
+
+
+def test_a_ros2_node_that_never_answers_a_goal_ends_the_run_in_error_naming_the_request(
+    run_cli, repo_root: Path, tmp_path: Path, rust_node: Path, processes_mentioning
+) -> None:
+    out = tmp_path / "out"
+    result = run_cli("run", repo_root / EXAMPLE, "-o", out, "--sut", f"ros2:{rust_node} --never-answer {out}",
+                     "--sut-map", timeout=300)
+    assert result.returncode == 2, result.stdout + result.stderr
+    error = _summary(out)["error"]
+    assert ("the navigate_to_pose action server (matched on ROS domain" in error
+            and "did not answer goal 0's send_goal request within 10 s" in error), error
+    assert "never answering goals" in (out / "ros" / "stack.log").read_text()
+    assert processes_mentioning(out) == []
+    _stack_gone(out)
+
+
+def test_two_ros2_runs_at_once_get_domains_of_their_own_and_both_complete(
+    run_cli, repo_root: Path, tmp_path: Path, rust_node: Path, processes_mentioning
+) -> None:
+    """Run a is paced at wall-clock speed (~30 s); run b starts once a's bridge holds its domain and ends before
+    a does. On one domain the two bridges' clocks, goals and commands would reach both nodes (each bridge matches
+    every action server it discovers); on their own domains both runs pass."""
+    a, b = tmp_path / "a", tmp_path / "b"
+    results: dict[Path, object] = {}
+
+    def run(out: Path, *extra: str) -> None:
+        results[out] = run_cli("run", repo_root / EXAMPLE, "-o", out, "--sut", f"ros2:{rust_node} {out}",
+                               "--sut-map", *extra, timeout=400)
+
+    first = threading.Thread(target=run, args=(a, "--realtime"))
+    first.start()
+    deadline = time.monotonic() + 120
+    while not (DOMAIN_LINE.search(_text(a / "sut.log")) and "goal" in _text(a / "ros" / "stack.log")):
+        assert first.is_alive() and time.monotonic() < deadline, _text(a / "sut.log")
+        time.sleep(0.2)
+    run(b)
+    first.join()
+    for out in (a, b):
+        _assert_completed(results[out], out)
+    assert (b / "summary.json").stat().st_mtime < (a / "summary.json").stat().st_mtime  # b ran inside a
+    assert _domain(a) != _domain(b)
+    assert processes_mentioning(a) == [] and processes_mentioning(b) == []
 
 
 def test_the_reference_navigation_on_dds_completes_the_simple_navigation_example_through_the_action(
@@ -21,13 +131,8 @@ def test_the_reference_navigation_on_dds_completes_the_simple_navigation_example
     out = tmp_path / "out"
     result = run_cli("run", repo_root / EXAMPLE, "-o", out, "--sut",
                      f"ros2:python3 {repo_root / NODES / 'reference_nav_node.py'} {out}", "--sut-map", timeout=400)
-    assert result.returncode == 0, result.stdout + result.stderr + (out / "sut.log").read_text()
-    summary = _summary(out)
-    assert summary["status"] == "COMPLETED"
-    assert summary["tasks"]["succeeded"] == summary["tasks"]["goals"] == 2
-    assert {v["status"] for v in summary["verdicts"]} <= {"pass", "not-applicable"}
-    bridge_log = (out / "sut.log").read_text()
-    assert f"discovery tag rei-{summary['run_id']}" in bridge_log, bridge_log  # the run's own DDS discovery
+    _assert_completed(result, out)
+    _domain(out)  # the run's own domain
     assert "map 140x100 cells" in (out / "ros" / "stack.log").read_text()  # the stack planned on REI's /map
     assert processes_mentioning(out) == []
 

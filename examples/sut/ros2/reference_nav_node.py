@@ -6,8 +6,8 @@ test for the ROS 2 bridge, standing in for Nav2 where no ROS 2 can be installed.
 
 It is written on plain DDS (Cyclone DDS's Python binding and REI's ROS 2 types), and speaks what a ROS 2 node on
 rmw_cyclonedds speaks: it reads ``rt/clock``, ``rt/odom``, ``rt/scan`` and the transient-local ``rt/map``, serves
-nav2's NavigateToPose action (``navigate_to_pose/_action/send_goal`` and ``cancel_goal`` with rmw_cyclonedds's
-request header echoed in each reply, and the action's status topic), and publishes ``rt/cmd_vel`` exactly once per
+nav2's NavigateToPose action (``navigate_to_pose/_action/send_goal``, ``get_result`` and ``cancel_goal`` with
+rmw_cyclonedds's request header echoed in each reply, and the action's status topic), and publishes ``rt/cmd_vel`` exactly once per
 new clock time, zero when idle. It takes ROS_DOMAIN_ID and CYCLONEDDS_URI from its environment, as the bridge sets
 them. Goals are map-frame poses, the tolerance is 0.25 m (NavigateToPose goals carry none).
 """
@@ -56,6 +56,7 @@ class ReferenceNavNode:
         self.goals = 0
         self.active: t.UUID | None = None  # the goal being pursued
         self.statuses: dict[bytes, t.GoalStatus] = {}  # every goal this server has had
+        self.result_requests: dict[bytes, list[t.NavigateToPose_GetResult_Request]] = {}  # of running goals
         names = action_topics("navigate_to_pose")
 
         def reader(topic: str, kind: type, qos, callback) -> DataReader:  # type: ignore[no-untyped-def]
@@ -68,6 +69,7 @@ class ReferenceNavNode:
         self.cmd_vel = writer(topics["cmd_vel"].dds_name, t.Twist, topics["cmd_vel"].qos)
         self.goal_reply = writer(names["send_goal_reply"], t.NavigateToPose_SendGoal_Response, service_qos())
         self.cancel_reply = writer(names["cancel_reply"], t.CancelGoal_Response, service_qos())
+        self.result_reply = writer(names["get_result_reply"], t.NavigateToPose_GetResult_Response, service_qos())
         self.status = writer(names["status"], t.GoalStatusArray, status_qos())
         self.readers = [
             reader(topics["clock"].dds_name, t.Clock, topics["clock"].qos, self.on_clock),
@@ -76,6 +78,8 @@ class ReferenceNavNode:
             reader(topics["map"].dds_name, t.OccupancyGrid, topics["map"].qos, self.on_map),
             reader(names["send_goal_request"], t.NavigateToPose_SendGoal_Request, service_qos(), self.on_goal),
             reader(names["cancel_request"], t.CancelGoal_Request, service_qos(), self.on_cancel),
+            reader(names["get_result_request"], t.NavigateToPose_GetResult_Request, service_qos(),
+                   self.on_result_request),
         ]
 
     # -- inputs (DDS threads) ----------------------------------------------------------------------------------
@@ -138,7 +142,22 @@ class ReferenceNavNode:
                 rmw_client=request.rmw_client, rmw_sequence=request.rmw_sequence,
                 return_code=0 if canceling else 2, goals_canceling=canceling))  # 2: ERROR_UNKNOWN_GOAL_ID
 
+    def on_result_request(self, reader: DataReader) -> None:
+        """Answered at once for an ended goal, else when it ends (an unknown goal: status UNKNOWN, as rcl_action)."""
+        for request in reader.take(N=4):
+            with self.lock:
+                goal = bytes(request.goal_id.uuid)
+                status = self.statuses.get(goal)
+                if status is not None and status.status == EXECUTING:
+                    self.result_requests.setdefault(goal, []).append(request)
+                else:
+                    self.answer_result(request, status.status if status is not None else 0)
+
     # -- the action's state (under self.lock) ------------------------------------------------------------------
+
+    def answer_result(self, request: t.NavigateToPose_GetResult_Request, code: int) -> None:
+        self.result_reply.write(t.NavigateToPose_GetResult_Response(
+            rmw_client=request.rmw_client, rmw_sequence=request.rmw_sequence, status=code))
 
     def set_status(self, goal_id: t.UUID, code: int) -> None:
         self.statuses[bytes(goal_id.uuid)] = t.GoalStatus(goal_info=t.GoalInfo(goal_id=goal_id), status=code)
@@ -147,6 +166,8 @@ class ReferenceNavNode:
     def finish(self, code: int) -> None:
         assert self.active is not None
         self.set_status(self.active, code)
+        for request in self.result_requests.pop(bytes(self.active.uuid), []):
+            self.answer_result(request, code)
         self.active = None
 
     # -- the step ------------------------------------------------------------------------------------------

@@ -1,13 +1,15 @@
 # SPDX-License-Identifier: EPL-2.0
 """REI's ROS 2 messages (rei.sut.ros2): every type's CDR byte for byte as rosbags (an independent ROS 2 serializer)
-writes it, and each topic through DDS from one participant to another in a second process, on loopback only."""
+writes it, each topic through DDS from one participant to another in a second process, on loopback only, and the
+ROS domains runs take (rei.sut.ros2.environment.DomainLease)."""
 
 from __future__ import annotations
 
 import dataclasses
 import json
 import math
-import os
+import signal
+import socket
 import subprocess
 import sys
 import time
@@ -27,7 +29,7 @@ from rei.sut.api import LaserScan, NavGoal, StaticMap
 from rei.sut.ros2 import messages as m
 from rei.sut.ros2 import types as t
 from rei.sut.ros2.action import new_goal_id
-from rei.sut.ros2.environment import cyclone_config
+from rei.sut.ros2.environment import RUN_DOMAINS, DomainLease, cyclone_config, discovery_port
 
 STORE = get_typestore(Stores.ROS2_HUMBLE)
 #: What rosbags' Humble store lacks, from nav2_msgs/action/NavigateToPose.action (Humble) and action_msgs/srv/
@@ -39,17 +41,31 @@ EXTRA = {
     "nav2_msgs/action/NavigateToPose_SendGoal_Response": "bool accepted\nbuiltin_interfaces/Time stamp",
     "action_msgs/srv/CancelGoal_Request": "action_msgs/GoalInfo goal_info",
     "action_msgs/srv/CancelGoal_Response": "int8 return_code\naction_msgs/GoalInfo[] goals_canceling",
+    "nav2_msgs/action/NavigateToPose_Feedback": "geometry_msgs/PoseStamped current_pose\n"
+                                                "builtin_interfaces/Duration navigation_time\n"
+                                                "builtin_interfaces/Duration estimated_time_remaining\n"
+                                                "int16 number_of_recoveries\nfloat32 distance_remaining",
+    "nav2_msgs/action/NavigateToPose_FeedbackMessage": "unique_identifier_msgs/UUID goal_id\n"
+                                                       "nav2_msgs/NavigateToPose_Feedback feedback",
+    "nav2_msgs/action/NavigateToPose_GetResult_Request": "unique_identifier_msgs/UUID goal_id",
+    # REI declares the reply up to the status; the releases' whole replies are RESULTS below
+    "nav2_msgs/action/NavigateToPose_GetResult_Response": "int8 status",
+    "nav2_msgs/action/NavigateToPose_ResultHumble": "std_msgs/Empty result",
+    "nav2_msgs/action/NavigateToPose_ResultJazzy": "uint16 error_code\nstring error_msg",
+    "nav2_msgs/action/NavigateToPose_GetResult_ResponseHumble": "int8 status\nnav2_msgs/NavigateToPose_ResultHumble result",
+    "nav2_msgs/action/NavigateToPose_GetResult_ResponseJazzy": "int8 status\nnav2_msgs/NavigateToPose_ResultJazzy result",
 }
 for _name, _text in EXTRA.items():  # registered under msg names, as a .msg file's fields resolve them
     _package, _, _type = _name.split("/")
     STORE.register(get_types_from_msg(_text, f"{_package}/msg/{_type}"))
 FRAMES = m.Frames()
 SERVICE_TYPES = [t.NavigateToPose_SendGoal_Request, t.NavigateToPose_SendGoal_Response, t.CancelGoal_Request,
-                 t.CancelGoal_Response]
+                 t.CancelGoal_Response, t.NavigateToPose_GetResult_Request, t.NavigateToPose_GetResult_Response]
 ALL_TYPES = [t.Time, t.Header, t.Vector3, t.Point, t.Quaternion, t.Pose, t.PoseWithCovariance, t.Twist,
              t.TwistWithCovariance, t.Transform, t.TransformStamped, t.Odometry, t.MapMetaData, t.OccupancyGrid,
              t.LaserScan, t.TFMessage, t.Clock, t.Duration, t.PoseStamped, t.UUID, t.GoalInfo, t.GoalStatus,
-             t.GoalStatusArray, t.NavigateToPose_Goal, *SERVICE_TYPES]
+             t.GoalStatusArray, t.NavigateToPose_Goal, t.NavigateToPose_Feedback,
+             t.NavigateToPose_FeedbackMessage, *SERVICE_TYPES]
 #: rmw_cyclonedds's request header before a service's fields: not a ROS field.
 RMW_HEADER = ("rmw_client", "rmw_sequence")
 
@@ -149,6 +165,14 @@ def samples() -> dict[str, IdlStruct]:
         "cancel_goal_response": t.CancelGoal_Response(rmw_client=7, rmw_sequence=2, return_code=-3,
                                                       goals_canceling=[t.GoalInfo(goal_id=goal_id), t.GoalInfo()]),
         "cancel_goal_response_empty": t.CancelGoal_Response(),
+        "feedback": t.NavigateToPose_Feedback(
+            current_pose=t.PoseStamped(header=m.header(2.0, "map")), navigation_time=t.Duration(sec=3),
+            estimated_time_remaining=t.Duration(sec=-1, nanosec=5), number_of_recoveries=-(2**15),
+            distance_remaining=math.inf),
+        "feedback_message": t.NavigateToPose_FeedbackMessage(goal_id=goal_id, feedback=t.NavigateToPose_Feedback(
+            distance_remaining=1.5, number_of_recoveries=3)),
+        "get_result_request": t.NavigateToPose_GetResult_Request(rmw_client=9, rmw_sequence=3, goal_id=goal_id),
+        "get_result_response": t.NavigateToPose_GetResult_Response(rmw_client=9, rmw_sequence=3, status=4),
     }
 
 
@@ -173,6 +197,24 @@ def test_the_cdr_is_byte_for_byte_what_rosbags_writes(name: str) -> None:
     assert back.serialize(endianness=Endianness.Little) == ours
 
 
+@pytest.mark.parametrize("release", ["Humble", "Jazzy"])
+def test_a_get_result_reply_of_either_release_reads_as_its_status(release: str) -> None:
+    """Humble's NavigateToPose result is std_msgs/Empty, Jazzy's error_code and error_msg, under one DDS type name:
+    REI's declaration (up to the status) is a prefix of both, and reads both."""
+    result = ({"result": STORE.types["std_msgs/msg/Empty"]()} if release == "Humble" else
+              {"error_code": 9001, "error_msg": "failed to load the tree ü"})
+    result_type = f"nav2_msgs/msg/NavigateToPose_Result{release}"
+    reply_type = f"nav2_msgs/msg/NavigateToPose_GetResult_Response{release}"
+    theirs = bytes(STORE.serialize_cdr(STORE.types[reply_type](
+        status=6, result=STORE.types[result_type](**result)), reply_type))
+    header = (7).to_bytes(8, "little") + (5).to_bytes(8, "little", signed=True)
+    wire = theirs[:4] + header + theirs[4:]  # as rmw_cyclonedds sends it
+    ours = t.NavigateToPose_GetResult_Response(rmw_client=7, rmw_sequence=5, status=6)
+    assert len(wire) > len(ours.serialize(endianness=Endianness.Little))
+    assert wire.startswith(ours.serialize(endianness=Endianness.Little))
+    assert t.NavigateToPose_GetResult_Response.deserialize(wire) == ours
+
+
 def test_rei_values_map_to_the_ros_fields() -> None:
     assert m.stamp(0.3) == t.Time(sec=1000, nanosec=300_000_000) and m.nanoseconds(m.stamp(0.0)) == 1000 * 10**9
     odom = m.odometry(1.0, Pose2D(1.0, 2.0, math.pi / 2), Twist2D(0.2, -0.5), FRAMES)
@@ -194,10 +236,10 @@ def test_rei_values_map_to_the_ros_fields() -> None:
 
 # --- through DDS ---------------------------------------------------------------------------------------------
 
-def loopback_config(trace: str, tag: str = "rei-test") -> str:
-    """The bridge's Cyclone configuration (loopback only, unicast discovery, the run's tag), with a trace that
-    shows which interfaces it selected."""
-    return cyclone_config(tag, Path(trace))
+def loopback_config(trace: str) -> str:
+    """The bridge's Cyclone configuration (loopback only, unicast discovery), with a trace that shows which
+    interfaces it selected."""
+    return cyclone_config(Path(trace))
 
 
 #: The receiving participant, in its own process: reads each topic with the bridge's QoS for it and prints what
@@ -235,7 +277,8 @@ def wait_until(condition, seconds: float) -> bool:  # type: ignore[no-untyped-de
 
 
 def test_each_topic_crosses_dds_between_two_participants_on_loopback(tmp_path) -> None:  # type: ignore[no-untyped-def]
-    domain_id = os.getpid() % 200 + 17  # private: 17..216 (Cyclone's ports allow 0..232)
+    lease = DomainLease.claim()  # a domain no run or other test uses meanwhile
+    domain_id = lease.domain
     values = samples()
     sent = {"clock": values["clock"], "odom": values["odometry"], "tf": values["tf"], "scan": values["laser_scan"],
             "map": values["occupancy_grid"], "cmd_vel": values["twist"]}
@@ -258,6 +301,7 @@ def test_each_topic_crosses_dds_between_two_participants_on_loopback(tmp_path) -
         if receiver.poll() is None:
             receiver.kill()
             receiver.wait()
+        lease.release()
     received = {line["topic"]: bytes.fromhex(line["cdr"]) for line in map(json.loads, out.splitlines())}
     assert received == {key: value.serialize(endianness=Endianness.Little) for key, value in sent.items()}, err
     for log in ("sender.log", "receiver.log"):
@@ -265,34 +309,46 @@ def test_each_topic_crosses_dds_between_two_participants_on_loopback(tmp_path) -
         assert "selected interfaces: lo (" in trace and "eth" not in trace.split("selected interfaces:")[1][:80]
 
 
-def test_a_participant_with_another_runs_discovery_tag_is_not_matched(tmp_path) -> None:  # type: ignore[no-untyped-def]
-    """Two runs on one domain (a campaign's workers) never see each other's topics."""
-    domain_id = os.getpid() % 200 + 17
-    receiver = subprocess.Popen(
-        [sys.executable, "-c", RECEIVER, str(domain_id), loopback_config(str(tmp_path / "r.log"), "rei-other-run"),
-         "1", "4"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+#: A process that takes a domain and holds it until killed, printing it.
+HOLDER = """
+import sys, time
+from pathlib import Path
+from rei.sut.ros2.environment import DomainLease
+lease = DomainLease.claim(folder=Path(sys.argv[1]))
+print(lease.domain, flush=True)
+time.sleep(60)
+"""
+
+
+def test_concurrent_runs_take_different_domains_and_a_dead_runs_domain_is_free_again(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    """A campaign's workers each hold a domain of their own; a run killed with SIGKILL leaves no lock behind."""
+    holder = subprocess.Popen([sys.executable, "-c", HOLDER, str(tmp_path)], stdout=subprocess.PIPE, text=True)
     try:
-        assert json.loads(receiver.stdout.readline()) == {"ready": True}
-        domain = Domain(domain_id, loopback_config(str(tmp_path / "s.log"), "rei-this-run"))  # noqa: F841
-        participant = DomainParticipant(domain_id)
-        spec = m.TOPICS["clock"]
-        writer = DataWriter(participant, Topic(participant, spec.dds_name, spec.type), qos=spec.qos)
-        assert not wait_until(lambda: writer.get_publication_matched_status().current_count > 0, 2.5)
-        writer.write(m.clock(1.0))
-        out, _ = receiver.communicate(timeout=15)
+        held = int(holder.stdout.readline())
+        assert held in RUN_DOMAINS
+        with DomainLease.claim(folder=tmp_path) as mine:
+            assert mine.domain != held
+            with pytest.raises(RuntimeError, match=f"ROS domain {held} is held by another run"):
+                DomainLease.claim(held, folder=tmp_path)
+        holder.send_signal(signal.SIGKILL)
+        holder.wait(timeout=10)
+        with DomainLease.claim(held, folder=tmp_path) as again:  # the kernel dropped the dead holder's lock
+            assert again.domain == held
     finally:
-        if receiver.poll() is None:
-            receiver.kill()
-            receiver.wait()
-    assert out.splitlines() == []  # after "ready": nothing received
+        if holder.poll() is None:
+            holder.kill()
+            holder.wait()
 
 
-def test_odometry_keeps_world_coordinates_so_map_to_odom_is_the_identity() -> None:
-    start = Pose2D(0.5, 0.5, 0.7)  # tick 0's odometry is hello's start pose, in map coordinates (docs/sut.md)
-    pose = m.odometry(0.0, start, Twist2D(), FRAMES).pose.pose
-    assert (pose.position.x, pose.position.y) == (0.5, 0.5) and m.yaw_of(pose.orientation) == pytest.approx(0.7)
-    map_odom, odom_base = m.transforms(0.0, start, FRAMES, with_map=True).transforms
-    assert (map_odom.header.frame_id, map_odom.child_frame_id) == ("map", "odom")
-    move, turn = map_odom.transform.translation, map_odom.transform.rotation
-    assert (move.x, move.y, move.z, turn.x, turn.y, turn.z, turn.w) == (0, 0, 0, 0, 0, 0, 1)
-    assert (odom_base.transform.translation.x, odom_base.transform.translation.y) == (0.5, 0.5)
+def test_a_domain_a_ros2_participant_outside_rei_uses_is_skipped(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    """Participant 0's RTPS discovery port (the same for every DDS vendor) bound: someone is on that domain."""
+    with DomainLease.claim(folder=tmp_path) as first:
+        candidate = first.domain
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as squatter:
+        try:
+            squatter.bind(("127.0.0.1", discovery_port(candidate)))
+        except OSError:
+            pytest.fail(f"port {discovery_port(candidate)} is taken although domain {candidate} was free")
+        with DomainLease.claim(folder=tmp_path) as lease:
+            assert lease.domain != candidate
+    assert discovery_port(101) < 32768  # ROS 2's bound for Linux: below the ephemeral ports

@@ -1,16 +1,17 @@
 # SPDX-License-Identifier: EPL-2.0
-"""The ROS 2 bridge node: REI's external SUT on one side, on the other the robot a ROS 2 navigation stack (Nav2 on
-rmw_cyclonedds) expects, on plain DDS - no ROS 2 installation is needed on REI's side.
+"""The ROS 2 bridge node: REI's external SUT on one side, on the other the robot a ROS 2 navigation stack (Nav2)
+expects, on plain DDS - no ROS 2 installation is needed on REI's side.
 
 Per control period (REI's tick, rei.sut.ros_bridge) it publishes /odom, /tf and (when new) /scan stamped with the
 tick's time, then /clock, and waits for the stack's next /cmd_vel. The stack's nodes run with ``use_sim_time``, so their timers
 advance only with this clock: simulation and stack move in lockstep. REI's goals become goals of nav2's
-NavigateToPose action (``rei.sut.ros2.action``); their final state on the action's status topic becomes the goal
-status REI judges. Until the action server is there, the start clock is repeated (a volatile /clock reaches only
-readers that exist, and nav2's nodes need a time to come up).
+NavigateToPose action (``rei.sut.ros2.action``); their final state (status topic or get_result reply) becomes the
+goal status REI judges. Until the stack's /clock subscription is matched, the start clock is repeated (a volatile
+/clock reaches only readers that exist); the run starts once the action server is matched too. The run's DDS
+domain is its own (``rei.sut.ros2.environment.DomainLease``), held until the stack is stopped.
 
-What could not be verified where REI is developed (no ROS 2 installs there): discovery by and an action round
-trip with real ROS 2 nodes; docs/ros.md says so.
+Tested against an independent ROS 2 implementation (a ros2-client node on RustDDS, tests/ros) and REI's own
+Cyclone-based node; not against rclcpp/rclpy nodes (docs/ros.md says what that leaves open).
 """
 
 from __future__ import annotations
@@ -39,14 +40,15 @@ from rei.sut.ros_conventions import CMD_WAIT, Frames
 
 #: Wall seconds between repetitions of the start clock while the stack comes up.
 START_CLOCK_PERIOD = 0.2
+#: Wall seconds a goal may stay unanswered (send_goal) by a matched action server before the run ends in error.
+ANSWER_TIMEOUT = 10.0
 
 
 @dataclass(frozen=True, slots=True)
 class Ros2BridgeSettings:
     cmd_wait: float = CMD_WAIT  # wall seconds a tick waits for the stack's /cmd_vel
     action: str = "navigate_to_pose"
-    domain: int = 0
-    tag: str = "rei"  # Cyclone's discovery tag: the run's own (rei.sut.ros2.environment.run_tag)
+    domain: int | None = None  # None: a free domain of the run's own (rei.sut.ros2.environment.RUN_DOMAINS)
 
 
 class Ros2Bridge(RosBridge):
@@ -54,7 +56,8 @@ class Ros2Bridge(RosBridge):
 
     middleware = "ROS 2"
 
-    def __init__(self, settings: Ros2BridgeSettings, participant: Any, stack: ManagedProcess | None = None) -> None:
+    def __init__(self, settings: Ros2BridgeSettings, domain: int, participant: Any,
+                 stack: ManagedProcess | None = None) -> None:
         super().__init__(settings.cmd_wait, stack)
         from cyclonedds.pub import DataWriter
         from cyclonedds.topic import Topic
@@ -63,10 +66,12 @@ class Ros2Bridge(RosBridge):
 
         self.m = messages
         self.settings = settings
+        self.domain = domain
         self.frames = Frames()
         self._participant = participant
         self._goals: dict[int, bytes] = {}  # REI's goal index -> the action's goal id
         self._index_of: dict[bytes, int] = {}  # and back, for the status topic's DDS thread
+        self._unanswered: tuple[int, Any, int, float] | None = None  # sequence, goal id, index, deadline
         self._with_map = False
         self._scan_time = 0.1
         self._writers = {key: DataWriter(participant, Topic(participant, topic.dds_name, topic.type), qos=topic.qos)
@@ -97,18 +102,16 @@ class Ros2Bridge(RosBridge):
         goal_id = new_goal_id()
         self._goals[goal.index] = bytes(goal_id.uuid)
         self._index_of[bytes(goal_id.uuid)] = goal.index
-        accepted = self._action.send(goal_id, self.m.navigate_goal(self._t, goal, self.frames), ACCEPT_TIMEOUT)
-        if accepted is False:
-            self.report(NavStatus.ABORTED, f"{self.settings.action} rejected the goal")
-        elif accepted is None:
-            print(f"rei ros2-bridge: {self.settings.action} did not answer goal {goal.index} within "
-                  f"{ACCEPT_TIMEOUT:g} s; its status may still come", file=sys.stderr, flush=True)
+        sequence = self._action.send(goal_id, self.m.navigate_goal(self._t, goal, self.frames))
+        self._unanswered = (sequence, goal_id, goal.index, time.monotonic() + ANSWER_TIMEOUT)
+        self._check_answer(ACCEPT_TIMEOUT)
 
     def on_cancel(self, goal: NavGoal) -> None:
         self._cancel(goal.index)
         self.report(NavStatus.CANCELLED, "cancelled by the client")
 
     def publish_sensors(self, tick: Tick) -> None:
+        self._check_answer(0.0)
         w, m = self._writers, self.m
         w["odom"].write(m.odometry(tick.t, tick.odom, tick.observation.odom_twist, self.frames))
         w["tf"].write(m.transforms(tick.t, tick.odom, self.frames, with_map=self._with_map))
@@ -122,6 +125,11 @@ class Ros2Bridge(RosBridge):
         if self.goal is not None and self.status is NavStatus.ACTIVE:
             with contextlib.suppress(Exception):
                 self._cancel(self.goal.index)
+        action = getattr(self, "_action", None)
+        if action is not None:
+            print(f"rei ros2-bridge: {self.settings.action}: {len(self._goals)} goal(s) sent, "
+                  f"{action.replies_missed} known accepted from the status topic only (send_goal reply missed), "
+                  f"{action.feedback_count} feedback message(s)", flush=True)
 
     # -- set-up and DDS callbacks ------------------------------------------------------------------------------
 
@@ -132,17 +140,42 @@ class Ros2Bridge(RosBridge):
         if goal_id is not None:
             self._action.cancel(t.UUID(uuid=list(goal_id)))
 
+    def _check_answer(self, timeout: float) -> None:
+        """The server's answer to the latest goal, if it has come (waiting up to ``timeout``): a rejected goal is
+        ABORTED; a goal unanswered for ANSWER_TIMEOUT ends the run (a stack that takes no goals never will)."""
+        if self._unanswered is None:
+            return
+        sequence, goal_id, index, deadline = self._unanswered
+        accepted = self._action.answer(sequence, goal_id, timeout)
+        if accepted is not None:
+            self._unanswered = None
+            if not accepted:
+                self.report(NavStatus.ABORTED, f"{self.settings.action} rejected the goal")
+        elif time.monotonic() > deadline:
+            raise SutConnectionError(
+                f"the {self.settings.action} action server (matched on ROS domain {self.domain}) did not answer "
+                f"goal {index}'s send_goal request within {ANSWER_TIMEOUT:g} s")
+
     def _await_server(self) -> None:
-        """Until the stack's NavigateToPose server is discovered, in wall time, repeating the start clock."""
+        """Until the stack's /clock subscription and NavigateToPose server are matched, in wall time; the start
+        clock is repeated until the /clock subscription is there, then sent once more."""
         deadline = time.monotonic() + SERVER_TIMEOUT
-        while not self._action.server_ready():
+        clock = self._writers["clock"]
+        clock_matched = False
+        while True:
             self.check_stack()
+            if not clock_matched:
+                clock_matched = bool(clock.get_matched_subscriptions())
+                clock.write(self.m.clock(-PRE_START))  # after the match: once more, which that reader gets
+            if clock_matched and self._action.server_ready():
+                return
             if time.monotonic() > deadline:
+                missing = ([] if clock_matched else ["a /clock subscription (rt/clock)"]) + [
+                    f"the action's {name}" for name in self._action.unmatched()]
                 raise SutConnectionError(
-                    f"no {self.settings.action} action server within {SERVER_TIMEOUT:g} s: the stack must serve "
-                    f"nav2_msgs/action/NavigateToPose on ROS_DOMAIN_ID {self.settings.domain} with "
-                    "rmw_cyclonedds_cpp (the bridge's CYCLONEDDS_URI keeps it on loopback)")
-            self._writers["clock"].write(self.m.clock(-PRE_START))
+                    f"the stack was not matched within {SERVER_TIMEOUT:g} s on ROS domain {self.domain}; missing: "
+                    f"{', '.join(missing)}. It must subscribe /clock and serve nav2_msgs/action/NavigateToPose as "
+                    f"{self.settings.action!r} on ROS_DOMAIN_ID={self.domain}, on loopback (docs/ros.md)")
             time.sleep(START_CLOCK_PERIOD)
 
     def _on_cmd_vel(self, reader: Any) -> None:  # a DDS thread
@@ -168,20 +201,26 @@ def main(command: list[str], *, ros_home: Path, settings: Ros2BridgeSettings) ->
 def _bridge(command: list[str], home: Path, settings: Ros2BridgeSettings) -> int:
     from cyclonedds.domain import Domain, DomainParticipant
 
-    from rei.sut.ros2.environment import cyclone_config, ros2_environment
+    from rei.sut.ros2.environment import DomainLease, DomainUnavailableError, cyclone_config, ros2_environment
 
     home.mkdir(parents=True, exist_ok=True)
-    config = cyclone_config(settings.tag)
-    domain = Domain(settings.domain, config)  # kept alive for the participant's lifetime
-    participant = DomainParticipant(settings.domain)
-    with contextlib.ExitStack() as stack:
-        bridge = Ros2Bridge(settings, participant)
-        if command:
-            print(f"rei ros2-bridge: domain {settings.domain}, discovery tag {settings.tag}; starting "
-                  f"{shlex.join(command)} (output: {home / STACK_LOG})", flush=True)
-            env = ros2_environment(settings.domain, config, home, os.environ)
-            bridge.stack = ManagedProcess("navigation stack", command, home / STACK_LOG, env=env)
-            stack.callback(bridge.stack.stop, 5.0)
-        code = run_bridge(bridge, "rei ros2-bridge", command)
-    del participant, domain
+    config = cyclone_config()
+    try:
+        lease = DomainLease.claim(settings.domain)
+    except DomainUnavailableError as error:
+        raise SutConnectionError(str(error)) from None
+    with lease:  # released after the stack is stopped (the ExitStack below closes first)
+        domain = Domain(lease.domain, config)  # kept alive for the participant's lifetime
+        participant = DomainParticipant(lease.domain)
+        with contextlib.ExitStack() as stack:
+            bridge = Ros2Bridge(settings, lease.domain, participant)
+            print(f"rei ros2-bridge: ROS domain {lease.domain} (the run's own), loopback only", flush=True)
+            if command:
+                print(f"rei ros2-bridge: starting {shlex.join(command)} with ROS_DOMAIN_ID={lease.domain} "
+                      f"(output: {home / STACK_LOG})", flush=True)
+                env = ros2_environment(lease.domain, config, home, os.environ)
+                bridge.stack = ManagedProcess("navigation stack", command, home / STACK_LOG, env=env)
+                stack.callback(bridge.stack.stop, 5.0)
+            code = run_bridge(bridge, "rei ros2-bridge", command)
+        del participant, domain
     return code

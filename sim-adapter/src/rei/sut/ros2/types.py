@@ -4,7 +4,10 @@
 Each struct is ``final`` (the default) with the .msg fields in order, so its XCDR1 serialization is the CDR a ROS 2
 node sends (tests/sut/test_ros2_cdr.py compares every one byte for byte with rosbags' serializer). Field defaults
 are the ROS defaults (zeros, empty strings and sequences, the identity quaternion). The services of nav2's
-NavigateToPose action (send_goal, cancel_goal) carry rmw_cyclonedds's request header before the ROS fields. No ``from __future__ import
+NavigateToPose action (send_goal, get_result, cancel_goal) carry rmw_cyclonedds's request header before the ROS
+fields. NavigateToPose's result differs between ROS 2 releases (Humble: ``std_msgs/Empty``; Jazzy: ``uint16
+error_code, string error_msg``) under one DDS type name: the get_result reply is declared up to its ``status``,
+which is all REI uses, and a final struct's XCDR1 reader stops there, so both releases' replies read alike. No ``from __future__ import
 annotations`` here: cyclonedds resolves string annotations in this module's namespace, where ``str`` is not.
 """
 
@@ -16,6 +19,7 @@ from cyclonedds.idl.types import (
     float32,
     float64,
     int8,
+    int16,
     int32,
     int64,
     sequence,
@@ -227,3 +231,36 @@ class CancelGoal_Response(IdlStruct, typename="action_msgs::srv::dds_::CancelGoa
     rmw_sequence: int64 = 0
     return_code: int8 = 0
     goals_canceling: sequence[GoalInfo] = field(default_factory=list)
+
+
+@dataclass
+class NavigateToPose_Feedback(IdlStruct, typename="nav2_msgs::action::dds_::NavigateToPose_Feedback_"):
+    current_pose: PoseStamped = field(default_factory=PoseStamped)
+    navigation_time: Duration = field(default_factory=Duration)
+    estimated_time_remaining: Duration = field(default_factory=Duration)
+    number_of_recoveries: int16 = 0
+    distance_remaining: float32 = 0.0
+
+
+@dataclass
+class NavigateToPose_FeedbackMessage(IdlStruct, typename="nav2_msgs::action::dds_::NavigateToPose_FeedbackMessage_"):
+    goal_id: UUID = field(default_factory=UUID)
+    feedback: NavigateToPose_Feedback = field(default_factory=NavigateToPose_Feedback)
+
+
+@dataclass
+class NavigateToPose_GetResult_Request(
+        IdlStruct, typename="nav2_msgs::action::dds_::NavigateToPose_GetResult_Request_"):
+    rmw_client: uint64 = 0
+    rmw_sequence: int64 = 0
+    goal_id: UUID = field(default_factory=UUID)
+
+
+@dataclass
+class NavigateToPose_GetResult_Response(
+        IdlStruct, typename="nav2_msgs::action::dds_::NavigateToPose_GetResult_Response_"):
+    """Up to ``status`` (action_msgs/GoalStatus's codes): the ``result`` after it is release-specific (above)."""
+
+    rmw_client: uint64 = 0
+    rmw_sequence: int64 = 0
+    status: int8 = 0
