@@ -1,0 +1,69 @@
+# SPDX-License-Identifier: EPL-2.0
+"""rei compare on campaign folders written here: pairing, the paired statistics and the verdicts, the files."""
+
+from __future__ import annotations
+
+import json
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+
+from rei.compare import CompareError, compare, write_comparison
+from rei.compare.thresholds import parse_thresholds
+from rei.evaluation.metrics import NAMES
+
+
+def campaign(root: Path, runs: dict[tuple[str, int], dict[str, object]], status: str = "COMPLETED") -> Path:
+    for (case, seed), metrics in runs.items():
+        key = f"g__{case}__base__r{seed}"
+        folder = root / "runs" / key
+        folder.mkdir(parents=True)
+        (folder / "result.json").write_text(json.dumps({
+            "format": "rei-campaign-run/1", "key": key, "group": "g", "case": case, "variant": "base",
+            "seed": seed, "status": status if metrics else "ERROR", "error": None if metrics else "crashed",
+            "metrics": dict.fromkeys(NAMES) | metrics}))
+    return root
+
+
+def test_paired_differences_tests_and_verdicts(tmp_path: Path) -> None:
+    cases = [(f"room{i}", seed) for i in range(4) for seed in (0, 1)]
+    base = campaign(tmp_path / "a", {k: {"success": True, "clearance_static_min": 0.25, "time": 30.0} for k in cases})
+    worse = {k: {"success": k[1] == 0, "clearance_static_min": 0.25 - 0.1 - 0.01 * n, "time": 30.0}
+             for n, k in enumerate(cases)}
+    cand = campaign(tmp_path / "b", worse)
+    c = compare(base, cand)
+    by = {m.metric.name: m for m in c.metrics}
+    clearance = by["clearance_static_min"]
+    assert clearance.paired.n == 8 and clearance.paired.mean == pytest.approx(-0.135)
+    assert clearance.paired.high < 0 and clearance.paired.p == pytest.approx(2 / 2**8)  # exact, all negative
+    assert clearance.regressed and clearance.worst(2)[0].candidate.key == "g__room3__base__r1"
+    success = by["success"]  # 4 lost, none gained: McNemar's exact p = 2 / 2**4 = 0.125, not below 0.05
+    assert success.paired.mean == -0.5 and success.paired.p == pytest.approx(0.125) and not success.regressed
+    assert by["time"].status is None and by["time"].paired.mean == 0  # reported, not judged by the defaults
+    assert by["clearance_humans_min"].status == "not-applicable"
+    assert c.exit_code == 1 and [m.metric.name for m in c.regressions] == ["clearance_static_min"]
+    lenient = parse_thresholds("metrics:\n  clearance_static_min: {worse_by: 0.2}\n")
+    assert compare(base, cand, lenient).exit_code == 0  # 0.135 m closer is not more than 0.2 m
+
+
+def test_files_unpaired_and_errors(tmp_path: Path) -> None:
+    base = campaign(tmp_path / "a", {("r1", 0): {"clearance_static_min": 0.2}, ("r2", 0): {"clearance_static_min": 0.2},
+                                     ("r3", 0): {"clearance_static_min": 0.2}})
+    cand = campaign(tmp_path / "b", {("r1", 0): {"clearance_static_min": 0.2}, ("r2", 0): {},
+                                     ("r4", 0): {"clearance_static_min": 0.1}})
+    c = compare(base, cand)
+    assert [(b.key, k.key) for b, k in c.pairing.pairs] == [("g__r1__base__r0", "g__r1__base__r0")]
+    assert [r.key for r in c.pairing.only_baseline] == ["g__r3__base__r0"]
+    assert [r.key for r in c.pairing.only_candidate] == ["g__r4__base__r0"]
+    assert [r.key for r in c.pairing.errors] == ["g__r2__base__r0"]
+    files = write_comparison(c, tmp_path / "out")
+    suite = ET.parse(files["junit"]).getroot()
+    assert suite.get("failures") == "0" and {t.get("classname") for t in suite.iter("testcase")} == {"rei.metrics"}
+    html = files["html"].read_text()
+    assert "g__r3__base__r0" in html and "g__r4__base__r0" in html and "crashed" in html
+    assert json.loads(files["json"].read_text())["errors"][0]["status"] == "ERROR"
+    with pytest.raises(CompareError, match="no run of .* pairs"):
+        compare(base, campaign(tmp_path / "c", {("other", 0): {"success": True}}))
+    with pytest.raises(CompareError, match="neither a campaign folder"):
+        compare(base, tmp_path)
