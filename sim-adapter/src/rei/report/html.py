@@ -14,6 +14,7 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
+from rei.evaluation.metrics import LIST_KEYS, METRICS
 from rei.report.charts import finite_or, render_signal_bars, render_utility
 from rei.report.colours import ROBOT_BELIEVED, ROBOT_TRUE, signal_colour, signal_sort_key
 from rei.report.map_svg import MAX_MARKERS, render_map
@@ -76,6 +77,7 @@ def render_report(data: RunData) -> str:
         _utility_section(data, tracks),
         _signals_section(data),
         _verdicts_section(data),
+        _metrics_section(data),
         _mission_section(data),
         _signal_table(data),
     ]
@@ -233,6 +235,32 @@ def _verdicts_section(data: RunData) -> str:
                     f'{_evidence(verdict.get("evidence"))}</td></tr>')
     return ('<section id="verdicts-section"><h2>Verdicts</h2><table id="verdicts"><tr><th>requirement</th>'
             f'<th>verdict</th><th>message and evidence</th></tr>{"".join(rows)}</table></section>')
+
+
+def _metrics_section(data: RunData) -> str:
+    """The navigation metrics of summary.json (docs/metrics.md); a metric that does not apply shows as '-'."""
+    metrics = (data.summary or {}).get("metrics")
+    if not isinstance(metrics, Mapping) or not metrics:
+        why = ("summary.json has no navigation metrics (written before they existed: rei evaluate OUT adds them)"
+               if data.summary is not None else "no summary.json: no navigation metrics")
+        return f'<section><h2>Navigation metrics</h2><p class="missing" id="metrics-missing">{why}</p></section>'
+    rows = []
+    for metric in METRICS:
+        value = metrics.get(metric.name)
+        shown = "-" if value is None else str(value).lower() if isinstance(value, bool) else (
+            f"{value:.4g}" if isinstance(value, float) else str(value))
+        rows.append(f'<tr class="metric" data-metric="{esc(metric.name)}"><td><code>{esc(metric.name)}</code></td>'
+                    f'<td class="num">{esc(shown)}</td><td>{esc(metric.unit)}</td><td>{esc(metric.label)}</td></tr>')
+    for key in LIST_KEYS:
+        values = metrics.get(key)
+        if isinstance(values, list):
+            shown = ", ".join("-" if v is None else f"{v:.4g}" for v in values)
+            rows.append(f'<tr class="metric" data-metric="{esc(key)}"><td><code>{esc(key)}</code></td>'
+                        f'<td class="num">{esc(shown)}</td><td>s</td><td>time per task</td></tr>')
+    error = (data.summary or {}).get("metrics_error")
+    note = f'<p class="missing" id="metrics-error">{esc(error)}</p>' if error else ""
+    return ('<section id="metrics-section"><h2>Navigation metrics</h2><table id="metrics"><tr><th>metric</th>'
+            f'<th>value</th><th>unit</th><th>what</th></tr>{"".join(rows)}</table>{note}</section>')
 
 
 #: Evidence items shown at once; the rest fold away (a noisy laser can produce dozens).
