@@ -5,7 +5,8 @@ Why SciPy and not hand-written formulas: the bootstrap, the Wilcoxon signed-rank
 test have edge cases (ties, zeros, tiny samples, exact versus normal approximation) that a well-kept library
 already decides and documents. What is decided here is only what SciPy leaves open: a sample of one has no
 interval, a sample without spread has the interval of its one value, and a paired sample without a non-zero
-difference has p = 1 (nothing differs).
+difference has p = 1 (nothing differs). SciPy is imported on first use: ``scipy.stats`` takes about a second
+to import, which a campaign's workers and ``rei run`` never need.
 """
 
 from __future__ import annotations
@@ -14,9 +15,9 @@ import math
 import warnings
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
-from scipy import stats
 
 CONFIDENCE = 0.95
 #: Bootstrap resamples: enough for a stable 95 % percentile interval (its ends move by well under 1 % of the
@@ -60,6 +61,12 @@ class Paired:
     test: str
 
 
+def _scipy() -> Any:
+    from scipy import stats
+
+    return stats
+
+
 def estimate(values: Sequence[float]) -> Estimate:
     x = np.asarray([v for v in values if v is not None and math.isfinite(v)], dtype=float)
     if len(x) == 0:
@@ -76,7 +83,7 @@ def mean_interval(x: np.ndarray) -> tuple[float | None, float | None]:
         return float(x[0]), float(x[0])
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # a sample of a few distinct values warns of its own degeneracy
-        result = stats.bootstrap((x,), np.mean, n_resamples=RESAMPLES, confidence_level=CONFIDENCE,
+        result = _scipy().bootstrap((x,), np.mean, n_resamples=RESAMPLES, confidence_level=CONFIDENCE,
                                  method="percentile", vectorized=True, rng=np.random.default_rng(SEED))
     return float(result.confidence_interval.low), float(result.confidence_interval.high)
 
@@ -86,7 +93,7 @@ def rate(flags: Sequence[bool | None]) -> Rate:
     n, k = len(known), sum(known)
     if n == 0:
         return Rate(0, 0, None, None, None)
-    interval = stats.binomtest(k, n).proportion_ci(CONFIDENCE, method="wilson")
+    interval = _scipy().binomtest(k, n).proportion_ci(CONFIDENCE, method="wilson")
     return Rate(n, k, k / n, float(interval.low), float(interval.high))
 
 
@@ -101,7 +108,7 @@ def paired_continuous(differences: Sequence[float]) -> Paired:
     else:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            p = float(stats.wilcoxon(d, zero_method="wilcox").pvalue)
+            p = float(_scipy().wilcoxon(d, zero_method="wilcox").pvalue)
     return Paired(len(d), float(d.mean()), low, high, p, "wilcoxon")
 
 
@@ -112,6 +119,6 @@ def paired_success(pairs: Sequence[tuple[bool, bool]]) -> Paired:
         return Paired(0, None, None, None, None, "mcnemar-exact")
     d = np.array([int(c) - int(b) for b, c in pairs], dtype=float)
     lost, gained = int(np.sum(d < 0)), int(np.sum(d > 0))
-    p = 1.0 if lost + gained == 0 else float(stats.binomtest(gained, lost + gained, 0.5).pvalue)
+    p = 1.0 if lost + gained == 0 else float(_scipy().binomtest(gained, lost + gained, 0.5).pvalue)
     low, high = mean_interval(d)
     return Paired(len(d), float(d.mean()), low, high, p, "mcnemar-exact")
