@@ -10,7 +10,7 @@ campaign's workers (or Ray) while Optuna's sampler (tpe, cmaes, nsga2, qmc, or r
 next. Each distinct failure is then shrunk to a smaller case that fails the same way. Writes OUT/search.json,
 OUT/verdicts.xml, OUT/search.html, every candidate as OUT/candidates/*.rei and its run in OUT/runs/. A stopped
 search resumes when started again with the same OUT. Exit 0: no failure found; 1: failures found; 2: bad spec
-or arguments; 130: interrupted.
+or arguments, or no failure found but evaluations in ERROR (or none simulated); 130: interrupted.
 """
 
 from __future__ import annotations
@@ -21,7 +21,7 @@ import threading
 from pathlib import Path
 from typing import Any
 
-from rei.cli.errors import EXIT_INVALID, EXIT_OK, CommandError
+from rei.cli.errors import EXIT_OK, EXIT_RUN_ERROR, CommandError
 
 EXIT_FOUND = 1
 
@@ -76,4 +76,5 @@ def run(args: argparse.Namespace) -> int:
         return 130
     if result["failures"]:
         return EXIT_FOUND
-    return EXIT_OK if counts["simulated"] else EXIT_INVALID
+    # nothing found, but evaluations that could not be judged (or none at all) vouch for nothing
+    return EXIT_RUN_ERROR if counts["errors"] or not counts["simulated"] else EXIT_OK

@@ -2,8 +2,8 @@
 """Shrinking a failure, as property-based testing shrinks a counterexample: greedily, one step at a time, keeping
 each step that still fails the same way (same requirement, same element, same place).
 
-Steps, in order: move each parameter back to the base case's value, then remove each object and human the
-failure does not name. Each step is one candidate (validated and checked like any other) and, when valid, one
+Steps, in order: remove each object and human the failure does not name, then move each parameter back to the
+base case's value. Each step is one candidate (validated and checked like any other) and, when valid, one
 simulation; ``budget`` caps the simulations per failure. The shrunk case is written to
 ``OUT/shrunk/shrunk-<n>.rei`` with its run in ``OUT/shrunk/runs/<n>-<step>/``.
 """
@@ -81,14 +81,7 @@ def shrink(failure: Failure, values: Mapping[str, Any], space: Space, maker: Can
         log(f"  shrink {index} step {steps}: {'still fails' if same else 'passes or fails otherwise'}")
         return same, str(run_dir) if same else None
 
-    moves = [k for k in current if current[k] != base.get(k)]
-    for name in moves:
-        if steps >= budget:
-            break
-        attempt = {**current, name: base.get(name)}
-        ok, run = fails(attempt, removed)
-        if ok:
-            current, kept, last_run = attempt, kept + 1, run
+    # removals first, as property-based shrinkers delete before they simplify: the biggest reduction per step
     for element in space.removable():
         if steps >= budget:
             break
@@ -97,6 +90,13 @@ def shrink(failure: Failure, values: Mapping[str, Any], space: Space, maker: Can
         ok, run = fails(current, [*removed, element])
         if ok:
             removed, kept, last_run = [*removed, element], kept + 1, run
+    for name in [k for k in current if current[k] != base.get(k)]:
+        if steps >= budget:
+            break
+        attempt = {**current, name: base.get(name)}
+        ok, run = fails(attempt, removed)
+        if ok:
+            current, kept, last_run = attempt, kept + 1, run
     final = maker.make(f"shrunk-{index}", space.edit(current, removed))
     path = folder / f"shrunk-{index}.rei"
     if final.status == VALID:

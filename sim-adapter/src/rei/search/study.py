@@ -41,6 +41,8 @@ from rei.search.space import Space
 from rei.search.spec import SearchSpec
 
 JOURNAL = "study.journal"
+#: The trials' one constraint: 1 for a candidate that was not valid, 0 for a simulated one.
+VALIDITY = "valid"
 #: Candidates asked per simulated evaluation at most: a space of mostly invalid points ends the search instead of
 #: spinning.
 MAX_TRIES_PER_EVALUATION = 20
@@ -49,24 +51,16 @@ MAX_TRIES_PER_EVALUATION = 20
 def make_sampler(name: str, seed: int, budget: int) -> optuna.samplers.BaseSampler:
     if name == "tpe":
         return optuna.samplers.TPESampler(seed=seed, n_startup_trials=max(2, min(10, budget // 4)),
-                                          multivariate=True, constant_liar=True, constraints_func=constraints)
+                                          multivariate=True, constant_liar=True)
     if name == "cmaes":
         return optuna.samplers.CmaEsSampler(seed=seed, n_startup_trials=1, warn_independent_sampling=False)
     if name == "nsga2":
-        return optuna.samplers.NSGAIISampler(seed=seed, population_size=max(4, min(50, budget // 4)),
-                                             constraints_func=constraints)
+        return optuna.samplers.NSGAIISampler(seed=seed, population_size=max(4, min(50, budget // 4)))
     if name == "qmc":
         return optuna.samplers.QMCSampler(seed=seed, qmc_type="sobol", warn_independent_sampling=False)
     if name == "random":
         return optuna.samplers.RandomSampler(seed=seed)
     raise ValueError(f"unknown sampler {name!r}")
-
-
-def constraints(trial: optuna.trial.FrozenTrial) -> list[float]:
-    """Optuna's constraint of a trial: 1 (violated) for a candidate that was not valid. The samplers that take
-    constraints rank such trials below every simulated one, so the search learns where the valid cases are;
-    the others see the penalty values (``penalty``)."""
-    return [float(trial.user_attrs.get("constraint", 0.0))]
 
 
 def penalty(spec: SearchSpec) -> list[float]:
@@ -203,7 +197,9 @@ class Search:
         trial.set_user_attr("key", self.key(trial.number))
         trial.set_user_attr("status", status)
         trial.set_user_attr("problems", list(problems))
-        trial.set_user_attr("constraint", 1.0)
+        # violated: TPE and NSGA-II rank it below every simulated trial, so the search learns where the valid cases
+        # are; the other samplers see the penalty values
+        trial.set_constraint(VALIDITY, 1.0)
         values = penalty(self.spec)
         self.study.tell(trial, values if len(values) > 1 else values[0])
         self.log(f"  {self.key(trial.number)}: {status}, not simulated: {problems[0]}")
@@ -224,6 +220,7 @@ class Search:
             values = score(self.spec.objectives, summary, Path(task.run_dir))
             found = failures_of(summary, Path(task.run_dir), Path(task.case_dir), self.space.floor_at)
             attrs["failures"] = [f.to_dict() for f in found]
+            trial.set_constraint(VALIDITY, 0.0)
             attrs["metrics"] = summary.get("metrics")
             self.progress.failing += bool(found)
         else:
