@@ -100,9 +100,9 @@ def test_a_ros2_node_that_never_answers_a_goal_ends_the_run_in_error_naming_the_
 def test_two_ros2_runs_at_once_get_domains_of_their_own_and_both_complete(
     run_cli, repo_root: Path, tmp_path: Path, rust_node: Path, processes_mentioning
 ) -> None:
-    """Run a is paced at wall-clock speed (~30 s); run b starts once a's bridge holds its domain and ends before
-    a does. On one domain the two bridges' clocks, goals and commands would reach both nodes (each bridge matches
-    every action server it discovers); on their own domains both runs pass."""
+    """Run a is paced at wall-clock speed (~30 s); run b starts once a's node has a goal, so b's bridge comes up
+    while a's still runs. On one domain the two bridges' clocks, goals and commands would reach both nodes (each
+    bridge matches every action server it discovers); on their own domains both runs pass."""
     a, b = tmp_path / "a", tmp_path / "b"
     results: dict[Path, object] = {}
 
@@ -110,17 +110,23 @@ def test_two_ros2_runs_at_once_get_domains_of_their_own_and_both_complete(
         results[out] = run_cli("run", repo_root / EXAMPLE, "-o", out, "--sut", f"ros2:{rust_node} {out}",
                                "--sut-map", *extra, timeout=400)
 
+    def wait_for(condition, thread: threading.Thread, log: Path) -> None:  # type: ignore[no-untyped-def]
+        deadline = time.monotonic() + 120
+        while not condition():
+            assert thread.is_alive() and time.monotonic() < deadline, _text(log)
+            time.sleep(0.1)
+
     first = threading.Thread(target=run, args=(a, "--realtime"))
     first.start()
-    deadline = time.monotonic() + 120
-    while not (DOMAIN_LINE.search(_text(a / "sut.log")) and "goal" in _text(a / "ros" / "stack.log")):
-        assert first.is_alive() and time.monotonic() < deadline, _text(a / "sut.log")
-        time.sleep(0.2)
-    run(b)
-    first.join()
+    wait_for(lambda: "goal" in _text(a / "ros" / "stack.log"), first, a / "sut.log")
+    second = threading.Thread(target=run, args=(b,))
+    second.start()
+    wait_for(lambda: DOMAIN_LINE.search(_text(b / "sut.log")), second, b / "sut.log")
+    assert not (a / "summary.json").exists()  # both bridges hold their domains now
+    for thread in (first, second):
+        thread.join()
     for out in (a, b):
         _assert_completed(results[out], out)
-    assert (b / "summary.json").stat().st_mtime < (a / "summary.json").stat().st_mtime  # b ran inside a
     assert _domain(a) != _domain(b)
     assert processes_mentioning(a) == [] and processes_mentioning(b) == []
 
