@@ -30,6 +30,11 @@ MAX_DOMAIN = 232
 RUN_DOMAINS = range(1, 102)
 
 
+#: Participants per domain reached by unicast discovery on loopback: Cyclone sends its announcements to the ports
+#: of participant indices 0..this (default 9), and a stack of one process per node has more participants.
+MAX_PARTICIPANT_INDEX = 49
+
+
 def discovery_port(domain: int) -> int:
     """The RTPS unicast discovery port of participant 0 in ``domain`` (7400 + 250 d + 10), the same for every DDS
     vendor."""
@@ -119,12 +124,13 @@ def _port_in_use(port: int) -> bool:
 
 def cyclone_config(trace: Path | None = None) -> str:
     """Cyclone DDS's XML configuration of a run: the loopback interface, unicast discovery to 127.0.0.1 (no
-    multicast, which loopback does not carry); ``trace`` (optional) a file for Cyclone's configuration trace, which
+    multicast, which loopback does not carry) for participant indices up to MAX_PARTICIPANT_INDEX; ``trace`` (optional) a file for Cyclone's configuration trace, which
     shows the interface it chose."""
     tracing = (f"<Tracing><Verbosity>config</Verbosity><OutputFile>{escape(str(trace))}</OutputFile></Tracing>"
                if trace is not None else "")
     return ("<CycloneDDS><Domain><General><Interfaces><NetworkInterface name=\"lo\"/></Interfaces>"
             "<AllowMulticast>false</AllowMulticast></General><Discovery><ParticipantIndex>auto</ParticipantIndex>"
+            f"<MaxAutoParticipantIndex>{MAX_PARTICIPANT_INDEX}</MaxAutoParticipantIndex>"
             f"<Peers><Peer address=\"127.0.0.1\"/></Peers></Discovery>{tracing}</Domain></CycloneDDS>")
 
 
