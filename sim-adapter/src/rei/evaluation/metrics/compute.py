@@ -19,7 +19,7 @@ from typing import Any
 
 import numpy as np
 
-from rei.artifacts import ArtifactError, Category, Shape, read_mission, read_monitor, read_world
+from rei.artifacts import ArtifactError, Category, Shape, WorldSpec, read_mission, read_monitor, read_world
 from rei.artifacts.case import case_of_run
 from rei.evaluation.metrics.definitions import NAMES
 from rei.evaluation.mission_info import MissionInfo, MissionInfoError
@@ -90,7 +90,7 @@ def compute_metrics(run_dir: Path, case_dir: Path | None = None) -> dict[str, An
     static_gaps = _gaps(s.pose, robot_size, statics.boxes, statics.circle)
     moving_gaps = _gaps(s.pose, robot_size, _moving_boxes(s.moving, moving.boxes), moving.circle)
     out: dict[str, Any] = dict.fromkeys(NAMES)
-    out.update(_goal_metrics(run_dir, case_dir, missions if recorded else None, s, t0, t1, robot_size))
+    out.update(_goal_metrics(run_dir, case_dir, world, missions if recorded else None, s, t0, t1))
     out["path_length"] = _path_length(s.pose)
     out.update(_clearances("static", static_gaps))
     out.update(_clearances("humans", moving_gaps[:, humans]))
@@ -202,8 +202,8 @@ def _goals(run_dir: Path, case_dir: Path) -> list[tuple[float, float]] | None:
 # -- metrics ---------------------------------------------------------------------------------------------------
 
 
-def _goal_metrics(run_dir: Path, case_dir: Path, missions: list[dict[str, Any]] | None, s: _States,
-                  t0: float, t1: float, robot_size: tuple[float, float]) -> dict[str, Any]:
+def _goal_metrics(run_dir: Path, case_dir: Path, world: WorldSpec, missions: list[dict[str, Any]] | None,
+                  s: _States, t0: float, t1: float) -> dict[str, Any]:
     goals = _goals(run_dir, case_dir) if missions is not None else None
     if missions is None or not goals:
         return {"success": None, "time": None, "spl": None, "task_times": None}
@@ -224,13 +224,13 @@ def _goal_metrics(run_dir: Path, case_dir: Path, missions: list[dict[str, Any]] 
     spl: float | None = 0.0
     if success:
         driven = _path_length(s.pose[s.t <= end + 1e-9])
-        shortest = _shortest_path(case_dir, (float(s.pose[0, 0]), float(s.pose[0, 1])), goals, robot_size)
+        shortest = _shortest_path(world, (float(s.pose[0, 0]), float(s.pose[0, 1])), goals)
         spl = None if shortest is None else shortest / max(shortest, driven, 1e-9)
     return {"success": success, "time": end - t0, "spl": spl, "task_times": task_times}
 
 
-def _shortest_path(case_dir: Path, start: tuple[float, float], goals: Sequence[tuple[float, float]],
-                   robot_size: tuple[float, float]) -> float | None:
+def _shortest_path(world: WorldSpec, start: tuple[float, float], goals: Sequence[tuple[float, float]],
+                   ) -> float | None:
     """start -> goal 1 -> goal 2 ... by the reference global planner on the static map, with its cost gradient
     and inflation margin off: the shortest way the footprint fits at any heading. None when a leg has none."""
     from rei.sut.api import StaticMap
@@ -238,7 +238,7 @@ def _shortest_path(case_dir: Path, start: tuple[float, float], goals: Sequence[t
     from rei.sut.nav.global_planner import PlanningError, plan
     from rei.sut.nav.grid import CostGrid
 
-    world = read_world(case_dir / "world.json")
+    robot_size = (world.robot.size[0], world.robot.size[1])
     obstacles = tuple((o.pose[0], o.pose[1], o.pose[3], o.size[0], o.size[1]) for o in world.objects
                       if o.category in (Category.WALL, Category.STATIC))
     config = NavConfig(footprint_x=robot_size[0], footprint_y=robot_size[1], inflation_margin=0.0,
