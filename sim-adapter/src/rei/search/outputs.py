@@ -34,7 +34,7 @@ def records(study: optuna.Study, out: Path) -> list[dict[str, Any]]:
     for trial in study.get_trials(deepcopy=False):
         attrs = trial.user_attrs
         key = attrs.get("key") or f"{study.study_name}-{trial.number:04d}"
-        status = attrs.get("status") or ("running" if trial.state == TrialState.RUNNING else "interrupted")
+        status = attrs.get("status") or "interrupted"  # running when the search stopped (asked again on resume)
         record: dict[str, Any] = {"key": key, "number": trial.number, "status": status, "params": dict(trial.params)}
         if attrs.get("simulated"):
             record.update({

@@ -28,7 +28,7 @@ Check = Callable[[Candidate, str], "list[Failure] | None"]
 
 @dataclass(frozen=True, slots=True)
 class Shrunk:
-    case: str
+    case: str | None
     values: dict[str, Any]
     removed: list[str]
     steps: int  # simulations spent
@@ -98,8 +98,10 @@ def shrink(failure: Failure, values: Mapping[str, Any], space: Space, maker: Can
         if ok:
             current, kept, last_run = attempt, kept + 1, run
     final = maker.make(f"shrunk-{index}", space.edit(current, removed))
-    path = folder / f"shrunk-{index}.rei"
-    if final.status == VALID:
+    path: Path | None = folder / f"shrunk-{index}.rei"
+    if final.status == VALID and path is not None:
         path.parent.mkdir(parents=True, exist_ok=True)
         maker.write(final, path)
-    return Shrunk(str(path), {k: v for k, v in current.items()}, removed, steps, kept, last_run)
+    else:  # every kept step was valid, and so was the start: only a changed engine gets here
+        path = None
+    return Shrunk(None if path is None else str(path), dict(current), removed, steps, kept, last_run)
