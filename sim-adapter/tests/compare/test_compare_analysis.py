@@ -40,6 +40,7 @@ def test_paired_differences_tests_and_verdicts(tmp_path: Path) -> None:
     assert clearance.regressed and clearance.worst(2)[0].candidate.key == "g__room3__base__r1"
     success = by["success"]  # 4 lost, none gained: McNemar's exact p = 2 / 2**4 = 0.125, not below 0.05
     assert success.paired.mean == -0.5 and success.paired.p == pytest.approx(0.125) and not success.regressed
+    assert [d.value for d in success.worst(10)] == [-1.0] * 4  # only the pairs that got worse are "changed most"
     assert by["time"].status is None and by["time"].paired.mean == 0  # reported, not judged by the defaults
     assert by["clearance_humans_min"].status == "not-applicable"
     assert c.exit_code == 1 and [m.metric.name for m in c.regressions] == ["clearance_static_min"]

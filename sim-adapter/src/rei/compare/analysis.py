@@ -45,8 +45,9 @@ class MetricComparison:
     def worst(self, count: int) -> list[Difference]:
         """The pairs that changed most for the worse (by the threshold's or the metric's direction)."""
         sign = _worse_sign(self.threshold.better if self.threshold else self.metric.better)
-        ranked = sorted(self.differences, key=lambda d: -abs(d.value) if sign == 0 else -sign * d.value)
-        return [d for d in ranked if d.value != 0][:count]
+        if sign == 0:  # no direction: the largest changes either way
+            return sorted((d for d in self.differences if d.value != 0), key=lambda d: -abs(d.value))[:count]
+        return sorted((d for d in self.differences if sign * d.value > 0), key=lambda d: -sign * d.value)[:count]
 
 
 @dataclass(frozen=True, slots=True)
