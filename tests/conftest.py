@@ -176,11 +176,14 @@ def rei_script() -> Path:
 @pytest.fixture(scope="session")
 def run_cli(rei_script: Path, cli_jar: Path, java: toolchain.Java) -> RunCli:
     """Run `rei ARGS...` (the console script, so the Python-to-Java hand-over is part of every test) with a
-    timeout, capturing its output. Depends on `cli_jar` so a missing build fails with the build hint."""
+    timeout, capturing its output; `env` adds to the environment. Depends on `cli_jar` so a missing build fails
+    with the build hint."""
 
-    def run(*args: str | Path, timeout: float = CLI_TIMEOUT_S, cwd: Path | None = None) -> CliResult:
+    def run(*args: str | Path, timeout: float = CLI_TIMEOUT_S, cwd: Path | None = None,
+            env: dict[str, str] | None = None) -> CliResult:
         argv = [str(rei_script), *map(str, args)]
-        returncode, stdout, stderr = run_bounded(argv, timeout, cwd=cwd, env={"REI_HOME": str(REPO_ROOT)})
+        returncode, stdout, stderr = run_bounded(argv, timeout, cwd=cwd,
+                                                 env={"REI_HOME": str(REPO_ROOT), **(env or {})})
         return CliResult(argv, returncode, stdout, stderr)
 
     return run

@@ -4,13 +4,17 @@ and the campaign completes; an interrupted campaign resumes without redoing fini
 
 from __future__ import annotations
 
+import contextlib
 import csv
 import json
 import os
+import secrets
+import shutil
 import signal
 import socket
 import subprocess
 import sys
+import tempfile
 import time
 from collections.abc import Iterator
 from pathlib import Path
@@ -114,34 +118,50 @@ groups:
 
 
 @pytest.fixture
-def ray_head(tmp_path: Path) -> Iterator[str]:
-    """A Ray head on loopback with 2 CPUs, in its own process group, stopped (group-wide, by id) afterwards."""
+def ray_root() -> Iterator[Path]:
+    """A Ray temporary root of the test's own (``RAY_TMPDIR`` for every Ray process the test starts), so no Ray of
+    the test touches the machine's shared /tmp/ray and no other Ray's files there touch the test; short, since
+    Ray's unix sockets live below it (108 bytes); removed afterwards."""
+    root = Path(tempfile.mkdtemp(prefix="rei-ray-test-"))
+    try:
+        yield root
+    finally:
+        shutil.rmtree(root, ignore_errors=True)
+
+
+@pytest.fixture
+def ray_head(tmp_path: Path, ray_root: Path) -> Iterator[dict[str, str]]:
+    """A Ray head on loopback with 2 CPUs, its files in the test's Ray root, with a token of its own (a user's
+    ``~/.ray/auth_token`` plays no part); yields the environment a client needs, ``RAY_ADDRESS`` among it. Stopped
+    as Ray stops a blocking ``ray start``: SIGTERM, on which it stops its own processes (``ray stop`` would stop
+    every Ray of this user); its process group is killed only if it has not ended after that."""
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
         port = s.getsockname()[1]
+    token = ray_root / "auth_token"
+    token.write_text(secrets.token_hex(32), encoding="ascii")
+    env = {"RAY_TMPDIR": str(ray_root), "RAY_AUTH_MODE": "token", "RAY_AUTH_TOKEN_PATH": str(token)}
     ray = Path(sys.executable).parent / "ray"
     log = open(tmp_path / "ray.log", "w")  # noqa: SIM115 - closed below
     head = subprocess.Popen([str(ray), "start", "--head", "--block", f"--port={port}", "--node-ip-address=127.0.0.1",
                              "--num-cpus=2", "--include-dashboard=false", "--disable-usage-stats",
-                             "--object-store-memory=100000000"], stdout=log, stderr=subprocess.STDOUT,
-                            start_new_session=True)
+                             "--object-store-memory=100000000", f"--temp-dir={ray_root / 'ray'}"],
+                            stdout=log, stderr=subprocess.STDOUT, start_new_session=True, env={**os.environ, **env})
     try:
-        yield f"127.0.0.1:{port}"
+        yield {**env, "RAY_ADDRESS": f"127.0.0.1:{port}"}
     finally:
-        os.killpg(head.pid, signal.SIGTERM)
+        head.send_signal(signal.SIGTERM)
         try:
-            head.wait(5)
+            head.wait(60)
         except subprocess.TimeoutExpired:
             pass
-        try:
+        with contextlib.suppress(ProcessLookupError):  # whatever of the head's group outlived it
             os.killpg(head.pid, signal.SIGKILL)
-        except ProcessLookupError:
-            pass
         head.wait()
         log.close()
 
 
-def test_a_campaign_runs_on_a_local_ray_cluster(tmp_path: Path, ray_head: str, run_cli: Any) -> None:
+def test_a_campaign_runs_on_a_local_ray_cluster(tmp_path: Path, ray_head: dict[str, str], run_cli: Any) -> None:
     spec = write_spec(tmp_path, """
 name: on-ray
 groups:
@@ -153,7 +173,7 @@ groups:
     out = tmp_path / "out"
     result = None
     for _ in range(30):  # the head takes a few seconds to accept clients
-        result = run_cli("campaign", spec, "-o", out, "--ray", ray_head, timeout=300)
+        result = run_cli("campaign", spec, "-o", out, "--ray", ray_head["RAY_ADDRESS"], timeout=300, env=ray_head)
         if "cannot connect to Ray" not in result.stderr:
             break
         time.sleep(2)
@@ -163,6 +183,44 @@ groups:
     assert sorted(r["status"] for r in table.values()) == ["COMPLETED", "COMPLETED", "ERROR", "ERROR"]
     assert all(json.loads((out / "runs" / k / "summary.json").read_text())["counts"]["SIG_MISSION_END"] == 1
                for k, r in table.items() if r["status"] == "COMPLETED")
+
+
+def test_ray_local_starts_its_own_instance_whatever_an_earlier_ray_left_behind(
+    tmp_path: Path, ray_root: Path, run_cli: Any
+) -> None:
+    """A ``ray start`` that was not stopped with ``ray stop`` leaves its address in ``ray_current_cluster``, which
+    a plain ``ray.init(num_cpus=...)`` would try to connect to. ``--ray local`` starts its own instance anyway and
+    keeps its files in a folder of its own, deleted at the end: the Ray folder is as it was, the temporary
+    directory (here the test's Ray root, as TMPDIR) holds nothing more."""
+    stale = ray_root / "ray" / "ray_current_cluster"
+    stale.parent.mkdir()
+    with socket.socket() as s:  # a port nothing listens on once closed: the earlier cluster is gone
+        s.bind(("127.0.0.1", 0))
+        stale.write_text(f"127.0.0.1:{s.getsockname()[1]}", encoding="utf-8")
+    before = stale.read_text(encoding="utf-8")
+    home_token = Path.home() / ".ray" / "auth_token"
+    had_home_token = home_token.exists()
+    spec = write_spec(tmp_path, """
+name: ray-local
+groups:
+  - name: example
+    cases: [EXAMPLE]
+    repetitions: 2
+    variants: [{name: short, controller: "script:SHORT"}]
+""")
+    out = tmp_path / "out"
+    started = time.monotonic()
+    result = run_cli("campaign", spec, "-o", out, "--ray", "local", "--workers", "2", timeout=300,
+                     env={"RAY_TMPDIR": str(ray_root), "TMPDIR": str(ray_root)})
+    print(f"--ray local campaign of 2 runs: {time.monotonic() - started:.1f} s")
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "on 2 ray worker(s)" in result.stdout
+    table = runs(out)
+    assert len(table) == 2 and all(r["status"] == "COMPLETED" for r in table.values()), table
+    assert sorted(p.relative_to(ray_root).as_posix() for p in ray_root.rglob("*")) == [
+        "ray", "ray/ray_current_cluster"]
+    assert stale.read_text(encoding="utf-8") == before
+    assert home_token.exists() == had_home_token, "--ray local saved a token in ~/.ray"
 
 
 def test_the_replay_path_judges_a_run_as_rei_run_does(tmp_path: Path, run_cli: Any) -> None:

@@ -8,6 +8,10 @@ the caller's thread as it arrives, so results are written and printed in one pla
 from __future__ import annotations
 
 import contextlib
+import os
+import secrets
+import shutil
+import tempfile
 import threading
 from collections.abc import Callable, Sequence
 from concurrent.futures import FIRST_COMPLETED, Future, ThreadPoolExecutor, wait
@@ -101,6 +105,13 @@ class RayBackend:
     """Runs as Ray tasks of one CPU each. ``address``: a cluster's (``ray start --head`` prints it), or
     ``local`` for a Ray instance started here with ``workers`` CPUs and stopped at the end.
 
+    ``local`` always starts a new instance (Ray's ``address="local"``): without it ``ray.init`` would connect to
+    the cluster named in Ray's ``ray_current_cluster`` file, which a ``ray start`` stopped without ``ray stop``
+    leaves behind. The instance keeps its temporary files (sessions, sockets, logs) and its authentication token
+    in a folder of its own in the system's temporary directory, deleted at the end: nothing is left in the
+    machine's shared Ray folder, nor in ``~/.ray`` (where Ray would save a new token, which every later
+    ``ray start`` of the user would then require).
+
     The run folders must be on a file system every node sees at the same path (the workers read the case and
     write the run there); the case folders are prepared on this machine first.
     """
@@ -111,11 +122,23 @@ class RayBackend:
         import ray
 
         self._ray = ray
-        local = address == "local"
-        self._started_here = local
+        self._temp_dir: Path | None = None
+        self._saved_env: dict[str, str | None] = {}
         init: dict[str, Any] = {"include_dashboard": False, "log_to_driver": False, "logging_level": "WARNING"}
-        if local:
-            ray.init(num_cpus=workers or 1, **init)
+        if address == "local":
+            # short, in the system's temporary directory: Ray's unix sockets live below it (108-byte limit)
+            self._temp_dir = Path(tempfile.mkdtemp(prefix="rei-ray-"))  # mode 0700: the token is ours alone
+            try:
+                token = self._temp_dir / "auth_token"
+                token.write_text(secrets.token_hex(32), encoding="ascii")
+                # Ray enables token authentication for a new local instance (unless RAY_AUTH_MODE says otherwise)
+                # and takes this token instead of making one; the instance's processes, started from here, inherit
+                # the environment (a path, not the secret)
+                self._set_env({"RAY_AUTH_TOKEN_PATH": str(token)})
+                ray.init(address="local", num_cpus=workers or 1, _temp_dir=str(self._temp_dir), **init)
+            except BaseException:
+                self.close()
+                raise
         else:
             ray.init(address=address, **init)
         self.workers = int(ray.cluster_resources().get("CPU", 1))
@@ -144,8 +167,20 @@ class RayBackend:
                 ray.cancel(ref)  # not forced: KeyboardInterrupt in the task, whose supervisor stops the worker
             raise
 
+    def _set_env(self, values: dict[str, str]) -> None:
+        for key, value in values.items():
+            self._saved_env.setdefault(key, os.environ.get(key))
+            os.environ[key] = value
+
     def close(self) -> None:
-        self._ray.shutdown()
+        self._ray.shutdown()  # stops the processes of an instance started here, and waits for them
+        for key, value in self._saved_env.items():
+            if value is None:
+                os.environ.pop(key, None)
+            else:
+                os.environ[key] = value
+        if self._temp_dir is not None:
+            shutil.rmtree(self._temp_dir, ignore_errors=True)
 
 
 def _ray_supervise(task: dict[str, Any]) -> dict[str, Any]:
