@@ -16,14 +16,14 @@
 use std::{f64::consts::PI, time::Duration};
 
 use futures::{stream, FutureExt as _, StreamExt};
-use smol::future::FutureExt as _;
 use ros2_client::{
   action::{ActionServerQosPolicies, AsyncActionServer, ExecutingGoalHandle, GoalEndStatus},
   qos::{Durability, History},
-  ActionTypeName, Context, ContextOptions, Message, MessageTypeName, Name, Node, NodeName, NodeOptions,
-  QosProfile, ServiceMapping,
+  ActionTypeName, Context, ContextOptions, Message, MessageTypeName, Name, Node, NodeName, NodeOptions, QosProfile,
+  ServiceMapping,
 };
 use serde::{Deserialize, Serialize};
+use smol::future::FutureExt as _;
 
 // -- the ROS messages, field for field (ros2-client serializes them as CDR, in field order) ---------------------
 
@@ -219,11 +219,19 @@ fn wrap(angle: f64) -> f64 {
 /// `a` then `b`: `b` expressed in `a`'s frame, composed (map->odom with odom->base_link).
 fn compose(a: Pose2D, b: Pose2D) -> Pose2D {
   let (s, c) = a.yaw.sin_cos();
-  Pose2D { x: a.x + c * b.x - s * b.y, y: a.y + s * b.x + c * b.y, yaw: wrap(a.yaw + b.yaw) }
+  Pose2D {
+    x: a.x + c * b.x - s * b.y,
+    y: a.y + s * b.x + c * b.y,
+    yaw: wrap(a.yaw + b.yaw),
+  }
 }
 
 fn pose2d(position: Vector3, orientation: Quaternion) -> Pose2D {
-  Pose2D { x: position.x, y: position.y, yaw: orientation.yaw() }
+  Pose2D {
+    x: position.x,
+    y: position.y,
+    yaw: orientation.yaw(),
+  }
 }
 
 /// The nearest laser return within AHEAD of straight ahead (infinity when none).
@@ -252,7 +260,19 @@ fn steer(pose: Pose2D, goal: Pose2D, nearest: f64) -> (Twist, bool) {
   } else {
     (0.8 * distance).min(MAX_LINEAR) * error.cos()
   };
-  (Twist { linear: Vector3 { x: v, ..Default::default() }, angular: Vector3 { z: w, ..Default::default() } }, false)
+  (
+    Twist {
+      linear: Vector3 {
+        x: v,
+        ..Default::default()
+      },
+      angular: Vector3 {
+        z: w,
+        ..Default::default()
+      },
+    },
+    false,
+  )
 }
 
 // -- the node ------------------------------------------------------------------------------------------------
@@ -267,40 +287,67 @@ struct Goal {
 
 fn main() {
   let never_answer = std::env::args().any(|a| a == "--never-answer");
-  let domain: u16 = std::env::var("ROS_DOMAIN_ID").ok().and_then(|d| d.parse().ok()).unwrap_or(0);
+  let domain: u16 = std::env::var("ROS_DOMAIN_ID")
+    .ok()
+    .and_then(|d| d.parse().ok())
+    .unwrap_or(0);
   let context = Context::with_options(ContextOptions::new().domain_id(domain)).expect("DDS participant");
   let mut node = context
-    .new_node(NodeName::new("/", "rei_rust_nav").unwrap(), NodeOptions::new().enable_rosout(false))
+    .new_node(
+      NodeName::new("/", "rei_rust_nav").unwrap(),
+      NodeOptions::new().enable_rosout(false),
+    )
     .expect("ROS 2 node");
   let mode = if never_answer { ", never answering goals" } else { "" };
-  println!("ros2-client navigation node, pid {}, on ROS domain {domain}{mode}", std::process::id());
+  println!(
+    "ros2-client navigation node, pid {}, on ROS domain {domain}{mode}",
+    std::process::id()
+  );
   smol::block_on(run(&mut node, never_answer));
 }
 
 fn topic(node: &Node, name: &str, package: &str, kind: &str, qos: &QosProfile) -> ros2_client::dds::rustdds::Topic {
-  node.create_topic(&Name::new("/", name).unwrap(), MessageTypeName::new(package, kind), qos).unwrap()
+  node
+    .create_topic(&Name::new("/", name).unwrap(), MessageTypeName::new(package, kind), qos)
+    .unwrap()
 }
 
 async fn run(node: &mut Node, never_answer: bool) {
   // rmw_qos_profile_default (reliable, volatile, keep-last 10), as the bridge publishes; /map transient-local
   let reliable = QosProfile::publisher_default().history(History::KeepLast { depth: 10 });
-  let latched = QosProfile::publisher_default().history(History::KeepLast { depth: 1 }).durability(Durability::TransientLocal);
+  let latched = QosProfile::publisher_default()
+    .history(History::KeepLast { depth: 1 })
+    .durability(Durability::TransientLocal);
   let clock_topic = topic(node, "clock", "rosgraph_msgs", "Clock", &reliable);
   let odom_topic = topic(node, "odom", "nav_msgs", "Odometry", &reliable);
   let tf_topic = topic(node, "tf", "tf2_msgs", "TFMessage", &reliable);
   let scan_topic = topic(node, "scan", "sensor_msgs", "LaserScan", &reliable);
   let map_topic = topic(node, "map", "nav_msgs", "OccupancyGrid", &latched);
   let cmd_topic = topic(node, "cmd_vel", "geometry_msgs", "Twist", &reliable);
-  let clock_sub = node.create_subscription::<Clock>(&clock_topic, Some(reliable.clone())).unwrap();
-  let odom_sub = node.create_subscription::<Odometry>(&odom_topic, Some(reliable.clone())).unwrap();
-  let tf_sub = node.create_subscription::<TFMessage>(&tf_topic, Some(reliable.clone())).unwrap();
-  let scan_sub = node.create_subscription::<LaserScan>(&scan_topic, Some(reliable.clone())).unwrap();
-  let map_sub = node.create_subscription::<OccupancyGrid>(&map_topic, Some(latched.clone())).unwrap();
-  let cmd_vel = node.create_publisher::<Twist>(&cmd_topic, Some(reliable.clone())).unwrap();
+  let clock_sub = node
+    .create_subscription::<Clock>(&clock_topic, Some(reliable.clone()))
+    .unwrap();
+  let odom_sub = node
+    .create_subscription::<Odometry>(&odom_topic, Some(reliable.clone()))
+    .unwrap();
+  let tf_sub = node
+    .create_subscription::<TFMessage>(&tf_topic, Some(reliable.clone()))
+    .unwrap();
+  let scan_sub = node
+    .create_subscription::<LaserScan>(&scan_topic, Some(reliable.clone()))
+    .unwrap();
+  let map_sub = node
+    .create_subscription::<OccupancyGrid>(&map_topic, Some(latched.clone()))
+    .unwrap();
+  let cmd_vel = node
+    .create_publisher::<Twist>(&cmd_topic, Some(reliable.clone()))
+    .unwrap();
 
   // rcl_action's defaults: services and feedback volatile, status transient-local keep-last 1
   let service = QosProfile::publisher_default().history(History::KeepLast { depth: 10 });
-  let status = QosProfile::publisher_default().history(History::KeepLast { depth: 1 }).durability(Durability::TransientLocal);
+  let status = QosProfile::publisher_default()
+    .history(History::KeepLast { depth: 1 })
+    .durability(Durability::TransientLocal);
   let server: NavServer = AsyncActionServer::new(
     node
       .create_action_server(
@@ -332,10 +379,19 @@ async fn run(node: &mut Node, never_answer: bool) {
     })
     .fuse(),
   );
-  let mut cancels = Box::pin(stream::unfold(&server, |server| async move { Some((server.receive_cancel_request().await, server)) }).fuse());
+  let mut cancels = Box::pin(
+    stream::unfold(&server, |server| async move {
+      Some((server.receive_cancel_request().await, server))
+    })
+    .fuse(),
+  );
 
   let mut odom: Option<Pose2D> = None;
-  let mut map_to_odom = Pose2D { x: 0.0, y: 0.0, yaw: 0.0 };
+  let mut map_to_odom = Pose2D {
+    x: 0.0,
+    y: 0.0,
+    yaw: 0.0,
+  };
   let mut nearest = f64::INFINITY;
   let mut last_clock = i64::MIN;
   let mut goal: Option<Goal> = None;
@@ -357,7 +413,7 @@ async fn run(node: &mut Node, never_answer: bool) {
           command = twist;
           if reached {
             ended = Some(GoalEndStatus::Succeeded);
-          } else if steps % 10 == 0 {
+          } else if steps.is_multiple_of(10) {
             let feedback = NavigateToPoseFeedback {
               current_pose: PoseStamped::default(),
               navigation_time: RosDuration { sec: ((now - active.started) / 1_000_000_000) as i32, nanosec: 0 },
@@ -428,7 +484,10 @@ async fn run(node: &mut Node, never_answer: bool) {
       let active = goal.take().expect("an active goal");
       let _ = cmd_vel.publish(Twist::default());
       // resolves once the client has asked for the result (REI does as soon as the goal is accepted)
-      let result = NavigateToPoseResult { error_code: 0, error_msg: String::new() };
+      let result = NavigateToPoseResult {
+        error_code: 0,
+        error_msg: String::new(),
+      };
       let sent = server
         .send_result_response(active.handle, status, result)
         .map(Some)
