@@ -452,3 +452,62 @@ def test_a_vepl_file_outside_the_repository_knows_the_default_queries(
     )
     assert "robotClose" in labels(completion)
     assert language_server.stop() == 0
+
+
+#: Far deeper than VEPL's limit of 100 levels; the parser would recurse once per bracket.
+DEEP = 3_000
+DEEP_HEAD = "/* ((((( */ complexEvent c() { as "
+#: Each a file on line 2 (0-based 1) nested too deep, and the 0-based column of the token refused: the complex
+#: event's brace is level 1, so the 100th '(' is one level too many; the 201st operator is one too many, since a
+#: chain of operators is one level of the model per operator.
+TOO_DEEP = {
+    "deep.vepl": (DEEP_HEAD + "(" * DEEP + "a" + ")" * DEEP + " }\n", len(DEEP_HEAD) + 99),
+    "unbalanced.vepl": ("complexEvent c() { as " + "(" * DEEP + "\n", len("complexEvent c() { as ") + 99),
+    "chain.vepl": ("complexEvent c() { as a" + " -> a" * 20_000 + " }\n", len("complexEvent c() { as a") + 200 * 5 + 1),
+}
+#: Diagnostics of a too-deep file, measured from its didOpen once the server has checked a first file.
+DEEP_DIAGNOSTICS_S = 2.0
+
+
+def vepl_diagnostics(client: LspClient, uri: str, timeout: float) -> list[Message]:
+    published = client.wait_for(
+        lambda m: m.get("method") == "textDocument/publishDiagnostics" and m["params"]["uri"] == uri,
+        timeout,
+        f"diagnostics for {uri}",
+    )
+    return published["params"]["diagnostics"]
+
+
+def test_a_vepl_file_nested_too_deep_gets_its_diagnostic_at_once_and_the_server_keeps_checking(
+    language_server: LspClient, tmp_path: Path
+) -> None:
+    """3,000 levels of brackets, balanced or not, and a chain of 20,000 operators: one error on the first bracket or
+    operator beyond the limit within 2 s, then the next file opened is checked as always (the parser, or scoping,
+    used to overflow its stack, and the server then checked nothing more)."""
+    warm = tmp_path / "warm.vepl"  # the server checks it while starting: the VEPL checker is loaded after that
+    warm.write_text(OUTSIDE_TEXT, encoding="utf-8")
+    language_server.request("initialize", {"processId": None, "rootUri": tmp_path.as_uri(), "capabilities": {}},
+                            timeout=START_TIMEOUT_S)
+    language_server.notify("initialized", {})
+    assert vepl_diagnostics(language_server, warm.as_uri(), START_TIMEOUT_S), "no diagnostics for warm.vepl"
+
+    for name, (text, column) in TOO_DEEP.items():
+        uri = (tmp_path / name).as_uri()
+        started = time.monotonic()
+        language_server.notify("textDocument/didOpen", {"textDocument": {
+            "uri": uri, "languageId": "vepl", "version": 1, "text": "queryEvent a as robotFar found\n" + text}})
+        diagnostics = vepl_diagnostics(language_server, uri, START_TIMEOUT_S)
+        took = time.monotonic() - started
+        print(f"{name}: diagnostics {took:.3f} s after didOpen")
+        assert took < DEEP_DIAGNOSTICS_S, f"{name}: diagnostics after {took:.2f} s"
+        assert [(d["code"], d["range"]["start"], d["range"]["end"]["line"]) for d in diagnostics] == [
+            ("org.rei.vepl.tooDeep", {"line": 1, "character": column}, 1)], diagnostics
+        assert "the file is not parsed" in diagnostics[0]["message"]
+
+    path = tmp_path / "next.vepl"
+    language_server.notify("textDocument/didOpen", {"textDocument": {
+        "uri": path.as_uri(), "languageId": "vepl", "version": 1, "text": OUTSIDE_TEXT}})
+    unknown = [d for d in vepl_diagnostics(language_server, path.as_uri(), REPLY_TIMEOUT_S)
+               if d.get("code") == "org.rei.vepl.unknownQuery"]
+    assert [d["range"]["start"]["line"] for d in unknown] == [UNKNOWN_QUERY_LINE - 1], unknown
+    assert language_server.stop() == 0

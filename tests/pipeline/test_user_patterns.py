@@ -74,6 +74,22 @@ def test_invalid_patterns_fail_with_file_line_and_column_before_anything_starts(
     assert processes_mentioning(bad) == [] and processes_mentioning(out) == []
 
 
+def test_every_bad_pattern_file_is_reported_a_too_deep_one_too(run_cli, repo_root: Path, tmp_path: Path) -> None:
+    """A file nested deeper than VEPL's limit (refused before the parser recurses) hides no other file's error."""
+    bad = tmp_path / "bad"
+    bad.mkdir()
+    (bad / "a_deep.vepl").write_text("queryEvent a as robotFar found\ncomplexEvent c() { as " + "(" * 3000 + "a"
+                                     + ")" * 3000 + " }\n")
+    (bad / "b_unknown.vepl").write_text("\nqueryEvent x() as noSuchQuery found\n")
+    result = run_cli("run", repo_root / "examples" / "simple_navigation.rei", "-o", tmp_path / "out", "--no-humans",
+                     "--patterns", bad, timeout=120)
+    assert result.returncode == 2, result.stdout + result.stderr
+    column = len("complexEvent c() { as ") + 100  # the brace is level 1: the 100th '(' is level 101
+    assert f"{bad / 'a_deep.vepl'}:2:{column}: Brackets nested deeper than 100 levels" in result.stderr, result.stderr
+    assert f"{bad / 'b_unknown.vepl'}:2:19: Unknown query 'noSuchQuery'" in result.stderr, result.stderr
+    assert "Exception" not in result.stderr and "StackOverflow" not in result.stderr, result.stderr
+
+
 @pytest.mark.parametrize("text, where, message", [
     ("", ":1:1: The file declares no event, signal or rule", "emptyFile"),
     ("package org.example.patterns\nimport-queries org.example.queries.*\n", ":1:1: The file declares no event",

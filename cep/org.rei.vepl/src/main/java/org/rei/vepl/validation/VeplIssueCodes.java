@@ -22,5 +22,7 @@ public interface VeplIssueCodes {
 	String IGNORED_HEADER = PREFIX + "ignoredHeader";
 	String ACTION_BLOCK = PREFIX + "actionBlock";
 	String TOO_DEEP = PREFIX + "tooDeep";
+	/** The parser or a check failed on the file (a bug): the file gets this error instead of a crash. */
+	String UNREADABLE = PREFIX + "unreadable";
 	String TRANSITION_STEP = PREFIX + "transitionStep";
 }

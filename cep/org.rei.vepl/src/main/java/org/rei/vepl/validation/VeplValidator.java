@@ -12,9 +12,17 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 
+import org.eclipse.emf.common.util.URI;
+import org.eclipse.emf.ecore.EClass;
 import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.resource.Resource;
 import org.eclipse.emf.ecore.util.EcoreUtil;
+import org.eclipse.xtext.naming.IQualifiedNameProvider;
+import org.eclipse.xtext.naming.QualifiedName;
 import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
+import org.eclipse.xtext.resource.IEObjectDescription;
+import org.eclipse.xtext.resource.IResourceDescriptions;
+import org.eclipse.xtext.resource.impl.ResourceDescriptionsProvider;
 import org.eclipse.xtext.validation.Check;
 import org.rei.vepl.compiler.Alternatives;
 import org.rei.vepl.runtime.MissionEvent;
@@ -35,8 +43,16 @@ import org.rei.vepl.vepl.Signal;
 import org.rei.vepl.vepl.VeplPackage.Literals;
 import org.rei.vepl.vepl.Window;
 
+import com.google.inject.Inject;
+
 /** The rules a pattern file must follow before it is compiled; one check per rule, codes in {@link VeplIssueCodes}. */
 public class VeplValidator extends AbstractVeplValidator {
+
+	@Inject
+	private ResourceDescriptionsProvider descriptions;
+
+	@Inject
+	private IQualifiedNameProvider names;
 
 	/** The events of the mission topic (docs/protocol.md). */
 	public static final List<String> MISSION_EVENTS = MissionEvent.KINDS;
@@ -57,11 +73,47 @@ public class VeplValidator extends AbstractVeplValidator {
 		}
 	}
 
+	/**
+	 * Names are global over the files loaded together: every file the loader loads (the defaults and a
+	 * {@code --patterns} folder), in an editor the .vepl files of the same folder (what {@code --patterns DIR}
+	 * loads). The other files are those the scope sees: the loader's resource set, the language server's index.
+	 */
 	@Check
-	public void checkDeclaresSomething(PatternFile file) {
-		if (file.getElements().isEmpty()) {
-			error("The file declares no event, signal or rule (queryEvent, atomicEvent, complexEvent, signal, rule)",
-					file, null, VeplIssueCodes.EMPTY_FILE);
+	public void checkUniqueNamesAcrossFiles(PatternFile file) {
+		Resource own = file.eResource();
+		IResourceDescriptions index = descriptions.getResourceDescriptions(own);
+		for (Element e : file.getElements()) {
+			QualifiedName name = e.getName() == null ? null : names.getFullyQualifiedName(e);
+			if (name == null) {
+				continue;
+			}
+			EClass kind = e instanceof Event ? Literals.EVENT : e instanceof Signal ? Literals.SIGNAL : Literals.RULE;
+			for (IEObjectDescription other : index.getExportedObjects(kind, name, false)) {
+				URI where = other.getEObjectURI().trimFragment();
+				if (!where.equals(own.getURI()) && loadedTogether(own.getURI(), where)) {
+					error("Duplicate name '" + e.getName() + "': " + kind.getName().toLowerCase() + " " + e.getName()
+							+ " is also declared in " + declaredAt(own, other)
+							+ " (names are global over the files loaded together)", e, Literals.ELEMENT__NAME,
+							VeplIssueCodes.DUPLICATE_NAME);
+					break;
+				}
+			}
+		}
+	}
+
+	/** Files on disk when they share a folder; the loader's sources (not files) always. */
+	private static boolean loadedTogether(URI one, URI other) {
+		return !(one.isFile() && other.isFile()) || one.trimSegments(1).equals(other.trimSegments(1));
+	}
+
+	/** "NAME.vepl on line N", the line when the other file can be read. */
+	private static String declaredAt(Resource own, IEObjectDescription other) {
+		String file = other.getEObjectURI().trimFragment().lastSegment();
+		try {
+			EObject o = own.getResourceSet() == null ? null : own.getResourceSet().getEObject(other.getEObjectURI(), true);
+			return o == null ? file : file + " on line " + line(o);
+		} catch (RuntimeException e) { // the other file went away: its name is what the index knows
+			return file;
 		}
 	}
 

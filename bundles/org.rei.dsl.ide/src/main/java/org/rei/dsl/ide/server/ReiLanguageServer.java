@@ -13,6 +13,10 @@ import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.stream.Stream;
 
+import org.apache.log4j.ConsoleAppender;
+import org.apache.log4j.Level;
+import org.apache.log4j.Logger;
+import org.apache.log4j.PatternLayout;
 import org.eclipse.lsp4j.InitializeParams;
 import org.eclipse.lsp4j.InitializeResult;
 import org.eclipse.lsp4j.WorkspaceFolder;
@@ -26,6 +30,15 @@ import org.eclipse.xtext.ide.server.LanguageServerImpl;
  * catalogue imports resolved relative to themselves.
  */
 public class ReiLanguageServer extends LanguageServerImpl {
+
+	static {
+		// Xtext's log4j.properties logs to stdout, which the launcher silences (stdout carries the protocol):
+		// warnings and errors (a file the server could not check among them) go to stderr, the server log of editors
+		ConsoleAppender stderr = new ConsoleAppender(new PatternLayout("%d{ISO8601} %-5p %c{1} - %m%n"),
+				ConsoleAppender.SYSTEM_ERR);
+		stderr.setThreshold(Level.WARN);
+		Logger.getRootLogger().addAppender(stderr);
+	}
 
 	@Override
 	@SuppressWarnings("deprecation") // rootPath: old clients still send only it, and Xtext reads it

@@ -107,6 +107,29 @@ class VeplLanguageServerTest extends AbstractLanguageServerTest {
 	}
 
 	@Test
+	void aFileNestedTooDeepGetsOneErrorOnTheFirstBracketTooManyAndTheNextFileIsStillChecked() {
+		String deep = "queryEvent a as robotFar found\n/* ((((( */ complexEvent c() { as " + "(".repeat(3_000) + "a"
+				+ ")".repeat(3_000) + " }\n";
+		// the brace is level 1: the 100th '(' is one too many, 0-based column 12 + 22 + 99
+		Assertions.assertEquals(List.of("[1:133-1:134] org.rei.vepl.tooDeep Brackets nested deeper than 100 levels: "
+				+ "the file is not parsed (no pattern needs that many)"), diagnostics(openFile("deep.vepl", deep)));
+		String uri = openFile("next.vepl", "queryEvent nearFound as robotNear found\n");
+		Assertions.assertEquals(1, diagnostics(uri).size(), () -> diagnostics(uri).toString());
+		assertTrue(diagnostics(uri).get(0).startsWith("[0:24-0:33] org.rei.vepl.unknownQuery"), diagnostics(uri)::toString);
+	}
+
+	@Test
+	void aFileThatDeclaresNothingAndANameTwoFilesOfAFolderDeclareAreErrors() {
+		writeFile("patterns/one.vepl", "signal S\nsignal T\n"); // before the server starts: in its index
+		writeFile("elsewhere/three.vepl", "signal T\n"); // another folder: not loaded together with patterns/
+		Assertions.assertEquals(List.of("[0:0-0:0] org.rei.vepl.emptyFile The file declares no event, signal or rule "
+				+ "(queryEvent, atomicEvent, complexEvent, signal, rule)"), diagnostics(openFile("empty.vepl", "// nothing\n")));
+		String uri = openFile("patterns/two.vepl", "signal T\n");
+		Assertions.assertEquals(List.of("[0:7-0:8] org.rei.vepl.duplicateName Duplicate name 'T': signal T is also "
+				+ "declared in one.vepl on line 2 (names are global over the files loaded together)"), diagnostics(uri));
+	}
+
+	@Test
 	void aQueryIsCompletedWithTheQueriesTheValidatorAccepts() throws Exception {
 		writeQueries();
 		String text = "queryEvent b as ro found\nqueryEvent a as \n";

@@ -1,0 +1,138 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.vepl.parser;
+
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.Map;
+import java.util.Set;
+
+import org.antlr.runtime.CharStream;
+import org.antlr.runtime.CommonToken;
+import org.antlr.runtime.Token;
+import org.antlr.runtime.TokenSource;
+import org.apache.log4j.Logger;
+import org.eclipse.xtext.nodemodel.ICompositeNode;
+import org.eclipse.xtext.nodemodel.SyntaxErrorMessage;
+import org.eclipse.xtext.nodemodel.impl.NodeModelBuilder;
+import org.eclipse.xtext.parser.IParseResult;
+import org.eclipse.xtext.parser.ParseResult;
+import org.rei.vepl.parser.antlr.VeplParser;
+import org.rei.vepl.validation.VeplIssueCodes;
+
+/**
+ * VEPL's parser, which never throws and never recurses without bound. ANTLR's parser descends once per bracket, so
+ * brackets nested deeper than {@link #MAX_NESTING} are refused from the tokens, before the parser sees them: one
+ * syntax error ({@link VeplIssueCodes#TOO_DEEP}) on the first bracket too many. A chain of operators is a loop in
+ * the parser but one level of the model per operator ({@code a -> b -> c} is {@code (a -> b) -> c}), and scoping
+ * and validation recurse along the model: more than {@link #MAX_OPERATORS} in one declaration are refused the same
+ * way. The lexer is a loop, and it knows comments and strings, so a bracket in them does not count. Whatever else
+ * fails while parsing is logged and becomes a syntax error of the file too ({@link VeplIssueCodes#UNREADABLE}), so
+ * one file can stop neither a build of the language server nor the loader's report of the other files.
+ */
+public class VeplGuardedParser extends VeplParser {
+
+	/** Brackets nested deeper than any pattern needs; the parser recurses once per level. */
+	public static final int MAX_NESTING = 100;
+
+	/** Operators ({@code ->}, {@code AND}, {@code OR}) in one declaration, far more than any pattern needs. */
+	public static final int MAX_OPERATORS = 200;
+
+	private static final Logger LOG = Logger.getLogger(VeplGuardedParser.class);
+
+	private Set<Integer> opening;
+	private Set<Integer> closing;
+	private Set<Integer> operator;
+	private Set<Integer> declaring;
+
+	@Override
+	protected IParseResult doParse(String ruleName, CharStream in, NodeModelBuilder builder, int initialLookAhead) {
+		int start = in.mark();
+		IParseResult refusal = refusal(createLexer(in), in);
+		in.rewind(start);
+		if (refusal != null) {
+			return refusal;
+		}
+		try {
+			return super.doParse(ruleName, in, builder, initialLookAhead);
+		} catch (RuntimeException | StackOverflowError e) {
+			LOG.error("VEPL parser failed; the file gets a syntax error instead", e);
+			return refused(in, null, "The file could not be parsed (" + e + "): please report it with the file",
+					VeplIssueCodes.UNREADABLE);
+		}
+	}
+
+	/** Every edit parses the whole file: a partial reparse of one bracket's content would not see its depth. */
+	@Override
+	protected boolean isReparseSupported() {
+		return false;
+	}
+
+	/** The refusal of the first bracket beyond {@link #MAX_NESTING} or operator beyond {@link #MAX_OPERATORS}. */
+	private IParseResult refusal(TokenSource lexer, CharStream in) {
+		tokenTypes();
+		int depth = 0;
+		int operators = 0;
+		for (Token t = lexer.nextToken(); t.getType() != Token.EOF; t = lexer.nextToken()) {
+			int type = t.getType();
+			if (opening.contains(type) && ++depth > MAX_NESTING) {
+				return refused(in, (CommonToken) t, "Brackets nested deeper than " + MAX_NESTING
+						+ " levels: the file is not parsed (no pattern needs that many)", VeplIssueCodes.TOO_DEEP);
+			} else if (closing.contains(type) && depth > 0) { // a stray closing bracket is the parser's to report
+				depth--;
+			} else if (declaring.contains(type)) {
+				operators = 0;
+			} else if (operator.contains(type) && ++operators > MAX_OPERATORS) {
+				return refused(in, (CommonToken) t, "More than " + MAX_OPERATORS + " operators (->, AND, OR) in one "
+						+ "declaration: the file is not parsed (no pattern needs that many)", VeplIssueCodes.TOO_DEEP);
+			}
+		}
+		return null;
+	}
+
+	/** The token types of the brackets, operators and declaration keywords, from the grammar's token definitions. */
+	private synchronized void tokenTypes() {
+		if (opening != null) {
+			return;
+		}
+		Map<String, Set<Integer>> byKind = new HashMap<>();
+		for (Map.Entry<Integer, String> e : getTokenDefProvider().getTokenDefMap().entrySet()) {
+			String kind = switch (e.getValue()) {
+			case "'('", "'{'", "'['" -> "opening";
+			case "')'", "'}'", "']'" -> "closing";
+			case "'->'", "'AND'", "'OR'" -> "operator";
+			case "'queryEvent'", "'atomicEvent'", "'complexEvent'", "'signal'", "'rule'" -> "declaring";
+			default -> "";
+			};
+			byKind.computeIfAbsent(kind, k -> new HashSet<>()).add(e.getKey());
+		}
+		closing = Set.copyOf(byKind.get("closing"));
+		operator = Set.copyOf(byKind.get("operator"));
+		declaring = Set.copyOf(byKind.get("declaring"));
+		opening = Set.copyOf(byKind.get("opening"));
+	}
+
+	/**
+	 * A parse result without a model whose node model is the text with one syntax error: on {@code at}, else on
+	 * the first character. Nothing else of the file is checked until the error is gone.
+	 */
+	private IParseResult refused(CharStream in, CommonToken at, String message, String code) {
+		String text = in.size() == 0 ? "" : in.substring(0, in.size() - 1);
+		int from = at == null ? 0 : at.getStartIndex();
+		int to = at == null ? Math.min(1, text.length()) : at.getStopIndex() + 1;
+		NodeModelBuilder builder = createNodeModelBuilder();
+		ICompositeNode root = builder.newRootNode(text);
+		var hidden = getGrammarAccess().getWSRule();
+		if (from > 0) {
+			builder.newLeafNode(0, from, hidden, true, null, root);
+		}
+		builder.newLeafNode(from, to - from, getGrammarAccess().getANY_OTHERRule(), false,
+				new SyntaxErrorMessage(message, code), root);
+		if (to < text.length()) {
+			builder.newLeafNode(to, text.length() - to, hidden, true, null, root);
+		}
+		return new ParseResult(null, root, true);
+	}
+}
