@@ -89,7 +89,7 @@ def main() -> int:
                         line.append(f"{sampler} {found['distinct']} distinct, first at {found['first'] or '-'}, "
                                     f"{found['evaluations']} evaluations in {found['wall']:.0f} s;")
                     print(" ".join(line), flush=True)
-        campaign = _campaign(folder, args.budget, args.workers)
+        campaign = _campaign(folder, args.workers)
     finally:
         if args.keep is None:
             shutil.rmtree(folder, ignore_errors=True)
@@ -119,18 +119,26 @@ def _search(spec: Path, out: Path, sampler: str, budget: int, workers: int) -> d
             "evaluations": counts["simulated"], "wall": wall}
 
 
-def _campaign(folder: Path, runs: int, workers: int) -> float:
-    """Runs per hour of a campaign of the crossing case, repeated ``runs`` times, on the same workers."""
+def _campaign(folder: Path, workers: int) -> float:
+    """Runs per hour of a campaign of the cases the random searches simulated (comparable rooms: the same
+    candidates; a campaign gives each run the spec's seed, so the runs are alike, not identical), same workers."""
+    cases = sorted(folder.glob("*-random/candidates/*.rei"))
+    (folder / "throughput").mkdir(exist_ok=True)
+    names = []
+    for i, case in enumerate(cases):
+        names.append(f"throughput/c{i:04d}.rei")
+        shutil.copy(case, folder / names[-1])
     spec = folder / "throughput.yaml"
-    spec.write_text(f"name: throughput\ntimeout: 300\ngroups:\n  - name: crossing\n    cases: [crossing.rei]\n"
-                    f"    repetitions: {runs}\n", encoding="utf-8")
+    spec.write_text(f"name: throughput\ntimeout: 300\ngroups:\n  - name: candidates\n    cases: [{', '.join(names)}]\n",
+                    encoding="utf-8")
     started = time.perf_counter()
     subprocess.run([sys.executable, "-m", "rei.cli", "campaign", str(spec), "-o", str(folder / "campaign"),
                     "--workers", str(workers)], check=False, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                    env=_env())
     wall = time.perf_counter() - started
-    per_hour = 3600 * runs / wall
-    print(f"campaign: {runs} runs of the crossing case in {wall:.0f} s, {per_hour:.0f} runs per hour", flush=True)
+    per_hour = 3600 * len(cases) / wall
+    print(f"campaign: the {len(cases)} cases the random searches ran, in {wall:.0f} s, {per_hour:.0f} runs per hour",
+          flush=True)
     return per_hour
 
 

@@ -45,7 +45,7 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from rei.campaign.spec import SpecError
-    from rei.search.run import run_search
+    from rei.search.run import PoolError, run_search
     from rei.search.spec import load_search_spec
 
     workers = args.workers or os.cpu_count() or 1
@@ -61,7 +61,7 @@ def run(args: argparse.Namespace) -> int:
     try:
         result = run_search(spec, args.output, workers=workers, ray=args.ray, stop=stop,
                             shrink_failures=not args.no_shrink)
-    except SpecError as error:
+    except (SpecError, PoolError) as error:
         raise CommandError(str(error)) from None
     counts = result["counts"]
     print(f"{counts['simulated']} evaluations ({counts['errors']} in ERROR), {counts['invalid']} invalid and "

@@ -19,10 +19,19 @@ from rei.search.study import Search, open_study
 SHRUNK = "shrunk.json"
 
 
+class PoolError(RuntimeError):
+    """The runs have nowhere to go (Ray is missing or can not be reached)."""
+
+
 def make_pool(workers: int, ray: str | None, out: Path, stop: threading.Event) -> Pool:
-    if ray:
+    if not ray:
+        return LocalPool(workers, out / "runs", stop)
+    try:
         return RayPool(ray, workers if ray == "local" else None, stop)
-    return LocalPool(workers, out / "runs", stop)
+    except ImportError:
+        raise PoolError("--ray needs Ray: pip install 'rei[campaign-ray]'") from None
+    except Exception as error:  # noqa: BLE001 - any failure to reach the cluster is the user's to fix
+        raise PoolError(f"cannot connect to Ray at {ray}: {error}") from None
 
 
 def run_search(spec: SearchSpec, out: Path, *, workers: int = 1, ray: str | None = None,
@@ -32,7 +41,10 @@ def run_search(spec: SearchSpec, out: Path, *, workers: int = 1, ray: str | None
     out = out.resolve()
     out.mkdir(parents=True, exist_ok=True)
     stop = stop or threading.Event()
-    pool = _LazyPool(lambda: make_pool(workers, ray, out, stop), workers, "ray" if ray else "local")
+    # a cluster is reached before anything else, so a wrong address fails at once; the local pool starts with the
+    # first run (a finished search that only rewrites its outputs starts no JVM)
+    pool: Pool = make_pool(workers, ray, out, stop) if ray else _LazyPool(
+        lambda: make_pool(workers, None, out, stop), workers, "local")
     search = Search(spec, out, pool, stop, log)
     try:
         progress = search.run()
@@ -43,6 +55,7 @@ def run_search(spec: SearchSpec, out: Path, *, workers: int = 1, ray: str | None
         if spec.sampler != "random" and _has_study(out, "random"):
             baseline = records(open_study(out, spec.with_options(sampler="random")), out)
         document = write_outputs(spec, out, search.study, shrunk, baseline)
+        _run_reports(document, log)
         _report(spec, out, document, log)
     finally:
         search.close()
@@ -70,6 +83,22 @@ def _shrink_all(search: Search, shrunk: dict[str, Any], log: Callable[[str], Non
         log(f"  shrunk: {result.kept} of {result.steps} steps kept, removed {', '.join(result.removed) or 'nothing'}"
             f": {result.case}")
     return shrunk
+
+
+def _run_reports(document: dict[str, Any], log: Callable[[str], None]) -> None:
+    """The run report of each distinct failure's first run (the others' are not written: a run report costs
+    about as much as the evaluator, and a passing run's is rarely read; `rei report OUT/runs/KEY` writes one)."""
+    from rei.report import write_report
+
+    for failure in document["failures"]:
+        run_dir = Path(failure["run"])
+        if (run_dir / "report.html").is_file():
+            continue
+        try:
+            case_dir = Path(json.loads((run_dir / "task.json").read_text(encoding="utf-8"))["case_dir"])
+            write_report(run_dir, case_dir)
+        except (OSError, ValueError, KeyError) as error:
+            log(f"search: no report for {run_dir.name}: {error}")
 
 
 def _report(spec: SearchSpec, out: Path, document: dict[str, Any], log: Callable[[str], None]) -> None:

@@ -5,7 +5,8 @@
     OUT/study.journal           Optuna's journal (one study per sampler): a stopped search resumes from it
     OUT/candidates/<key>.rei    every valid candidate (its seed and fault in its first line)
     OUT/cases/<key>/            its generated case
-    OUT/runs/<key>/             its run (the campaign's run folder: summary.json, events.csv, streams/, ...)
+    OUT/runs/<key>/             its run (the campaign's run folder: summary.json, events.csv, streams/, ...; the
+                                report.html of the runs that show a distinct failure is written at the end)
 
 Evaluations are named ``<sampler>-<trial number>`` (``tpe-0003``). Budget counts simulated evaluations (those in
 ERROR too); candidates that are not valid are told to the study as infeasible (``constraints``), counted apart and never
@@ -189,7 +190,7 @@ class Search:
         return RunTask(key=key, group="search", case=key, variant=spec.sampler, repetition=0,
                        seed=candidate.edit.seed, humans=spec.humans, fault=candidate.edit.fault,
                        controller=spec.controller, sut=spec.sut.to_dict() if spec.sut else None, mode="replay",
-                       timeout=spec.timeout, report=True, case_dir=str(case_dir),
+                       timeout=spec.timeout, report=False, case_dir=str(case_dir),
                        run_dir=str(run_dir or self.out / "runs" / key))
 
     def _invalid(self, trial: optuna.Trial, status: str, problems: tuple[str, ...]) -> None:
