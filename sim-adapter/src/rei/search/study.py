@@ -88,6 +88,10 @@ class SearchProgress:
     interrupted: bool = False
 
 
+#: A candidate ready to run: its trial, the candidate, its run.
+Prepared = tuple[optuna.Trial, Candidate, RunTask]
+
+
 class _Interrupted(Exception):
     pass
 
@@ -148,17 +152,29 @@ class Search:
                  f"{self.pool.name} worker(s)")
 
     def _loop(self) -> None:
-        running: dict[Future[Outcome], tuple[optuna.Trial, Candidate, RunTask]] = {}
+        """Keeps every worker busy and one candidate ready beside them: the next one is asked, edited and generated
+        while the runs go on, so a worker that ends gets it at once (TPE's constant liar treats the ready one as
+        running)."""
+        running: dict[Future[Outcome], Prepared] = {}
+        ready: Prepared | None = None
         tries = 0
         cap = MAX_TRIES_PER_EVALUATION * self.spec.budget
+
+        def wanted() -> bool:  # one more run (running, or ready beside them) fits the budget
+            return self.progress.simulated + len(running) < self.spec.budget and tries < cap and not self.stop.is_set()
+
         while True:
-            while (len(running) < self.pool.workers and self.progress.simulated + len(running) < self.spec.budget
-                   and tries < cap and not self.stop.is_set()):
+            while len(running) < self.pool.workers and (ready is not None or wanted()):
+                if ready is None:
+                    tries += 1
+                    ready = self._prepare()
+                    if ready is None:
+                        continue
+                running[self.pool.submit(ready[2])] = ready
+                ready = None
+            while ready is None and running and wanted():
                 tries += 1
-                started = self._start()
-                if started is not None:
-                    future, trial, candidate, task = started
-                    running[future] = (trial, candidate, task)
+                ready = self._prepare()
             if not running:
                 if tries >= cap and self.progress.simulated < self.spec.budget:
                     self.log(f"search: stopped after {tries} candidates, most of them not valid: widen the domains")
@@ -168,7 +184,8 @@ class Search:
                 trial, candidate, task = running.pop(future)
                 self._finish(trial, candidate, task, future.result())
 
-    def _start(self) -> tuple[Future[Outcome], optuna.Trial, Candidate, RunTask] | None:
+    def _prepare(self) -> Prepared | None:
+        """The next candidate, generated and ready to run; None when it is not valid (told to the study)."""
         trial = self.study.ask(self.space.distributions)
         key = self.key(trial.number)
         candidate = self.maker.make(key, self.space.edit(trial.params))
@@ -183,7 +200,7 @@ class Search:
         for name, value in (("key", key), ("seed", candidate.edit.seed), ("fault", candidate.edit.fault),
                             ("case", str(self.out / "candidates" / f"{key}.rei"))):
             trial.set_user_attr(name, value)
-        return self.pool.submit(task), trial, candidate, task
+        return trial, candidate, task
 
     def task(self, key: str, candidate: Candidate, case_dir: Path, run_dir: Path | None = None) -> RunTask:
         spec = self.spec
