@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 from pathlib import Path
 
 import numpy as np
@@ -13,6 +14,7 @@ from rei.maps import (
     UNKNOWN,
     CellRect,
     OccupancyMap,
+    box_of,
     floor_blocks,
     load_map,
     merge_rectangles,
@@ -59,6 +61,11 @@ def test_merge_picks_the_direction_with_fewer_rectangles() -> None:
     for mask in (comb, comb.T):
         rects = merge_rectangles(mask)
         assert np.array_equal(_cover(rects, mask.shape), mask.astype(np.int64)) and len(rects) == 4
+
+
+def test_box_of_places_cells_from_the_origin() -> None:
+    occupancy = dataclasses.replace(_map(np.zeros((4, 4)), resolution=0.5), origin=(-1.0, 2.0, 0.0))
+    assert box_of(CellRect(col=1, row=2, cols=2, rows=1), occupancy) == (0.0, 3.25, 1.0, 0.5)
 
 
 def test_unknown_is_an_obstacle_unless_free() -> None:

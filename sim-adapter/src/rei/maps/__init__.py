@@ -1,13 +1,13 @@
 # SPDX-License-Identifier: EPL-2.0
 """Occupancy maps (ROS ``map_server`` format) as rooms: ``load_map`` reads the YAML and its image into the grid
-``map_server`` publishes; ``merge_rectangles`` and ``floor_blocks`` turn it into obstacles and free floors. Above
-``rei.geometry`` only; nothing else in the package is imported here.
+``map_server`` publishes; ``merge_rectangles`` and ``floor_blocks`` turn it into obstacles and free floors. A bottom
+layer of the package, beside ``rei.geometry``: it imports nothing else of ``rei``.
 """
 
 from __future__ import annotations
 
-from rei.maps.blocks import CellRect, FloorBlocks, floor_blocks, merge_rectangles, obstacle_mask
+from rei.maps.blocks import CellRect, FloorBlocks, box_of, floor_blocks, merge_rectangles, obstacle_mask
 from rei.maps.occupancy import FREE, MODES, OCCUPIED, UNKNOWN, MapError, OccupancyMap, load_map
 
 __all__ = ["FREE", "MODES", "OCCUPIED", "UNKNOWN", "CellRect", "FloorBlocks", "MapError", "OccupancyMap",
-           "floor_blocks", "load_map", "merge_rectangles", "obstacle_mask"]
+           "box_of", "floor_blocks", "load_map", "merge_rectangles", "obstacle_mask"]

@@ -28,6 +28,15 @@ class CellRect:
     rows: int
 
 
+def box_of(rect: CellRect, occupancy: OccupancyMap) -> tuple[float, float, float, float]:
+    """A rectangle in world metres: ``(centre_x, centre_y, size_x, size_y)``; cell ``(0, 0)``'s corner is the map's
+    origin (an axis-aligned map: the loader refuses a yaw)."""
+    res = occupancy.resolution
+    ox, oy, _ = occupancy.origin
+    return (ox + (rect.col + rect.cols / 2) * res, oy + (rect.row + rect.rows / 2) * res,
+            rect.cols * res, rect.rows * res)
+
+
 def obstacle_mask(occupancy: OccupancyMap, unknown_free: bool = False) -> np.ndarray:
     """``(height, width)`` booleans: the cells a robot may not enter (row 0 at the bottom)."""
     grid = occupancy.grid
