@@ -123,16 +123,18 @@ public class VeplGuardedParser extends VeplParser {
 		int from = at == null ? 0 : at.getStartIndex();
 		int to = at == null ? Math.min(1, text.length()) : at.getStopIndex() + 1;
 		NodeModelBuilder builder = createNodeModelBuilder();
-		ICompositeNode root = builder.newRootNode(text);
+		// under the entry rule, as the parser builds it: editor services (completion) look for it at the root
+		ICompositeNode file = builder.newCompositeNode(getGrammarAccess().getPatternFileRule(), 0,
+				builder.newRootNode(text));
 		var hidden = getGrammarAccess().getWSRule();
 		if (from > 0) {
-			builder.newLeafNode(0, from, hidden, true, null, root);
+			builder.newLeafNode(0, from, hidden, true, null, file);
 		}
 		builder.newLeafNode(from, to - from, getGrammarAccess().getANY_OTHERRule(), false,
-				new SyntaxErrorMessage(message, code), root);
+				new SyntaxErrorMessage(message, code), file);
 		if (to < text.length()) {
-			builder.newLeafNode(to, text.length() - to, hidden, true, null, root);
+			builder.newLeafNode(to, text.length() - to, hidden, true, null, file);
 		}
-		return new ParseResult(null, root, true);
+		return new ParseResult(null, builder.compressAndReturnParent(file), true);
 	}
 }

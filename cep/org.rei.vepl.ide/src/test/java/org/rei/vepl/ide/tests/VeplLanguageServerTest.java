@@ -107,12 +107,16 @@ class VeplLanguageServerTest extends AbstractLanguageServerTest {
 	}
 
 	@Test
-	void aFileNestedTooDeepGetsOneErrorOnTheFirstBracketTooManyAndTheNextFileIsStillChecked() {
+	void aFileNestedTooDeepGetsOneErrorOnTheFirstBracketTooManyAndTheNextFileIsStillChecked() throws Exception {
 		String deep = "queryEvent a as robotFar found\n/* ((((( */ complexEvent c() { as " + "(".repeat(3_000) + "a"
 				+ ")".repeat(3_000) + " }\n";
+		String deepUri = openFile("deep.vepl", deep);
 		// the brace is level 1: the 100th '(' is one too many, 0-based column 12 + 22 + 99
 		Assertions.assertEquals(List.of("[1:133-1:134] org.rei.vepl.tooDeep Brackets nested deeper than 100 levels: "
-				+ "the file is not parsed (no pattern needs that many)"), diagnostics(openFile("deep.vepl", deep)));
+				+ "the file is not parsed (no pattern needs that many)"), diagnostics(deepUri));
+		// completion answers: the refused file's node model has the entry rule at its root, as editor services
+		// expect (without it the request failed with "No Root Parser Rule found")
+		assertFalse(labels(deepUri, new Position(1, 133)).isEmpty());
 		String uri = openFile("next.vepl", "queryEvent nearFound as robotNear found\n");
 		Assertions.assertEquals(1, diagnostics(uri).size(), () -> diagnostics(uri).toString());
 		assertTrue(diagnostics(uri).get(0).startsWith("[0:24-0:33] org.rei.vepl.unknownQuery"), diagnostics(uri)::toString);
