@@ -14,19 +14,22 @@ Nav2's ``map_io.cpp`` (``loadMapYaml``, ``loadMapFromFile``):
   thresholds become ``rint((occ - free_thresh) / (occupied_thresh - free_thresh) * 100)``;
 - ``raw``: ``round(shade * 255)`` when it is within 0..100, else -1 (``negate`` does not apply).
 
+PGM (``P2``, ``P5``, maxval up to 65535) is read here, PNG (every colour type and bit depth) by pypng.
+
 Every error is a ``MapError`` naming the YAML file, the line and column of the field concerned and the field.
 """
 
 from __future__ import annotations
 
 import math
+import zlib
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import numpy as np
+import png
 import yaml
-from PIL import Image, UnidentifiedImageError
 
 MODES = ("trinary", "scale", "raw")
 FREE, OCCUPIED, UNKNOWN = 0, 100, -1
@@ -192,47 +195,44 @@ def _cells(pixels: _Pixels, mode: str, negate: bool, occupied_thresh: float, fre
 def _read_image(image: Path, fields: _Fields) -> _Pixels:
     try:
         with image.open("rb") as stream:
-            head = stream.read(2)
+            head = stream.read(8)
     except OSError as error:
         raise fields.error("image", f"cannot read the image {image}: {error.strerror or error}") from None
-    if head in (b"P2", b"P5"):
+    if head[:2] in (b"P2", b"P5"):
         return _read_pgm(image, fields)
+    if head == PNG_SIGNATURE:
+        return _read_png(image, fields)
+    raise fields.error("image", f"cannot read the image {image}: not a PGM (P2, P5) or PNG file")
+
+
+PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
+
+
+def _read_png(image: Path, fields: _Fields) -> _Pixels:
+    """A PNG's samples as stored (pypng's ``read``: no gamma or significant-bits rescaling, which ImageMagick
+    does not apply either), the palette and a ``tRNS`` transparent colour resolved as ImageMagick reads them."""
     try:
-        with Image.open(image) as picture:
-            picture.load()
-            return _pixels_of(picture, image, fields)
-    except (UnidentifiedImageError, OSError, ValueError) as error:
+        width, height, rows, info = png.Reader(filename=str(image)).read()
+        samples = np.vstack([np.asarray(row, dtype=np.int64) for row in rows]) if height else np.zeros((0, 0))
+    except (png.Error, OSError, ValueError, zlib.error) as error:
         raise fields.error("image", f"cannot read the image {image}: {error}") from None
-
-
-def _pixels_of(picture: Image.Image, image: Path, fields: _Fields) -> _Pixels:
-    mode = picture.mode
-    if mode == "P":  # a palette: its colours (and transparency) are what ImageMagick would see
-        picture = picture.convert("RGBA" if "transparency" in picture.info else "RGB")
-        mode = picture.mode
-    data = np.asarray(picture)
-    if mode == "L":
-        return _Pixels(data / 255.0, None)
-    if mode == "LA":
-        return _Pixels(data[..., 0] / 255.0, data[..., 1] / 255.0)
-    if mode in ("I;16", "I;16B", "I;16L", "I"):  # 16-bit grey (PNG)
-        if data.size and (data.min() < 0 or data.max() > 65535):
-            raise fields.error("image", f"{image}: samples beyond 16 bits: expected 8 or 16 bits per sample")
-        return _Pixels(data.astype(np.float64) / 65535.0, None)
-    if mode in ("RGB", "RGBA"):
-        shade = data[..., :3].astype(np.float64).sum(axis=2) / 3.0 / 255.0
-        return _Pixels(shade, data[..., 3] / 255.0 if mode == "RGBA" else None)
-    raise fields.error("image", f"{image}: image mode {mode} (depth {_depth(mode)}): expected 8- or 16-bit grey, "
-                                "grey with alpha, RGB or RGBA")
-
-
-def _depth(mode: str) -> str:
-    return {"1": "1 bit", "F": "32-bit float", "I": "32-bit integer"}.get(mode, "unsupported")
+    planes, full = int(info["planes"]), float(2 ** int(info["bitdepth"]) - 1)
+    samples = samples.reshape(height, width, planes)
+    if "palette" in info:
+        palette = np.asarray(info["palette"], dtype=np.int64)
+        samples, full = palette[samples[..., 0]], 255.0
+        planes = palette.shape[1]
+    elif "transparent" in info:  # one colour (or grey) stands for transparent: alpha 0 there, opaque elsewhere
+        key = np.asarray(info["transparent"], dtype=np.int64).reshape(-1)
+        alpha = np.where((samples == key).all(axis=2), 0, int(full))[..., None]
+        samples, planes = np.concatenate([samples, alpha], axis=2), planes + 1
+    colour = samples[..., :1] if planes in (1, 2) else samples[..., :3]
+    shade = colour.mean(axis=2) / full
+    return _Pixels(shade, samples[..., -1] / full if planes in (2, 4) else None)
 
 
 def _read_pgm(image: Path, fields: _Fields) -> _Pixels:
-    """A PGM read by hand: Pillow rescales a maxval other than 255 or 65535 to 8 or 16 bits, which moves samples
-    across the thresholds; map_server's shade is ``sample / maxval``."""
+    """A PGM: three header numbers and the samples, whose shade is ``sample / maxval`` as map_server reads it."""
     data = image.read_bytes()
     tokens: list[bytes] = []
     at = 2
