@@ -10,6 +10,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from rei.geometry import Pose2D
+from rei.maps import merge_rectangles
 from rei.sut.api import StaticMap
 
 #: Cells of the occupancy grid (m) and the margin around the floors, where the walls stand (m).
@@ -63,30 +64,17 @@ def rasterize(static_map: StaticMap, resolution: float = MAP_RESOLUTION, margin:
 
 def static_map_of_grid(data: np.ndarray | list[int], width: int, height: int, resolution: float, origin: Pose2D,
                        robot_size: tuple[float, float], occupied: int = 65) -> StaticMap:
-    """An occupancy grid's cells at or above ``occupied`` as rectangles (unknown cells, -1, count as free): runs of
-    cells along a row, merged with identical runs in the rows above (a wall becomes one rectangle, not one per
-    cell). ``bounds`` is the grid's extent; ``origin`` its lower left corner and rotation."""
+    """An occupancy grid's cells at or above ``occupied`` as rectangles (unknown cells, -1, count as free), merged
+    as a map room's obstacles are (``rei.maps.merge_rectangles``: a wall becomes one rectangle, not one per cell).
+    ``bounds`` is the grid's extent; ``origin`` its lower left corner and rotation."""
     cells = np.asarray(data, dtype=np.int8).reshape(height, width) >= occupied
-    edges = np.diff(np.pad(cells, ((0, 0), (1, 1))).astype(np.int8), axis=1)
-    rows, starts = np.nonzero(edges == 1)
-    ends = np.nonzero(edges == -1)[1]  # exclusive; pairs with starts (both in row-major order)
-    blocks: list[tuple[int, int, int, int]] = []  # (first row, last row, first column, end column)
-    open_blocks: dict[tuple[int, int], tuple[int, int]] = {}  # (start, end) -> (first row, last row)
-    for row, start, end in zip(rows.tolist(), starts.tolist(), ends.tolist(), strict=True):
-        first, last = open_blocks.get((start, end), (row, row - 1))
-        if last != row - 1:  # a gap: that block is finished
-            blocks.append((first, last, start, end))
-            first = row
-        open_blocks[(start, end)] = (first, row)
-    blocks += [(first, last, start, end) for (start, end), (first, last) in open_blocks.items()]
-
     ox, oy, yaw = origin.x, origin.y, origin.yaw
     c, s = math.cos(yaw), math.sin(yaw)
     obstacles = []
-    for first, last, start, end in blocks:
-        lx, ly = 0.5 * (start + end) * resolution, 0.5 * (first + last + 1) * resolution
-        obstacles.append((ox + c * lx - s * ly, oy + s * lx + c * ly, yaw, (end - start) * resolution,
-                          (last + 1 - first) * resolution))
+    for rect in merge_rectangles(cells):
+        lx, ly = (rect.col + rect.cols / 2) * resolution, (rect.row + rect.rows / 2) * resolution
+        obstacles.append((ox + c * lx - s * ly, oy + s * lx + c * ly, yaw, rect.cols * resolution,
+                          rect.rows * resolution))
     corners = [(ox + c * x - s * y, oy + s * x + c * y) for x in (0.0, width * resolution)
                for y in (0.0, height * resolution)]
     xs, ys = [p[0] for p in corners], [p[1] for p in corners]
