@@ -54,6 +54,7 @@ def error_of(text: str, folder: Path) -> str:
 def test_a_good_spec_parses_to_what_it_says(folder: Path) -> None:
     spec = parse(GOOD, folder)
     assert (spec.name, spec.seed, spec.budget, spec.sampler, spec.shrink_budget) == ("crossing", 3, 12, "nsga2", 3)
+    assert spec.diversity and not parse(GOOD + "diversity: false\n", folder).diversity
     assert spec.case == folder / "case.rei" and spec.controller == "nav" and spec.sut is None
     keys = [p.key for p in spec.parameters]
     assert keys == ["walker.start", "walker.speed", "walker.loop", "walker.points", "bin1.floor", "bin1.yaw",
@@ -91,6 +92,8 @@ def test_a_good_spec_parses_to_what_it_says(folder: Path) -> None:
     (("of: first", "of: last"), "s.yaml:19:46: 'of' is count or first, got 'last'"),
     (("shrink: {budget: 3}", "shrink: {budget: 3, depth: 2}"), "s.yaml:20:21: unknown key 'depth'; known: budget"),
     (("name: crossing", "nmae: crossing"), "s.yaml:1:1: unknown key 'nmae'"),
+    (("shrink: {budget: 3}", "shrink: {budget: 3}\ndiversity: maybe"),
+     "s.yaml:21:12: 'diversity' must be true or false, got 'maybe'"),
     (("name: crossing", "controller: autopilot"), "s.yaml:1:13: unknown controller 'autopilot'"),
     (("name: crossing", "sut: {cmd: x}"), "s.yaml:1:6: unknown key 'cmd'; known: command, clock"),
     (("case: case.rei", "case: other.rei"), "s.yaml:2:7: the base case "),

@@ -4,7 +4,7 @@ per distinct failure) and ``search.html`` (rei.search.report).
 
 ``search.json`` (format ``rei-search/1``): the spec's name, sampler, budget and objectives; ``evaluations``, one
 record per trial in order (key, status: COMPLETED, ERROR, invalid, unplannable or interrupted; the parameter
-values, objective values, utility, failures, metrics, seed, fault, candidate and run folder, wall and CPU
+values, the run's objective values, whether it only repeated known failures, utility, failures, metrics, seed, fault, candidate and run folder, wall and CPU
 seconds, or why it was not simulated); counts; ``failures``, the distinct failures most severe first with every
 evaluation that found them and their shrunk case; and ``baseline``, the records of a random search in the same
 folder (``--sampler random``) for the report's comparison.
@@ -19,7 +19,6 @@ from pathlib import Path
 from typing import Any
 
 import optuna
-from optuna.trial import TrialState
 
 from rei.evaluation.junit import write_junit
 from rei.search.failures import DistinctFailure, distinct, failure_verdicts
@@ -38,7 +37,7 @@ def records(study: optuna.Study, out: Path) -> list[dict[str, Any]]:
         record: dict[str, Any] = {"key": key, "number": trial.number, "status": status, "params": dict(trial.params)}
         if attrs.get("simulated"):
             record.update({
-                "values": list(trial.values) if trial.state == TrialState.COMPLETE else None,
+                "values": attrs.get("values"), "repeat": bool(attrs.get("repeat")),
                 "utility": attrs.get("utility"), "sim_duration": attrs.get("sim_duration"),
                 "failures": attrs.get("failures") or [], "metrics": attrs.get("metrics"),
                 "error": attrs.get("error"), "seed": attrs.get("seed"), "fault": attrs.get("fault"),

@@ -124,8 +124,11 @@ def _importance(out: Path, document: Mapping[str, Any]) -> str:
                                    storage=JournalStorage(JournalFileBackend(str(out / JOURNAL))))
         # the simulated evaluations only: an invalid candidate's penalty says nothing about the robot
         study = optuna.create_study(directions=stored.directions)
-        study.add_trials([t for t in stored.get_trials(deepcopy=False, states=(TrialState.COMPLETE,))
-                          if t.user_attrs.get("simulated")])
+        # with the runs' own values, not what a repeated failure was told (``diversity``)
+        study.add_trials([optuna.trial.create_trial(params=t.params, distributions=t.distributions,
+                                                    values=t.user_attrs["values"])
+                          for t in stored.get_trials(deepcopy=False, states=(TrialState.COMPLETE,))
+                          if t.user_attrs.get("simulated") and t.user_attrs.get("values")])
         rows = []
         for i, objective in enumerate(document["objectives"]):
             sign = 1.0 if objective["direction"] == "minimize" else -1.0  # PED-ANOVA ranks towards low targets

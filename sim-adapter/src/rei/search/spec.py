@@ -27,6 +27,7 @@ Checked completely at the door; every mistake is reported as ``FILE:LINE:COLUMN:
       - {verdict: MISSION_WITH_HUMAN_TRAJECTORY}  # 0 when it fails, 1 when it holds: minimized
       - {signal: SIG_OBJECT_COLLISION_BEGIN, of: count}  # or of: first (its first time)
     shrink: {budget: 8}         # simulations per distinct failure to shrink it; budget 0 turns it off
+    diversity: true             # an evaluation that only repeats failures found before scores as uninteresting
 """
 
 from __future__ import annotations
@@ -112,6 +113,7 @@ class SearchSpec:
     parameters: tuple[Parameter, ...]
     objectives: tuple[Objective, ...]
     shrink_budget: int
+    diversity: bool = True
     source: Path | None = None
 
     def with_options(self, **changes: Any) -> SearchSpec:
@@ -166,7 +168,7 @@ def parse_search_spec(text: str, *, base: Path, file: str = "spec", default_name
         raise SpecError(f"{file}:1:1: the spec is empty: expected 'case', 'parameters' and 'objectives'")
     top = loc.mapping(root, "the spec")
     known = ("name", "case", "controller", "sut", "seed", "budget", "sampler", "timeout", "humans", "parameters",
-             "objectives", "shrink")
+             "objectives", "shrink", "diversity")
     for name, (key, _) in top.items():
         if name not in known:
             raise SpecError(f"{loc.at(key)}: unknown key '{name}'; known: {', '.join(known)}")
@@ -207,7 +209,8 @@ def parse_search_spec(text: str, *, base: Path, file: str = "spec", default_name
         sampler=reader.call("sampler", lambda r: r.choice("sampler", SAMPLERS, "tpe")),
         timeout=reader.call("timeout", lambda r: r.number("timeout", 300.0)),
         humans=reader.call("humans", lambda r: r.bool("humans", True)),
-        parameters=parameters, objectives=objectives, shrink_budget=shrink_budget)
+        parameters=parameters, objectives=objectives, shrink_budget=shrink_budget,
+        diversity=reader.call("diversity", lambda r: r.bool("diversity", True)))
 
 
 class _PositionedReader:

@@ -111,6 +111,8 @@ class Search:
         # a resumed sampler must not replay the draws of the first invocation (qmc's sequence is indexed instead)
         self.study = started if spec.sampler == "qmc" else open_study(self.out, spec, spec.seed + len(started.trials))
         self.progress = SearchProgress()
+        self._known: set[str] = set()  # failure signatures found so far
+        self._raw: list[list[float]] = []  # the simulated evaluations' own objective values
 
     def key(self, number: int) -> str:
         return f"{self.spec.sampler}-{number:04d}"
@@ -142,6 +144,9 @@ class Search:
                 self.study.enqueue_trial(trial.params, skip_if_exists=False)
             elif trial.user_attrs.get("simulated"):
                 self.progress.simulated += 1
+                if trial.user_attrs.get("values"):
+                    self._raw.append(list(trial.user_attrs["values"]))
+                self._known |= {f["signature"] for f in trial.user_attrs.get("failures") or []}
                 self.progress.errors += trial.user_attrs.get("status") == "ERROR"
                 self.progress.failing += bool(trial.user_attrs.get("failures"))
             elif trial.user_attrs.get("status") in ("invalid", "unplannable"):
@@ -232,12 +237,21 @@ class Search:
         attrs: dict[str, Any] = {"simulated": True, "status": result.status, "wall": result.wall_time,
                                  "cpu": result.cpu_time, "utility": result.total_utility,
                                  "sim_duration": result.sim_duration}
-        values = None
+        values = told = None
         if result.status == "COMPLETED":
             summary = json.loads((Path(task.run_dir) / "summary.json").read_text(encoding="utf-8"))
-            values = score(self.spec.objectives, summary, Path(task.run_dir))
+            values = told = score(self.spec.objectives, summary, Path(task.run_dir))
             found = failures_of(summary, Path(task.run_dir), Path(task.case_dir), self.space.floor_at)
             attrs["failures"] = [f.to_dict() for f in found]
+            attrs["values"] = values
+            self._raw.append(values)
+            signatures = {f.signature for f in found}
+            if self.spec.diversity and signatures and signatures <= self._known:
+                # only failures found before: told as the least interesting evaluation so far, so the sampler moves
+                # on to other failures instead of refining this one (search.json keeps the run's own values)
+                told = self._least_interesting()
+                attrs["repeat"] = True
+            self._known |= signatures
             trial.set_constraint(VALIDITY, 0.0)
             attrs["metrics"] = summary.get("metrics")
             self.progress.failing += bool(found)
@@ -246,11 +260,15 @@ class Search:
             self.progress.errors += 1
         for name, value in attrs.items():
             trial.set_user_attr(name, value)
-        if values is None:
+        if told is None:
             self.study.tell(trial, state=TrialState.FAIL)
         else:
-            self.study.tell(trial, values if len(values) > 1 else values[0])
+            self.study.tell(trial, told if len(told) > 1 else told[0])
         self.log(self._line(trial.number, result.status, values, attrs))
+
+    def _least_interesting(self) -> list[float]:
+        return [(max if o.direction == "minimize" else min)(v[i] for v in self._raw)
+                for i, o in enumerate(self.spec.objectives)]
 
     def _line(self, number: int, status: str, values: list[float] | None, attrs: dict[str, Any]) -> str:
         p = self.progress
@@ -265,16 +283,14 @@ class Search:
 
     def best_text(self) -> str:
         objectives = self.spec.objectives
-        complete = [t for t in self.study.get_trials(deepcopy=False, states=(TrialState.COMPLETE,))
-                    if t.user_attrs.get("simulated")]
-        if not complete:
+        if not self._raw:
             return ""
         parts = []
         for i, objective in enumerate(objectives):
-            best = complete[0].values[i]
-            for trial in complete[1:]:
-                if better(objective, trial.values[i], best):
-                    best = trial.values[i]
+            best = self._raw[0][i]
+            for values in self._raw[1:]:
+                if better(objective, values[i], best):
+                    best = values[i]
             parts.append(f"{objective.label} {best:g}")
         return ", ".join(parts)
 
