@@ -49,6 +49,10 @@ metrics:
     ("metrics:\n  time: {p: 0.1}\n  time: {p: 0.2}\n", "3:3", "'time' is given twice"),
     ("metric:\n  time: {p: 0.1}\n", "1:1", "unknown key 'metric'; expected 'metrics'"),
     ("metrics: {}\n", "1:10", "'metrics' is empty"),
+    # keys YAML reads as numbers are placed too (they once escaped as a bare StopIteration)
+    ("metrics: {1: {p: 0.05}}\n", "1:11", "unknown metric '1'; known:"),
+    ("metrics:\n  time: {p: 0.1}\n2: x\n", "3:1", "unknown key '2'; expected 'metrics'"),
+    ("metrics:\n  time: {0.5: 1, p: 0.1}\n", "2:10", "time: unknown key '0.5'; expected one of"),
     ("metrics: [a, b]\n", "1:10", "'metrics' must be a mapping"),
     ("metrics:\n  time: {p: [0.1\n", "3:1", "not YAML"),
     ("", "1:1", "empty: expected a mapping with 'metrics'"),

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: EPL-2.0
 """When a difference is a regression: the thresholds file of ``rei compare --thresholds FILE.yaml``.
 
-Format (docs/metrics.md, "Regression thresholds")::
+Format (docs/metrics.md, "Comparing two versions", its regression verdicts)::
 
     metrics:
       success: {p: 0.05}                    # success rate lower, McNemar's exact test p < 0.05
@@ -85,30 +85,29 @@ def parse_thresholds(text: str, source: str = "thresholds") -> Thresholds:
     if root is None:
         raise ThresholdsError(f"{source}:1:1: empty: expected a mapping with 'metrics'")
     top = _mapping(root, source, "the file")
-    for key in top:
+    for key, (key_node, _) in top.items():
         if key != "metrics":
-            raise _error(source, _key_node(root, key), f"unknown key {key!r}; expected 'metrics'")
+            raise _error(source, key_node, f"unknown key {key!r}; expected 'metrics'")
     if "metrics" not in top:
         raise _error(source, root, "'metrics' is required: a mapping of metric names to thresholds")
-    metrics_node = top["metrics"]
+    metrics_node = top["metrics"][1]
     metrics = _mapping(metrics_node, source, "'metrics'")
     if not metrics:
         raise _error(source, metrics_node, "'metrics' is empty: name at least one metric")
     items = []
-    for name, node in metrics.items():
+    for name, (key_node, node) in metrics.items():
         if name not in BY_NAME:
-            raise _error(source, _key_node(metrics_node, name),
-                         f"unknown metric {name!r}; known: {', '.join(BY_NAME)}")
+            raise _error(source, key_node, f"unknown metric {name!r}; known: {', '.join(BY_NAME)}")
         items.append(_threshold(name, node, source))
     return Thresholds(tuple(items), source)
 
 
 def _threshold(name: str, node: yaml.Node, source: str) -> Threshold:
-    fields = _mapping(node, source, f"metric {name!r}")
-    for key in fields:
+    entries = _mapping(node, source, f"metric {name!r}")
+    for key, (key_node, _) in entries.items():
         if key not in KEYS:
-            raise _error(source, _key_node(node, key), f"{name}: unknown key {key!r}; expected one of "
-                         f"{', '.join(KEYS)}")
+            raise _error(source, key_node, f"{name}: unknown key {key!r}; expected one of {', '.join(KEYS)}")
+    fields = {key: value for key, (_, value) in entries.items()}
     if "worse_by" not in fields and "p" not in fields:
         raise _error(source, node, f"{name}: give 'worse_by' (a size), 'p' (a significance level) or both")
     better = BY_NAME[name].better
@@ -134,20 +133,18 @@ def _threshold(name: str, node: yaml.Node, source: str) -> Threshold:
     return Threshold(name, better, worse_by, p)
 
 
-def _mapping(node: yaml.Node, source: str, what: str) -> dict[str, yaml.Node]:
+def _mapping(node: yaml.Node, source: str, what: str) -> dict[str, tuple[yaml.Node, yaml.Node]]:
+    """``{key as text: (key node, value node)}``: the key node places a message about the key itself, whatever
+    YAML made of it (``1:`` is a number, ``[a]:`` no scalar at all)."""
     if not isinstance(node, yaml.MappingNode):
         raise _error(source, node, f"{what} must be a mapping")
-    out: dict[str, yaml.Node] = {}
+    out: dict[str, tuple[yaml.Node, yaml.Node]] = {}
     for key, value in node.value:
-        name = _scalar(key)
+        name = str(_scalar(key))
         if name in out:
             raise _error(source, key, f"{name!r} is given twice")
-        out[str(name)] = value
+        out[name] = (key, value)
     return out
-
-
-def _key_node(mapping: yaml.Node, key: str) -> yaml.Node:
-    return next(k for k, _ in mapping.value if _scalar(k) == key)
 
 
 def _scalar(node: yaml.Node) -> object:

@@ -16,12 +16,13 @@ import errno
 import fcntl
 import os
 import socket
-import tempfile
 from collections.abc import Mapping
 from pathlib import Path
 from types import TracebackType
 from typing import Self
 from xml.sax.saxutils import escape
+
+from rei.private_dirs import UnsafeFolderError, private_dir, user_runtime_dir
 
 #: Cyclone's port mapping allows 0..232.
 MAX_DOMAIN = 232
@@ -42,13 +43,10 @@ def discovery_port(domain: int) -> int:
 
 
 def lock_dir() -> Path:
-    """The user's runtime folder for domain locks: ``$XDG_RUNTIME_DIR/rei/ros2-domains``, else a folder of the
-    user's own under the temporary folder (created 0700)."""
-    runtime = os.environ.get("XDG_RUNTIME_DIR")
-    base = Path(runtime) / "rei" if runtime else Path(tempfile.gettempdir()) / f"rei-{os.getuid()}"
-    folder = base / "ros2-domains"
-    folder.mkdir(mode=0o700, parents=True, exist_ok=True)
-    return folder
+    """The folder of the domain locks: ``ros2-domains`` in the user's private runtime folder, ``/tmp/rei-UID``
+    (``rei.private_dirs``: named from the uid alone, so all of the user's processes share the locks, whatever their
+    ``TMPDIR`` or ``XDG_RUNTIME_DIR``; created 0700, and refused when someone else could enter or redirect it)."""
+    return private_dir(user_runtime_dir() / "ros2-domains")
 
 
 class DomainUnavailableError(RuntimeError):
@@ -67,8 +65,9 @@ class DomainLease:
     @classmethod
     def claim(cls, domain: int | None = None, folder: Path | None = None) -> DomainLease:
         """The given domain, or else the first of ``RUN_DOMAINS`` that no other run holds and no DDS participant
-        on this machine uses (participant 0's discovery port is free)."""
-        folder = folder if folder is not None else lock_dir()
+        on this machine uses (participant 0's discovery port is free). ``folder`` (default ``lock_dir()``) is
+        checked private like it."""
+        folder = private_dir(folder) if folder is not None else lock_dir()
         if domain is not None:
             lease = cls._try(domain, folder)
             if lease is None:
@@ -88,7 +87,14 @@ class DomainLease:
 
     @classmethod
     def _try(cls, domain: int, folder: Path) -> DomainLease | None:
-        descriptor = os.open(folder / f"domain-{domain}.lock", os.O_RDWR | os.O_CREAT | os.O_CLOEXEC, 0o600)
+        path = folder / f"domain-{domain}.lock"
+        try:  # O_NOFOLLOW: a symbolic link in place of the lock file is refused, never followed to its target
+            descriptor = os.open(path, os.O_RDWR | os.O_CREAT | os.O_NOFOLLOW | os.O_CLOEXEC, 0o600)
+        except OSError as error:
+            if error.errno == errno.ELOOP:
+                raise UnsafeFolderError(f"{path}: a symbolic link, not a lock file: REI does not follow it; "
+                                        f"remove it") from error
+            raise
         try:
             fcntl.flock(descriptor, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except OSError as error:
@@ -96,8 +102,9 @@ class DomainLease:
             if error.errno in (errno.EWOULDBLOCK, errno.EACCES):
                 return None
             raise
-        os.ftruncate(descriptor, 0)
-        os.write(descriptor, f"{os.getpid()}\n".encode())  # who holds it, for a person looking
+        # who holds it, for a person looking: written over the start, never truncating, in a fixed width (Linux
+        # pids have at most 7 digits) so that it replaces the previous holder's whole
+        os.pwrite(descriptor, f"{os.getpid():<10}\n".encode(), 0)
         return cls(domain, descriptor)
 
     def release(self) -> None:
