@@ -57,14 +57,41 @@ def test_files_unpaired_and_errors(tmp_path: Path) -> None:
     assert [(b.key, k.key) for b, k in c.pairing.pairs] == [("g__r1__base__r0", "g__r1__base__r0")]
     assert [r.key for r in c.pairing.only_baseline] == ["g__r3__base__r0"]
     assert [r.key for r in c.pairing.only_candidate] == ["g__r4__base__r0"]
-    assert [r.key for r in c.pairing.errors] == ["g__r2__base__r0"]
+    # r2 is in ERROR in the candidate: its COMPLETED baseline partner is listed with it, not dropped
+    assert [(b.key, b.status, k.key, k.status) for b, k in c.pairing.errors] == [
+        ("g__r2__base__r0", "COMPLETED", "g__r2__base__r0", "ERROR")]
     files = write_comparison(c, tmp_path / "out")
     suite = ET.parse(files["junit"]).getroot()
     assert suite.get("failures") == "0" and {t.get("classname") for t in suite.iter("testcase")} == {"rei.metrics"}
     html = files["html"].read_text()
     assert "g__r3__base__r0" in html and "g__r4__base__r0" in html and "crashed" in html
-    assert json.loads(files["json"].read_text())["errors"][0]["status"] == "ERROR"
+    assert "ERROR (candidate)" in html and "partner of a run in ERROR (baseline)" in html
+    assert html.count("href='../a/runs/g__r2__base__r0'") == 1 and html.count("href='../b/runs/g__r2__base__r0'") == 1
+    errors = json.loads(files["json"].read_text())["errors"]
+    assert [(e["baseline"]["status"], e["candidate"]["status"], e["candidate"]["error"]) for e in errors] == [
+        ("COMPLETED", "ERROR", "crashed")]
     with pytest.raises(CompareError, match="no run of .* pairs"):
         compare(base, campaign(tmp_path / "c", {("other", 0): {"success": True}}))
     with pytest.raises(CompareError, match="neither a campaign folder"):
         compare(base, tmp_path)
+
+
+def test_one_pair_compares_without_an_interval(tmp_path: Path) -> None:
+    """The smallest comparison: one pair. No bootstrap interval from one difference, every paired test p = 1
+    (Wilcoxon and McNemar can say nothing of one pair), and all files written."""
+    base = campaign(tmp_path / "a", {("r1", 0): {"success": True, "clearance_static_min": 0.3, "time": 20.0}})
+    cand = campaign(tmp_path / "b", {("r1", 0): {"success": False, "clearance_static_min": 0.2, "time": 25.0}})
+    c = compare(base, cand)
+    by = {m.metric.name: m for m in c.metrics}
+    for name in ("success", "clearance_static_min", "time"):
+        assert by[name].paired.n == 1 and by[name].paired.low is None and by[name].paired.high is None
+        assert by[name].paired.p == 1.0
+    assert by["clearance_static_min"].paired.mean == pytest.approx(-0.1) and by["success"].paired.mean == -1.0
+    # the size threshold catches it; the p thresholds can not with one pair
+    assert [m.metric.name for m in c.regressions] == ["clearance_static_min"] and not by["success"].regressed
+    files = write_comparison(c, tmp_path / "out")
+    suite = ET.parse(files["junit"]).getroot()
+    assert suite.get("failures") == "1" and suite.get("tests") == str(sum(m.status is not None for m in c.metrics))
+    data = json.loads(files["json"].read_text())
+    assert data["pairs"] == [["g__r1__base__r0", "g__r1__base__r0"]] and data["metrics"]["time"]["ci_low"] is None
+    assert "regression(s): clearance_static_min" in files["html"].read_text()

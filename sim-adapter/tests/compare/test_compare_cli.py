@@ -47,3 +47,37 @@ def test_compare_exits_one_on_a_regression(tmp_path: Path, capsys: pytest.Captur
     assert code == 1 and "regressions: clearance_static_min" in out and "2 pair(s)" in out
     assert {p.name for p in (tmp_path / "cmp").iterdir()} == {"compare.html", "compare.json", "verdicts.xml"}
     assert main(["compare", str(tmp_path / "a"), str(tmp_path / "a"), "-o", str(tmp_path / "same")]) == 0
+
+
+def _side(root: Path, runs: dict[str, str]) -> Path:
+    for case, status in runs.items():
+        run = root / "runs" / f"g__{case}__base__r0"
+        run.mkdir(parents=True)
+        (run / "result.json").write_text(json.dumps({
+            "key": run.name, "group": "g", "case": case, "variant": "base", "seed": 0, "status": status,
+            "error": "crashed" if status == "ERROR" else None,
+            "metrics": dict.fromkeys(NAMES) | ({"clearance_static_min": 0.2} if status == "COMPLETED" else {})}))
+    return root
+
+
+def test_compare_lists_the_runs_it_does_not_compare(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    a = _side(tmp_path / "a", {"r1": "COMPLETED", "r2": "COMPLETED", "r3": "COMPLETED"})
+    b = _side(tmp_path / "b", {"r1": "COMPLETED", "r2": "ERROR", "r4": "COMPLETED"})
+    assert main(["compare", str(a), str(b), "-o", str(tmp_path / "cmp")]) == 0
+    out = capsys.readouterr().out
+    assert "1 pair(s); 1 run(s) only in the baseline, 1 only in the candidate, 1 pair(s) with a side in ERROR" in out
+    assert "not compared: g__r3__base__r0: only in the baseline" in out
+    assert "not compared: g__r4__base__r0: only in the candidate" in out
+    assert ("not compared: g__r2__base__r0 (baseline COMPLETED) and g__r2__base__r0 (candidate ERROR): crashed"
+            in out)
+
+
+@pytest.mark.parametrize(("text", "where"), [("metrics: {1: {p: 0.05}}\n", "1:11"), ("2: x\n", "1:1")])
+def test_compare_stops_on_a_thresholds_key_that_is_no_text(text: str, where: str, tmp_path: Path,
+                                                           capsys: pytest.CaptureFixture[str]) -> None:
+    a = _side(tmp_path / "a", {"r1": "COMPLETED"})
+    (tmp_path / "t.yaml").write_text(text)
+    assert main(["compare", str(a), str(a), "-o", str(tmp_path / "cmp"), "--thresholds",
+                 str(tmp_path / "t.yaml")]) == 2
+    assert f"t.yaml:{where}: unknown" in capsys.readouterr().err
+    assert not (tmp_path / "cmp").exists()

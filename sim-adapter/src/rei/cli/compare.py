@@ -59,7 +59,14 @@ def compare_and_report(baseline: Path, candidate: Path, out: Path, thresholds: A
     files = write_comparison(comparison, out.resolve())
     p = comparison.pairing
     print(f"compare: {len(p.pairs)} pair(s); {len(p.only_baseline)} run(s) only in the baseline, "
-          f"{len(p.only_candidate)} only in the candidate, {len(p.errors)} in ERROR")
+          f"{len(p.only_candidate)} only in the candidate, {len(p.errors)} pair(s) with a side in ERROR")
+    for run in p.only_baseline:
+        print(f"  not compared: {run.key}: only in the baseline")
+    for run in p.only_candidate:
+        print(f"  not compared: {run.key}: only in the candidate")
+    for b, c in p.errors:
+        print(f"  not compared: {b.key} (baseline {b.status}) and {c.key} (candidate {c.status})"
+              f"{f': {b.error or c.error}' if b.error or c.error else ''}")
     for m in comparison.metrics:
         if m.status is not None:
             print(f"  {str(m.status).upper() if m.regressed else str(m.status):<14} {m.message}")

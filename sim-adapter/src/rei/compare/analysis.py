@@ -76,7 +76,7 @@ def compare(baseline: Path, candidate: Path, thresholds: Thresholds | None = Non
         raise CompareError(
             f"no run of {candidate} pairs with one of {baseline} (same group, case, variant and seed, both "
             f"COMPLETED): {len(pairing.only_baseline)} only in the baseline, {len(pairing.only_candidate)} only "
-            f"in the candidate, {len(pairing.errors)} in ERROR")
+            f"in the candidate, {len(pairing.errors)} with a side in ERROR")
     by_metric = {t.metric: t for t in thresholds.items}
     results = tuple(_compare_metric(m, pairing.pairs, by_metric.get(m.name)) for m in METRICS)
     return Comparison(Path(baseline), Path(candidate), pairing, thresholds, results)

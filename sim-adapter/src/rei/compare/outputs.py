@@ -43,7 +43,7 @@ def to_dict(c: Comparison) -> dict[str, Any]:
         "thresholds": c.thresholds.source, "regressions": [m.metric.name for m in c.regressions],
         "pairs": [[b.key, k.key] for b, k in p.pairs],
         "only_baseline": [_run(r) for r in p.only_baseline], "only_candidate": [_run(r) for r in p.only_candidate],
-        "errors": [_run(r) for r in p.errors],
+        "errors": [{"baseline": _run(b), "candidate": _run(k)} for b, k in p.errors],
         "metrics": {m.metric.name: _metric(m) for m in c.metrics},
     }
 
@@ -59,7 +59,7 @@ def _metric(m: MetricComparison) -> dict[str, Any]:
 
 def _run(r: Run) -> dict[str, Any]:
     return {"key": r.key, "group": r.group, "case": r.case, "variant": r.variant, "seed": r.seed,
-            "status": r.status, "folder": str(r.folder)}
+            "status": r.status, "error": r.error, "folder": str(r.folder)}
 
 
 def _junit_verdict(m: MetricComparison) -> Verdict:

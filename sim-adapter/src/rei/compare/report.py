@@ -42,7 +42,7 @@ def render(out: Path, c: Comparison) -> str:
              "</head><body><h1>Comparison</h1>"),
              (f"<p>baseline <code>{_e(c.baseline)}</code>, candidate <code>{_e(c.candidate)}</code>; "
              f"{len(p.pairs)} pair(s) of runs (same group, case, variant and seed), {len(p.only_baseline)} only in "
-             f"the baseline, {len(p.only_candidate)} only in the candidate, {len(p.errors)} in ERROR; thresholds: "
+             f"the baseline, {len(p.only_candidate)} only in the candidate, {len(p.errors)} with a side in ERROR; thresholds: "
              f"{_e(c.thresholds.source)}.</p>"), verdict,
              "<h2>Metrics (candidate - baseline, over the pairs)</h2>", _verdict_table(c.metrics),
              "<h2>Paired plots (each room a line, baseline to candidate; mean over seeds)</h2><div class='plots'>"]
@@ -130,9 +130,13 @@ def _changed(out: Path, metrics: Sequence[MetricComparison]) -> str:
     return f"<table id='changed'>{head}{''.join(body)}</table>"
 
 
-def _unpaired(out: Path, only_baseline: Sequence[Run], only_candidate: Sequence[Run], errors: Sequence[Run]) -> str:
+def _unpaired(out: Path, only_baseline: Sequence[Run], only_candidate: Sequence[Run],
+              errors: Sequence[tuple[Run, Run]]) -> str:
     rows = [(side, r) for side, runs in (("only in the baseline", only_baseline),
-                                        ("only in the candidate", only_candidate), ("ERROR", errors)) for r in runs]
+                                        ("only in the candidate", only_candidate)) for r in runs]
+    for pair in errors:  # both sides of a pair with a run in ERROR: neither is compared
+        rows += [(f"{r.status} ({side})" if r.status != "COMPLETED" else f"partner of a run in ERROR ({side})", r)
+                 for side, r in zip(("baseline", "candidate"), pair, strict=True)]
     if not rows:
         return "<p>every run pairs.</p>"
     body = "".join(f"<tr class='unpaired'><td>{side}</td><td>{_link(out, r, r.key)}</td><td>{_e(r.error or '')}</td></tr>"

@@ -4,8 +4,8 @@
 A side is a campaign folder (``OUT/runs/<key>/result.json``, as ``rei campaign`` writes them) or one run folder
 (``summary.json``, as ``rei run`` and ``rei evaluate`` write it). Runs pair when they have the same group, case,
 variant and seed - the same room driven under the same conditions - so the difference of a pair is the change of
-the system under test alone. Runs without a partner, and runs that ended in ERROR (they have no metrics), are
-listed, never silently dropped.
+the system under test alone. Runs without a partner, and runs that ended in ERROR (they have no metrics) with
+their partner, are listed, never silently dropped.
 """
 
 from __future__ import annotations
@@ -49,7 +49,8 @@ class Pairing:
     pairs: tuple[tuple[Run, Run], ...]  # (baseline, candidate), both COMPLETED
     only_baseline: tuple[Run, ...]
     only_candidate: tuple[Run, ...]
-    errors: tuple[Run, ...]  # runs of either side in ERROR (their partner is not compared either)
+    #: (baseline, candidate) with a side not COMPLETED: neither is compared, both are listed
+    errors: tuple[tuple[Run, Run], ...]
 
 
 def load_side(folder: Path) -> list[Run]:
@@ -69,13 +70,14 @@ def load_side(folder: Path) -> list[Run]:
 def pair(baseline: list[Run], candidate: list[Run]) -> Pairing:
     theirs = {r.pair_key: r for r in candidate}
     ours = {r.pair_key: r for r in baseline}
-    pairs, errors = [], []
+    pairs: list[tuple[Run, Run]] = []
+    errors: list[tuple[Run, Run]] = []
     for key, b in ours.items():
         c = theirs.get(key)
         if c is None:
             continue
         if b.status != "COMPLETED" or c.status != "COMPLETED":
-            errors += [r for r in (b, c) if r.status != "COMPLETED"]
+            errors.append((b, c))
             continue
         pairs.append((b, c))
     return Pairing(tuple(pairs), tuple(r for k, r in ours.items() if k not in theirs),
