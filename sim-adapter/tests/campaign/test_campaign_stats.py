@@ -75,9 +75,15 @@ def test_metrics_per_room_total_and_variant_over_completed_runs() -> None:
     assert rows[("*", "worse", "clearance_static_min")].mean == pytest.approx(0.025)
     assert rows[("A", "*", "clearance_humans_min")].n == 0  # a room without humans: nothing to average
     table = list(csv.DictReader(io.StringIO(metrics_csv(metric_rows(results)))))
-    assert table[0] == {"group": "g", "room": "A", "variant": "*", "metric": "success", "n": "3",
-                             "mean": "0.6667", "median": "", "ci_low": table[0]["ci_low"],
-                             "ci_high": table[0]["ci_high"]}
+    assert {k: v for k, v in table[0].items() if not k.startswith("ci_")} == {
+        "group": "g", "room": "A", "variant": "*", "metric": "success", "n": "3", "mean": "0.6667", "median": ""}
+    # 2 of 3: the Wilson score interval, by its formula (z = 1.96), around the rate and inside [0, 1]
+    z, rate, n = 1.959964, 2 / 3, 3
+    centre = (rate + z**2 / (2 * n)) / (1 + z**2 / n)
+    half = z * math.sqrt(rate * (1 - rate) / n + z**2 / (4 * n**2)) / (1 + z**2 / n)
+    low, high = float(table[0]["ci_low"]), float(table[0]["ci_high"])
+    assert 0 < low < 2 / 3 < high <= 1
+    assert low == pytest.approx(centre - half, abs=1e-4) and high == pytest.approx(centre + half, abs=1e-4)
     runs = list(csv.DictReader(io.StringIO(runs_csv(results))))
     assert runs[0]["clearance_static_min"] == "0.2" and runs[0]["success"] == "True"
     html = render(Path("."), "c", results, {}, 5)
