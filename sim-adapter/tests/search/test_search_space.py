@@ -97,3 +97,9 @@ def test_parameters_are_checked_against_the_base_case(parameter: Parameter, mess
     with pytest.raises(SpecError) as raised:
         Space([parameter], DIAGRAM)
     assert str(raised.value).startswith(message)
+
+
+def test_a_missing_element_is_reported_at_its_name() -> None:
+    parameter = Parameter("object", "bin2", "floor", None, "s.yaml:3:27", name_at="s.yaml:3:14")
+    with pytest.raises(SpecError, match=r"^s\.yaml:3:14: the base case has no object named 'bin2'"):
+        Space([parameter], DIAGRAM)

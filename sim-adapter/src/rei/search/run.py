@@ -45,7 +45,11 @@ def run_search(spec: SearchSpec, out: Path, *, workers: int = 1, ray: str | None
     # first run (a finished search that only rewrites its outputs starts no JVM)
     pool: Pool = make_pool(workers, ray, out, stop) if ray else _LazyPool(
         lambda: make_pool(workers, None, out, stop), workers, "local")
-    search = Search(spec, out, pool, stop, log)
+    try:
+        search = Search(spec, out, pool, stop, log)
+    except BaseException:
+        pool.close()
+        raise
     try:
         progress = search.run()
         shrunk = _load(out / SHRUNK)

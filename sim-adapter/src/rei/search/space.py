@@ -53,17 +53,18 @@ class Space:
 
     def _add(self, p: Parameter, objects: Mapping[str, Any], robot: Mapping[str, Any] | None,
              taken: Mapping[str, str]) -> None:
+        at = p.name_at or p.where
         if p.target == "object" and p.name not in objects:
-            raise SpecError(f"{p.where}: the base case has no object named {p.name!r}; it has "
+            raise SpecError(f"{at}: the base case has no object named {p.name!r}; it has "
                             f"{', '.join(objects) or 'none'}")
         if p.target == "robot" and (robot is None or robot["name"] != p.name):
-            raise SpecError(f"{p.where}: the base case's robot is {robot['name'] if robot else 'missing'}, "
+            raise SpecError(f"{at}: the base case's robot is {robot['name'] if robot else 'missing'}, "
                             f"not {p.name!r}")
         if p.target == "human" and p.name not in self._humans:
-            raise SpecError(f"{p.where}: the base case has no human or moving object named {p.name!r}; it has "
+            raise SpecError(f"{at}: the base case has no human or moving object named {p.name!r}; it has "
                             f"{', '.join(self._humans) or 'none'}")
         if p.target == "goal" and int(p.name) >= len(self._goals):
-            raise SpecError(f"{p.where}: the mission has {len(self._goals)} goal(s): index {p.name} is not one")
+            raise SpecError(f"{at}: the mission has {len(self._goals)} goal(s): index {p.name} is not one")
         if p.prop == "floor":
             own = self._items[p.name]["floor"] if p.target in ("object", "robot") else None
             base = own if own is not None else self._goals[int(p.name)]["floor"]

@@ -68,8 +68,9 @@ class Parameter:
     name: str
     prop: str
     domain: Any
-    where: str  # FILE:LINE:COLUMN of the entry, for later messages
+    where: str  # FILE:LINE:COLUMN of its value, for later messages
     base: str | None = None  # fault: the preset the searched values are added to
+    name_at: str = ""  # FILE:LINE:COLUMN of the element's name (messages about the element)
 
     @property
     def key(self) -> str:
@@ -294,7 +295,7 @@ def _parameters(node: yaml.Node, loc: _Located) -> tuple[Parameter, ...]:
         for prop in props:
             value_node = entry[prop][1]
             parameters.append(Parameter(target, str(name_value), prop, _domain(prop, value_node, loc),
-                                        loc.at(value_node)))
+                                        loc.at(value_node), name_at=loc.at(name_node)))
     keys = [p.key for p in parameters]
     for i, parameter in enumerate(parameters):
         if parameter.key in keys[:i]:

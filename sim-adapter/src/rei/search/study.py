@@ -106,7 +106,11 @@ class Search:
         if spec.source is not None and spec.source.resolve() != self.out / "spec.yaml":
             shutil.copyfile(spec.source, self.out / "spec.yaml")
         self.maker = CandidateMaker(spec.case, self.out)
-        self.space = Space(spec.parameters, self.maker.diagram)
+        try:
+            self.space = Space(spec.parameters, self.maker.diagram)
+        except BaseException:  # a parameter the base case does not have: the engine's JVM goes now
+            self.maker.close()
+            raise
         started = open_study(self.out, spec)
         # a resumed sampler must not replay the draws of the first invocation (qmc's sequence is indexed instead)
         self.study = started if spec.sampler == "qmc" else open_study(self.out, spec, spec.seed + len(started.trials))
