@@ -119,3 +119,15 @@ def test_a_runtime_folder_someone_else_made_first_stops_the_claim(tmp_path: Path
         DomainLease.claim()
     assert list(planted.iterdir()) == []
 
+
+def test_the_background_services_folder_is_checked_by_the_same_helper_before_its_socket_is_used(
+        tmp_path: Path) -> None:
+    """The service's folder holds its control socket: one that others can write in may hold theirs."""
+    from rei.service.client import ServiceError, connect
+
+    folder = tmp_path / "service"
+    folder.mkdir()
+    os.chmod(folder, 0o777)
+    with pytest.raises(ServiceError, match=f"the background service's folder: {folder}: mode 0777"):
+        connect(log=lambda line: None, folder=folder)
+    assert list(folder.iterdir()) == []  # nothing started, nothing connected to

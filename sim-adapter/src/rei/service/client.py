@@ -16,8 +16,8 @@ from pathlib import Path
 from typing import Any, Self
 
 from rei.lifetime import alive
+from rei.private_dirs import private_dir
 from rei.service import DIR_ENV, IDLE_SECONDS, LOG_NAME, PID_NAME, SOCKET_NAME, fingerprint, service_dir
-from rei.wamp.auth import private_dir
 
 #: The longest path of a Unix socket (Linux: 108 bytes with the terminating zero).
 MAX_SOCKET_PATH = 107
@@ -68,6 +68,10 @@ def connect(log: Callable[[str], None] = print, folder: Path | None = None) -> S
     if len(os.fsencode(folder / SOCKET_NAME)) > MAX_SOCKET_PATH:
         raise ServiceError(f"the service's folder {folder} is too deep for a Unix socket ({MAX_SOCKET_PATH} bytes "
                            f"at most); set {DIR_ENV} to a shorter one")
+    try:  # before talking to a socket in it: a folder others can write in may hold their socket
+        private_dir(folder)
+    except OSError as error:
+        raise ServiceError(f"the background service's folder: {error}") from error
     try:
         found = _hello(folder)
         if found.fingerprint == fingerprint():

@@ -35,10 +35,10 @@ from pathlib import Path
 from typing import Any
 
 from rei.lifetime import alive
+from rei.private_dirs import private_dir
 from rei.run.jvm import JarServer, JarServerError, run_served
 from rei.service import IDLE_SECONDS, LOG_NAME, PID_NAME, SOCKET_NAME, fingerprint, service_dir
 from rei.toolchain import ToolchainError
-from rei.wamp.auth import private_dir
 from rei.wamp.router import Router, RouterError
 
 _TICK = 0.2

@@ -74,13 +74,6 @@ def write_private(path: Path, text: str) -> None:
     os.chmod(path, 0o600)  # in case the umask was stricter than needed; never wider
 
 
-def private_dir(path: Path) -> Path:
-    """Create ``path`` (and parents) and make it 0700."""
-    path.mkdir(parents=True, exist_ok=True)
-    os.chmod(path, 0o700)
-    return path
-
-
 def write_credentials(path: Path, credentials: Credentials) -> Path:
     write_private(path, json.dumps(credentials.to_json(), indent=2) + "\n")
     return path

@@ -34,11 +34,11 @@ from types import TracebackType
 from typing import Any, Self
 
 from rei.lifetime import die_with_parent, stat_fields
+from rei.private_dirs import private_dir
 from rei.wamp.auth import (
     Credentials,
     load_credentials,
     new_secret,
-    private_dir,
     write_credentials,
     write_private,
 )
