@@ -5,9 +5,10 @@
 package org.rei.vepl.parser;
 
 import java.util.HashMap;
-import java.util.HashSet;
+import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.stream.Collectors;
 
 import org.antlr.runtime.CharStream;
 import org.antlr.runtime.CommonToken;
@@ -29,8 +30,9 @@ import org.rei.vepl.validation.VeplIssueCodes;
  * the parser but one level of the model per operator ({@code a -> b -> c} is {@code (a -> b) -> c}), and scoping
  * and validation recurse along the model: more than {@link #MAX_OPERATORS} in one declaration are refused the same
  * way. The lexer is a loop, and it knows comments and strings, so a bracket in them does not count. Whatever else
- * fails while parsing is logged and becomes a syntax error of the file too ({@link VeplIssueCodes#UNREADABLE}), so
- * one file can stop neither a build of the language server nor the loader's report of the other files.
+ * fails while parsing, in the guard (its lexer, the grammar's token definitions) or in the parser, is logged and
+ * becomes a syntax error of the file too ({@link VeplIssueCodes#UNREADABLE}), so one file can stop neither a build
+ * of the language server nor the loader's report of the other files.
  */
 public class VeplGuardedParser extends VeplParser {
 
@@ -50,13 +52,10 @@ public class VeplGuardedParser extends VeplParser {
 	@Override
 	protected IParseResult doParse(String ruleName, CharStream in, NodeModelBuilder builder, int initialLookAhead) {
 		int start = in.mark();
-		IParseResult refusal = refusal(createLexer(in), in);
-		in.rewind(start);
-		if (refusal != null) {
-			return refusal;
-		}
 		try {
-			return super.doParse(ruleName, in, builder, initialLookAhead);
+			IParseResult refusal = refusal(createLexer(in), in);
+			in.rewind(start);
+			return refusal != null ? refusal : super.doParse(ruleName, in, builder, initialLookAhead);
 		} catch (RuntimeException | StackOverflowError e) {
 			LOG.error("VEPL parser failed; the file gets a syntax error instead", e);
 			return refused(in, null, "The file could not be parsed (" + e + "): please report it with the file",
@@ -92,26 +91,37 @@ public class VeplGuardedParser extends VeplParser {
 		return null;
 	}
 
-	/** The token types of the brackets, operators and declaration keywords, from the grammar's token definitions. */
+	/** The tokens the guard needs, by kind, as the grammar's token definitions name them. */
+	private static final Map<String, List<String>> KINDS = Map.of(
+			"opening", List.of("'('", "'{'", "'['"),
+			"closing", List.of("')'", "'}'", "']'"),
+			"operator", List.of("'->'", "'AND'", "'OR'"),
+			"declaring", List.of("'queryEvent'", "'atomicEvent'", "'complexEvent'", "'signal'", "'rule'"));
+
+	/**
+	 * The token types of the brackets, operators and declaration keywords, from the grammar's token definitions.
+	 * A token the grammar no longer defines (renamed) would silently leave the guard without it, so it is an
+	 * {@link IllegalStateException} naming it, which {@link #doParse} makes every file's error.
+	 */
 	private synchronized void tokenTypes() {
 		if (opening != null) {
 			return;
 		}
-		Map<String, Set<Integer>> byKind = new HashMap<>();
-		for (Map.Entry<Integer, String> e : getTokenDefProvider().getTokenDefMap().entrySet()) {
-			String kind = switch (e.getValue()) {
-			case "'('", "'{'", "'['" -> "opening";
-			case "')'", "'}'", "']'" -> "closing";
-			case "'->'", "'AND'", "'OR'" -> "operator";
-			case "'queryEvent'", "'atomicEvent'", "'complexEvent'", "'signal'", "'rule'" -> "declaring";
-			default -> "";
-			};
-			byKind.computeIfAbsent(kind, k -> new HashSet<>()).add(e.getKey());
+		Map<String, Integer> types = new HashMap<>();
+		getTokenDefProvider().getTokenDefMap().forEach((type, name) -> types.put(name, type));
+		List<String> missing = KINDS.values().stream().flatMap(List::stream).filter(t -> !types.containsKey(t))
+				.sorted().toList();
+		if (!missing.isEmpty()) {
+			throw new IllegalStateException("the VEPL grammar defines no token " + String.join(", ", missing)
+					+ ", which the nesting guard counts (VeplGuardedParser.KINDS)");
 		}
-		closing = Set.copyOf(byKind.get("closing"));
-		operator = Set.copyOf(byKind.get("operator"));
-		declaring = Set.copyOf(byKind.get("declaring"));
-		opening = Set.copyOf(byKind.get("opening"));
+		Map<String, Set<Integer>> byKind = new HashMap<>();
+		KINDS.forEach((kind, names) -> byKind.put(kind,
+				names.stream().map(types::get).collect(Collectors.toUnmodifiableSet())));
+		closing = byKind.get("closing");
+		operator = byKind.get("operator");
+		declaring = byKind.get("declaring");
+		opening = byKind.get("opening");
 	}
 
 	/**

@@ -11,13 +11,22 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
+import java.io.StringReader;
 import java.nio.charset.StandardCharsets;
 import java.time.Duration;
 import java.util.List;
+import java.util.Map;
+import java.util.stream.Collectors;
+import java.util.stream.StreamSupport;
 
+import org.antlr.runtime.CharStream;
+import org.antlr.runtime.TokenSource;
 import org.eclipse.emf.common.util.URI;
 import org.eclipse.emf.ecore.resource.Resource;
 import org.eclipse.xtext.diagnostics.Severity;
+import org.eclipse.xtext.nodemodel.INode;
+import org.eclipse.xtext.parser.IParseResult;
+import org.eclipse.xtext.parser.antlr.ITokenDefProvider;
 import org.eclipse.xtext.resource.XtextResourceSet;
 import org.eclipse.xtext.testing.InjectWith;
 import org.eclipse.xtext.testing.extensions.InjectionExtension;
@@ -32,6 +41,7 @@ import org.rei.vepl.validation.KnownQueries;
 import org.rei.vepl.validation.VeplIssueCodes;
 
 import com.google.inject.Inject;
+import com.google.inject.Injector;
 import com.google.inject.Provider;
 
 /**
@@ -51,6 +61,9 @@ class NestingLimitTest {
 
 	@Inject
 	private IResourceValidator validator;
+
+	@Inject
+	private Injector injector;
 
 	/** A complex event on line 2 whose expression is {@code a} inside {@code parens} brackets ('{' is one more). */
 	private static String nested(int parens) {
@@ -148,5 +161,54 @@ class NestingLimitTest {
 		assertTrue(message.contains("\n  two.vepl:2:12: Duplicate name 'a': event a is also declared in one.vepl on "
 				+ "line 1"), message);
 		assertEquals(3, message.split("\n").length, message);
+	}
+
+	/** The syntax errors of a parse by {@code parser}, which must answer and not throw, each as "code: message". */
+	private static List<String> parseErrors(VeplGuardedParser parser, String text) {
+		IParseResult result = parser.parse(new StringReader(text));
+		assertTrue(result.hasSyntaxErrors(), text);
+		return StreamSupport.stream(result.getSyntaxErrors().spliterator(), false).map(INode::getSyntaxErrorMessage)
+				.map(m -> m.getIssueCode() + ": " + m.getMessage()).toList();
+	}
+
+	/** A grammar whose token for {@code AND} is renamed: the guard cannot be built, and says so as the file's error. */
+	@Test
+	void aGuardThatCannotBeBuiltIsTheFilesErrorNotAnException() {
+		VeplGuardedParser parser = new VeplGuardedParser() {
+			@Override
+			public ITokenDefProvider getTokenDefProvider() {
+				ITokenDefProvider real = super.getTokenDefProvider();
+				Map<Integer, String> renamed = real.getTokenDefMap().entrySet().stream()
+						.filter(e -> !e.getValue().equals("'AND'"))
+						.collect(Collectors.toMap(Map.Entry::getKey, Map.Entry::getValue));
+				return new ITokenDefProvider() {
+					@Override
+					public Map<Integer, String> getTokenDefMap() {
+						return renamed;
+					}
+				};
+			}
+		};
+		injector.injectMembers(parser);
+		List<String> errors = parseErrors(parser, EVENT);
+		assertEquals(1, errors.size(), errors::toString);
+		assertTrue(errors.get(0).startsWith(VeplIssueCodes.UNREADABLE + ": "), errors::toString);
+		assertTrue(errors.get(0).contains("the VEPL grammar defines no token 'AND'"), errors::toString);
+	}
+
+	/** A lexer that fails while the guard reads the tokens: the file's error, not an exception out of the parser. */
+	@Test
+	void aLexerFailureInTheGuardIsTheFilesErrorNotAnException() {
+		VeplGuardedParser parser = new VeplGuardedParser() {
+			@Override
+			protected TokenSource createLexer(CharStream stream) {
+				throw new IllegalStateException("lexer broke");
+			}
+		};
+		injector.injectMembers(parser);
+		List<String> errors = parseErrors(parser, EVENT);
+		assertEquals(1, errors.size(), errors::toString);
+		assertTrue(errors.get(0).startsWith(VeplIssueCodes.UNREADABLE + ": "), errors::toString);
+		assertTrue(errors.get(0).contains("lexer broke"), errors::toString);
 	}
 }
