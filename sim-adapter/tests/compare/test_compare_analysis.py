@@ -60,13 +60,15 @@ def test_files_unpaired_and_errors(tmp_path: Path) -> None:
     # r2 is in ERROR in the candidate: its COMPLETED baseline partner is listed with it, not dropped
     assert [(b.key, b.status, k.key, k.status) for b, k in c.pairing.errors] == [
         ("g__r2__base__r0", "COMPLETED", "g__r2__base__r0", "ERROR")]
+    (base / "runs" / "g__r3__base__r0" / "report.html").write_text("<html></html>")  # a run with a report
     files = write_comparison(c, tmp_path / "out")
     suite = ET.parse(files["junit"]).getroot()
     assert suite.get("failures") == "0" and {t.get("classname") for t in suite.iter("testcase")} == {"rei.metrics"}
     html = files["html"].read_text()
     assert "g__r3__base__r0" in html and "g__r4__base__r0" in html and "crashed" in html
+    assert "href='../a/runs/g__r3__base__r0/report.html'" in html  # its report, the others' folders
     assert "ERROR (candidate)" in html and "partner of a run in ERROR (baseline)" in html
-    assert html.count("href='../a/runs/g__r2__base__r0'") == 1 and html.count("href='../b/runs/g__r2__base__r0'") == 1
+    assert html.count("href='../a/runs/g__r2__base__r0/'") == 1 and html.count("href='../b/runs/g__r2__base__r0/'") == 1
     errors = json.loads(files["json"].read_text())["errors"]
     assert [(e["baseline"]["status"], e["candidate"]["status"], e["candidate"]["error"]) for e in errors] == [
         ("COMPLETED", "ERROR", "crashed")]

@@ -8,6 +8,7 @@ Inline SVG like the run report (rei.report): opens offline, and tests can count 
 from __future__ import annotations
 
 import csv
+import os
 from collections.abc import Sequence
 from html import escape
 from pathlib import Path
@@ -139,12 +140,19 @@ def _verdict_html(runs: Sequence[RunResult]) -> str:
     return f"<table class='verdicts'>{head}{body}</table>"
 
 
+def run_href(out: Path, run_dir: Path) -> str:
+    """The link from a page in ``out`` to a run: its report.html, or its folder when the campaign wrote no
+    reports (``report: false``)."""
+    report = run_dir / "report.html"
+    return os.path.relpath(report, out) if report.is_file() else os.path.relpath(run_dir, out) + "/"
+
+
 def _runs_table(out: Path, results: Sequence[RunResult]) -> str:
     head = ("<tr><th>run</th><th>status</th><th>utility</th><th>tasks</th><th>simulated [s]</th><th>wall [s]</th>"
             "<th>CPU [s]</th><th>error</th></tr>")
     body = []
     for r in results:
-        link = f"runs/{r.key}/report.html" if (out / "runs" / r.key / "report.html").is_file() else f"runs/{r.key}/"
+        link = run_href(out, out / "runs" / r.key)
         body.append(f"<tr><td><a href='{_e(link)}'>{_e(r.key)}</a></td><td>{r.status}</td><td>{_n(r.total_utility)}</td>"
                     f"<td>{r.tasks_succeeded}/{r.tasks_started}</td><td>{_n(r.sim_duration)}</td><td>{_n(r.wall_time)}</td>"
                     f"<td>{_n(r.cpu_time)}</td><td class='error'>{_e(r.error or '')}</td></tr>")

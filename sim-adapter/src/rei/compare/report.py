@@ -7,12 +7,11 @@ Inline SVG in the campaign report's style (rei.campaign.report): one file that o
 
 from __future__ import annotations
 
-import os
 from collections.abc import Sequence
 from html import escape
 from pathlib import Path
 
-from rei.campaign.report import CSS
+from rei.campaign.report import CSS, run_href
 from rei.compare.analysis import Comparison, Difference, MetricComparison
 from rei.compare.runs import Run
 from rei.evaluation.outcome import Status
@@ -145,8 +144,7 @@ def _unpaired(out: Path, only_baseline: Sequence[Run], only_candidate: Sequence[
 
 
 def _link(out: Path, run: Run, text: object) -> str:
-    target = run.report or run.folder
-    href = os.path.relpath(target, out)
+    href = run_href(out, run.folder)
     shown = f"{text:.4g}" if isinstance(text, float) else str(text)
     return f"<a href='{_e(href)}'>{_e(shown)}</a>"
 

@@ -38,11 +38,6 @@ class Run:
     def pair_key(self) -> tuple[str, str, str, int]:
         return (self.group, self.case, self.variant, self.seed)
 
-    @property
-    def report(self) -> Path | None:
-        path = self.folder / "report.html"
-        return path if path.is_file() else None
-
 
 @dataclass(frozen=True, slots=True)
 class Pairing:
