@@ -103,3 +103,21 @@ def test_a_missing_element_is_reported_at_its_name() -> None:
     parameter = Parameter("object", "bin2", "floor", None, "s.yaml:3:27", name_at="s.yaml:3:14")
     with pytest.raises(SpecError, match=r"^s\.yaml:3:14: the base case has no object named 'bin2'"):
         Space([parameter], DIAGRAM)
+
+
+def test_extra_furniture_adds_the_first_count_pieces() -> None:
+    palette = [{"name": "Chair", "category": "object"}, {"name": "Box", "category": "object"},
+               {"name": "Human", "category": "human"}]
+    parameter = Parameter("furniture", "", "count", (("Chair", "Box"), Range(0, 2, True), None), "s.yaml:2:3")
+    space = Space([parameter], DIAGRAM, palette)
+    assert space.distributions["furniture.count"] == IntDistribution(0, 2)
+    # free floors: not the robot's nor bin1's
+    assert space.distributions["furniture.1.floor"] == CategoricalDistribution(["F_1_0", "F_2_0", "F_1_1"])
+    values = {"furniture.count": 1, "furniture.0.type": "Box", "furniture.0.floor": "F_2_0",
+              "furniture.1.type": "Chair", "furniture.1.floor": "F_1_0"}
+    assert space.edit(values).operations == (
+        {"op": "addObject", "name": "search_extra_0", "type": "Box", "floor": "F_2_0"},)
+    assert space.edit({**values, "furniture.count": 0}).operations == ()
+    with pytest.raises(SpecError, match="'Human' is not a furniture type of the base case's catalogues"):
+        Space([Parameter("furniture", "", "count", (("Human",), Range(0, 1, True), None), "s.yaml:2:3")], DIAGRAM,
+              palette)

@@ -26,6 +26,7 @@ parameters:
   - {goal: 1, floor: any}
   - {seed: [0, 100]}
   - {fault: "laser:1%", rate: [0.0, 0.05], width: [1, 4]}
+  - {furniture: [Chair, Box], count: [0, 2], floor: [F_1_0, F_2_0]}
 objectives:
   - utility
   - {metric: clearance_humans_min}
@@ -58,13 +59,14 @@ def test_a_good_spec_parses_to_what_it_says(folder: Path) -> None:
     assert spec.case == folder / "case.rei" and spec.controller == "nav" and spec.sut is None
     keys = [p.key for p in spec.parameters]
     assert keys == ["walker.start", "walker.speed", "walker.loop", "walker.points", "bin1.floor", "bin1.yaw",
-                    "tb3.floor", "goal1.floor", "seed", "fault.rate", "fault.width"]
+                    "tb3.floor", "goal1.floor", "seed", "fault.rate", "fault.width", "furniture.count"]
     by_key = {p.key: p for p in spec.parameters}
     assert by_key["walker.start"].domain == Range(4.0, 12.0)
     assert by_key["walker.points"].domain == (("F_2_0", "F_1_0"), None)
     assert by_key["bin1.floor"].domain is None and by_key["tb3.floor"].domain == ("F_0_1", "F_1_1")
     assert by_key["seed"].domain == Range(0, 100, integer=True) and by_key["fault.width"].domain.integer
     assert by_key["fault.rate"].base == "laser:1%"
+    assert by_key["furniture.count"].domain == (("Chair", "Box"), Range(0, 2, True), ("F_1_0", "F_2_0"))
     assert by_key["bin1.floor"].where == "s.yaml:9:27"
     assert [(o.label, o.direction) for o in spec.objectives] == [
         ("utility", "minimize"), ("metric:clearance_humans_min", "minimize"),
@@ -86,14 +88,15 @@ def test_a_good_spec_parses_to_what_it_says(folder: Path) -> None:
     (("{robot: tb3, floor: [F_0_1, F_1_1]}", "{robot: tb3, floor: somewhere}"),
      "s.yaml:11:25: expected 'any' or a list of floor names, got 'somewhere'"),
     (('"laser:1%"', '"laser:lots"'), "s.yaml:14:13: bad fault spec 'laser:lots': unknown preset 'lots'"),
-    (("{metric: clearance_humans_min}", "{metric: clearance}"), "s.yaml:17:14: unknown metric 'clearance'"),
+    (("{metric: clearance_humans_min}", "{metric: clearance}"), "s.yaml:18:14: unknown metric 'clearance'"),
     (("{verdict: MISSION_WITH_HUMAN_TRAJECTORY}", "{verdict: NEVER_FAIL}"),
-     "s.yaml:18:15: unknown requirement 'NEVER_FAIL'"),
-    (("of: first", "of: last"), "s.yaml:19:46: 'of' is count or first, got 'last'"),
-    (("shrink: {budget: 3}", "shrink: {budget: 3, depth: 2}"), "s.yaml:20:21: unknown key 'depth'; known: budget"),
+     "s.yaml:19:15: unknown requirement 'NEVER_FAIL'"),
+    (("of: first", "of: last"), "s.yaml:20:46: 'of' is count or first, got 'last'"),
+    (("shrink: {budget: 3}", "shrink: {budget: 3, depth: 2}"), "s.yaml:21:21: unknown key 'depth'; known: budget"),
     (("name: crossing", "nmae: crossing"), "s.yaml:1:1: unknown key 'nmae'"),
+    (("count: [0, 2]", "count: [0, 20]"), "s.yaml:15:38: 'count' is between 0 and 10 pieces, got [0, 20]"),
     (("shrink: {budget: 3}", "shrink: {budget: 3}\ndiversity: maybe"),
-     "s.yaml:21:12: 'diversity' must be true or false, got 'maybe'"),
+     "s.yaml:22:12: 'diversity' must be true or false, got 'maybe'"),
     (("name: crossing", "controller: autopilot"), "s.yaml:1:13: unknown controller 'autopilot'"),
     (("name: crossing", "sut: {cmd: x}"), "s.yaml:1:6: unknown key 'cmd'; known: command, clock"),
     (("case: case.rei", "case: other.rei"), "s.yaml:2:7: the base case "),

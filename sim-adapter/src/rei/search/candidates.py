@@ -61,6 +61,7 @@ class CandidateMaker:
             raise SpecError(f"{base}:{first['line']}:{first['column']}: the base case is not valid: {first['message']}")
         self.base_text: str = answer["text"]
         self.diagram: dict[str, Any] = answer["diagram"]
+        self.palette: list[dict[str, Any]] = answer.get("palette") or []
         self._generator: JarServer | None = None
 
     def make(self, key: str, edit: Edit) -> Candidate:

@@ -84,8 +84,8 @@ def _shrink_all(search: Search, shrunk: dict[str, Any], log: Callable[[str], Non
                         index, search.spec.shrink_budget, log, seen)
         shrunk[signature] = result.to_dict()
         (search.out / SHRUNK).write_text(json.dumps(shrunk, indent=2, default=str) + "\n", encoding="utf-8")
-        log(f"  shrunk: {result.kept} of {result.steps} steps kept, removed {', '.join(result.removed) or 'nothing'}"
-            f": {result.case}")
+        log(f"  shrunk: {result.kept} reduction(s) kept in {result.steps} simulation(s), removed "
+            f"{', '.join(result.removed) or 'nothing'}: {result.case}")
     return shrunk
 
 

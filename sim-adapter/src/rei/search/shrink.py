@@ -2,8 +2,8 @@
 """Shrinking a failure, as property-based testing shrinks a counterexample: greedily, one step at a time, keeping
 each step that still fails the same way (same requirement, same element, same place).
 
-Steps, in order: remove each object and human the failure does not name, then move each parameter back to the
-base case's value. Each step is one candidate (validated and checked like any other) and, when valid, one
+Steps, in order: remove each object and human the failure does not name, then the extra pieces of furniture
+(the last first), then move each parameter back to the base case's value. Each step is one candidate (validated and checked like any other) and, when valid, one
 simulation; ``budget`` caps the simulations per failure. The shrunk case is written to
 ``OUT/shrunk/shrunk-<n>.rei`` with its run in ``OUT/shrunk/runs/<n>-<step>/``.
 """
@@ -22,6 +22,8 @@ from rei.search.failures import Failure, failures_of
 from rei.search.pool import Pool
 from rei.search.space import Space
 
+#: The number of extra pieces of furniture (rei.search.space).
+EXTRA_COUNT = "furniture.count"
 #: Evaluates a candidate: its run's folder and case folder give the failures it shows (None: not simulated).
 Check = Callable[[Candidate, str], "list[Failure] | None"]
 
@@ -32,7 +34,7 @@ class Shrunk:
     values: dict[str, Any]
     removed: list[str]
     steps: int  # simulations spent
-    kept: int  # steps that kept the failure
+    kept: int  # reductions kept (each still fails the same way)
     run: str | None
 
     def to_dict(self) -> dict[str, Any]:
@@ -54,49 +56,62 @@ def shrink(failure: Failure, values: Mapping[str, Any], space: Space, maker: Can
     last_run: str | None = None
     folder = out / "shrunk"
 
-    def fails(trial_values: dict[str, Any], trial_removed: list[str]) -> tuple[bool, str | None]:
+    def fails(trial_values: dict[str, Any], trial_removed: list[str]) -> tuple[bool, str | None, str | None]:
+        """Whether the case still fails the same way, the run that shows it, and the case's text."""
         nonlocal steps
         key = f"{index}-{steps + 1}"
         candidate = maker.make(f"shrink-{key}", space.edit(trial_values, trial_removed))
         if candidate.status != VALID or candidate.text is None:
-            return False, None
-        if candidate.text in seen:
-            signatures, known_run = seen[candidate.text]
-            return failure.signature in signatures, known_run if failure.signature in signatures else None
+            return False, None, None
+        if candidate.text == current_text or candidate.text in seen:
+            signatures, known_run = seen.get(candidate.text, ([], None))
+            same = candidate.text == current_text or failure.signature in signatures
+            return same, known_run if same else None, candidate.text
         steps += 1
         case_dir, problem = maker.generate(candidate)
         if problem is not None:
-            return False, None
+            return False, None, None
         run_dir = folder / "runs" / key
         task = task_of(f"shrink-{key}", candidate, case_dir, run_dir)
         outcome = pool.submit(task).result()
         result = make_result(task, outcome)
         write_result(task, result)
         if result.status != "COMPLETED":
-            return False, None
+            return False, None, None
         summary = json.loads((run_dir / "summary.json").read_text(encoding="utf-8"))
         found = failures_of(summary, run_dir, case_dir, space.floor_at)
         seen[candidate.text] = ([f.signature for f in found], str(run_dir))
         same = any(f.signature == failure.signature for f in found)
         log(f"  shrink {index} step {steps}: {'still fails' if same else 'passes or fails otherwise'}")
-        return same, str(run_dir) if same else None
+        return same, str(run_dir) if same else None, candidate.text
 
+    def keep(attempt: dict[str, Any], attempt_removed: list[str]) -> bool:
+        """Tries a smaller case; keeps it when it still fails (a step that leaves the text as it was is kept
+        without counting: a value that has no effect, such as a removed piece's type)."""
+        nonlocal current, removed, kept, last_run, current_text
+        ok, run, text = fails(attempt, attempt_removed)
+        if not ok:
+            return False
+        if text != current_text:
+            kept, last_run, current_text = kept + 1, run or last_run, text
+        current, removed = attempt, attempt_removed
+        return True
+
+    start = maker.make(f"shrink-{index}-0", space.edit(current, removed))
+    current_text = start.text
     # removals first, as property-based shrinkers delete before they simplify: the biggest reduction per step
     for element in space.removable():
         if steps >= budget:
             break
-        if element == failure.element:
-            continue
-        ok, run = fails(current, [*removed, element])
-        if ok:
-            removed, kept, last_run = [*removed, element], kept + 1, run
+        if element != failure.element:
+            keep(current, [*removed, element])
+    while int(current.get(EXTRA_COUNT) or 0) > 0 and steps < budget:  # extra furniture, the last piece first
+        if not keep({**current, EXTRA_COUNT: int(current[EXTRA_COUNT]) - 1}, removed):
+            break
     for name in [k for k in current if current[k] != base.get(k)]:
         if steps >= budget:
             break
-        attempt = {**current, name: base.get(name)}
-        ok, run = fails(attempt, removed)
-        if ok:
-            current, kept, last_run = attempt, kept + 1, run
+        keep({**current, name: base.get(name)}, removed)
     final = maker.make(f"shrunk-{index}", space.edit(current, removed))
     path: Path | None = folder / f"shrunk-{index}.rei"
     if final.status == VALID and path is not None:

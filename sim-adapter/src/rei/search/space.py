@@ -20,6 +20,8 @@ from rei.campaign.spec import SpecError
 from rei.search.spec import Parameter, Range
 
 Values = Mapping[str, Any]
+#: The names of extra pieces of furniture: ``search_extra_0``, ...
+EXTRA = "search_extra_"
 
 
 @dataclass(frozen=True, slots=True)
@@ -34,7 +36,8 @@ class Edit:
 class Space:
     """The parameters of a spec over one base case (its room editor diagram)."""
 
-    def __init__(self, parameters: Sequence[Parameter], diagram: Mapping[str, Any]) -> None:
+    def __init__(self, parameters: Sequence[Parameter], diagram: Mapping[str, Any],
+                 palette: Sequence[Mapping[str, Any]] = ()) -> None:
         self.parameters = tuple(parameters)
         self._diagram = diagram
         self._floors = {f["name"]: (float(f["centreX"]), float(f["centreY"])) for f in diagram["room"]["floors"]}
@@ -46,6 +49,8 @@ class Space:
         taken = {item["floor"]: name for name, item in self._items.items()}
         self.distributions: dict[str, BaseDistribution] = {}
         self._base: dict[str, Any] = {}
+        self._furniture_types = [t["name"] for t in palette if t.get("category") == "object"]
+        self._extras = 0  # the most extra pieces of furniture a point may have
         for p in self.parameters:
             self._add(p, objects, robot, taken)
 
@@ -65,6 +70,9 @@ class Space:
                             f"{', '.join(self._humans) or 'none'}")
         if p.target == "goal" and int(p.name) >= len(self._goals):
             raise SpecError(f"{at}: the mission has {len(self._goals)} goal(s): index {p.name} is not one")
+        if p.target == "furniture":
+            self._add_furniture(p, taken)
+            return
         if p.prop == "floor":
             own = self._items[p.name]["floor"] if p.target in ("object", "robot") else None
             base = own if own is not None else self._goals[int(p.name)]["floor"]
@@ -93,6 +101,20 @@ class Space:
             self._float(p.key, p.domain, None)
         else:
             raise AssertionError(p)
+
+    def _add_furniture(self, p: Parameter, taken: Mapping[str, str]) -> None:
+        types, count, floors = p.domain
+        unknown = [t for t in types if t not in self._furniture_types]
+        if unknown:
+            raise SpecError(f"{p.name_at or p.where}: {unknown[0]!r} is not a furniture type of the base case's "
+                            f"catalogues; they have {', '.join(self._furniture_types)}")
+        free = [f for f in self._floors if f not in taken]
+        choices = self._checked_floors(p, floors, free)
+        self._float(p.key, count, 0)
+        self._extras = int(count.high)
+        for i in range(self._extras):  # every slot is sampled; a point uses the first ``count`` of them
+            self._categorical(f"furniture.{i}.type", list(types), None, p.where)
+            self._categorical(f"furniture.{i}.floor", choices, None, p.where)
 
     def _checked_floors(self, p: Parameter, floors: Sequence[str] | None, default: list[str]) -> list[str]:
         if floors is None:
@@ -146,6 +168,9 @@ class Space:
             operations += [{"op": "removeGoal", "index": index},
                            {"op": "addGoal", "floor": values[p.key], "index": index,
                             "timeoutSeconds": self._goals[index].get("timeout")}]
+        count = int(values.get("furniture.count") or 0)
+        operations += [{"op": "addObject", "name": f"{EXTRA}{i}", "type": values[f"furniture.{i}.type"],
+                        "floor": values[f"furniture.{i}.floor"]} for i in range(min(count, self._extras))]
         operations += [{"op": "deleteObject", "name": name} for name in removed]
         seed = int(values.get("seed", 0) or 0)
         return Edit(tuple(operations), seed, self._fault(values))

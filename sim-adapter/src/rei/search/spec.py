@@ -21,6 +21,7 @@ Checked completely at the door; every mistake is reported as ``FILE:LINE:COLUMN:
       - {goal: 1, floor: any}
       - {seed: [0, 1000]}
       - {fault: "laser:1%", rate: [0.0, 0.05]}  # and gain, width
+      - {furniture: [Chair, Box], count: [0, 3], floor: any}  # extra pieces from the catalogues
     objectives:                 # one, or several (a Pareto search)
       - utility                 # or {utility: minimize}
       - {metric: clearance_humans_min}          # summary.json's metrics, default: towards the worse side
@@ -59,7 +60,8 @@ class Range:
 
 @dataclass(frozen=True, slots=True)
 class Parameter:
-    """One searched property of one element. ``target``: object, human, robot, goal, seed or fault;
+    """One searched property of one element. ``target``: object, human, robot, goal, seed, fault or furniture
+    (extra pieces: ``domain`` is (types, count Range, floors or None));
     ``name``: the element (a goal's index as text; empty for seed and fault); ``prop``: floor, yaw, points,
     start, speed, loop, value (seed), rate, gain, width; ``domain``: a Range, a tuple of choices, or for
     ``points`` a tuple with one tuple of floors (or None: any floor) per control point; None for 'any'."""
@@ -77,8 +79,8 @@ class Parameter:
         """Its name in the study and in search.json: ``bin1.floor``, ``goal1.floor``, ``seed``."""
         if self.target == "seed":
             return "seed"
-        if self.target == "fault":
-            return f"fault.{self.prop}"
+        if self.target in ("fault", "furniture"):
+            return f"{self.target}.{self.prop}"
         owner = f"goal{self.name}" if self.target == "goal" else self.name
         return f"{owner}.{self.prop}"
 
@@ -245,7 +247,7 @@ def _check_controller(controller: str, where: str) -> None:
 
 
 _PROPS = {"object": ("floor", "yaw"), "robot": ("floor",), "human": ("points", "start", "speed", "loop"),
-          "goal": ("floor",), "seed": (), "fault": ("rate", "gain", "width")}
+          "goal": ("floor",), "seed": (), "fault": ("rate", "gain", "width"), "furniture": ("count", "floor")}
 
 
 def _parameters(node: yaml.Node, loc: _Located) -> tuple[Parameter, ...]:
@@ -266,6 +268,9 @@ def _parameters(node: yaml.Node, loc: _Located) -> tuple[Parameter, ...]:
             if prop not in _PROPS[target]:
                 raise SpecError(f"{loc.at(entry[prop][0])}: '{prop}' is not a property of {_article(target)} {target}; "
                                 f"expected {', '.join(_PROPS[target]) or 'no other key'}")
+        if target == "furniture":
+            parameters.append(_furniture(name_value, name_node, entry, item, loc))
+            continue
         if target == "seed":
             parameters.append(Parameter("seed", "", "value", _range(name_value, name_node, loc, integer=True),
                                         loc.at(item)))
@@ -301,6 +306,23 @@ def _parameters(node: yaml.Node, loc: _Located) -> tuple[Parameter, ...]:
         if parameter.key in keys[:i]:
             raise SpecError(f"{parameter.where}: {parameter.key} is searched twice")
     return tuple(parameters)
+
+
+def _furniture(types: Any, node: yaml.Node, entry: dict[str, tuple[yaml.Node, yaml.Node]], item: yaml.Node,
+               loc: _Located) -> Parameter:
+    """``{furniture: [Chair, Box], count: [0, 3], floor: any}``: up to ``count`` extra pieces of the listed
+    catalogue types (checked against the base case's catalogues later), each on a floor of ``floor``."""
+    if not isinstance(types, list) or not types or not all(isinstance(t, str) and t for t in types):
+        raise SpecError(f"{loc.at(node)}: 'furniture' lists the catalogue types to add, such as [Chair, Box]")
+    if "count" not in entry:
+        raise SpecError(f"{loc.at(item)}: give 'count': how many pieces at least and at most, such as [0, 3]")
+    count_node = entry["count"][1]
+    count = _range(loc.value(count_node), count_node, loc, integer=True)
+    if count.low < 0 or count.high > 10:
+        raise SpecError(f"{loc.at(count_node)}: 'count' is between 0 and 10 pieces, got [{count.low:g}, {count.high:g}]")
+    floors = None if "floor" not in entry else _floors(loc.value(entry["floor"][1]), entry["floor"][1], loc)
+    return Parameter("furniture", "", "count", (tuple(dict.fromkeys(types)), count, floors), loc.at(item),
+                     name_at=loc.at(node))
 
 
 def _fault_checked(parse: Any, text: str) -> None:

@@ -107,7 +107,7 @@ class Search:
             shutil.copyfile(spec.source, self.out / "spec.yaml")
         self.maker = CandidateMaker(spec.case, self.out)
         try:
-            self.space = Space(spec.parameters, self.maker.diagram)
+            self.space = Space(spec.parameters, self.maker.diagram, self.maker.palette)
         except BaseException:  # a parameter the base case does not have: the engine's JVM goes now
             self.maker.close()
             raise
