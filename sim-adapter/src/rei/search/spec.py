@@ -43,7 +43,6 @@ from typing import Any
 import yaml
 
 from rei.campaign.spec import ExternalSut, SpecError, _Reader, _sut
-from rei.evaluation.metrics import BY_NAME, NAMES, Better
 
 SAMPLERS = ("tpe", "cmaes", "nsga2", "qmc", "random")
 DIRECTIONS = ("minimize", "maximize")
@@ -381,6 +380,9 @@ _KINDS = ("utility", "time", "metric", "verdict", "signal")
 
 
 def _objectives(node: yaml.Node, loc: _Located) -> tuple[Objective, ...]:
+    # imported here: `rei --help` imports this module for the sampler names
+    from rei.evaluation.metrics import BY_NAME, NAMES, Better
+
     if not isinstance(node, yaml.SequenceNode) or not node.value:
         raise SpecError(f"{loc.at(node)}: 'objectives' must be a non-empty list")
     objectives: list[Objective] = []
