@@ -28,7 +28,7 @@ EXIT_FOUND = 1
 
 def register(subparsers: argparse._SubParsersAction[Any]) -> None:
     """Add the `search` subcommand."""
-    from rei.search.spec import SAMPLERS
+    from rei.search import SAMPLERS
 
     parser = subparsers.add_parser("search", help="search for situations that make the robot fail (falsification)",
                                    description=__doc__.split("\n\n", 1)[1] if __doc__ else None)

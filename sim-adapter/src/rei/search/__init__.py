@@ -8,3 +8,6 @@ editor's operations), ``candidates`` (the base case edited, validated, checked f
 ask/tell loop over a journal), ``shrink``, ``outputs`` and ``report``, and ``run``, which ties them together.
 This package may import rei.campaign, rei.evaluation, rei.edit, rei.rooms and rei.report; only rei.cli imports it.
 """
+
+#: The optimizers (``sampler:`` / ``--sampler``); here, with no import, so the command line lists them cheaply.
+SAMPLERS = ("tpe", "cmaes", "nsga2", "qmc", "random")

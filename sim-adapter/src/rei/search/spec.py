@@ -43,8 +43,9 @@ from typing import Any
 import yaml
 
 from rei.campaign.spec import ExternalSut, SpecError, _Reader, _sut
+from rei.evaluation.metrics import BY_NAME, NAMES, Better
+from rei.search import SAMPLERS
 
-SAMPLERS = ("tpe", "cmaes", "nsga2", "qmc", "random")
 DIRECTIONS = ("minimize", "maximize")
 #: The direction in which each kind of objective is worse for the robot (what a falsification looks for).
 _WORSE = {"utility": "minimize", "time": "maximize", "verdict": "minimize"}
@@ -380,9 +381,6 @@ _KINDS = ("utility", "time", "metric", "verdict", "signal")
 
 
 def _objectives(node: yaml.Node, loc: _Located) -> tuple[Objective, ...]:
-    # imported here: `rei --help` imports this module for the sampler names
-    from rei.evaluation.metrics import BY_NAME, NAMES, Better
-
     if not isinstance(node, yaml.SequenceNode) or not node.value:
         raise SpecError(f"{loc.at(node)}: 'objectives' must be a non-empty list")
     objectives: list[Objective] = []
