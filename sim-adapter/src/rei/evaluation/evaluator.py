@@ -29,7 +29,7 @@ from typing import Any
 from rei.evaluation.context import CaseContext, VerdictSettings
 from rei.evaluation.junit import write_junit
 from rei.evaluation.log import EventLog, format_number
-from rei.evaluation.metrics import LIST_KEYS, NAMES, MetricsError, compute_metrics
+from rei.evaluation.metrics import LIST_KEYS, NAMES, MetricsError, measure
 from rei.evaluation.mission_info import MissionInfo, MissionInfoError
 from rei.evaluation.outcome import Evidence
 from rei.evaluation.signals import (
@@ -259,7 +259,7 @@ class Evaluator:
                           mission_recorded=self.settings.mission, transitions=self.transitions)
             context = CaseContext.from_configs(self._mission, self.monitor_config, self.world, self.settings)
             verdicts = judge(trace, context)
-            metrics, metrics_error = _metrics(self.out_dir)
+            metrics, metrics_error, metrics_notes = _metrics(self.out_dir)
             testcase = (self._mission.testcase if self._mission and self._mission.testcase
                         else _text((self.monitor_config or {}).get("testcase")))
             mission = self._mission.name if self._mission else None
@@ -270,7 +270,7 @@ class Evaluator:
                 unknown_signals=dict(self._unknown),
                 goals=len(self._mission.goals) if self._mission else None,
                 tasks=_tasks(signals, self._task_reasons), verdicts=verdicts,
-                problems=(*problems, *self._notes), utility_source=self.utilities.source,
+                problems=(*problems, *self._notes, *metrics_notes), utility_source=self.utilities.source,
                 files={"events": EVENTS_FILE, "verdicts": VERDICTS_FILE},
                 metrics=metrics, metrics_error=metrics_error,
             )
@@ -342,10 +342,14 @@ def _text(value: Any) -> str | None:
     return value if isinstance(value, str) else None
 
 
-def _metrics(out_dir: Path) -> tuple[dict[str, Any], str | None]:
-    """The run's navigation metrics from what it recorded, or all None and why (a run that broke before it
-    recorded anything, an evaluator fed by hand)."""
+def _metrics(out_dir: Path) -> tuple[dict[str, Any], str | None, tuple[Evidence, ...]]:
+    """The run's navigation metrics from what it recorded and notes on what they left out, or all None and why
+    (a run that broke before it recorded anything, an evaluator fed by hand). Any failure of the metrics is
+    caught: it must not cost the run its summary and verdicts."""
     try:
-        return compute_metrics(out_dir), None
-    except (MetricsError, OSError, ValueError) as error:
-        return dict.fromkeys((*NAMES, *LIST_KEYS)), str(error)
+        measured = measure(out_dir)
+    except (MetricsError, OSError) as error:
+        return dict.fromkeys((*NAMES, *LIST_KEYS)), str(error), ()
+    except Exception as error:  # noqa: BLE001 - a bug in the metrics: the summary says so, the run is still judged
+        return dict.fromkeys((*NAMES, *LIST_KEYS)), f"metrics failed: {type(error).__name__}: {error}", ()
+    return measured.metrics, None, tuple(Evidence(note) for note in measured.notes)

@@ -228,15 +228,7 @@ class Simulation:
 
     def static_map(self) -> StaticMap:
         """Walls and STATIC objects as footprint rectangles, the floors' bounds and the robot's footprint."""
-        world = self.case.world
-        obstacles = tuple(
-            (o.pose[0], o.pose[1], o.pose[3], o.size[0], o.size[1])
-            for o in world.objects
-            if o.category in (Category.WALL, Category.STATIC)
-        )
-        return StaticMap(
-            bounds=world.bounds, obstacles=obstacles, robot_size=(world.robot.size[0], world.robot.size[1])
-        )
+        return StaticMap.of_world(self.case.world)
 
     # --- ground truth -----------------------------------------------------------------------------------------
     def robot_pose(self) -> Pose2D:

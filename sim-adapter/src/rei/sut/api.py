@@ -16,6 +16,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from rei.artifacts.world import Category, WorldSpec
 from rei.geometry import Pose2D, Twist2D
 
 
@@ -74,6 +75,14 @@ class StaticMap:
     bounds: tuple[float, float, float, float]
     obstacles: tuple[tuple[float, float, float, float, float], ...]
     robot_size: tuple[float, float]
+
+    @classmethod
+    def of_world(cls, world: WorldSpec) -> StaticMap:
+        """Walls and STATIC objects of ``world`` as footprint rectangles, the floors' bounds and the robot's
+        footprint: one definition for the simulation's map and the metrics' shortest path (SPL)."""
+        obstacles = tuple((o.pose[0], o.pose[1], o.pose[3], o.size[0], o.size[1]) for o in world.objects
+                          if o.category in (Category.WALL, Category.STATIC))
+        return cls(bounds=world.bounds, obstacles=obstacles, robot_size=(world.robot.size[0], world.robot.size[1]))
 
 
 class Controller(ABC):

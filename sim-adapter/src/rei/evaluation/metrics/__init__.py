@@ -7,8 +7,8 @@ of :data:`METRICS` (None where a metric does not apply) plus ``task_times``. ``r
 campaigns and ``rei import`` + ``rei evaluate`` all get them in ``summary.json``'s ``metrics``.
 """
 
-from rei.evaluation.metrics.compute import MetricsError, compute_metrics
+from rei.evaluation.metrics.compute import Measured, MetricsError, compute_metrics, measure
 from rei.evaluation.metrics.definitions import BY_NAME, LIST_KEYS, METRICS, NAMES, Better, Kind, Metric
 
-__all__ = ["BY_NAME", "LIST_KEYS", "METRICS", "NAMES", "Better", "Kind", "Metric", "MetricsError",
-           "compute_metrics"]
+__all__ = ["BY_NAME", "LIST_KEYS", "METRICS", "NAMES", "Better", "Kind", "Metric", "Measured", "MetricsError",
+           "compute_metrics", "measure"]

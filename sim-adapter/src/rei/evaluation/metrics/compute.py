@@ -24,6 +24,8 @@ from rei.artifacts.case import case_of_run
 from rei.evaluation.metrics.definitions import NAMES
 from rei.evaluation.mission_info import MissionInfo, MissionInfoError
 from rei.geometry import footprint_gaps, wrap_angle
+from rei.mission.executor import MISSION_INFO_FILE
+from rei.sut.api import StaticMap
 from rei.wamp.recording import iter_recording, stream_path
 
 Value = float | int | bool | None
@@ -34,8 +36,8 @@ STANDING = 0.02
 REVERSAL = 0.02
 #: Rows of robot poses per block of the gap computation (bounds the temporary arrays to a few MB).
 _BLOCK = 2048
-#: The mission executor's record of mission_info (rei.mission.executor.MISSION_INFO_FILE).
-_MISSION_INFO = "mission_info.json"
+#: Below this length (m) a shortest path is empty: the start is at the goal (SPL 1 on success, not 0/0).
+_EMPTY_PATH = 1e-9
 
 
 class MetricsError(ValueError):
@@ -57,11 +59,29 @@ class _States:
     odom: np.ndarray  # (T, 2), NaN where not published
     moving: np.ndarray  # (T, M, 3) x, y, yaw of world.json's moving objects, NaN where not published
     contacts: list[frozenset[str]]
+    skipped: int = 0  # malformed state messages left out
+    first_skipped: str = ""  # why the first of them was
+
+
+#: One state message's sample: t, true (x, y, yaw), twist, odometry (x, y), moving objects' places, contacts.
+_Row = tuple[float, tuple[float, float, float], tuple[float, ...], tuple[float, ...], np.ndarray, frozenset[str]]
+
+
+@dataclass(frozen=True, slots=True)
+class Measured:
+    metrics: dict[str, Any]
+    #: What was left out of the measurement (malformed state messages), for the summary's problems.
+    notes: tuple[str, ...]
 
 
 def compute_metrics(run_dir: Path, case_dir: Path | None = None) -> dict[str, Any]:
     """Every metric of the run in ``run_dir`` (its recorded streams, its case), in the order of ``METRICS``,
     then ``task_times``. Raises MetricsError when there is no state recording or no world.json."""
+    return measure(run_dir, case_dir).metrics
+
+
+def measure(run_dir: Path, case_dir: Path | None = None) -> Measured:
+    """:func:`compute_metrics`, with notes on the state messages it had to leave out."""
     run_dir = Path(run_dir)
     case_dir = Path(case_dir) if case_dir is not None else case_of_run(run_dir)
     if case_dir is None:
@@ -77,8 +97,9 @@ def compute_metrics(run_dir: Path, case_dir: Path | None = None) -> dict[str, An
     states = _read_states(run_dir, world.robot.name, moving.names)
     missions = _read_stream(run_dir, "mission")
     recorded = _mission_recorded(run_dir) and bool(missions)
-    t0 = next((m["t"] for m in missions if m.get("event") == "BEGIN"), None) if recorded else None
-    t1 = next((m["t"] for m in reversed(missions) if m.get("event") == "END"), None) if recorded else None
+    timed = [m for m in missions if _number(m.get("t"))] if recorded else []
+    t0 = next((m["t"] for m in timed if m.get("event") == "BEGIN"), None)
+    t1 = next((m["t"] for m in reversed(timed) if m.get("event") == "END"), None)
     t0 = float(t0) if t0 is not None else float(states.t[0])
     t1 = float(t1) if t1 is not None else float(states.t[-1])
     window = (states.t >= t0 - 1e-9) & (states.t <= t1 + 1e-9)
@@ -86,6 +107,8 @@ def compute_metrics(run_dir: Path, case_dir: Path | None = None) -> dict[str, An
         window = np.ones(len(states.t), dtype=bool)
     s = _States(states.t[window], states.pose[window], states.twist[window], states.odom[window],
                 states.moving[window], [c for c, w in zip(states.contacts, window, strict=True) if w])
+    notes = ((f"{stream_path(run_dir, 'state')}: {states.skipped} malformed state message(s) left out of the "
+              f"metrics (the first: {states.first_skipped})"),) if states.skipped else ()
     robot_size = (world.robot.size[0], world.robot.size[1])
     static_gaps = _gaps(s.pose, robot_size, statics.boxes, statics.circle)
     moving_gaps = _gaps(s.pose, robot_size, _moving_boxes(s.moving, moving.boxes), moving.circle)
@@ -96,7 +119,7 @@ def compute_metrics(run_dir: Path, case_dir: Path | None = None) -> dict[str, An
     out.update(_clearances("humans", moving_gaps[:, humans]))
     out.update(_zones(run_dir, case_dir, s, np.hstack((static_gaps, moving_gaps)), (*statics.names, *moving.names)))
     out.update(_motion(s, t1 - t0, out["path_length"]))
-    return {k: None if isinstance(v, float) and not math.isfinite(v) else v for k, v in out.items()}
+    return Measured({k: None if isinstance(v, float) and not math.isfinite(v) else v for k, v in out.items()}, notes)
 
 
 # -- reading ---------------------------------------------------------------------------------------------------
@@ -114,43 +137,67 @@ def _obstacles(objects: Sequence[Any]) -> _Obstacles:
 
 
 def _read_states(run_dir: Path, robot: str, moving: Sequence[str]) -> _States:
+    """The state messages with a robot pose; a malformed one is left out and counted (a running system keeps
+    what it recorded around a bad message), a torn last message (a crashed writer) ends the stream."""
     path = stream_path(run_dir, "state")
     if not path.is_file():
         raise MetricsError(f"{path}: no recorded state stream")
     column = {name: k for k, name in enumerate(moving)}
-    t: list[float] = []
-    pose: list[tuple[float, float, float]] = []
-    twist: list[tuple[float, float, float]] = []
-    odom: list[tuple[float, float]] = []
-    places: list[np.ndarray] = []
-    contacts: list[frozenset[str]] = []
-    try:
-        for state in iter_recording(path):
-            r = state.get("robot") if isinstance(state, Mapping) else None
-            p = _floats(r.get("pose"), 4) if isinstance(r, Mapping) else None
-            if p is None or not isinstance(state.get("t"), int | float):
-                continue
-            t.append(float(state["t"]))
-            pose.append((p[0], p[1], p[3]))
-            v = _floats(r.get("twist"), 3)
-            twist.append(v if v is not None else (math.nan,) * 3)
-            o = _floats(r.get("odom"), 2)
-            odom.append(o if o is not None else (math.nan, math.nan))
-            row = np.full((len(moving), 3), math.nan)
-            for body in state.get("objects") or ():
-                k = column.get(body.get("name")) if isinstance(body, Mapping) else None
-                q = _floats(body.get("pose"), 4) if k is not None else None
-                if q is not None:
-                    row[k] = (q[0], q[1], q[3])
-            places.append(row)
-            contacts.append(frozenset(b if a == robot else a for a, b in (state.get("contacts") or ())
-                                      if robot in (a, b)))
-    except ValueError:
-        pass  # a torn last message (a crashed writer): what was recorded before it is measured
-    if not t:
+    rows: list[_Row] = []
+    skipped, first = 0, ""
+    messages = iter_recording(path)
+    for index in itertools.count():
+        try:
+            state = next(messages)
+        except StopIteration:
+            break
+        except ValueError:
+            break  # a torn last message: what was recorded before it is measured
+        try:
+            row = _state_row(state, robot, column)
+        except (TypeError, ValueError) as error:
+            skipped += 1
+            first = first or f"message {index}: {error}"
+            continue
+        if row is not None:
+            rows.append(row)
+    if not rows:
         raise MetricsError(f"{path}: no state with a robot pose")
+    t, pose, twist, odom, places, contacts = zip(*rows, strict=True)
     return _States(np.array(t), np.array(pose), np.array(twist), np.array(odom),
-                   np.array(places).reshape(len(t), len(moving), 3), contacts)
+                   np.array(places).reshape(len(t), len(moving), 3), list(contacts), skipped, first)
+
+
+def _state_row(state: Any, robot: str, column: Mapping[str, int]) -> _Row | None:
+    """One state message's sample; None for a state without a robot pose (a collector's first messages),
+    TypeError or ValueError for a malformed one."""
+    r = state.get("robot") if isinstance(state, Mapping) else None
+    p = _floats(r.get("pose"), 4) if isinstance(r, Mapping) else None
+    if p is None or not _number(state.get("t")):
+        return None
+    v = _floats(r.get("twist"), 3)
+    o = _floats(r.get("odom"), 2)
+    row = np.full((len(column), 3), math.nan)
+    for body in state.get("objects") or ():
+        if not isinstance(body, Mapping):
+            raise TypeError(f"an 'objects' entry is {type(body).__name__}, expected a mapping")
+        k = column.get(body.get("name"))
+        q = _floats(body.get("pose"), 4) if k is not None else None
+        if k is not None and q is not None:
+            row[k] = (q[0], q[1], q[3])
+    touched = set()
+    for pair in state.get("contacts") or ():
+        if not isinstance(pair, list | tuple) or len(pair) != 2 or not all(isinstance(n, str) for n in pair):
+            raise ValueError(f"a 'contacts' entry is {pair!r}, expected two body names")
+        a, b = pair
+        if robot in (a, b):
+            touched.add(b if a == robot else a)
+    return (float(state["t"]), (p[0], p[1], p[3]), v if v is not None else (math.nan,) * 3,
+            o if o is not None else (math.nan, math.nan), row, frozenset(touched))
+
+
+def _number(value: Any) -> bool:
+    return isinstance(value, int | float) and not isinstance(value, bool)
 
 
 def _floats(value: Any, size: int) -> tuple[float, ...] | None:
@@ -187,7 +234,7 @@ def _mission_recorded(run_dir: Path) -> bool:
 
 
 def _goals(run_dir: Path, case_dir: Path) -> list[tuple[float, float]] | None:
-    recorded = _json(run_dir / _MISSION_INFO)
+    recorded = _json(run_dir / MISSION_INFO_FILE)
     if isinstance(recorded, Mapping):
         try:
             return [(g.x, g.y) for g in MissionInfo.from_message(recorded).goals]
@@ -211,7 +258,7 @@ def _goal_metrics(run_dir: Path, case_dir: Path, world: WorldSpec, missions: lis
     ended: dict[int, tuple[str, float]] = {}
     for m in missions:
         index, event = m.get("task_index"), m.get("event")
-        if not isinstance(index, int) or not isinstance(m.get("t"), int | float):
+        if not isinstance(index, int) or not _number(m.get("t")):
             continue
         if event == "TASK_START":
             started.setdefault(index, float(m["t"]))
@@ -221,11 +268,15 @@ def _goal_metrics(run_dir: Path, case_dir: Path, world: WorldSpec, missions: lis
     end = max(t for _, t in ended.values()) if success else t1
     task_times = [round(ended[i][1] - started[i], 6) if i in ended and i in started else None
                   for i in range(len(goals))]
-    spl: float | None = 0.0
-    if success:
+    # Anderson et al.'s SPL: 0 on failure, L* / max(L*, L) on success, which is 1 when the goal is at the
+    # start (L* = 0: any path is as long as needed); None when the planner finds no path to compare with.
+    shortest = _shortest_path(world, (float(s.pose[0, 0]), float(s.pose[0, 1])), goals)
+    spl: float | None = None
+    if shortest is not None and not success:
+        spl = 0.0
+    elif shortest is not None:
         driven = _path_length(s.pose[s.t <= end + 1e-9])
-        shortest = _shortest_path(world, (float(s.pose[0, 0]), float(s.pose[0, 1])), goals)
-        spl = None if shortest is None else shortest / max(shortest, driven, 1e-9)
+        spl = 1.0 if shortest < _EMPTY_PATH else shortest / max(shortest, driven)
     return {"success": success, "time": end - t0, "spl": spl, "task_times": task_times}
 
 
@@ -233,17 +284,14 @@ def _shortest_path(world: WorldSpec, start: tuple[float, float], goals: Sequence
                    ) -> float | None:
     """start -> goal 1 -> goal 2 ... by the reference global planner on the static map, with its cost gradient
     and inflation margin off: the shortest way the footprint fits at any heading. None when a leg has none."""
-    from rei.sut.api import StaticMap
     from rei.sut.nav.config import NavConfig
     from rei.sut.nav.global_planner import PlanningError, plan
     from rei.sut.nav.grid import CostGrid
 
-    robot_size = (world.robot.size[0], world.robot.size[1])
-    obstacles = tuple((o.pose[0], o.pose[1], o.pose[3], o.size[0], o.size[1]) for o in world.objects
-                      if o.category in (Category.WALL, Category.STATIC))
-    config = NavConfig(footprint_x=robot_size[0], footprint_y=robot_size[1], inflation_margin=0.0,
-                       cost_scale=0.0)
-    grid = CostGrid(StaticMap(bounds=world.bounds, obstacles=obstacles, robot_size=robot_size), config)
+    static_map = StaticMap.of_world(world)
+    config = NavConfig(footprint_x=static_map.robot_size[0], footprint_y=static_map.robot_size[1],
+                       inflation_margin=0.0, cost_scale=0.0)
+    grid = CostGrid(static_map, config)
     total = 0.0
     points = [start, *goals]
     for a, b in itertools.pairwise(points):
@@ -337,18 +385,25 @@ def _motion(s: _States, duration: float, path_length: float) -> dict[str, Value]
 
 def _reversals(advance: np.ndarray) -> int:
     """How often the travel along the heading (``advance``: signed steps, m) turned round after at least
-    REVERSAL one way and then at least REVERSAL the other way."""
-    count, direction, travelled, against = 0, 0.0, 0.0, 0.0
+    REVERSAL one way and then at least REVERSAL the other way.
+
+    Hysteresis on the cumulative signed travel: a leg's direction is set once the travel has left the leg's
+    start by REVERSAL; it turns round when the travel has come back REVERSAL from the leg's extreme. Pauses and
+    millimetre jitter against the direction of a leg neither end it nor start a new one."""
+    count, direction, position, extreme, low, high = 0, 0, 0.0, 0.0, 0.0, 0.0
     for step in advance.tolist():
-        if direction == 0.0 or step * direction >= 0:
-            direction = direction or (math.copysign(1.0, step) if step else 0.0)
-            travelled += abs(step)
-            against = 0.0
-        else:
-            against += abs(step)
-            if against >= REVERSAL:
-                count += travelled >= REVERSAL
-                direction, travelled, against = -direction, against, 0.0
+        position += step
+        if direction == 0:  # the first leg: which way, once it has gone REVERSAL from its lowest or highest
+            low, high = min(low, position), max(high, position)
+            if position - low >= REVERSAL:
+                direction, extreme = 1, position
+            elif high - position >= REVERSAL:
+                direction, extreme = -1, position
+        elif (position - extreme) * direction > 0:
+            extreme = position
+        elif (extreme - position) * direction >= REVERSAL:  # back REVERSAL from a leg of at least REVERSAL
+            count += 1
+            direction, extreme = -direction, position
     return count
 
 
