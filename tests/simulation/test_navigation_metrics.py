@@ -149,7 +149,8 @@ def test_a_drive_into_the_table_is_one_collision_episode(drives: dict[str, Drive
     gap = TABLE_FACE - (d.x + HALF_X)
     colliding = touching | (gap < 0.01)  # monitor.json collision 0.01 m
     assert colliding.any() and m["collision_episodes"] == 1 and m["collision_objects"] == 1
-    assert m["clearance_static_min"] < 0.01
+    # pushing into the table, the simulator lets the bodies overlap by a fraction of a millimetre: a negative gap
+    assert -0.005 < m["clearance_static_min"] < 0
     assert abs(m["clearance_static_min"] - gap.min()) <= 0.002
     first, last = np.flatnonzero(colliding)[[0, -1]]
     assert abs(m["collision_time"] - (min(d.t[last] + 0.05, d.end) - d.t[first])) <= 0.05 + 1e-9

@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: EPL-2.0
-"""The statistics of campaigns and comparisons, from SciPy's ``stats`` (docs/metrics.md, "Statistics").
+"""The statistics of campaigns and comparisons, from SciPy's ``stats`` (docs/metrics.md, "Campaign aggregation"
+and "Comparing two versions").
 
 Why SciPy and not hand-written formulas: the bootstrap, the Wilcoxon signed-rank test and the exact binomial
 test have edge cases (ties, zeros, tiny samples, exact versus normal approximation) that a well-kept library
