@@ -10,5 +10,5 @@ campaigns and ``rei import`` + ``rei evaluate`` all get them in ``summary.json``
 from rei.evaluation.metrics.compute import Measured, MetricsError, compute_metrics, measure
 from rei.evaluation.metrics.definitions import BY_NAME, LIST_KEYS, METRICS, NAMES, Better, Kind, Metric
 
-__all__ = ["BY_NAME", "LIST_KEYS", "METRICS", "NAMES", "Better", "Kind", "Metric", "Measured", "MetricsError",
+__all__ = ["BY_NAME", "LIST_KEYS", "METRICS", "NAMES", "Better", "Kind", "Measured", "Metric", "MetricsError",
            "compute_metrics", "measure"]
