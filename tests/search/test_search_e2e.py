@@ -40,9 +40,11 @@ def searched(tmp_path_factory: pytest.TempPathFactory, run_cli: Any) -> Searched
     spec.write_text(spec.read_text(encoding="utf-8").replace("shrink: {budget: 4}", "shrink: {budget: 2}"),
                     encoding="utf-8")
     out = folder / "out"
-    first = run_cli("search", spec, "-o", out, "--workers", "2", "--budget", "4", "--no-shrink", timeout=TIMEOUT)
+    # one worker: the sampler is told the runs in the order it asked for them, whatever the machine's load, so the
+    # search makes the same candidates every time
+    first = run_cli("search", spec, "-o", out, "--workers", "1", "--budget", "4", "--no-shrink", timeout=TIMEOUT)
     results = {p.parent.name: p.stat().st_mtime_ns for p in (out / "runs").glob("*/result.json")}
-    second = run_cli("search", spec, "-o", out, "--workers", "2", "--budget", "8", timeout=TIMEOUT)
+    second = run_cli("search", spec, "-o", out, "--workers", "1", "--budget", "8", timeout=TIMEOUT)
     document = json.loads((out / "search.json").read_text(encoding="utf-8"))
     return Searched(out, first, second, results, document)
 
@@ -58,10 +60,13 @@ def test_the_search_finds_the_collision_in_the_corridor(searched: Searched) -> N
     signatures = [f["signature"] for f in document["failures"]]
     crossing = [s for s in signatures if s.startswith(f"{REQUIREMENT}/walker/")]
     assert crossing, signatures
-    failing = [r for r in simulated(document) if r["failures"]]
-    # the objective has a slope: every failing evaluation came closer to the person than any passing one
-    assert max(r["values"][0] for r in failing) < min(r["values"][0] for r in simulated(document)
-                                                       if not r["failures"])
+    def collides(record: dict[str, Any]) -> bool:
+        return any(f["requirement"] == REQUIREMENT for f in record["failures"])
+
+    # the objective has a slope: every run that hit the person came closer to them than any run that did not
+    hits = [r["values"][0] for r in simulated(document) if collides(r)]
+    misses = [r["values"][0] for r in simulated(document) if not collides(r)]
+    assert hits and misses and max(hits) < min(misses), (hits, misses)
     assert re.search(r"\[\d/8\] tpe-\d{4}: metric:clearance_humans_min -?[0-9.e-]+; .*failing \d", searched.second.stdout)
     xml = (searched.out / "verdicts.xml").read_text(encoding="utf-8")
     assert f'name="{crossing[0]}"' in xml and "reproduce: " in xml
