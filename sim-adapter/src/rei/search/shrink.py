@@ -24,8 +24,13 @@ from rei.search.space import Space
 
 #: The number of extra pieces of furniture (rei.search.space).
 EXTRA_COUNT = "furniture.count"
-#: Evaluates a candidate: its run's folder and case folder give the failures it shows (None: not simulated).
-Check = Callable[[Candidate, str], "list[Failure] | None"]
+#: What makes a run: the .rei text, the seed and the laser fault (the last two are not in the text, only in the
+#: header ``CandidateMaker.write`` adds, so two candidates with one text but another seed are two cases).
+Case = tuple[str | None, int, str | None]
+
+
+def case_of(candidate: Candidate) -> Case:
+    return candidate.text, candidate.edit.seed, candidate.edit.fault
 
 
 @dataclass(frozen=True, slots=True)
@@ -44,29 +49,34 @@ class Shrunk:
 
 def shrink(failure: Failure, values: Mapping[str, Any], space: Space, maker: CandidateMaker, pool: Pool,
            task_of: Callable[[str, Candidate, Path, Path], Any], out: Path, index: int, budget: int,
-           log: Callable[[str], None] = print, seen: dict[str, tuple[list[str], str]] | None = None) -> Shrunk:
-    """The smallest case found within ``budget`` simulations that still fails as ``failure`` does. ``seen``:
-    the failures (signatures, run folder) of cases simulated while shrinking other failures, by their text; a
-    case is not simulated twice."""
+           log: Callable[[str], None] = print, seen: dict[Case, tuple[list[str], str]] | None = None,
+           run: str | None = None) -> Shrunk:
+    """The smallest case found within ``budget`` simulations that still fails as ``failure`` does; ``run``: the
+    run that showed the failure (the shrunk case's run while no reduction is kept). ``seen``: the failures
+    (signatures, run folder) of cases simulated while shrinking other failures, by case (``case_of``); a case is
+    not simulated twice."""
     seen = {} if seen is None else seen
     base = space.base_values()
     current = dict(values)
     removed: list[str] = []
     steps = kept = 0
-    last_run: str | None = None
+    current_run = run
     folder = out / "shrunk"
 
-    def fails(trial_values: dict[str, Any], trial_removed: list[str]) -> tuple[bool, str | None, str | None]:
-        """Whether the case still fails the same way, the run that shows it, and the case's text."""
+    def fails(trial_values: dict[str, Any], trial_removed: list[str]) -> tuple[bool, str | None, Case | None]:
+        """Whether the case still fails the same way, the run that shows it, and the case."""
         nonlocal steps
         key = f"{index}-{steps + 1}"
         candidate = maker.make(f"shrink-{key}", space.edit(trial_values, trial_removed))
         if candidate.status != VALID or candidate.text is None:
             return False, None, None
-        if candidate.text == current_text or candidate.text in seen:
-            signatures, known_run = seen.get(candidate.text, ([], None))
-            same = candidate.text == current_text or failure.signature in signatures
-            return same, known_run if same else None, candidate.text
+        case = case_of(candidate)
+        if case == current_case:
+            return True, current_run, case
+        if case in seen:
+            signatures, known_run = seen[case]
+            same = failure.signature in signatures
+            return same, known_run if same else None, case
         steps += 1
         case_dir, problem = maker.generate(candidate)
         if problem is not None:
@@ -80,25 +90,24 @@ def shrink(failure: Failure, values: Mapping[str, Any], space: Space, maker: Can
             return False, None, None
         summary = json.loads((run_dir / "summary.json").read_text(encoding="utf-8"))
         found = failures_of(summary, run_dir, case_dir, space.floor_at)
-        seen[candidate.text] = ([f.signature for f in found], str(run_dir))
+        seen[case] = ([f.signature for f in found], str(run_dir))
         same = any(f.signature == failure.signature for f in found)
         log(f"  shrink {index} step {steps}: {'still fails' if same else 'passes or fails otherwise'}")
-        return same, str(run_dir) if same else None, candidate.text
+        return same, str(run_dir) if same else None, case
 
     def keep(attempt: dict[str, Any], attempt_removed: list[str]) -> bool:
-        """Tries a smaller case; keeps it when it still fails (a step that leaves the text as it was is kept
+        """Tries a smaller case; keeps it when it still fails (a step that leaves the case as it was is kept
         without counting: a value that has no effect, such as a removed piece's type)."""
-        nonlocal current, removed, kept, last_run, current_text
-        ok, run, text = fails(attempt, attempt_removed)
+        nonlocal current, removed, kept, current_run, current_case
+        ok, run, case = fails(attempt, attempt_removed)
         if not ok:
             return False
-        if text != current_text:
-            kept, last_run, current_text = kept + 1, run or last_run, text
+        if case != current_case:
+            kept, current_run, current_case = kept + 1, run, case
         current, removed = attempt, attempt_removed
         return True
 
-    start = maker.make(f"shrink-{index}-0", space.edit(current, removed))
-    current_text = start.text
+    current_case = case_of(maker.make(f"shrink-{index}-0", space.edit(current, removed)))
     # removals first, as property-based shrinkers delete before they simplify: the biggest reduction per step
     for element in space.removable():
         if steps >= budget:
@@ -114,9 +123,9 @@ def shrink(failure: Failure, values: Mapping[str, Any], space: Space, maker: Can
         keep({**current, name: base.get(name)}, removed)
     final = maker.make(f"shrunk-{index}", space.edit(current, removed))
     path: Path | None = folder / f"shrunk-{index}.rei"
-    if final.status == VALID and path is not None:
+    if final.status == VALID:
         path.parent.mkdir(parents=True, exist_ok=True)
         maker.write(final, path)
     else:  # every kept step was valid, and so was the start: only a changed engine gets here
         path = None
-    return Shrunk(None if path is None else str(path), dict(current), removed, steps, kept, last_run)
+    return Shrunk(None if path is None else str(path), dict(current), removed, steps, kept, current_run)
