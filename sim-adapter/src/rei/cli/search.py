@@ -45,6 +45,7 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from rei.campaign.spec import SpecError
+    from rei.lifetime import sigterm_unwinds
     from rei.search.run import PoolError, run_search
     from rei.search.spec import load_search_spec
 
@@ -59,8 +60,11 @@ def run(args: argparse.Namespace) -> int:
         raise CommandError(str(error)) from None
     stop = threading.Event()
     try:
-        result = run_search(spec, args.output, workers=workers, ray=args.ray, stop=stop,
-                            shrink_failures=not args.no_shrink)
+        # SIGTERM unwinds (SystemExit) wherever it lands: the search then stops as on Ctrl-C, and during shrinking
+        # or the outputs run_search's finally still stops the workers and the fork server (their own sessions)
+        with sigterm_unwinds():
+            result = run_search(spec, args.output, workers=workers, ray=args.ray, stop=stop,
+                                shrink_failures=not args.no_shrink)
     except (SpecError, PoolError) as error:
         raise CommandError(str(error)) from None
     counts = result["counts"]

@@ -48,6 +48,7 @@ def run_search(spec: SearchSpec, out: Path, *, workers: int = 1, ray: str | None
     try:
         search = Search(spec, out, pool, stop, log)
     except BaseException:
+        stop.set()
         pool.close()
         raise
     try:
@@ -62,6 +63,9 @@ def run_search(spec: SearchSpec, out: Path, *, workers: int = 1, ray: str | None
         _run_reports(document, log)
         _report(spec, out, document, log)
     finally:
+        # set before closing: the pool waits for its running workers, which stop on it instead of running out their
+        # timeout (an exception or Ctrl-C while shrinking or writing the outputs gets here with it unset)
+        stop.set()
         search.close()
         search.pool.close()
     document["interrupted"] = progress.interrupted

@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import json
 import shutil
-import signal
 import threading
 from collections.abc import Callable
 from concurrent.futures import FIRST_COMPLETED, Future, wait
@@ -92,10 +91,6 @@ class SearchProgress:
 Prepared = tuple[optuna.Trial, Candidate, RunTask]
 
 
-class _Interrupted(Exception):
-    pass
-
-
 class Search:
     """One search of ``spec`` into ``out`` on ``pool``; ``log`` gets the progress lines."""
 
@@ -122,18 +117,15 @@ class Search:
         return f"{self.spec.sampler}-{number:04d}"
 
     def run(self) -> SearchProgress:
-        previous = signal.signal(signal.SIGTERM, _on_sigterm) \
-            if threading.current_thread() is threading.main_thread() else None
+        """Runs the search to its budget; Ctrl-C, or SIGTERM under rei.lifetime.sigterm_unwinds (as `rei search`
+        runs it), stops it with the outputs of what finished still to write."""
         try:
             self._resume()
             self._loop()
-        except (KeyboardInterrupt, _Interrupted):
+        except (KeyboardInterrupt, SystemExit):
             self.progress.interrupted = True
             self.stop.set()
             self.log("search interrupted: finished evaluations are kept; run the same command to resume")
-        finally:
-            if previous is not None:
-                signal.signal(signal.SIGTERM, previous)
         return self.progress
 
     def close(self) -> None:
@@ -303,8 +295,4 @@ def _figures(spec: SearchSpec, values: list[float] | None) -> str:
     if values is None:
         return "-"
     return ", ".join(f"{o.label} {v:g}" for o, v in zip(spec.objectives, values, strict=True))
-
-
-def _on_sigterm(signum: int, frame: object) -> None:
-    raise _Interrupted()
 
