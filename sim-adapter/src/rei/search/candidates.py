@@ -96,7 +96,8 @@ class CandidateMaker:
         return path
 
     def generate(self, candidate: Candidate) -> tuple[Path, str | None]:
-        """Writes the candidate and generates its case folder; (folder, None) or (folder, why it failed)."""
+        """Writes the candidate and generates its case folder; (folder, None) or (folder, why it failed: then
+        no ``candidates/<key>.rei`` is left)."""
         rei = self.write(candidate)
         target = self.out / "cases" / candidate.key
         target.mkdir(parents=True, exist_ok=True)
@@ -109,7 +110,8 @@ class CandidateMaker:
                          target.parent / f"{candidate.key}.log",
                          server=self._generator.socket if self._generator is not None else None)
         if result.code != 0:
-            return target, f"{rei} could not be generated (exit {result.code}): {result.log_tail}"
+            rei.unlink(missing_ok=True)  # candidates/ holds cases that ran; cases/<key>.log says what went wrong
+            return target, f"{rei.name} could not be generated (exit {result.code}): {result.log_tail}"
         return target, None
 
     def close(self) -> None:

@@ -9,7 +9,7 @@
                                 report.html of the runs that show a distinct failure is written at the end)
 
 Evaluations are named ``<sampler>-<trial number>`` (``tpe-0003``). Budget counts simulated evaluations (those in
-ERROR too); candidates that are not valid are told to the study as infeasible (``constraints``), counted apart and never
+ERROR too, and a valid candidate the generator failed on counts as one in ERROR); candidates that are not valid are told to the study as infeasible (``constraints``), counted apart and never
 simulated. A trial still running when the search stopped was not finished: it is closed as failed on resume and
 its point asked again first, so nothing finished runs twice.
 """
@@ -195,7 +195,7 @@ class Search:
             return None
         case_dir, problem = self.maker.generate(candidate)
         if problem is not None:
-            self._invalid(trial, "invalid", (problem,))
+            self._error(trial, candidate, problem)
             return None
         task = self.task(key, candidate, case_dir)
         for name, value in (("key", key), ("seed", candidate.edit.seed), ("fault", candidate.edit.fault),
@@ -222,6 +222,20 @@ class Search:
         values = penalty(self.spec)
         self.study.tell(trial, values if len(values) > 1 else values[0])
         self.log(f"  {self.key(trial.number)}: {status}, not simulated: {problems[0]}")
+
+    def _error(self, trial: optuna.Trial, candidate: Candidate, problem: str) -> None:
+        """A valid candidate the generator could not make a case of (its JVM crashed, the disk is full): an
+        evaluation in ERROR, as a run that crashed, counted in the budget; told as failed with no constraint, since
+        nothing says the point is infeasible (a sampler told so would learn to avoid a valid region)."""
+        self.progress.simulated += 1
+        self.progress.errors += 1
+        key = self.key(trial.number)
+        attrs = {"key": key, "seed": candidate.edit.seed, "fault": candidate.edit.fault, "simulated": True,
+                 "status": "ERROR", "error": problem}
+        for name, value in attrs.items():
+            trial.set_user_attr(name, value)
+        self.study.tell(trial, state=TrialState.FAIL)
+        self.log(self._line(trial.number, "ERROR", None, attrs))
 
     def _finish(self, trial: optuna.Trial, candidate: Candidate, task: RunTask, outcome: Outcome) -> None:
         if outcome.interrupted:
