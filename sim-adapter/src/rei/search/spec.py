@@ -397,10 +397,15 @@ def _objectives(node: yaml.Node, loc: _Located) -> tuple[Objective, ...]:
         if len(kinds) != 1:
             raise SpecError(f"{loc.at(item)}: an objective names exactly one of {', '.join(_KINDS)}")
         kind = kinds[0]
+        # utility and time carry their direction as their value; only a signal has 'of'
+        known = (kind,) if kind in ("utility", "time") else (kind, "direction", "of") if kind == "signal" \
+            else (kind, "direction")
         for extra, (key, _) in entry.items():
-            if extra not in (kind, "direction", "of"):
-                raise SpecError(f"{loc.at(key)}: unknown key '{extra}'; known: {kind}, direction"
-                                + (", of" if kind == "signal" else ""))
+            if extra == "direction" and extra not in known:
+                raise SpecError(f"{loc.at(key)}: '{kind}' takes its direction as its value: "
+                                f"{{{kind}: minimize}} or {{{kind}: maximize}}")
+            if extra not in known:
+                raise SpecError(f"{loc.at(key)}: unknown key '{extra}'; known: {', '.join(known)}")
         value_node = entry[kind][1]
         value = loc.value(value_node)
         direction_node = entry.get("direction", (None, None))[1]
