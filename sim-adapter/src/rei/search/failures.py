@@ -1,9 +1,9 @@
 # SPDX-License-Identifier: EPL-2.0
 """Failures: each failed verdict of an evaluation, and the distinct ones over the search.
 
-A failure is one failed requirement with the element its first evidence names (a human, an object, a wall) and
-the floor the robot was on at that moment; two evaluations fail the same way when these three agree. Distinct
-failures are ranked by severity: the lowest total utility any of their evaluations had (utility falls with every
+A failure is one failed requirement with the element the first evidence naming one names (a human, an object, a
+wall) and the floor whose centre is nearest to the robot at that evidence's time (else at the first timed
+evidence's); two evaluations fail the same way when these three agree. Distinct failures are ranked by severity: the lowest total utility any of their evaluations had (utility falls with every
 collision and failed task: thesis Table 4), then how often they were found.
 """
 
@@ -47,14 +47,19 @@ def failures_of(summary: Mapping[str, Any], run_dir: Path, case_dir: Path,
     robot = _robot_track(run_dir, case_dir)
     found = []
     for verdict in failed:
-        evidence = next((e for e in verdict.get("evidence") or [] if e.get("object") or e.get("t") is not None), {})
-        t = evidence.get("t")
+        evidence = verdict.get("evidence") or []
+        # the element from the first evidence naming one (a verdict may open with a timed line naming nothing, and
+        # the same collision would then be grouped apart from its runs whose evidence names the object first)
+        named = next((e for e in evidence if e.get("object")), {})
+        t = named.get("t")
+        if t is None:
+            t = next((e["t"] for e in evidence if e.get("t") is not None), None)
         place = "-"
         if t is not None and robot is not None:
             pose = robot.at(float(t))
             if pose is not None:
                 place = floor_at(pose[0], pose[1])
-        found.append(Failure(verdict["requirement"], str(evidence.get("object") or "-"), place,
+        found.append(Failure(verdict["requirement"], str(named.get("object") or "-"), place,
                              None if t is None else round(float(t), 3), str(verdict.get("message", ""))))
     return found
 
