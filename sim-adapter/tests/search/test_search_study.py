@@ -78,3 +78,18 @@ def test_the_real_maker_leaves_no_candidate_file_when_generation_fails(tmp_path:
     _, problem = maker.generate(Candidate("tpe-0001", Edit((), 0, None), VALID, "testcase T {}\n"))
     assert problem == "tpe-0001.rei could not be generated (exit 1): No space left on device"
     assert not (tmp_path / "candidates" / "tpe-0001.rei").exists()
+
+
+ABSENT_SPEC = SPEC.replace("  - utility\n", "  - {metric: clearance_humans_min}\n  - utility\n")
+
+
+def test_a_value_a_run_does_not_have_is_no_best_value(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    # the fake runs have no metrics: no clearance to humans, scored 10^6 for the sampler but shown as absent
+    lines: list[str] = []
+    s = search(tmp_path, monkeypatch, FakePool(lambda text, seed, fault: []), text=ABSENT_SPEC)
+    s.log = lines.append
+    s.run()
+    assert s.study.trials[0].values[0] == 1e6  # what the sampler is told
+    assert lines and all("1e+06" not in line for line in lines)
+    assert "metric:clearance_humans_min absent" in lines[-1]
+    assert lines[-1].endswith("best metric:clearance_humans_min -, utility 10")

@@ -20,6 +20,12 @@ from rei.search.spec import Objective
 ABSENT = 1e6
 
 
+def present(value: float) -> bool:
+    """Whether ``value`` is a run's own, not the score of one it does not have (left out of best values, charts
+    and importance, where 10^6 would swamp every real figure)."""
+    return abs(value) < ABSENT
+
+
 def score(objectives: Sequence[Objective], summary: Mapping[str, Any], run_dir: Path) -> list[float]:
     return [_one(o, summary, run_dir) for o in objectives]
 

@@ -1,8 +1,9 @@
 # SPDX-License-Identifier: EPL-2.0
 """``OUT/search.html``: one page, no script: each objective over the evaluations (search and, when one ran in
 the same folder, the random baseline) with the best so far, the Pareto front for two objectives, parameter
-importance (optuna.importance, fANOVA), and each distinct failure with a small map of its run (the run
-report's map, rei.report.map_svg) and links to its case, report and shrunk case.
+importance (optuna.importance's default evaluator, PED-ANOVA), and each distinct failure with a small map of its
+run (the run report's map, rei.report.map_svg) and links to its case, report and shrunk case. A value a run did
+not have (rei.search.objectives.ABSENT) is left out of the charts, the front and the importance.
 """
 
 from __future__ import annotations
@@ -14,6 +15,8 @@ from pathlib import Path
 from typing import Any
 
 from optuna.trial import TrialState
+
+from rei.search.objectives import present
 
 PAGE = "search.html"
 _W, _H, _PAD = 560, 220, 36
@@ -47,8 +50,9 @@ def render(out: Path, document: Mapping[str, Any]) -> str:
             f"<title>{_e(title)}</title><style>{_CSS}</style></head><body>\n" + "\n".join(parts) + "\n</body></html>\n")
 
 
-def _values(evaluations: Sequence[Mapping[str, Any]] | None, i: int) -> list[float]:
-    return [r["values"][i] for r in evaluations or () if r.get("values")]
+def _values(evaluations: Sequence[Mapping[str, Any]] | None, i: int) -> list[float | None]:
+    """Objective ``i`` of each completed evaluation, None where the run did not have it (left out of the chart)."""
+    return [r["values"][i] if present(r["values"][i]) else None for r in evaluations or () if r.get("values")]
 
 
 def _objective_section(i: int, objective: Mapping[str, Any], evaluations: Sequence[Mapping[str, Any]],
@@ -63,10 +67,10 @@ def _objective_section(i: int, objective: Mapping[str, Any], evaluations: Sequen
             + ", ".join(f"<span style=\"color:{c}\">{_e(n)}</span>" for n, _, c in series) + "</p></section>")
 
 
-def _chart(series: Sequence[tuple[str, list[float], str]], minimize: bool) -> str:
-    values = [v for _, vs, _ in series for v in vs]
+def _chart(series: Sequence[tuple[str, list[float | None], str]], minimize: bool) -> str:
+    values = [v for _, vs, _ in series for v in vs if v is not None]
     if not values:
-        return "<p class=\"muted\">no completed evaluation</p>"
+        return "<p class=\"muted\">no completed evaluation with a value</p>"
     lo, hi = min(values), max(values)
     hi = hi if hi > lo else lo + 1
     n = max(len(vs) for _, vs, _ in series)
@@ -82,20 +86,24 @@ def _chart(series: Sequence[tuple[str, list[float], str]], minimize: bool) -> st
              f'<text x="4" y="{_H - _PAD}" font-size="11">{lo:g}</text>',
              f'<text x="{_W - _PAD}" y="{_H - 8}" font-size="11">{n}</text>']
     for _, vs, colour in series:
-        best: list[float] = []
-        for v in vs:
-            best.append(v if not best else (min(best[-1], v) if minimize else max(best[-1], v)))
+        best: list[tuple[int, float]] = []  # (evaluation, best so far) from the first one with a value
+        for k, v in enumerate(vs):
+            if v is not None:
+                best.append((k, v if not best else (min(best[-1][1], v) if minimize else max(best[-1][1], v))))
+            elif best:
+                best.append((k, best[-1][1]))
         parts += [f'<circle cx="{x(k):.1f}" cy="{y(v):.1f}" r="3" fill="{colour}" opacity=".6"/>'
-                  for k, v in enumerate(vs)]
+                  for k, v in enumerate(vs) if v is not None]
         if best:
-            points = " ".join(f"{x(k):.1f},{y(v):.1f}" for k, v in enumerate(best))
+            points = " ".join(f"{x(k):.1f},{y(v):.1f}" for k, v in best)
             parts.append(f'<polyline points="{points}" fill="none" stroke="{colour}" stroke-width="2"/>')
     parts.append("</svg>")
     return "".join(parts)
 
 
 def _pareto(document: Mapping[str, Any]) -> str:
-    points = [(r["values"][0], r["values"][1], r["key"]) for r in document["evaluations"] if r.get("values")]
+    points = [(r["values"][0], r["values"][1], r["key"]) for r in document["evaluations"]
+              if r.get("values") and all(present(v) for v in r["values"])]
     if not points:
         return ""
     d = [o["direction"] == "minimize" for o in document["objectives"]]
@@ -124,11 +132,13 @@ def _importance(out: Path, document: Mapping[str, Any]) -> str:
                                    storage=JournalStorage(JournalFileBackend(str(out / JOURNAL))))
         # the simulated evaluations only: an invalid candidate's penalty says nothing about the robot
         study = optuna.create_study(directions=stored.directions)
-        # with the runs' own values, not what a repeated failure was told (``diversity``)
+        # with the runs' own values, not what a repeated failure was told (``diversity``), and only the runs that
+        # have every objective: a 10^6 for a missing one would be all the importance there is
         study.add_trials([optuna.trial.create_trial(params=t.params, distributions=t.distributions,
                                                     values=t.user_attrs["values"])
                           for t in stored.get_trials(deepcopy=False, states=(TrialState.COMPLETE,))
-                          if t.user_attrs.get("simulated") and t.user_attrs.get("values")])
+                          if t.user_attrs.get("simulated") and t.user_attrs.get("values")
+                          and all(present(v) for v in t.user_attrs["values"])])
         rows = []
         for i, objective in enumerate(document["objectives"]):
             sign = 1.0 if objective["direction"] == "minimize" else -1.0  # PED-ANOVA ranks towards low targets

@@ -35,7 +35,7 @@ from rei.campaign.results import make_result, write_result
 from rei.campaign.supervise import Outcome
 from rei.search.candidates import VALID, Candidate, CandidateMaker
 from rei.search.failures import failures_of
-from rei.search.objectives import ABSENT, better, score
+from rei.search.objectives import ABSENT, better, present, score
 from rei.search.pool import Pool
 from rei.search.space import Space
 from rei.search.spec import SearchSpec
@@ -111,7 +111,7 @@ class Search:
         self.study = started if spec.sampler == "qmc" else open_study(self.out, spec, spec.seed + len(started.trials))
         self.progress = SearchProgress()
         self._known: set[str] = set()  # failure signatures found so far
-        self._raw: list[list[float]] = []  # the simulated evaluations' own objective values
+        self._raw: list[list[float | None]] = []  # the simulated evaluations' own objective values (None: absent)
 
     def key(self, number: int) -> str:
         return f"{self.spec.sampler}-{number:04d}"
@@ -141,7 +141,7 @@ class Search:
             elif trial.user_attrs.get("simulated"):
                 self.progress.simulated += 1
                 if trial.user_attrs.get("values"):
-                    self._raw.append(list(trial.user_attrs["values"]))
+                    self._raw.append(_own(trial.user_attrs["values"]))
                 self._known |= {f["signature"] for f in trial.user_attrs.get("failures") or []}
                 self.progress.errors += trial.user_attrs.get("status") == "ERROR"
                 self.progress.failing += bool(trial.user_attrs.get("failures"))
@@ -254,7 +254,7 @@ class Search:
             found = failures_of(summary, Path(task.run_dir), Path(task.case_dir), self.space.floor_at)
             attrs["failures"] = [f.to_dict() for f in found]
             attrs["values"] = values
-            self._raw.append(values)
+            self._raw.append(_own(values))
             signatures = {f.signature for f in found}
             if self.spec.diversity and signatures and signatures <= self._known:
                 # only failures found before: told as the least interesting evaluation so far, so the sampler moves
@@ -277,8 +277,12 @@ class Search:
         self.log(self._line(trial.number, result.status, values, attrs))
 
     def _least_interesting(self) -> list[float]:
-        return [(max if o.direction == "minimize" else min)(v[i] for v in self._raw)
-                for i, o in enumerate(self.spec.objectives)]
+        told = []
+        for i, o in enumerate(self.spec.objectives):
+            own = [v[i] for v in self._raw if v[i] is not None]
+            worst = ABSENT if o.direction == "minimize" else -ABSENT
+            told.append((max if o.direction == "minimize" else min)(own) if own else worst)
+        return told
 
     def _line(self, number: int, status: str, values: list[float] | None, attrs: dict[str, Any]) -> str:
         p = self.progress
@@ -292,21 +296,27 @@ class Search:
                 f"invalid {p.invalid}, errors {p.errors}{', best ' + best if best else ''}")
 
     def best_text(self) -> str:
-        objectives = self.spec.objectives
+        """The best value of each objective so far among the runs that have it ('-' when none has)."""
         if not self._raw:
             return ""
         parts = []
-        for i, objective in enumerate(objectives):
-            best = self._raw[0][i]
-            for values in self._raw[1:]:
-                if better(objective, values[i], best):
-                    best = values[i]
-            parts.append(f"{objective.label} {best:g}")
+        for i, objective in enumerate(self.spec.objectives):
+            best: float | None = None
+            for values in self._raw:
+                value = values[i]
+                if value is not None and (best is None or better(objective, value, best)):
+                    best = value
+            parts.append(f"{objective.label} {'-' if best is None else f'{best:g}'}")
         return ", ".join(parts)
 
 
 def _figures(spec: SearchSpec, values: list[float] | None) -> str:
     if values is None:
         return "-"
-    return ", ".join(f"{o.label} {v:g}" for o, v in zip(spec.objectives, values, strict=True))
+    return ", ".join(f"{o.label} {f'{v:g}' if present(v) else 'absent'}"
+                     for o, v in zip(spec.objectives, values, strict=True))
+
+
+def _own(values: list[float]) -> list[float | None]:
+    return [v if present(v) else None for v in values]
 
