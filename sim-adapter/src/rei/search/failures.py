@@ -104,9 +104,20 @@ def distinct(evaluations: Sequence[Mapping[str, Any]]) -> list[DistinctFailure]:
     return sorted(groups.values(), key=lambda g: (-g.severity, -len(g.keys), g.failure.signature))
 
 
-def failure_verdicts(groups: Sequence[DistinctFailure], cases: Mapping[str, str]) -> list[Verdict]:
+#: The test case of ``verdicts.xml`` when no failure was found.
+NO_FAILURE = "no failure found"
+
+
+def failure_verdicts(groups: Sequence[DistinctFailure], cases: Mapping[str, str], simulated: int = 0,
+                     errors: int = 0) -> list[Verdict]:
     """One failing verdict per distinct failure for ``verdicts.xml`` (rei.evaluation.junit), named by its
-    signature, its evidence pointing at the ``.rei`` that reproduces it (``cases``: signature -> path)."""
+    signature, its evidence pointing at the ``.rei`` that reproduces it (``cases``: signature -> path). With none,
+    one verdict saying so over the ``simulated`` evaluations: a pass, or an error when some of them (``errors``)
+    or all ended in ERROR, as `rei search` exits 2 then (nothing vouched for)."""
+    if not groups:
+        judged = simulated - errors
+        message = f"no failure found in {simulated} evaluation(s)" + (f", {errors} in ERROR" if errors else "")
+        return [Verdict(NO_FAILURE, Status.ERROR if errors or not judged else Status.PASS, message)]
     verdicts = []
     for group in groups:
         f = group.failure

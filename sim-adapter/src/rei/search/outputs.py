@@ -72,14 +72,16 @@ def write_outputs(spec: SearchSpec, out: Path, study: optuna.Study, shrunk: Mapp
         "counts": counts(evaluations),
         "failures": [_failure(group, evaluations, shrunk.get(group.failure.signature)) for group in groups],
         "evaluations": evaluations,
-        "baseline": baseline if baseline is not None else None,
+        "baseline": baseline,
     }
     _write_json(out / "search.json", document)
     cases = {g.failure.signature: (shrunk.get(g.failure.signature) or {}).get("case") or _case_of(g, evaluations)
              for g in groups}
-    write_junit(out / "verdicts.xml", failure_verdicts(groups, cases), suite=f"rei search {spec.name}",
+    tally = document["counts"]
+    write_junit(out / "verdicts.xml", failure_verdicts(groups, cases, tally["simulated"], tally["errors"]),
+                suite=f"rei search {spec.name}",
                 properties={"sampler": spec.sampler, "budget": str(spec.budget),
-                            "evaluations": str(document["counts"]["simulated"])})
+                            "evaluations": str(tally["simulated"])})
     return document
 
 
