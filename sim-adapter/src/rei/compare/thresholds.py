@@ -17,12 +17,12 @@ mistake is reported with the file, line and column, as ``rei validate`` reports 
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from pathlib import Path
 
 import yaml
 
+from rei import located_yaml
 from rei.evaluation.metrics import BY_NAME, Better
 
 KEYS = ("worse_by", "p", "better")
@@ -75,13 +75,9 @@ def load_thresholds(path: Path) -> Thresholds:
 
 def parse_thresholds(text: str, source: str = "thresholds") -> Thresholds:
     try:
-        root = yaml.compose(text, Loader=yaml.SafeLoader)
-    except yaml.MarkedYAMLError as error:
-        mark = error.problem_mark
-        where = f"{source}:{mark.line + 1}:{mark.column + 1}" if mark is not None else source
-        raise ThresholdsError(f"{where}: not YAML: {error.problem}") from None
-    except yaml.YAMLError as error:
-        raise ThresholdsError(f"{source}: not YAML: {error}") from None
+        root = located_yaml.compose(text)
+    except located_yaml.LocatedError as error:
+        raise ThresholdsError(error.at(source)) from None
     if root is None:
         raise ThresholdsError(f"{source}:1:1: empty: expected a mapping with 'metrics'")
     top = _mapping(root, source, "the file")
@@ -133,38 +129,23 @@ def _threshold(name: str, node: yaml.Node, source: str) -> Threshold:
     return Threshold(name, better, worse_by, p)
 
 
-def _mapping(node: yaml.Node, source: str, what: str) -> dict[str, tuple[yaml.Node, yaml.Node]]:
-    """``{key as text: (key node, value node)}``: the key node places a message about the key itself, whatever
-    YAML made of it (``1:`` is a number, ``[a]:`` no scalar at all)."""
-    if not isinstance(node, yaml.MappingNode):
-        raise _error(source, node, f"{what} must be a mapping")
-    out: dict[str, tuple[yaml.Node, yaml.Node]] = {}
-    for key, value in node.value:
-        name = str(_scalar(key))
-        if name in out:
-            raise _error(source, key, f"{name!r} is given twice")
-        out[name] = (key, value)
-    return out
+def _mapping(node: yaml.Node, source: str, what: str) -> located_yaml.Entries:
+    try:
+        return located_yaml.mapping(node, what)
+    except located_yaml.LocatedError as error:
+        raise ThresholdsError(error.at(source)) from None
 
 
 def _scalar(node: yaml.Node) -> object:
-    if not isinstance(node, yaml.ScalarNode):
-        return None
-    return yaml.constructor.SafeConstructor().construct_object(node)
+    return located_yaml.scalar(node)
 
 
 def _number(node: yaml.Node, source: str, what: str) -> float:
-    value = _scalar(node)
-    if isinstance(value, str):  # YAML 1.1 reads 1e-2 (no dot) as text
-        try:
-            value = float(value)
-        except ValueError:
-            pass
-    if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
-        raise _error(source, node, f"{what} must be a number, got {value!r}")
-    return float(value)
+    value = located_yaml.number(node)
+    if value is None:
+        raise _error(source, node, f"{what} must be a number, got {_scalar(node)!r}")
+    return value
 
 
 def _error(source: str, node: yaml.Node, message: str) -> ThresholdsError:
-    mark = node.start_mark
-    return ThresholdsError(f"{source}:{mark.line + 1}:{mark.column + 1}: {message}")
+    return ThresholdsError(located_yaml.error(node, message).at(source))

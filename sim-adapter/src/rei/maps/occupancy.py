@@ -31,6 +31,8 @@ import numpy as np
 import png
 import yaml
 
+from rei import located_yaml
+
 MODES = ("trinary", "scale", "raw")
 FREE, OCCUPIED, UNKNOWN = 0, 100, -1
 
@@ -75,7 +77,7 @@ class _Pixels:
 
 
 class _Fields:
-    """The YAML's top-level mapping, each value with the position of its node."""
+    """The YAML's top-level mapping, each value with the position of its node (rei.located_yaml)."""
 
     def __init__(self, path: Path) -> None:
         self.path = path
@@ -83,30 +85,21 @@ class _Fields:
             text = path.read_text(encoding="utf-8")
         except (OSError, UnicodeDecodeError) as error:
             raise MapError(path, 1, 1, "file", f"cannot read the map file: {error}") from None
-        loader = yaml.SafeLoader(text)
         try:
-            root = loader.get_single_node()
-            self.root_mark = (1, 1) if root is None else (root.start_mark.line + 1, root.start_mark.column + 1)
+            root = located_yaml.compose(text, not_yaml="not valid YAML")
+            self.root_mark = (1, 1) if root is None else located_yaml.position(root)
             if not isinstance(root, yaml.MappingNode):
                 raise MapError(path, *self.root_mark, "file", "expected a mapping of map_server fields")
-            self.nodes: dict[str, yaml.Node] = {}
-            for key, value in root.value:
-                if isinstance(key, yaml.ScalarNode):
-                    self.nodes[str(key.value)] = value
-            self._loader = loader
-        except yaml.MarkedYAMLError as error:
-            mark = error.problem_mark or error.context_mark
-            line, column = (mark.line + 1, mark.column + 1) if mark else (1, 1)
-            raise MapError(path, line, column, "file", f"not valid YAML: {error.problem}") from None
-        finally:
-            loader.dispose()
+            self.nodes = {name: node for name, (_, node) in located_yaml.mapping(root, "the map file").items()}
+        except located_yaml.LocatedError as error:
+            raise MapError(path, error.line or 1, error.column or 1, "file", error.message) from None
 
     def has(self, name: str) -> bool:
         return name in self.nodes
 
     def position(self, name: str) -> tuple[int, int]:
         node = self.nodes.get(name)
-        return (node.start_mark.line + 1, node.start_mark.column + 1) if node is not None else self.root_mark
+        return located_yaml.position(node) if node is not None else self.root_mark
 
     def error(self, name: str, message: str) -> MapError:
         return MapError(self.path, *self.position(name), name, message)
@@ -115,15 +108,15 @@ class _Fields:
         if name not in self.nodes:
             raise MapError(self.path, *self.root_mark, name, "missing (map_server requires it)")
         try:
-            return self._loader.construct_object(self.nodes[name], deep=True)
-        except yaml.YAMLError as error:
-            raise self.error(name, f"not a valid value: {error}") from None
+            return located_yaml.value(self.nodes[name])
+        except located_yaml.LocatedError as error:
+            raise self.error(name, error.message) from None
 
     def number(self, name: str) -> float:
-        value = self.value(name)
-        if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-            raise self.error(name, f"expected a number, got {value!r}")
-        return float(value)
+        number = located_yaml.number(self.nodes[name]) if name in self.nodes else None
+        if number is None:
+            raise self.error(name, f"expected a number, got {self.value(name)!r}")
+        return number
 
 
 def load_map(path: Path | str) -> OccupancyMap:

@@ -42,6 +42,7 @@ from typing import Any
 
 import yaml
 
+from rei import located_yaml
 from rei.campaign.spec import ExternalSut, SpecError, _Reader, _sut
 from rei.evaluation.metrics import BY_NAME, NAMES, Better
 from rei.search import SAMPLERS
@@ -124,29 +125,27 @@ class SearchSpec:
 
 
 class _Located:
-    """A YAML document's nodes with their marks: every value comes with where it was written."""
+    """A YAML document's nodes with their marks (rei.located_yaml) in ``file``: every value comes with where it
+    was written, every mistake is a ``SpecError``."""
 
     def __init__(self, file: str) -> None:
         self.file = file
-        self._constructor = yaml.SafeLoader("")
 
     def at(self, node: yaml.Node) -> str:
-        mark = node.start_mark
-        return f"{self.file}:{mark.line + 1}:{mark.column + 1}"
+        line, column = located_yaml.position(node)
+        return f"{self.file}:{line}:{column}"
 
     def value(self, node: yaml.Node) -> Any:
-        return self._constructor.construct_object(node, deep=True)
+        try:
+            return located_yaml.value(node)
+        except located_yaml.LocatedError as error:
+            raise SpecError(error.at(self.file)) from None
 
-    def mapping(self, node: yaml.Node, what: str) -> dict[str, tuple[yaml.Node, yaml.Node]]:
-        if not isinstance(node, yaml.MappingNode):
-            raise SpecError(f"{self.at(node)}: {what} must be a mapping")
-        items: dict[str, tuple[yaml.Node, yaml.Node]] = {}
-        for key, value in node.value:
-            name = str(self.value(key))
-            if name in items:
-                raise SpecError(f"{self.at(key)}: '{name}' is given twice")
-            items[name] = (key, value)
-        return items
+    def mapping(self, node: yaml.Node, what: str) -> located_yaml.Entries:
+        try:
+            return located_yaml.mapping(node, what)
+        except located_yaml.LocatedError as error:
+            raise SpecError(error.at(self.file)) from None
 
 
 def load_search_spec(path: Path) -> SearchSpec:
@@ -162,11 +161,9 @@ def parse_search_spec(text: str, *, base: Path, file: str = "spec", default_name
     """A checked ``SearchSpec`` from YAML text; the case path is resolved against ``base``."""
     loc = _Located(file)
     try:
-        root = yaml.compose(text, Loader=yaml.SafeLoader)
-    except yaml.MarkedYAMLError as error:
-        mark = error.problem_mark
-        where = f"{file}:{mark.line + 1}:{mark.column + 1}" if mark is not None else file
-        raise SpecError(f"{where}: not YAML: {error.problem}") from None
+        root = located_yaml.compose(text)
+    except located_yaml.LocatedError as error:
+        raise SpecError(error.at(file)) from None
     if root is None:
         raise SpecError(f"{file}:1:1: the spec is empty: expected 'case', 'parameters' and 'objectives'")
     top = loc.mapping(root, "the spec")
