@@ -20,10 +20,10 @@ from __future__ import annotations
 import argparse
 import contextlib
 import dataclasses
-import os
 from pathlib import Path
 from typing import Any
 
+from rei.cli._pool_options import add_pool_options, workers_of
 from rei.cli.compare import add_compare_options, compare_and_report, load_thresholds_option
 from rei.cli.errors import EXIT_INVALID, EXIT_OK, CommandError
 
@@ -33,10 +33,7 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
     parser = subparsers.add_parser("campaign", help="run a campaign of missions in parallel and summarize it",
                                    description=__doc__.split("\n\n", 1)[1] if __doc__ else None)
     parser.add_argument("spec", type=Path, metavar="SPEC.yaml", help="campaign spec")
-    parser.add_argument("-o", "--output", required=True, type=Path, metavar="OUT", help="output folder")
-    parser.add_argument("--workers", type=int, metavar="N",
-                        help=f"runs at a time on this machine (default: the number of cores, {os.cpu_count()})")
-    parser.add_argument("--ray", metavar="ADDRESS", help="run on a Ray cluster (HOST:PORT, or 'local')")
+    add_pool_options(parser)
     parser.add_argument("--retry-errors", action="store_true", help="run again the runs that ended in ERROR")
     parser.add_argument("--no-service", action="store_true",
                         help="start the campaign's own JVMs even when the background service runs")
@@ -52,9 +49,7 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
 def run(args: argparse.Namespace) -> int:
     from rei.campaign import LocalBackend, SpecError, load_spec, run_campaign
 
-    workers = args.workers or os.cpu_count() or 1
-    if workers < 1:
-        raise CommandError(f"--workers must be at least 1, got {workers}")
+    workers = workers_of(args)
     try:
         spec = load_spec(args.spec)
     except SpecError as error:

@@ -16,11 +16,11 @@ or arguments, or no failure found but evaluations in ERROR (or none simulated); 
 from __future__ import annotations
 
 import argparse
-import os
 import threading
 from pathlib import Path
 from typing import Any
 
+from rei.cli._pool_options import add_pool_options, workers_of
 from rei.cli.errors import EXIT_OK, EXIT_RUN_ERROR, CommandError
 
 EXIT_FOUND = 1
@@ -33,10 +33,7 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
     parser = subparsers.add_parser("search", help="search for situations that make the robot fail (falsification)",
                                    description=__doc__.split("\n\n", 1)[1] if __doc__ else None)
     parser.add_argument("spec", type=Path, metavar="SPEC.yaml", help="search spec")
-    parser.add_argument("-o", "--output", required=True, type=Path, metavar="OUT", help="output folder")
-    parser.add_argument("--workers", type=int, metavar="N",
-                        help=f"runs at a time on this machine (default: the number of cores, {os.cpu_count()})")
-    parser.add_argument("--ray", metavar="ADDRESS", help="run on a Ray cluster (HOST:PORT, or 'local')")
+    add_pool_options(parser)
     parser.add_argument("--budget", type=int, metavar="N", help="simulated evaluations (default: the spec's)")
     parser.add_argument("--sampler", choices=SAMPLERS, help="the optimizer (default: the spec's, else tpe)")
     parser.add_argument("--no-shrink", action="store_true", help="do not shrink the failures found")
@@ -49,9 +46,7 @@ def run(args: argparse.Namespace) -> int:
     from rei.search.run import PoolError, run_search
     from rei.search.spec import load_search_spec
 
-    workers = args.workers or os.cpu_count() or 1
-    if workers < 1:
-        raise CommandError(f"--workers must be at least 1, got {workers}")
+    workers = workers_of(args)
     if args.budget is not None and args.budget < 1:
         raise CommandError(f"--budget must be at least 1, got {args.budget}")
     try:

@@ -122,14 +122,10 @@ def _pareto(document: Mapping[str, Any]) -> str:
 def _importance(out: Path, document: Mapping[str, Any]) -> str:
     import optuna
 
-    from rei.search.study import JOURNAL
+    from rei.search.study import journal
 
     try:
-        from optuna.storages import JournalStorage
-        from optuna.storages.journal import JournalFileBackend
-
-        stored = optuna.load_study(study_name=document["sampler"],
-                                   storage=JournalStorage(JournalFileBackend(str(out / JOURNAL))))
+        stored = optuna.load_study(study_name=document["sampler"], storage=journal(out))
         # the simulated evaluations only: an invalid candidate's penalty says nothing about the robot
         study = optuna.create_study(directions=stored.directions)
         # with the runs' own values, not what a repeated failure was told (``diversity``), and only the runs that

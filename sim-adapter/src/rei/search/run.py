@@ -121,15 +121,11 @@ def _report(spec: SearchSpec, out: Path, document: dict[str, Any], log: Callable
 def _has_study(out: Path, name: str) -> bool:
     import optuna
 
-    from rei.search.study import JOURNAL
+    from rei.search.study import JOURNAL, journal
 
     if not (out / JOURNAL).is_file():
         return False
-    from optuna.storages import JournalStorage
-    from optuna.storages.journal import JournalFileBackend
-
-    storage = JournalStorage(JournalFileBackend(str(out / JOURNAL)))
-    return any(s.study_name == name for s in optuna.get_all_study_summaries(storage, include_best_trial=False))
+    return any(s.study_name == name for s in optuna.get_all_study_summaries(journal(out), include_best_trial=False))
 
 
 def _load(path: Path) -> dict[str, Any]:

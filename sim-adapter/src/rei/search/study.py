@@ -68,10 +68,15 @@ def penalty(spec: SearchSpec) -> list[float]:
     return [ABSENT if o.direction == "minimize" else -ABSENT for o in spec.objectives]
 
 
+def journal(out: Path) -> JournalStorage:
+    """The search's Optuna storage, ``OUT/study.journal`` (one study per sampler)."""
+    return JournalStorage(JournalFileBackend(str(out / JOURNAL)))
+
+
 def open_study(out: Path, spec: SearchSpec, seed: int | None = None) -> optuna.Study:
     """The study of ``spec.sampler`` in ``OUT/study.journal``, created or loaded."""
     optuna.logging.set_verbosity(optuna.logging.WARNING)
-    storage = JournalStorage(JournalFileBackend(str(out / JOURNAL)))
+    storage = journal(out)
     directions = [o.direction for o in spec.objectives]
     return optuna.create_study(storage=storage, study_name=spec.sampler, directions=directions, load_if_exists=True,
                                sampler=make_sampler(spec.sampler, spec.seed if seed is None else seed, spec.budget))
@@ -80,7 +85,6 @@ def open_study(out: Path, spec: SearchSpec, seed: int | None = None) -> optuna.S
 @dataclass(slots=True)
 class SearchProgress:
     simulated: int = 0
-    executed: int = 0  # by this invocation
     invalid: int = 0
     errors: int = 0
     failing: int = 0
@@ -243,7 +247,6 @@ class Search:
         result = make_result(task, outcome)
         write_result(task, result)
         self.progress.simulated += 1
-        self.progress.executed += 1
         attrs: dict[str, Any] = {"simulated": True, "status": result.status, "wall": result.wall_time,
                                  "cpu": result.cpu_time, "utility": result.total_utility,
                                  "sim_duration": result.sim_duration}
