@@ -95,7 +95,7 @@ def main() -> int:
             shutil.rmtree(folder, ignore_errors=True)
     tpe, rnd = totals["tpe"], totals["random"]
     codes = [
-        _ratio("distinct failures, search / random", tpe["distinct"], max(rnd["distinct"], 1), DISTINCT_GOAL, True),
+        _ratio("distinct failures, search / random", tpe["distinct"], rnd["distinct"], DISTINCT_GOAL, True),
         _ratio("evaluations to the first failure, search / random", tpe["first"], rnd["first"], FIRST_GOAL, False),
     ]
     per_hour = 3600 * (tpe["evaluations"] + rnd["evaluations"]) / max(tpe["wall"] + rnd["wall"], 1e-9)
@@ -147,7 +147,8 @@ def _env() -> dict[str, str]:
 
 
 def _ratio(what: str, ours: float, theirs: float, goal: float, higher: bool) -> int:
-    ratio = ours / theirs if theirs else float("inf")
+    # both real sides are printed: over a zero the ratio is infinite (nothing over nothing is no ratio: missed)
+    ratio = ours / theirs if theirs else float("inf") if ours else float("nan")
     met = ratio >= goal if higher else ratio <= goal
     print(f"RATIO {what}: {ours:g} / {theirs:g} = {ratio:.2f} (goal {'>=' if higher else '<='} {goal:.2f}) "
           f"{'met' if met else 'MISSED'}")
