@@ -124,3 +124,37 @@ def test_a_case_is_generated_again_when_the_catalogue_it_imports_changed(tmp_pat
     (tmp_path / "office.rei").write_text("catalogue A { type Sofa : object box 1 x 0.9 x 1 }\n", encoding="utf-8")
     assert source_digest(case) != before
     assert source_digest(case) == source_digest(case)
+
+
+NAV_PARAMETERS = "expected key=value with key one of acc_angular, acc_linear, "
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # the top level's default controller: placed at its value, before any run
+    ('controller: "nav:inflaton_margin=0"\ngroups: [{name: g, cases: [CASE]}]\n',
+     "c.yaml:1:13: nav parameter 'inflaton_margin=0': " + NAV_PARAMETERS),
+    # a variant of the spec, one of a group (flow and block style), a value out of range, an unknown name
+    (('variants:\n  - {name: base}\n  - {name: tuned, controller: "nav:inflaton_margin=0"}\n'
+      "groups: [{name: g, cases: [CASE]}]\n"),
+     "c.yaml:3:31: variants[1]: nav parameter 'inflaton_margin=0': " + NAV_PARAMETERS),
+    (("groups:\n  - name: g\n    cases: [CASE]\n    variants:\n      - name: slow\n"
+      "        controller: nav:max_linear=-1\n"),
+     "c.yaml:6:21: groups[0]: variants[0]: nav parameter max_linear must be a finite number >= 0, got -1.0"),
+    ("groups:\n  - {name: g, cases: [CASE]}\n  - {name: h, variants: [{name: w, controller: warp}], cases: [CASE]}\n",
+     "c.yaml:3:48: groups[1]: variants[0]: unknown controller 'warp'; available: "),
+])
+def test_a_controller_that_cannot_be_built_is_refused_at_its_line_and_column(tmp_path: Path, text: str,
+                                                                             expected: str) -> None:
+    from rei.campaign import load_spec
+
+    (tmp_path / "c.yaml").write_text(text.replace("CASE", str(EXAMPLES / "simple_navigation.rei")), encoding="utf-8")
+    with pytest.raises(SpecError) as raised:
+        load_spec(tmp_path / "c.yaml")
+    assert str(raised.value).replace(str(tmp_path) + "/", "").startswith(expected)
+
+
+def test_good_controller_arguments_pass(tmp_path: Path) -> None:
+    parsed = parse_spec(spec(controller="nav:inflation_margin=0", variants=[{"name": "a"}, {
+        "name": "b", "controller": "nav:max_linear=0.2,v_samples=5"}]), base=EXAMPLES)
+    assert [v.controller for v in parsed.groups[0].variants] == ["nav:inflation_margin=0",
+                                                                 "nav:max_linear=0.2,v_samples=5"]

@@ -105,6 +105,8 @@ def test_a_good_spec_parses_to_what_it_says(folder: Path) -> None:
     (("shrink: {budget: 3}", "shrink: {budget: 3}\ndiversity: maybe"),
      "s.yaml:22:12: 'diversity' must be true or false, got 'maybe'"),
     (("name: crossing", "controller: autopilot"), "s.yaml:1:13: unknown controller 'autopilot'"),
+    (("name: crossing", 'controller: "nav:inflaton_margin=0"'),
+     "s.yaml:1:13: nav parameter 'inflaton_margin=0': expected key=value with key one of acc_angular, "),
     (("name: crossing", "sut: {cmd: x}"), "s.yaml:1:6: unknown key 'cmd'; known: command, clock"),
     (("case: case.rei", "case: other.rei"), "s.yaml:2:7: the base case "),
     (("  - {seed: [0, 100]}\n", "  - {seed: [0, 100]}\n  - {seed: [0, 9]}\n"), "s.yaml:14:5: seed is searched twice"),

@@ -34,6 +34,7 @@ from typing import Any
 
 import yaml
 
+from rei import located_yaml
 from rei.rooms.model import DEFAULT_TYPES, RoomTypes
 from rei.sut.external.options import DEFAULT_DEADLINE, DEFAULT_JOIN_TIMEOUT
 
@@ -108,25 +109,29 @@ class Spec:
 
 def load_spec(path: Path) -> Spec:
     try:
-        data = yaml.safe_load(path.read_text(encoding="utf-8"))
+        text = path.read_text(encoding="utf-8")
+        data = yaml.safe_load(text)
     except OSError as error:
         raise SpecError(f"{path}: cannot read: {error.strerror or error}") from None
     except yaml.YAMLError as error:
         raise SpecError(f"{path}: not YAML: {error}") from None
-    spec = parse_spec(data, base=path.resolve().parent, where=str(path), default_name=path.stem)
+    spec = parse_spec(data, base=path.resolve().parent, where=str(path), default_name=path.stem,
+                      node=located_yaml.compose(text))
     return dataclasses.replace(spec, source=path)
 
 
-def parse_spec(data: Any, *, base: Path, where: str = "spec", default_name: str = "campaign") -> Spec:
-    """A checked ``Spec`` from parsed YAML; relative case paths are resolved against ``base``."""
-    top = _Reader(data, where)
+def parse_spec(data: Any, *, base: Path, where: str = "spec", default_name: str = "campaign",
+               node: yaml.Node | None = None) -> Spec:
+    """A checked ``Spec`` from parsed YAML; relative case paths are resolved against ``base``. ``node``: the same
+    document composed (rei.located_yaml), so that a mistake in a value can be placed at its line and column."""
+    top = _Reader(data, where, node)
     top.only("name", "seed", "repetitions", "timeout", "mode", "controller", "sut", "report", "variants", "groups")
     name = top.str("name", default_name)
     seed = top.int("seed", 0, minimum=0)
     repetitions = top.int("repetitions", 1, minimum=1)
     timeout = top.number("timeout", 600.0)
     mode = top.choice("mode", MODES, "replay")
-    controller = top.str("controller", "nav")
+    controller = top.controller("controller", "nav")
     report = top.bool("report", False)
     if top.get("controller") is not None and top.get("sut") is not None:
         raise SpecError(f"{where}: give either 'controller' (in-process) or 'sut' (external), not both")
@@ -137,7 +142,8 @@ def parse_spec(data: Any, *, base: Path, where: str = "spec", default_name: str 
         raise SpecError(f"{where}: 'groups' must be a non-empty list")
     groups = []
     for i, raw in enumerate(groups_raw):
-        groups.append(_group(_Reader(raw, f"{where}: groups[{i}]"), base, controller, sut, variants, repetitions))
+        group = _Reader(raw, f"{where}: groups[{i}]", _item(top.node_of("groups"), i), where)
+        groups.append(_group(group, base, controller, sut, variants, repetitions))
     names = [g.name for g in groups]
     duplicate = next((n for n in names if names.count(n) > 1), None)
     if duplicate:
@@ -212,7 +218,6 @@ def _sut(r: _Reader, base: Path) -> ExternalSut | None:
 def _variants(r: _Reader, key: str, controller: str, default: tuple[Variant, ...], base: Path,
               sut: ExternalSut | None = None) -> tuple[Variant, ...]:
     from rei.sim.faults import parse_fault
-    from rei.sut.registry import available_controllers
 
     raw = r.get(key)
     if raw is None:
@@ -221,7 +226,7 @@ def _variants(r: _Reader, key: str, controller: str, default: tuple[Variant, ...
         raise SpecError(f"{r.where}: '{key}' must be a non-empty list")
     variants = []
     for i, item in enumerate(raw):
-        v = _Reader(item, f"{r.where}: {key}[{i}]")
+        v = _Reader(item, f"{r.where}: {key}[{i}]", _item(r.node_of(key), i), r.file)
         v.only("name", "humans", "fault", "controller", "sut")
         fault = v.get("fault")
         if fault is not None:
@@ -231,9 +236,7 @@ def _variants(r: _Reader, key: str, controller: str, default: tuple[Variant, ...
                 parse_fault(fault)
             except ValueError as error:
                 raise SpecError(f"{v.where}: fault: {error}") from None
-        spec = v.str("controller", controller)
-        if spec.partition(":")[0] not in available_controllers():
-            raise SpecError(f"{v.where}: unknown controller {spec!r}; available: {', '.join(available_controllers())}")
+        spec = v.controller("controller", controller)
         own_sut = _sut(v, base)
         if own_sut is not None and v.get("controller") is not None:
             raise SpecError(f"{v.where}: give either 'controller' (in-process) or 'sut' (external), not both")
@@ -249,13 +252,51 @@ def _case_stem(case: Path) -> str:
     return case.stem if case.suffix == ".rei" else case.name
 
 
-class _Reader:
-    """Typed access to one mapping of the spec, every error prefixed with where it is."""
+def _item(node: yaml.Node | None, index: int) -> yaml.Node | None:
+    """Item ``index`` of a composed list (None when there is no node or it is no list that long)."""
+    if isinstance(node, yaml.SequenceNode) and index < len(node.value):
+        item: yaml.Node = node.value[index]
+        return item
+    return None
 
-    def __init__(self, data: Any, where: str) -> None:
+
+class _Reader:
+    """Typed access to one mapping of the spec, every error prefixed with where it is: its key path after ``file``
+    (the spec file), and the line and column of the value where the mapping's composed ``node`` is known."""
+
+    def __init__(self, data: Any, where: str, node: yaml.Node | None = None, file: str | None = None) -> None:
         if not isinstance(data, Mapping):
             raise SpecError(f"{where}: expected a mapping, got {type(data).__name__}")
-        self.data, self.where = data, where
+        self.data, self.where, self.file = data, where, where if file is None else file
+        self.node = node if isinstance(node, yaml.MappingNode) else None
+
+    def node_of(self, key: str) -> yaml.Node | None:
+        """The composed value of ``key`` (None without a node)."""
+        for key_node, value_node in self.node.value if self.node is not None else ():
+            if isinstance(key_node, yaml.ScalarNode) and key_node.value == key:
+                found: yaml.Node = value_node
+                return found
+        return None
+
+    def at(self, key: str) -> str:
+        """Where the value of ``key`` is: ``FILE:LINE:COLUMN: key path`` (without a node: the key path)."""
+        node = self.node_of(key)
+        if node is None:
+            return self.where
+        line, column = located_yaml.position(node)
+        path = self.where[len(self.file):].lstrip(": ") if self.where.startswith(self.file) else self.where
+        return f"{self.file}:{line}:{column}" + (f": {path}" if path else "")
+
+    def controller(self, key: str, default: str) -> str:
+        """An in-process controller (``nav``, ``nav:max_linear=0.2``, ...) checked as `--controller` is: the run
+        would build the same, so a mistyped ``nav:`` parameter is refused here, with the known ones."""
+        from rei.sut.registry import controller_problem
+
+        value = self.str(key, default)
+        problem = None if key not in self.data else controller_problem(value)
+        if problem is not None:
+            raise SpecError(f"{self.at(key)}: {problem}")
+        return value
 
     def only(self, *keys: str) -> None:
         unknown = sorted(set(map(str, self.data)) - set(keys))

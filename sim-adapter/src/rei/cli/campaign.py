@@ -120,12 +120,11 @@ def run(args: argparse.Namespace) -> int:
 
 def _with_controller(spec: Any, controller: str) -> Any:
     """The spec with every variant run by ``controller`` (checked here, before any run)."""
-    from rei.sut.registry import UnknownControllerError, create_controller
+    from rei.sut.registry import controller_problem
 
-    try:
-        create_controller(controller)
-    except (UnknownControllerError, ValueError) as error:
-        raise CommandError(f"--controller {controller}: {error}") from None
+    problem = controller_problem(controller)
+    if problem is not None:
+        raise CommandError(f"--controller {controller}: {problem}")
     groups = tuple(dataclasses.replace(g, variants=tuple(dataclasses.replace(v, controller=controller, sut=None)
                                                           for v in g.variants)) for g in spec.groups)
     return dataclasses.replace(spec, groups=groups)

@@ -85,5 +85,16 @@ def create_controller(spec: str) -> Controller:
     return ControllerRegistry().create(spec)
 
 
+def controller_problem(spec: str) -> str | None:
+    """Why ``spec`` names no controller that can be built (an unknown name, a ``nav:`` parameter mistyped or out of
+    range with the known ones listed, a missing script), or None: the check `rei campaign --controller` and the
+    campaign and search specs make before any run, rather than each run failing on its own."""
+    try:
+        create_controller(spec)
+    except (UnknownControllerError, ValueError) as error:
+        return str(error)
+    return None
+
+
 def available_controllers() -> list[str]:
     return ControllerRegistry().names()
