@@ -237,10 +237,11 @@ def _at(where: str, read: Any) -> Any:
 
 
 def _check_controller(controller: str, where: str) -> None:
-    from rei.sut.registry import available_controllers
+    from rei.sut.registry import controller_problem
 
-    if controller.partition(":")[0] not in available_controllers():
-        raise SpecError(f"{where}: unknown controller {controller!r}; available: {', '.join(available_controllers())}")
+    problem = controller_problem(controller)
+    if problem is not None:
+        raise SpecError(f"{where}: {problem}")
 
 
 _PROPS = {"object": ("floor", "yaw"), "robot": ("floor",), "human": ("points", "start", "speed", "loop"),
