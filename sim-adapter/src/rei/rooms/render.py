@@ -10,6 +10,8 @@ from pathlib import Path
 from rei.rooms.model import Room, floor_name
 
 MONITOR = "monitor { close 0.25 collision 0.01 maxHumanCollisions 1 }"
+#: The robot's name in every generated room.
+ROBOT = "tb3"
 
 
 def render(room: Room, count: int | None = None, folder: Path | None = None) -> str:
@@ -36,7 +38,7 @@ def render(room: Room, count: int | None = None, folder: Path | None = None) -> 
     for walker in room.walkers:
         lines.append(f"    human {walker.name} trajectory [{floor_name(walker.start)} @ 0s, "
                      f"{floor_name(walker.end)} @ {walker.period}s] loop")
-    lines.append(f"    robot tb3 : {room.types.robot} on {floor_name(room.start)}")
+    lines.append(f"    robot {ROBOT} : {room.types.robot} on {floor_name(room.start)}")
     lines.append("  }")
     lines.append("  mission Tour {")
     for goal in room.goals:

@@ -53,6 +53,7 @@ def run_search(spec: SearchSpec, out: Path, *, workers: int = 1, ray: str | None
         raise
     try:
         progress = search.run()
+        spec = search.spec  # with its base case (a ``rooms:`` spec's, generated into OUT)
         shrunk = _load(out / SHRUNK)
         if shrink_failures and not progress.interrupted and spec.shrink_budget > 0:
             shrunk = _shrink_all(search, shrunk, log)

@@ -5,7 +5,8 @@ Checked completely at the door; every mistake is reported as ``FILE:LINE:COLUMN:
 (or key) it is about, as ``rei validate`` reports a test case's. Format (docs/search.md)::
 
     name: crossing              # optional, default: the file's stem
-    case: crossing.rei          # the base case, relative to the spec file
+    case: crossing.rei          # the base case, relative to the spec file, or instead:
+    # rooms: {size: small, density: sparse, humans: 1, seed: 4}  # one generated room, as in campaign specs
     controller: nav             # or sut: {command: ..., map: true, ...} as in campaign specs
     seed: 0                     # the sampler's seed
     budget: 20                  # simulated evaluations (--budget overrides)
@@ -43,7 +44,7 @@ from typing import Any
 import yaml
 
 from rei import located_yaml
-from rei.campaign.spec import ExternalSut, SpecError, _Reader, _sut
+from rei.campaign.spec import ExternalSut, RoomSettings, SpecError, _Reader, _rooms, _sut
 from rei.evaluation.metrics import BY_NAME, NAMES, Better
 from rei.search import SAMPLERS
 
@@ -105,8 +106,11 @@ class Objective:
 
 @dataclass(frozen=True, slots=True)
 class SearchSpec:
+    """``case``: the base case; None when ``rooms`` generates it (rei.search.base writes it into the search's
+    folder and sets ``case``)."""
+
     name: str
-    case: Path
+    case: Path | None
     controller: str
     sut: ExternalSut | None
     seed: int
@@ -119,6 +123,7 @@ class SearchSpec:
     shrink_budget: int
     diversity: bool = True
     source: Path | None = None
+    rooms: RoomSettings | None = None
 
     def with_options(self, **changes: Any) -> SearchSpec:
         return dataclasses.replace(self, **{k: v for k, v in changes.items() if v is not None})
@@ -167,7 +172,7 @@ def parse_search_spec(text: str, *, base: Path, file: str = "spec", default_name
     if root is None:
         raise SpecError(f"{file}:1:1: the spec is empty: expected 'case', 'parameters' and 'objectives'")
     top = loc.mapping(root, "the spec")
-    known = ("name", "case", "controller", "sut", "seed", "budget", "sampler", "timeout", "humans", "parameters",
+    known = ("name", "case", "rooms", "controller", "sut", "seed", "budget", "sampler", "timeout", "humans", "parameters",
              "objectives", "shrink", "diversity")
     for name, (key, _) in top.items():
         if name not in known:
@@ -175,13 +180,21 @@ def parse_search_spec(text: str, *, base: Path, file: str = "spec", default_name
     plain = {name: loc.value(value) for name, (_, value) in top.items()
              if name not in ("parameters", "objectives", "sut")}
     reader = _PositionedReader(plain, top, loc)
-    for required in ("case", "parameters", "objectives"):
+    for required in ("parameters", "objectives"):
         if required not in top:
             raise SpecError(f"{loc.at(root)}: '{required}' is required")
-    case_node = top["case"][1]
-    case = (base / str(loc.value(case_node))).resolve()
-    if case.suffix != ".rei" or not case.is_file():
-        raise SpecError(f"{loc.at(case_node)}: the base case {case} is not a .rei file")
+    if ("case" in top) == ("rooms" in top):
+        where = loc.at(top["rooms"][0]) if "rooms" in top else loc.at(root)
+        raise SpecError(f"{where}: give either 'case' (a .rei file) or 'rooms' (generated-room settings as in "
+                        f"campaign specs){', not both' if 'rooms' in top else ''}")
+    case, rooms = None, None
+    if "case" in top:
+        case_node = top["case"][1]
+        case = (base / str(loc.value(case_node))).resolve()
+        if case.suffix != ".rei" or not case.is_file():
+            raise SpecError(f"{loc.at(case_node)}: the base case {case} is not a .rei file")
+    else:
+        rooms = _room_settings(top["rooms"][1], base, loc)
     if "controller" in top and "sut" in top:
         raise SpecError(f"{loc.at(top['sut'][0])}: give either 'controller' (in-process) or 'sut' (external), "
                         "not both")
@@ -210,7 +223,26 @@ def parse_search_spec(text: str, *, base: Path, file: str = "spec", default_name
         timeout=reader.call("timeout", lambda r: r.number("timeout", 300.0)),
         humans=reader.call("humans", lambda r: r.bool("humans", True)),
         parameters=parameters, objectives=objectives, shrink_budget=shrink_budget,
-        diversity=reader.call("diversity", lambda r: r.bool("diversity", True)))
+        diversity=reader.call("diversity", lambda r: r.bool("diversity", True)), rooms=rooms)
+
+
+def _room_settings(node: yaml.Node, base: Path, loc: _Located) -> RoomSettings:
+    """``rooms:`` read and checked by the campaign spec's reader (the same keys but ``count``: a search starts
+    from one room), a mistake placed at the setting its message names (else at the mapping)."""
+    entries = loc.mapping(node, "'rooms'")
+    if "count" in entries:
+        raise SpecError(f"{loc.at(entries['count'][0])}: a search starts from one generated room: leave out "
+                        "'count' (another room of these settings: change 'seed')")
+    try:
+        return _rooms(_Reader(loc.value(node), ""), base)
+    except SpecError as error:
+        message = str(error).lstrip(": ")  # the reader's empty positions (twice when _rooms wraps its own)
+        named = [(match.start(), name) for name in entries
+                 if (match := re.search(rf"\b{re.escape(name)}\b", message))]
+        where = loc.at(entries[min(named)[1]][1]) if named else loc.at(node)
+        if named and message.startswith("unknown key"):
+            where = loc.at(entries[min(named)[1]][0])
+        raise SpecError(f"{where}: {message}") from None
 
 
 class _PositionedReader:

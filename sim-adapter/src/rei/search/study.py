@@ -33,6 +33,7 @@ from optuna.trial import TrialState
 from rei.campaign.plan import RunTask
 from rei.campaign.results import make_result, write_result
 from rei.campaign.supervise import Outcome
+from rei.search.base import with_base_case
 from rei.search.candidates import VALID, Candidate, CandidateMaker
 from rei.search.failures import failures_of
 from rei.search.objectives import ABSENT, better, present, score
@@ -104,6 +105,9 @@ class Search:
         self.out.mkdir(parents=True, exist_ok=True)
         if spec.source is not None and spec.source.resolve() != self.out / "spec.yaml":
             shutil.copyfile(spec.source, self.out / "spec.yaml")
+        # a ``rooms:`` spec's base case is generated now, into OUT, before the parameters are checked against it
+        self.spec = spec = with_base_case(spec, self.out, log)
+        assert spec.case is not None
         self.maker = CandidateMaker(spec.case, self.out)
         try:
             self.space = Space(spec.parameters, self.maker.diagram, self.maker.palette)
