@@ -94,6 +94,10 @@ def run_campaign(spec: Spec, out: Path, backend: Backend, *, retry_errors: bool 
                 continue
             problem = prepared[task.case].error
             if problem is not None:  # the case could not be generated: the run is an ERROR, not a crash
+                # recorded as a run that ended in ERROR is (its folder, the task.json that makes it finished)
+                Path(task.run_dir).mkdir(parents=True, exist_ok=True)
+                (Path(task.run_dir) / "task.json").write_text(json.dumps(task.to_dict(), indent=2) + "\n",
+                                                               encoding="utf-8")
                 _record(task, Outcome(task.key, None, False, False, 0.0, 0.0, problem, "-"), log, problem)
                 executed += 1
                 continue

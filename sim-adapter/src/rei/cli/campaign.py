@@ -12,7 +12,8 @@ Tables 5 and 7), OUT/runs.csv, OUT/metrics.csv (the navigation metrics per room 
 OUT/report.html. `--controller` runs every variant with that in-process controller instead of the spec's (the
 same spec against another system under test); `--compare BASELINE` then compares the campaign with an earlier
 one as `rei compare BASELINE OUT -o OUT/compare` does. Exit 0: every run completed (and no metric regressed);
-1: some ended in ERROR, or a metric regressed; 2: bad spec or arguments; 130: interrupted.
+1: some ended in ERROR, or a metric regressed; 2: bad spec or arguments; 130: interrupted; 143: SIGTERM outside
+the runs (while the outputs are written, say), which stops what the campaign started and exits at once.
 """
 
 from __future__ import annotations
@@ -47,6 +48,16 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from rei.lifetime import sigterm_unwinds
+
+    # inside its run loop the runner takes SIGTERM as an interruption (outputs written, exit 130); elsewhere
+    # (Ray starting, the summary and report written, --compare) it now unwinds (exit 143) instead of killing the
+    # process on the spot, so the finally blocks still stop the fork server and Ray and end the service's lease
+    with sigterm_unwinds():
+        return _run(args)
+
+
+def _run(args: argparse.Namespace) -> int:
     from rei.campaign import LocalBackend, SpecError, load_spec, run_campaign
 
     workers = workers_of(args)
