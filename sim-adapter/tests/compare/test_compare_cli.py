@@ -26,6 +26,7 @@ def spec(tmp_path: Path) -> Path:
     (["--controller", "teleport"], "--controller teleport: unknown controller 'teleport'"),
     (["--thresholds", "t.yaml"], "--thresholds needs --compare BASELINE"),
     (["--compare", "nowhere"], "--compare nowhere: no such campaign folder"),
+    (["--workers", "0"], "--workers must be at least 1, got 0"),  # not silently every core
 ])
 def test_campaign_options_are_checked_first(extra: list[str], message: str, tmp_path: Path,
                                             capsys: pytest.CaptureFixture[str]) -> None:

@@ -125,3 +125,11 @@ def test_required_keys_and_lists(folder: Path) -> None:
     assert error_of("", folder).startswith("s.yaml:1:1: the spec is empty")
     assert error_of("case: case.rei\nparameters: [{seed: [0, 9]}]\nobjectives: [speed]\n", folder).startswith(
         "s.yaml:3:14: unknown objective 'speed'")
+
+
+def test_zero_workers_is_refused_not_read_as_every_core(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    from rei.cli import main
+
+    assert main(["search", str(tmp_path / "s.yaml"), "-o", str(tmp_path / "out"), "--workers", "0"]) == 2
+    assert "--workers must be at least 1, got 0" in capsys.readouterr().err
+    assert not (tmp_path / "out").exists()

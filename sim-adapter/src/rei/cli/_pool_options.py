@@ -20,7 +20,8 @@ def add_pool_options(parser: argparse.ArgumentParser) -> None:
 
 def workers_of(args: argparse.Namespace) -> int:
     """``--workers``, by default the number of cores; refused below 1 before anything starts."""
-    workers: int = args.workers or os.cpu_count() or 1
+    # 0 is refused like any count below 1, not taken as the default (it is only when the option is absent)
+    workers: int = (os.cpu_count() or 1) if args.workers is None else args.workers
     if workers < 1:
         raise CommandError(f"--workers must be at least 1, got {workers}")
     return workers
