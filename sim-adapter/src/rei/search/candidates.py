@@ -11,7 +11,10 @@ rei.rooms.check), is never simulated. Valid ones are written to ``OUT/candidates
 
 from __future__ import annotations
 
+import json
 import math
+import os
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -45,9 +48,7 @@ class CandidateMaker:
 
     def __init__(self, base: Path, out: Path) -> None:
         self.out = out
-        if _imports(base.read_text(encoding="utf-8")):
-            raise SpecError(f"{base}: a base case that imports catalogues is not supported by rei search yet "
-                            "(its candidates are written to another folder, where the imports would not resolve)")
+        self._base_folder = base.resolve().parent  # the engine resolves the base's imports from there
         self._engine = EditEngine(engine_command(toolchain.find_jar("room-editor"), toolchain.find_java().executable))
         try:
             answer = self._engine.request("open", path=str(base.resolve()))
@@ -92,7 +93,7 @@ class CandidateMaker:
         fault = f" --fault {candidate.edit.fault}" if candidate.edit.fault else ""
         header = (f"// rei search candidate {candidate.key}: rei run {path.name} --seed {candidate.edit.seed}"
                   f"{fault}\n")
-        path.write_text(header + candidate.text, encoding="utf-8")
+        path.write_text(header + relocated_imports(candidate.text, self._base_folder, path.parent), encoding="utf-8")
         return path
 
     def generate(self, candidate: Candidate) -> tuple[Path, str | None]:
@@ -145,7 +146,14 @@ def stops(diagram: dict[str, Any]) -> list[tuple[str, tuple[float, float]]]:
             *((g["floor"], (float(g["x"]), float(g["y"]))) for g in goals)]
 
 
-def _imports(text: str) -> bool:
+def relocated_imports(text: str, origin: Path, folder: Path) -> str:
+    """``text``, written in ``origin``, with each catalogue import's path made relative to ``folder``, where it is
+    written instead (a candidate or shrunk case imports the base case's catalogues)."""
     from rei.campaign.prepare import _IMPORT
 
-    return bool(_IMPORT.search(text))
+    def relocate(match: re.Match[str]) -> str:
+        path = match.group(1).replace('\\"', '"').replace("\\\\", "\\")
+        moved = Path(os.path.relpath((origin / path).resolve(), folder.resolve())).as_posix()
+        return match.group(0)[:match.start(1) - match.start(0) - 1] + json.dumps(moved)
+
+    return _IMPORT.sub(relocate, text)
