@@ -84,3 +84,12 @@ def test_the_base_case_is_the_room_gen_rooms_writes(tmp_path: Path) -> None:
 def _with_case(folder: Path) -> Path:
     (folder / "c.rei").write_text("testcase T {}\n", encoding="utf-8")
     return folder
+
+
+def test_the_example_generated_room_spec_parses() -> None:
+    from rei.search.spec import load_search_spec
+
+    example = Path(__file__).resolve().parents[3] / "examples" / "search" / "generated.yaml"
+    spec = load_search_spec(example)
+    assert spec.case is None and spec.rooms is not None and spec.rooms.humans == 1
+    assert [p.key for p in spec.parameters] == ["walker1.start", "walker1.speed", "walker1.points", "chair1.floor"]

@@ -2,9 +2,10 @@
 """`rei search SPEC.yaml -o OUT [--workers N | --ray ADDRESS] [--budget N] [--sampler S]`: find the situations
 that break the robot.
 
-The spec names a base case, the SUT, what may change (objects' floors and yaw, humans' paths and timing, the
-robot's start, goals, the seed, laser fault parameters) and what counts as worse (utility, time, navigation
-metrics, a requirement's verdict, a signal): docs/search.md. Candidates are the base case edited by the room
+The spec names a base case (a .rei file, or room settings as in campaign specs: generated into OUT/base/), the
+SUT, what may change (objects' floors and yaw, humans' paths and timing, the robot's start, goals, the seed, laser
+fault parameters) and what counts as worse (utility, time, navigation metrics, a requirement's verdict, a signal):
+docs/search.md. Candidates are the base case edited by the room
 editor's engine and checked by the language's validators and the navigability check; valid ones run on the
 campaign's workers (or Ray) while Optuna's sampler (tpe, cmaes, nsga2, qmc, or random as a baseline) picks the
 next. Each distinct failure is then shrunk to a smaller case that fails the same way. Writes OUT/search.json,
