@@ -28,6 +28,7 @@ class FakeMaker:
     def __init__(self, out: Path, diagram: dict[str, Any], broken: tuple[str, ...] = ()) -> None:
         self.out, self.diagram, self.palette, self.broken = out, diagram, [], broken
         self.made: list[Candidate] = []
+        self._base_folder = out  # read by CandidateMaker.write (the fake's texts import no catalogue)
 
     def make(self, key: str, edit: Edit) -> Candidate:
         candidate = Candidate(key, edit, VALID, json.dumps(edit.operations, sort_keys=True) + "\n")

@@ -74,7 +74,7 @@ def test_the_real_maker_leaves_no_candidate_file_when_generation_fails(tmp_path:
     monkeypatch.setattr(candidates, "JarServer", no_server)
     monkeypatch.setattr(candidates, "run_jar", lambda *_, **__: JvmResult(1, 0.1, 0.1, "No space left on device"))
     maker = CandidateMaker.__new__(CandidateMaker)  # the engine is not needed to generate
-    maker.out, maker._generator = tmp_path, None
+    maker.out, maker._generator, maker._base_folder = tmp_path, None, tmp_path
     _, problem = maker.generate(Candidate("tpe-0001", Edit((), 0, None), VALID, "testcase T {}\n"))
     assert problem == "tpe-0001.rei could not be generated (exit 1): No space left on device"
     assert not (tmp_path / "candidates" / "tpe-0001.rei").exists()
