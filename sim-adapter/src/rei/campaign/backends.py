@@ -13,8 +13,9 @@ import secrets
 import shutil
 import tempfile
 import threading
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from concurrent.futures import FIRST_COMPLETED, Future, ThreadPoolExecutor, wait
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -25,6 +26,44 @@ from rei.campaign.worker import MONITOR_SERVER_ENV
 from rei.run.jvm import JarServer, JarServerError
 
 OnOutcome = Callable[[RunTask, Outcome], None]
+
+
+@dataclass(frozen=True)
+class Warm:
+    """What the workers of a ``warm_start`` block use: their environment and the fork server (None: each worker
+    starts as a new process)."""
+
+    env: dict[str, str]
+    forks: ForkServer | None
+
+
+@contextlib.contextmanager
+def warm_start(who: str, forks: ForkServer | None, monitor_log: Path | None, *, monitor_server: Path | None = None,
+               env: Mapping[str, str] | None = None) -> Iterator[Warm]:
+    """Starts what makes the local runs cheap and stops it at the end: ``forks`` (the workers are forked from it)
+    and, with ``monitor_log``, one warm monitor JVM for every run's replay (rei.run.jvm.JarServer), its log there;
+    the workers find its socket in ``$REI_MONITOR_SERVER`` (rei.campaign.worker). ``monitor_server``: replay in that
+    warm monitor JVM instead (the background service's), started by someone else. ``env``: added to every worker's
+    environment. Either failing to start is said on the terminal, prefixed ``who:``, and the runs go on without it.
+    Shared by the campaign's local backend and rei.search's local pool."""
+    with contextlib.ExitStack() as stack:
+        workers_env = dict(env or {})
+        if forks is not None:
+            try:
+                stack.enter_context(forks)
+            except ForkServerError as error:  # each worker then starts as a new process
+                print(f"{who}: {error}; each run's worker starts as a new process", flush=True)
+                forks = None
+        if monitor_server is not None:
+            workers_env[MONITOR_SERVER_ENV] = str(monitor_server)
+        elif monitor_log is not None:
+            server = JarServer("monitor", monitor_log)
+            try:
+                stack.enter_context(server)
+                workers_env[MONITOR_SERVER_ENV] = str(server.socket)
+            except (JarServerError, OSError) as error:  # each replay then starts a JVM of its own
+                print(f"{who}: no warm monitor JVM ({error}); each run replays in a JVM of its own", flush=True)
+        yield Warm(workers_env, forks)
 
 
 class LocalBackend:
@@ -59,25 +98,9 @@ class LocalBackend:
             self._forks.launch()
 
     def run(self, tasks: Sequence[RunTask], on_outcome: OnOutcome, stop: threading.Event) -> None:
-        with contextlib.ExitStack() as stack:
-            env = dict(self._worker_env)
-            forks = self._forks if tasks else None
-            if forks is not None:
-                try:
-                    stack.enter_context(forks)
-                except ForkServerError as error:  # each worker then starts as a new process
-                    print(f"campaign: {error}; each run's worker starts as a new process", flush=True)
-                    forks = None
-            if self._monitor_server is not None:
-                env[MONITOR_SERVER_ENV] = str(self._monitor_server)
-            elif self._monitor_log is not None and tasks:
-                server = JarServer("monitor", self._monitor_log)
-                try:
-                    stack.enter_context(server)
-                    env[MONITOR_SERVER_ENV] = str(server.socket)
-                except (JarServerError, OSError) as error:  # each replay then starts a JVM of its own
-                    print(f"campaign: no warm monitor JVM ({error}); each run replays in a JVM of its own", flush=True)
-            self._run(tasks, on_outcome, stop, env, forks)
+        with warm_start("campaign", self._forks if tasks else None, self._monitor_log if tasks else None,
+                        monitor_server=self._monitor_server, env=self._worker_env) as warm:
+            self._run(tasks, on_outcome, stop, warm.env, warm.forks)
 
     def _run(self, tasks: Sequence[RunTask], on_outcome: OnOutcome, stop: threading.Event,
              env: dict[str, str] | None, forks: ForkServer | None) -> None:
@@ -185,3 +208,18 @@ class RayBackend:
 
 def _ray_supervise(task: dict[str, Any]) -> dict[str, Any]:
     return supervise(RunTask.from_dict(task)).to_dict()
+
+
+class RayUnavailableError(RuntimeError):
+    """The runs have nowhere to go: Ray is missing or its cluster can not be reached (the message says which)."""
+
+
+def connect_ray(address: str, workers: int) -> RayBackend:
+    """The Ray backend for ``--ray ADDRESS`` (``local``: a Ray instance of ``workers`` CPUs started here; a cluster
+    has CPUs of its own), for rei campaign and rei search."""
+    try:
+        return RayBackend(address, workers if address == "local" else None)
+    except ImportError:
+        raise RayUnavailableError("--ray needs Ray: pip install 'rei[campaign-ray]'") from None
+    except Exception as error:  # noqa: BLE001 - any failure to reach the cluster is the user's to fix
+        raise RayUnavailableError(f"cannot connect to Ray at {address}: {error}") from None

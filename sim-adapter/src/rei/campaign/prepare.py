@@ -10,6 +10,8 @@ one JVM start for the campaign instead of one per case.
 from __future__ import annotations
 
 import hashlib
+import json
+import os
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -78,7 +80,8 @@ def _current(target: Path, digest: str) -> bool:
     return stamp.is_file() and stamp.read_text(encoding="utf-8").strip() == digest and (target / "world.json").is_file()
 
 
-#: A test case's catalogue imports (docs/language.md); only read to notice a changed catalogue on resume.
+#: A test case's catalogue imports (docs/language.md): read to notice a changed catalogue on resume, rewritten by
+#: relocated_imports.
 _IMPORT = re.compile(r'^\s*import\s+"((?:[^"\\]|\\.)*)"', re.MULTILINE)
 
 
@@ -88,7 +91,23 @@ def source_digest(rei: Path) -> str:
     text = rei.read_bytes()
     digest = hashlib.sha256(text)
     for path in _IMPORT.findall(text.decode("utf-8", errors="replace")):
-        imported = rei.parent / path.replace('\\"', '"').replace("\\\\", "\\")
+        imported = rei.parent / _unquoted(path)
         if imported.is_file():  # a missing one fails the generation with the validator's message
             digest.update(b"\0" + imported.read_bytes())
     return digest.hexdigest()
+
+
+def relocated_imports(text: str, origin: Path, folder: Path) -> str:
+    """``text``, written in ``origin``, with each catalogue import's path made relative to ``folder``, where it is
+    written instead (rei.search: a candidate or shrunk case imports the base case's catalogues)."""
+
+    def relocate(match: re.Match[str]) -> str:
+        moved = Path(os.path.relpath((origin / _unquoted(match.group(1))).resolve(), folder.resolve())).as_posix()
+        return match.group(0)[:match.start(1) - match.start(0) - 1] + json.dumps(moved)
+
+    return _IMPORT.sub(relocate, text)
+
+
+def _unquoted(path: str) -> str:
+    """An import's path as written between its quotes, unescaped."""
+    return path.replace('\\"', '"').replace("\\\\", "\\")

@@ -75,14 +75,12 @@ def _run(args: argparse.Namespace) -> int:
     elif args.thresholds is not None:
         raise CommandError("--thresholds needs --compare BASELINE")
     if args.ray:
-        try:
-            from rei.campaign import RayBackend
+        from rei.campaign.backends import RayUnavailableError, connect_ray
 
-            backend: Any = RayBackend(args.ray, workers if args.ray == "local" else None)
-        except ImportError:
-            raise CommandError("--ray needs Ray: pip install 'rei[campaign-ray]'") from None
-        except Exception as error:  # noqa: BLE001 - any failure to reach the cluster is the user's to fix
-            raise CommandError(f"cannot connect to Ray at {args.ray}: {error}") from None
+        try:
+            backend: Any = connect_ray(args.ray, workers)
+        except RayUnavailableError as error:
+            raise CommandError(str(error)) from None
     service = None
     if not args.ray:
         from rei.service import SWITCH_ENV

@@ -42,9 +42,10 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from rei.campaign.backends import RayUnavailableError
     from rei.campaign.spec import SpecError
     from rei.lifetime import sigterm_unwinds
-    from rei.search.run import PoolError, run_search
+    from rei.search.run import run_search
     from rei.search.spec import load_search_spec
 
     workers = workers_of(args)
@@ -61,7 +62,7 @@ def run(args: argparse.Namespace) -> int:
         with sigterm_unwinds():
             result = run_search(spec, args.output, workers=workers, ray=args.ray, stop=stop,
                                 shrink_failures=not args.no_shrink)
-    except (SpecError, PoolError) as error:
+    except (SpecError, RayUnavailableError) as error:
         raise CommandError(str(error)) from None
     counts = result["counts"]
     print(f"{counts['simulated']} evaluations ({counts['errors']} in ERROR), {counts['invalid']} invalid and "

@@ -11,7 +11,9 @@ catalogue footprints. Humans are not in the static map, as for the robot.
 from __future__ import annotations
 
 import itertools
+import math
 from collections.abc import Sequence
+from typing import Any
 
 from rei.rooms.model import FLOOR, Room, floor_centre
 from rei.sut.api import StaticMap
@@ -36,6 +38,23 @@ def static_map(room: Room) -> StaticMap:
         hx, hy = item.half_extents()
         obstacles.append((*floor_centre(item.cell), 0.0, 2 * hx, 2 * hy))
     return StaticMap(bounds=(0.0, 0.0, w, h), obstacles=tuple(obstacles), robot_size=room.types.robot_size)
+
+
+def diagram_static_map(diagram: dict[str, Any]) -> StaticMap:
+    """``static_map`` of a test case as the room editor's diagram (rei.edit) gives it: its walls as drawn, its
+    objects at their poses; for rei.search, which checks edited test cases."""
+    room = diagram["room"]
+    size = float(room["floorSize"])
+    obstacles = [(float(w["x"]), float(w["y"]), 0.0, float(w["sizeX"]), float(w["sizeY"])) for w in room["walls"]]
+    for item in diagram.get("objects") or []:
+        fp = item["footprint"]
+        obstacles.append((float(item["x"]), float(item["y"]), math.radians(float(item["yaw"])),
+                          float(fp["sizeX"]), float(fp["sizeY"])))
+    xs = [float(f["x"]) * size for f in room["floors"]]
+    ys = [float(f["y"]) * size for f in room["floors"]]
+    robot = diagram["robot"]["footprint"]
+    return StaticMap(bounds=(min(xs), min(ys), max(xs) + size, max(ys) + size), obstacles=tuple(obstacles),
+                     robot_size=(float(robot["sizeX"]), float(robot["sizeY"])))
 
 
 def unplannable_legs(room: Room, config: NavConfig | None = None) -> list[str]:

@@ -11,21 +11,17 @@ rei.rooms.check), is never simulated. Valid ones are written to ``OUT/candidates
 
 from __future__ import annotations
 
-import json
-import math
-import os
-import re
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 from rei import toolchain
+from rei.campaign.prepare import relocated_imports
 from rei.campaign.spec import SpecError
 from rei.edit import EditEngine, EngineError, engine_command
-from rei.rooms.check import unplannable
+from rei.rooms.check import diagram_static_map, unplannable
 from rei.run.jvm import JarServer, JarServerError, run_jar
 from rei.search.space import Edit
-from rei.sut.api import StaticMap
 
 VALID, INVALID, UNPLANNABLE = "valid", "invalid", "unplannable"
 
@@ -79,7 +75,7 @@ class CandidateMaker:
         if errors:
             return Candidate(key, edit, INVALID, answer["text"], tuple(errors))
         diagram = answer["diagram"]
-        no_path = unplannable(static_map(diagram), stops(diagram))
+        no_path = unplannable(diagram_static_map(diagram), stops(diagram))
         if no_path:
             return Candidate(key, edit, UNPLANNABLE, answer["text"], tuple(no_path))
         return Candidate(key, edit, VALID, answer["text"], diagram=diagram)
@@ -122,38 +118,9 @@ class CandidateMaker:
             self._generator = None
 
 
-def static_map(diagram: dict[str, Any]) -> StaticMap:
-    """The walls and furniture of a room editor diagram as the navigation's static map."""
-    room = diagram["room"]
-    size = float(room["floorSize"])
-    obstacles = [(float(w["x"]), float(w["y"]), 0.0, float(w["sizeX"]), float(w["sizeY"])) for w in room["walls"]]
-    for item in diagram.get("objects") or []:
-        fp = item["footprint"]
-        obstacles.append((float(item["x"]), float(item["y"]), math.radians(float(item["yaw"])),
-                          float(fp["sizeX"]), float(fp["sizeY"])))
-    xs = [float(f["x"]) * size for f in room["floors"]]
-    ys = [float(f["y"]) * size for f in room["floors"]]
-    robot = diagram["robot"]["footprint"]
-    return StaticMap(bounds=(min(xs), min(ys), max(xs) + size, max(ys) + size), obstacles=tuple(obstacles),
-                     robot_size=(float(robot["sizeX"]), float(robot["sizeY"])))
-
-
 def stops(diagram: dict[str, Any]) -> list[tuple[str, tuple[float, float]]]:
     """The robot's start, then each goal, named by floor."""
     robot = diagram["robot"]
     goals = (diagram.get("mission") or {}).get("goals") or []
     return [(robot["floor"], (float(robot["x"]), float(robot["y"]))),
             *((g["floor"], (float(g["x"]), float(g["y"]))) for g in goals)]
-
-
-def relocated_imports(text: str, origin: Path, folder: Path) -> str:
-    """``text``, written in ``origin``, with each catalogue import's path made relative to ``folder``, where it is
-    written instead (a candidate or shrunk case imports the base case's catalogues)."""
-    from rei.campaign.prepare import _IMPORT
-
-    def relocate(match: re.Match[str]) -> str:
-        path = match.group(1).replace('\\"', '"').replace("\\\\", "\\")
-        moved = Path(os.path.relpath((origin / path).resolve(), folder.resolve())).as_posix()
-        return match.group(0)[:match.start(1) - match.start(0) - 1] + json.dumps(moved)
-
-    return _IMPORT.sub(relocate, text)

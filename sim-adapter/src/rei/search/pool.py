@@ -16,12 +16,10 @@ from concurrent.futures import Future, ThreadPoolExecutor
 from pathlib import Path
 from typing import Protocol
 
-from rei.campaign.backends import RayBackend
-from rei.campaign.forkserver import ForkServer, ForkServerError
+from rei.campaign.backends import connect_ray, warm_start
+from rei.campaign.forkserver import ForkServer
 from rei.campaign.plan import RunTask
 from rei.campaign.supervise import Outcome, supervise
-from rei.campaign.worker import MONITOR_SERVER_ENV
-from rei.run.jvm import JarServer, JarServerError
 
 
 class Pool(Protocol):
@@ -46,19 +44,9 @@ class LocalPool:
         self._stop = stop
         self._stack = contextlib.ExitStack()
         logs.mkdir(parents=True, exist_ok=True)
-        self._env: dict[str, str] = {}
-        self._forks: ForkServer | None = ForkServer(logs / "forkserver.log")
-        try:
-            self._stack.enter_context(self._forks)
-        except ForkServerError as error:  # each worker then starts as a new process
-            print(f"search: {error}; each run's worker starts as a new process", flush=True)
-            self._forks = None
-        server = JarServer("monitor", logs / "monitor-server.log")
-        try:
-            self._stack.enter_context(server)
-            self._env[MONITOR_SERVER_ENV] = str(server.socket)
-        except (JarServerError, OSError) as error:  # each replay then starts a JVM of its own
-            print(f"search: no warm monitor JVM ({error}); each run replays in a JVM of its own", flush=True)
+        warm = self._stack.enter_context(warm_start("search", ForkServer(logs / "forkserver.log"),
+                                                    logs / "monitor-server.log"))
+        self._env, self._forks = warm.env, warm.forks
         self._threads = ThreadPoolExecutor(workers, thread_name_prefix="rei-search")
 
     def submit(self, task: RunTask) -> Future[Outcome]:
@@ -70,12 +58,13 @@ class LocalPool:
 
 
 class RayPool:
-    """Runs as Ray tasks through the campaign's Ray backend (``address``: a cluster's, or ``local``)."""
+    """Runs as Ray tasks through the campaign's Ray backend (``address``: a cluster's, or ``local`` for an instance
+    of ``workers`` CPUs started here)."""
 
     name = "ray"
 
-    def __init__(self, address: str, workers: int | None, stop: threading.Event) -> None:
-        self._backend = RayBackend(address, workers)
+    def __init__(self, address: str, workers: int, stop: threading.Event) -> None:
+        self._backend = connect_ray(address, workers)
         self.workers = self._backend.workers
         self._stop = stop
         self._threads = ThreadPoolExecutor(self.workers, thread_name_prefix="rei-search-ray")

@@ -19,19 +19,9 @@ from rei.search.study import Search, open_study
 SHRUNK = "shrunk.json"
 
 
-class PoolError(RuntimeError):
-    """The runs have nowhere to go (Ray is missing or can not be reached)."""
-
-
 def make_pool(workers: int, ray: str | None, out: Path, stop: threading.Event) -> Pool:
-    if not ray:
-        return LocalPool(workers, out / "runs", stop)
-    try:
-        return RayPool(ray, workers if ray == "local" else None, stop)
-    except ImportError:
-        raise PoolError("--ray needs Ray: pip install 'rei[campaign-ray]'") from None
-    except Exception as error:  # noqa: BLE001 - any failure to reach the cluster is the user's to fix
-        raise PoolError(f"cannot connect to Ray at {ray}: {error}") from None
+    """The local pool, or with ``ray`` the Ray pool (rei.campaign.backends.RayUnavailableError: it can not be)."""
+    return RayPool(ray, workers, stop) if ray else LocalPool(workers, out / "runs", stop)
 
 
 def run_search(spec: SearchSpec, out: Path, *, workers: int = 1, ray: str | None = None,
