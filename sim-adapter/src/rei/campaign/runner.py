@@ -9,15 +9,14 @@
     OUT/report.html               tables and plots
     OUT/campaign.json             counts, wall and CPU time, utilisation of this machine
 
-Interrupted (Ctrl-C, SIGTERM): running workers are stopped, their runs stay unfinished, the summary covers the
-finished ones, and the same command resumes.
+Interrupted (Ctrl-C, or SIGTERM under rei.lifetime.sigterm_unwinds as `rei campaign` runs it): running workers
+are stopped, their runs stay unfinished, the summary covers the finished ones, and the same command resumes.
 """
 
 from __future__ import annotations
 
 import json
 import shutil
-import signal
 import threading
 from collections.abc import Callable, Sequence
 from concurrent.futures import ThreadPoolExecutor
@@ -59,16 +58,14 @@ class CampaignResult:
         return sum(r.status != "COMPLETED" for r in self.results)
 
 
-class _Interrupted(Exception):
-    pass
-
-
 def run_campaign(spec: Spec, out: Path, backend: Backend, *, retry_errors: bool = False,
                  prepare_workers: int = 2, generator: Path | None = None, helpers: Sequence[int] = (),
                  log: Callable[[str], None] = print) -> CampaignResult:
     """``generator``: the socket of a warm generator JVM to generate the cases in (the background service's),
     else the campaign starts one; ``helpers``: pids of processes that work for the campaign without being its
-    children (that service), whose CPU counts as the campaign's."""
+    children (that service), whose CPU counts as the campaign's. Ctrl-C, or SIGTERM under
+    rei.lifetime.sigterm_unwinds (as `rei campaign` runs it), while the cases are prepared or the runs run
+    interrupts the campaign: its outputs are still written, ``interrupted`` says so."""
     out = out.resolve()
     out.mkdir(parents=True, exist_ok=True)
     if spec.source is not None and spec.source.resolve() != (out / "spec.yaml"):
@@ -76,8 +73,6 @@ def run_campaign(spec: Spec, out: Path, backend: Backend, *, retry_errors: bool 
     start = Sample.now(helpers)
     plan = plan_campaign(spec, out)
     stop = threading.Event()
-    previous = signal.signal(signal.SIGTERM, _on_sigterm) if threading.current_thread() is threading.main_thread() \
-        else None
     executed = 0
     interrupted = False
     metrics: dict[str, Any] = {}
@@ -114,13 +109,10 @@ def run_campaign(spec: Spec, out: Path, backend: Backend, *, retry_errors: bool 
             _record(task, outcome, log, None, f"[{executed}/{len(todo)}] ")
 
         backend.run(todo, on_outcome, stop)
-    except (KeyboardInterrupt, _Interrupted):
+    except (KeyboardInterrupt, SystemExit):
         interrupted = True
         stop.set()
         log("campaign interrupted: finished runs are kept; run the same command to resume")
-    finally:
-        if previous is not None:
-            signal.signal(signal.SIGTERM, previous)
     results = tuple(r for r in (finished_result(t) for t in plan.runs) if r is not None)
     metrics["campaign"] = usage(start, Sample.now(helpers))
     metrics["runs"] = _run_metrics(results)
@@ -218,7 +210,3 @@ def _run_metrics(results: tuple[RunResult, ...]) -> dict[str, Any]:
     return {"count": len(results), "wall": round(sum(r.wall_time for r in results), 3),
             "cpu": round(sum(r.cpu_time for r in results), 3),
             "phases": {k: {kk: round(vv, 3) for kk, vv in v.items()} for k, v in phases.items()}}
-
-
-def _on_sigterm(signum: int, frame: object) -> None:
-    raise _Interrupted()

@@ -50,8 +50,8 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
 def run(args: argparse.Namespace) -> int:
     from rei.lifetime import sigterm_unwinds
 
-    # inside its run loop the runner takes SIGTERM as an interruption (outputs written, exit 130); elsewhere
-    # (Ray starting, the summary and report written, --compare) it now unwinds (exit 143) instead of killing the
+    # inside its run loop the runner takes the SystemExit as an interruption (outputs written, exit 130); elsewhere
+    # (Ray starting, the summary and report written, --compare) it unwinds (exit 143) instead of killing the
     # process on the spot, so the finally blocks still stop the fork server and Ray and end the service's lease
     with sigterm_unwinds():
         return _run(args)
