@@ -52,7 +52,7 @@ groups:
     variants: [{name: base}, {name: fault10, fault: "laser:10%"}]
   - name: example
     cases: [EXAMPLE]
-    variants: [{name: nav}, {name: crash, controller: "script:does-not-exist.txt"}]
+    variants: [{name: nav}, {name: crash, sut: {command: "python3 -c 'import sys; sys.exit(3)'"}}]
 """)
     out = tmp_path / "out"
     result = run_cli("campaign", spec, "-o", out, "--workers", "2", timeout=400)
@@ -61,8 +61,9 @@ groups:
     table = runs(out)
     assert len(table) == 6
     crashed = table["example__simple_navigation__crash__r0"]
-    assert crashed["status"] == "ERROR" and "crashed: the worker exited with 1" in crashed["error"]
-    assert "ScriptError" in crashed["error"]
+    # a system under test that dies is the run's ERROR, with the evidence (a worker that dies is another ERROR:
+    # sim-adapter/tests/campaign/test_campaign_supervise.py)
+    assert crashed["status"] == "ERROR" and "exited with code 3" in crashed["error"], crashed
     completed = [row for key, row in table.items() if "crash" not in key]
     assert all(row["status"] == "COMPLETED" for row in completed), completed
     for key in table:
@@ -82,7 +83,7 @@ groups:
     assert rows[("small", "*", "fault10")]["executions"] == "2"
     html = (out / "report.html").read_text(encoding="utf-8")
     assert "6 of 6 runs finished, 1 in ERROR" in html and html.count('class="mission"') == 5
-    assert 'id="distribution"' in html and "ScriptError" in html
+    assert 'id="distribution"' in html and "exited with code 3" in html
 
 
 def test_an_interrupted_campaign_resumes_without_redoing_finished_runs(tmp_path: Path, rei_script: Path) -> None:
@@ -168,7 +169,7 @@ groups:
   - name: example
     cases: [EXAMPLE]
     repetitions: 2
-    variants: [{name: short, controller: "script:SHORT"}, {name: crash, controller: "script:missing.txt"}]
+    variants: [{name: short, controller: "script:SHORT"}, {name: crash, sut: {command: "python3 -c 'import sys; sys.exit(3)'"}}]
 """)
     out = tmp_path / "out"
     result = None

@@ -130,7 +130,7 @@ def test_shrinking_keeps_the_failure_and_removes_the_bin(searched: Searched) -> 
 def test_a_crashing_sut_gives_error_evaluations_not_failures(tmp_path: Path, run_cli: Any) -> None:
     shutil.copy(EXAMPLE / "crossing.rei", tmp_path / "crossing.rei")
     spec = tmp_path / "crash.yaml"
-    spec.write_text("case: crossing.rei\ncontroller: \"script:does-not-exist.txt\"\nbudget: 2\n"
+    spec.write_text("case: crossing.rei\nsut: {command: \"python3 -c 'import sys; sys.exit(3)'\"}\nbudget: 2\n"
                     "parameters: [{human: walker, start: [5, 11]}]\nobjectives: [utility]\n", encoding="utf-8")
     result = run_cli("search", spec, "-o", tmp_path / "out", "--workers", "2", timeout=TIMEOUT)
     assert result.returncode == 2, result.stdout + result.stderr  # nothing found, nothing vouched for
@@ -138,6 +138,6 @@ def test_a_crashing_sut_gives_error_evaluations_not_failures(tmp_path: Path, run
     assert document["counts"]["simulated"] == 2 and document["counts"]["errors"] == 2
     assert document["failures"] == [] and document["counts"]["failing"] == 0
     for record in simulated(document):
-        assert record["status"] == "ERROR" and "crashed: the worker exited with 1" in record["error"]
+        assert record["status"] == "ERROR" and "exited with code 3" in record["error"], record
         assert record["values"] is None
-    assert "ERROR crashed" in result.stdout
+    assert "ERROR the system under test exited with code 3" in result.stdout, result.stdout
