@@ -7,9 +7,9 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from spec_helpers import error_of, parse
 
-from rei.campaign.spec import SpecError
-from rei.search.spec import Range, SearchSpec, parse_search_spec
+from rei.search.spec import Range
 
 GOOD = """\
 name: crossing
@@ -40,16 +40,6 @@ shrink: {budget: 3}
 def folder(tmp_path: Path) -> Path:
     (tmp_path / "case.rei").write_text("testcase T {}\n", encoding="utf-8")  # only its existence is checked here
     return tmp_path
-
-
-def parse(text: str, folder: Path) -> SearchSpec:
-    return parse_search_spec(text, base=folder, file="s.yaml")
-
-
-def error_of(text: str, folder: Path) -> str:
-    with pytest.raises(SpecError) as raised:
-        parse(text, folder)
-    return str(raised.value)
 
 
 def test_a_good_spec_parses_to_what_it_says(folder: Path) -> None:

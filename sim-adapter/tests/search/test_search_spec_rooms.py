@@ -8,11 +8,11 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from spec_helpers import error_of, parse
 
-from rei.campaign.spec import RoomSettings, SpecError
+from rei.campaign.spec import RoomSettings
 from rei.rooms import generate_room, render
 from rei.search.base import with_base_case
-from rei.search.spec import SearchSpec, parse_search_spec
 
 GOOD = """\
 name: generated
@@ -22,16 +22,6 @@ parameters:
 objectives:
   - utility
 """
-
-
-def parse(text: str, folder: Path) -> SearchSpec:
-    return parse_search_spec(text, base=folder, file="s.yaml")
-
-
-def error_of(text: str, folder: Path) -> str:
-    with pytest.raises(SpecError) as raised:
-        parse(text, folder)
-    return str(raised.value)
 
 
 def test_a_rooms_spec_parses_to_its_settings_without_a_case(tmp_path: Path) -> None:
