@@ -3,7 +3,8 @@
 reference navigation and a weakened variant of it, and the search's throughput against `rei campaign`'s.
 
 For every room (the crossing example; the thesis's simple navigation room with its person's timing and the
-table's floor free), controller (``nav``; ``nav:inflation_margin=0``: the planner keeps no safety margin beyond
+table's floor free; ``doorways``, benchmarks/falsification/doorways.{rei,yaml}: two people crossing a corridor, where
+failures are rare under random sampling, so a guided search can show its gain), controller (``nav``; ``nav:inflation_margin=0``: the planner keeps no safety margin beyond
 the robot's footprint) and seed, one search with ``--sampler tpe`` and one with ``--sampler random`` run with the
 same budget (``--no-shrink``: shrinking is not part of the comparison). Printed per pair and summed: distinct
 failures found and simulated evaluations up to the first failure, each as a RATIO line of search to random
@@ -15,6 +16,7 @@ Goals (issue 30): at a budget of 200, at least 3x the distinct failures of rando
 at most a third of random's evaluations, and at least 0.9x the campaign's throughput.
 
     .venv/bin/python benchmarks/falsification.py [--budget 200] [--seeds 1 2 3] [--workers 2] [--keep DIR]
+        [--rooms crossing doorways simple_navigation]
 """
 
 from __future__ import annotations
@@ -30,11 +32,23 @@ import time
 from pathlib import Path
 from typing import Any
 
+import yaml
+
 REPO = Path(__file__).resolve().parents[1]
 DISTINCT_GOAL = 3.0
 FIRST_GOAL = 1 / 3
 THROUGHPUT_GOAL = 0.9
 CONTROLLERS = {"reference": "nav", "weakened": "nav:inflation_margin=0"}
+
+
+def _spec_room(spec: Path) -> tuple[Path, str]:
+    """A room kept as a runnable search spec: its case and the spec's parameters and objectives (the benchmark
+    sets the rest)."""
+    document = yaml.safe_load(spec.read_text(encoding="utf-8"))
+    body = {key: document[key] for key in ("parameters", "objectives")}
+    return spec.parent / document["case"], yaml.safe_dump(body, sort_keys=False, default_flow_style=None)
+
+
 ROOMS: dict[str, tuple[Path, str]] = {
     "crossing": (REPO / "examples" / "search" / "crossing.rei", """\
 parameters:
@@ -51,6 +65,7 @@ parameters:
 objectives:
   - {metric: clearance_humans_min}
 """),
+    "doorways": _spec_room(REPO / "benchmarks" / "falsification" / "doorways.yaml"),
 }
 
 
