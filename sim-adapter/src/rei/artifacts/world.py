@@ -8,11 +8,14 @@ footprints, floors, the robot's drive and lidar), so it is read into frozen valu
 from __future__ import annotations
 
 import enum
+import math
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TypeVar
 
 from rei.artifacts._fields import Fields, load_json
+from rei.artifacts.errors import ArtifactError
+from rei.maps import MapError, OccupancyMap, load_map
 
 WORLD_FORMAT = "rei-world/1"
 
@@ -112,6 +115,41 @@ class RobotSpec:
 
 
 @dataclass(frozen=True, slots=True)
+class MapSpec:
+    """A room made from a ROS occupancy map: the case folder's copy of the map (``yaml`` and ``image``, resolved
+    against the folder) and the grid's geometry, ``origin`` the lower left corner of cell (0, 0) in the world."""
+
+    yaml: Path
+    image: Path
+    resolution: float
+    origin: tuple[float, float, float]
+    width: int
+    height: int
+    unknown_free: bool
+
+    @property
+    def extent(self) -> tuple[float, float, float, float]:
+        """``(xmin, ymin, xmax, ymax)`` the image covers, m."""
+        ox, oy, _ = self.origin
+        return ox, oy, ox + self.width * self.resolution, oy + self.height * self.resolution
+
+    def load(self) -> OccupancyMap:
+        """The grid ``map_server`` would publish for this map (``rei.maps.load_map``), checked against world.json's
+        description of it; raises :class:`~rei.artifacts.errors.ArtifactError`."""
+        try:
+            occupancy = load_map(self.yaml)
+        except MapError as error:
+            raise ArtifactError(error.path, f"{error.line}:{error.column}: {error.field}: {error.detail}") from None
+        found = (occupancy.width, occupancy.height, occupancy.resolution, occupancy.origin)
+        if found != (self.width, self.height, self.resolution, self.origin):
+            raise ArtifactError(self.yaml, f"{occupancy.width} x {occupancy.height} cells of "
+                                           f"{occupancy.resolution:g} m from {list(occupancy.origin)}, but world.json "
+                                           f"describes {self.width} x {self.height} cells of {self.resolution:g} m "
+                                           f"from {list(self.origin)}")
+        return occupancy
+
+
+@dataclass(frozen=True, slots=True)
 class WorldSpec:
     path: Path
     testcase: str
@@ -121,6 +159,7 @@ class WorldSpec:
     floors: tuple[FloorSpec, ...]
     objects: tuple[ObjectSpec, ...]
     robot: RobotSpec
+    map: MapSpec | None = None  # a room from an occupancy map; None for every other room
 
     def object(self, name: str) -> ObjectSpec:
         for obj in self.objects:
@@ -143,6 +182,11 @@ def read_world(path: Path | str) -> WorldSpec:
     robot = _robot(root.child("robot"))
     if robot.name in {o.name for o in objects}:
         raise root.error(f"robot name {robot.name!r} is also an object name", "robot.name")
+    occupancy = _map(root.child("map"), path.parent) if root.has("map") else None
+    if occupancy is not None and not all(math.isclose(b, e, abs_tol=1e-6)
+                                         for b, e in zip(bounds, occupancy.extent, strict=True)):
+        raise root.error(f"must be the map's extent {list(occupancy.extent)} in a room from an occupancy map, "
+                         f"got {list(bounds)}", "bounds")
     return WorldSpec(
         path=path,
         testcase=root.text("testcase"),
@@ -152,7 +196,31 @@ def read_world(path: Path | str) -> WorldSpec:
         floors=floors,
         objects=objects,
         robot=robot,
+        map=occupancy,
     )
+
+
+def _map(m: Fields, folder: Path) -> MapSpec:
+    """The ``map`` member; its files must be in the case folder (a case folder is self-contained)."""
+    def file(key: str) -> Path:
+        name = m.text(key)
+        resolved = (folder / name).resolve()
+        if Path(name).is_absolute() or not resolved.is_relative_to(folder.resolve()):
+            raise m.error(f"expected a file of the case folder, got {name!r}", key)
+        if not resolved.is_file():
+            raise m.error(f"{folder / name} is missing", key)
+        return folder / name
+
+    origin = m.vector("origin", 3)
+    if origin[2] != 0.0:
+        raise m.error(f"the map's yaw must be 0 (REI rooms are axis-aligned), got {origin[2]}", "origin")
+    width, height = m.integer("width"), m.integer("height")
+    for key, count in (("width", width), ("height", height)):
+        if count <= 0:
+            raise m.error(f"must be > 0, got {count}", key)
+    return MapSpec(yaml=file("yaml"), image=file("image"), resolution=m.number("resolution", positive=True),
+                   origin=(origin[0], origin[1], origin[2]), width=width, height=height,
+                   unknown_free=m.flag("unknownFree"))
 
 
 def _unique(root: Fields, key: str, names: list[str]) -> None:
