@@ -29,6 +29,7 @@ import sys
 import traceback
 from collections.abc import Mapping
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any, NoReturn
 
 from rei.geometry import Pose2D, Twist2D
@@ -59,12 +60,14 @@ class Session:
     robot: Mapping[str, Any]
     goals: int
     static_map: StaticMap | None
+    occupancy: Path | None = None  # a map room's map.yaml (map_server format), offered with the static map
 
     @classmethod
     def from_hello(cls, hello: Mapping[str, Any]) -> Session:
         return cls(run_id=str(hello["run_id"]), clock=str(hello["clock"]), control_rate=float(hello["control_rate"]),
                    deadline=float(hello["deadline"]), start=protocol.read_pose(hello["start"]), robot=hello["robot"],
-                   goals=int(hello["goals"]), static_map=protocol.read_static_map(hello))
+                   goals=int(hello["goals"]), static_map=protocol.read_static_map(hello),
+                   occupancy=protocol.read_occupancy(hello))
 
 
 @dataclass(frozen=True, slots=True)

@@ -10,7 +10,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from rei.geometry import Pose2D
-from rei.maps import merge_rectangles
+from rei.maps import OccupancyMap, merge_rectangles
 from rei.sut.api import StaticMap
 
 #: Cells of the occupancy grid (m) and the margin around the floors, where the walls stand (m).
@@ -60,6 +60,31 @@ def rasterize(static_map: StaticMap, resolution: float = MAP_RESOLUTION, margin:
         v = -math.sin(yaw) * dx + math.cos(yaw) * dy
         occupied[rows, cols] |= (np.abs(u) <= size_x / 2) & (np.abs(v) <= size_y / 2)
     return Raster(occupied, x0, y0, resolution)
+
+
+@dataclass(frozen=True, slots=True)
+class MapGrid:
+    """An occupancy grid as a ROS /map carries it: ``data`` flat int8, row-major from the bottom row, cells of
+    ``resolution`` metres from the lower left corner ``(x0, y0)``."""
+
+    data: np.ndarray
+    width: int
+    height: int
+    resolution: float
+    x0: float
+    y0: float
+
+
+def map_grid(static_map: StaticMap, occupancy: OccupancyMap | None = None,
+             resolution: float = MAP_RESOLUTION) -> MapGrid:
+    """What the ROS bridges publish on /map: a map room's own grid (map_server's values, resolution and origin:
+    the map the robot team made, unknown cells included), else the static map's rectangles rasterized."""
+    if occupancy is not None:
+        ox, oy, _ = occupancy.origin
+        return MapGrid(occupancy.grid.astype(np.int8).ravel(), occupancy.width, occupancy.height,
+                       occupancy.resolution, ox, oy)
+    raster = rasterize(static_map, resolution)
+    return MapGrid(raster.occupancy(), raster.width, raster.height, resolution, raster.x0, raster.y0)
 
 
 def static_map_of_grid(data: np.ndarray | list[int], width: int, height: int, resolution: float, origin: Pose2D,

@@ -14,9 +14,10 @@ import threading
 import traceback
 
 from rei.geometry import Twist2D
+from rei.maps import MapError, OccupancyMap, load_map
 from rei.processes import ManagedProcess
 from rei.sut.api import NavStatus
-from rei.sut.client import EXIT_CALLBACK, SutConnectionError, SystemUnderTest, Tick, run
+from rei.sut.client import EXIT_CALLBACK, Session, SutConnectionError, SystemUnderTest, Tick, run
 from rei.sut.ros_conventions import CMD_WAIT
 
 #: Wall seconds a bridge waits for the stack's navigation action server (the stack's start-up).
@@ -27,6 +28,17 @@ ACCEPT_TIMEOUT = 1.0
 PRE_START = 0.1
 #: The stack's output, in the bridge's ROS home.
 STACK_LOG = "stack.log"
+
+
+def session_occupancy(session: Session) -> OccupancyMap | None:
+    """A map room's original map (``hello``'s ``map.occupancy``), which /map carries instead of the rasterized
+    rectangles; None for every other room."""
+    if session.occupancy is None:
+        return None
+    try:
+        return load_map(session.occupancy)
+    except MapError as error:
+        raise SutConnectionError(f"the map room's occupancy map: {error}") from None
 
 
 class RosBridge(SystemUnderTest):

@@ -16,6 +16,7 @@ import math
 import reprlib
 from collections.abc import Mapping
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -59,9 +60,11 @@ class RobotLimits:
 
 
 def hello_answer(*, run_id: str, clock: str, control_rate: float, deadline: float, start: Pose2D,
-                 robot: Mapping[str, Any], goals: int, static_map: StaticMap | None) -> dict[str, Any]:
-    """The session description ``hello`` returns (docs/sut.md)."""
-    return {
+                 robot: Mapping[str, Any], goals: int, static_map: StaticMap | None,
+                 occupancy: Path | None = None) -> dict[str, Any]:
+    """The session description ``hello`` returns (docs/sut.md); ``occupancy``: a map room's ``map.yaml`` (absolute),
+    offered with the static map."""
+    answer: dict[str, Any] = {
         "protocol": PROTOCOL_VERSION, "run_id": run_id, "clock": clock, "control_rate": float(control_rate),
         "deadline": float(deadline), "start": _pose(start), "robot": dict(robot), "goals": goals,
         "map": None if static_map is None else {
@@ -69,6 +72,9 @@ def hello_answer(*, run_id: str, clock: str, control_rate: float, deadline: floa
             "obstacles": [[float(v) for v in box] for box in static_map.obstacles],
         },
     }
+    if static_map is not None and occupancy is not None:
+        answer["map"]["occupancy"] = str(occupancy)
+    return answer
 
 
 def tick_message(tick: int, observation: Observation, *, new_scan: bool, scan_time: float) -> dict[str, Any]:
@@ -125,6 +131,13 @@ def read_static_map(hello: Mapping[str, Any]) -> StaticMap | None:
     return StaticMap(bounds=tuple(float(v) for v in data["bounds"]),  # type: ignore[arg-type]
                      obstacles=tuple(tuple(float(v) for v in box) for box in data["obstacles"]),  # type: ignore[misc]
                      robot_size=(float(size_x), float(size_y)))
+
+
+def read_occupancy(hello: Mapping[str, Any]) -> Path | None:
+    """The map room's ``map.yaml`` the static map came from (``map.occupancy``), or None."""
+    data = hello.get("map")
+    path = data.get("occupancy") if isinstance(data, Mapping) else None
+    return Path(path) if isinstance(path, str) else None
 
 
 def read_scan(data: Mapping[str, Any]) -> LaserScan:

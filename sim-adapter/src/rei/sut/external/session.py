@@ -32,6 +32,7 @@ def external_sut(options: SutOptions, client: WampClient, run_id: str, out_dir: 
         run_id=run_id, clock=options.clock, control_rate=control_rate, deadline=options.deadline,
         start=case.mission.start, goals=len(case.mission.goals),
         static_map=static_map if options.offer_map else None,
+        occupancy=case.world.map.yaml.resolve() if case.world.map is not None else None,
         robot={"name": robot.name, "footprint": [float(robot.size[0]), float(robot.size[1])],
                "max_linear": limits.max_linear, "max_angular": limits.max_angular,
                "lidar": {"beams": robot.lidar.beams, "range_min": float(robot.lidar.range_min),

@@ -35,6 +35,7 @@ from rei.sut.ros_bridge import (
     STACK_LOG,
     RosBridge,
     run_bridge,
+    session_occupancy,
 )
 from rei.sut.ros_conventions import ACTIONLIB_FINAL, CMD_WAIT
 
@@ -83,7 +84,8 @@ class Ros1Bridge(RosBridge):
         if session.static_map is not None:
             self._with_map = True
             self._map = rospy.Publisher(s.map_topic, OccupancyGrid, queue_size=1, latch=True)
-            self._map.publish(self.m.occupancy_grid(session.static_map, self.frames))
+            self._map.publish(self.m.occupancy_grid(session.static_map, self.frames,
+                                                    occupancy=session_occupancy(session)))
         self._action = actionlib.SimpleActionClient(s.action, MoveBaseAction)
         self._await_server()
 

@@ -18,8 +18,9 @@ from std_msgs.msg import Header
 from tf2_msgs.msg import TFMessage
 
 from rei.geometry import Pose2D, Twist2D, quaternion_of_yaw, yaw_of_quaternion
+from rei.maps import OccupancyMap
 from rei.sut.api import LaserScan, NavGoal, StaticMap
-from rei.sut.rasterize import MAP_RESOLUTION, rasterize
+from rei.sut.rasterize import MAP_RESOLUTION, map_grid
 from rei.sut.ros_conventions import Frames, ros_nanoseconds
 
 
@@ -75,16 +76,18 @@ def laser_scan(scan: LaserScan, scan_time: float, frames: Frames) -> RosLaserSca
         ranges=np.asarray(scan.ranges, dtype=np.float32).tolist(), intensities=[])
 
 
-def occupancy_grid(static_map: StaticMap, frames: Frames, resolution: float = MAP_RESOLUTION) -> OccupancyGrid:
-    """The static map's rectangles rasterized (rei.sut.rasterize): 100 where a cell's centre is inside an obstacle."""
-    raster = rasterize(static_map, resolution)
+def occupancy_grid(static_map: StaticMap, frames: Frames, resolution: float = MAP_RESOLUTION,
+                   occupancy: OccupancyMap | None = None) -> OccupancyGrid:
+    """/map (rei.sut.rasterize.map_grid): a map room's own grid, else the static map's rectangles rasterized (100
+    where a cell's centre is inside an obstacle)."""
+    cells = map_grid(static_map, occupancy, resolution)
     grid = OccupancyGrid()
     grid.header = _header(0.0, frames.map)
-    grid.info.map_load_time, grid.info.resolution = stamp(0.0), resolution
-    grid.info.width, grid.info.height = raster.width, raster.height
-    grid.info.origin.position.x, grid.info.origin.position.y = raster.x0, raster.y0
+    grid.info.map_load_time, grid.info.resolution = stamp(0.0), cells.resolution
+    grid.info.width, grid.info.height = cells.width, cells.height
+    grid.info.origin.position.x, grid.info.origin.position.y = cells.x0, cells.y0
     grid.info.origin.orientation.w = 1.0
-    grid.data = raster.occupancy().tolist()
+    grid.data = cells.data.tolist()
     return grid
 
 

@@ -35,6 +35,7 @@ from rei.sut.ros_bridge import (
     STACK_LOG,
     RosBridge,
     run_bridge,
+    session_occupancy,
 )
 from rei.sut.ros_conventions import CMD_WAIT, Frames
 
@@ -92,7 +93,8 @@ class Ros2Bridge(RosBridge):
                                             cmd.qos, self._on_cmd_vel)
         if session.static_map is not None:
             self._with_map = True
-            self._writers["map"].write(self.m.occupancy_grid(session.static_map, self.frames))
+            self._writers["map"].write(self.m.occupancy_grid(session.static_map, self.frames,
+                                                             occupancy=session_occupancy(session)))
         self._action = NavigateToPoseClient(self._participant, self.settings.action, self._on_final)
         self._await_server()
 

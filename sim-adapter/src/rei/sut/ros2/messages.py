@@ -17,8 +17,9 @@ from cyclonedds.idl import IdlStruct
 from cyclonedds.util import duration
 
 from rei.geometry import Pose2D, Twist2D, quaternion_of_yaw, yaw_of_quaternion
+from rei.maps import OccupancyMap
 from rei.sut.api import LaserScan, NavGoal, StaticMap
-from rei.sut.rasterize import MAP_RESOLUTION, rasterize
+from rei.sut.rasterize import MAP_RESOLUTION, map_grid
 from rei.sut.ros2 import types as t
 from rei.sut.ros_conventions import Frames, ros_nanoseconds
 
@@ -84,16 +85,17 @@ def laser_scan(scan: LaserScan, scan_time: float, frames: Frames) -> t.LaserScan
         ranges=np.asarray(scan.ranges, dtype=np.float32).tolist(), intensities=[])
 
 
-def occupancy_grid(static_map: StaticMap, frames: Frames, resolution: float = MAP_RESOLUTION) -> t.OccupancyGrid:
-    """The static map's rectangles rasterized (``rei.sut.rasterize``): 100 where a cell's centre is inside an
-    obstacle, else 0."""
-    raster = rasterize(static_map, resolution)
+def occupancy_grid(static_map: StaticMap, frames: Frames, resolution: float = MAP_RESOLUTION,
+                   occupancy: OccupancyMap | None = None) -> t.OccupancyGrid:
+    """/map (``rei.sut.rasterize.map_grid``): a map room's own grid, else the static map's rectangles rasterized
+    (100 where a cell's centre is inside an obstacle, else 0)."""
+    cells = map_grid(static_map, occupancy, resolution)
     return t.OccupancyGrid(
         header=header(0.0, frames.map),
         info=t.MapMetaData(
-            map_load_time=stamp(0.0), resolution=float(resolution), width=raster.width, height=raster.height,
-            origin=t.Pose(position=t.Point(x=float(raster.x0), y=float(raster.y0)))),
-        data=raster.occupancy().tolist())
+            map_load_time=stamp(0.0), resolution=float(cells.resolution), width=cells.width, height=cells.height,
+            origin=t.Pose(position=t.Point(x=float(cells.x0), y=float(cells.y0)))),
+        data=cells.data.tolist())
 
 
 def navigate_goal(t_sim: float, goal: NavGoal, frames: Frames) -> t.NavigateToPose_Goal:
