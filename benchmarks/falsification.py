@@ -4,19 +4,33 @@ reference navigation and a weakened variant of it, and the search's throughput a
 
 For every room (the crossing example; the thesis's simple navigation room with its person's timing and the
 table's floor free; ``doorways``, benchmarks/falsification/doorways.{rei,yaml}: two people crossing a corridor, where
-failures are rare under random sampling, so a guided search can show its gain), controller (``nav``; ``nav:inflation_margin=0``: the planner keeps no safety margin beyond
-the robot's footprint) and seed, one search with ``--sampler tpe`` and one with ``--sampler random`` run with the
-same budget (``--no-shrink``: shrinking is not part of the comparison). Printed per pair and summed: distinct
-failures found and simulated evaluations up to the first failure, each as a RATIO line of search to random
-with both sides. Throughput: the evaluations per hour of the searches against the runs per hour of a campaign of
-the crossing case repeated as many times as the budget, on the same workers (RATIO line). The load average is
-printed before and after, as the other benchmarks do.
+failures are rare under random sampling, so a guided search can show its gain), controller (``nav``; the weakened
+``nav:moving_horizon=0``: the local planner no longer predicts where the people walk, so it meets a person it would
+have let pass; in the doorways corridor, one floor wide, a smaller planner margin such as ``inflation_margin=0``
+changes nothing) and seed, one search with ``--sampler tpe`` and one with ``--sampler random`` run with the same
+budget (``--no-shrink``: shrinking is not part of the comparison). Printed per pair: distinct failures found and
+simulated evaluations up to the first failure (a search that found none counts its budget plus one); then for each
+room and controller the median over the seeds of both sides, and RATIO lines of search to random over the sums of
+these medians, with both sides.
+
+Throughput: the evaluations per hour of the searches run in this invocation (their wall time from start to
+search.json, JVM starts included) against the runs per hour of a `rei campaign` of candidates those very searches
+evaluated (as many as the budget, evenly spaced over all of them, each with its search's controller and seed), on
+the same number of workers. Same cases on both sides, so a search that finds more failures (longer runs: a robot
+stuck by a person drives on) is not compared with a campaign of shorter runs. The load average is printed before
+and after each search and at the end.
+
+``--reuse random`` reads the random searches already finished in the ``--keep`` folder at the same budget instead of
+running them again: the random sampler's candidates depend only on its seed, and every run is deterministic, so a
+re-run gives the same evaluations; only its wall time would differ, and reused searches are left out of the
+throughput figure.
 
 Goals (issue 30): at a budget of 200, at least 3x the distinct failures of random sampling, the first failure in
 at most a third of random's evaluations, and at least 0.9x the campaign's throughput.
 
     .venv/bin/python benchmarks/falsification.py [--budget 200] [--seeds 1 2 3] [--workers 2] [--keep DIR]
-        [--rooms crossing doorways simple_navigation]
+        [--rooms crossing doorways simple_navigation] [--controllers reference weakened] [--samplers tpe random]
+        [--reuse random]
 """
 
 from __future__ import annotations
@@ -25,6 +39,7 @@ import argparse
 import json
 import os
 import shutil
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -38,7 +53,9 @@ REPO = Path(__file__).resolve().parents[1]
 DISTINCT_GOAL = 3.0
 FIRST_GOAL = 1 / 3
 THROUGHPUT_GOAL = 0.9
-CONTROLLERS = {"reference": "nav", "weakened": "nav:inflation_margin=0"}
+CONTROLLERS = {"reference": "nav", "weakened": "nav:moving_horizon=0"}
+SAMPLERS = ("tpe", "random")
+BENCH = "bench.json"  # beside a search's outputs: its wall time and budget, for --reuse
 
 
 def _spec_room(spec: Path) -> tuple[Path, str]:
@@ -75,85 +92,136 @@ def main() -> int:
     parser.add_argument("--seeds", type=int, nargs="+", default=[1, 2, 3])
     parser.add_argument("--workers", type=int, default=os.cpu_count() or 1)
     parser.add_argument("--rooms", nargs="+", choices=sorted(ROOMS), default=sorted(ROOMS))
+    parser.add_argument("--controllers", nargs="+", choices=list(CONTROLLERS), default=list(CONTROLLERS))
+    parser.add_argument("--samplers", nargs="+", choices=SAMPLERS, default=list(SAMPLERS))
+    parser.add_argument("--reuse", nargs="*", choices=SAMPLERS, default=[],
+                        help="read these samplers' searches finished in --keep at this budget instead of running them")
     parser.add_argument("--keep", type=Path, help="output folder to keep (default: a temporary one)")
     args = parser.parse_args()
+    if args.reuse and args.keep is None:
+        parser.error("--reuse needs --keep (the folder holding the finished searches)")
     print(f"load average before: {_load()}", flush=True)
     folder = args.keep or Path(tempfile.mkdtemp(prefix="rei-falsification-"))
     folder.mkdir(parents=True, exist_ok=True)
-    totals = {"tpe": {"distinct": 0, "first": 0, "unfound": 0, "evaluations": 0, "wall": 0.0},
-              "random": {"distinct": 0, "first": 0, "unfound": 0, "evaluations": 0, "wall": 0.0}}
+    found: dict[tuple[str, str, str], dict[int, dict[str, Any]]] = {}  # (room, controller, sampler) -> seed -> figures
+    fresh: list[tuple[str, dict[str, Any]]] = []  # (controller, figures) of the searches run now
     try:
         for room in args.rooms:
             case, body = ROOMS[room]
             shutil.copy(case, folder / case.name)
-            for variant, controller in CONTROLLERS.items():
+            for variant in args.controllers:
+                controller = CONTROLLERS[variant]
                 for seed in args.seeds:
                     spec = folder / f"{room}-{variant}-{seed}.yaml"
                     spec.write_text(f"name: {room}-{variant}\ncase: {case.name}\ncontroller: \"{controller}\"\n"
                                     f"seed: {seed}\ntimeout: 300\n{body}", encoding="utf-8")
                     line = [f"{room:18} {variant:9} seed {seed}:"]
-                    for sampler in ("tpe", "random"):
-                        found = _search(spec, folder / spec.stem, sampler, args.budget, args.workers)
-                        t = totals[sampler]
-                        t["distinct"] += found["distinct"]
-                        t["evaluations"] += found["evaluations"]
-                        t["wall"] += found["wall"]
-                        # a search that found nothing counts its whole budget (and one more) as its first failure
-                        t["first"] += found["first"] or args.budget + 1
-                        t["unfound"] += found["first"] is None
-                        line.append(f"{sampler} {found['distinct']} distinct, first at {found['first'] or '-'}, "
-                                    f"{found['evaluations']} evaluations in {found['wall']:.0f} s;")
-                    print(" ".join(line), flush=True)
-        campaign = _campaign(folder, args.workers)
+                    for sampler in args.samplers:
+                        target = folder / f"{spec.stem}-{sampler}"
+                        figures = _reused(target, args.budget) if sampler in args.reuse else None
+                        if figures is None:
+                            figures = _search(spec, target, sampler, args.budget, args.workers)
+                            fresh.append((controller, figures))
+                        found.setdefault((room, variant, sampler), {})[seed] = figures
+                        line.append(f"{sampler} {figures['distinct']} distinct, {figures['failing']} failing, first at "
+                                    f"{figures['first'] or '-'}, {figures['evaluations']} evaluations in "
+                                    f"{figures['wall']:.0f} s{' (reused)' if figures['reused'] else ''};")
+                    print(" ".join(line) + f" load {_load()}", flush=True)
+        campaign = _campaign(folder, fresh, args.budget, args.workers) if fresh else None
     finally:
         if args.keep is None:
             shutil.rmtree(folder, ignore_errors=True)
-    tpe, rnd = totals["tpe"], totals["random"]
-    codes = [
+    codes = []
+    if set(args.samplers) == set(SAMPLERS):
+        codes += _comparison(found, args.budget)
+    if campaign is not None:
+        evaluations = sum(f["evaluations"] for _, f in fresh)
+        per_hour = 3600 * evaluations / max(sum(f["wall"] for _, f in fresh), 1e-9)
+        print(f"searches run now: {len(fresh)}, {evaluations} evaluations, {per_hour:.0f} per hour")
+        codes.append(_ratio("throughput, search evaluations per hour / campaign runs per hour", per_hour,
+                            campaign, THROUGHPUT_GOAL, True))
+    print(f"load average after: {_load()}")
+    return max(codes, default=0)
+
+
+def _comparison(found: dict[tuple[str, str, str], dict[int, dict[str, Any]]], budget: int) -> list[int]:
+    """Per room and controller the median over the seeds of each side; RATIO lines over the sums of the medians."""
+    sums = {sampler: {"distinct": 0.0, "first": 0.0} for sampler in SAMPLERS}
+    for (room, variant, sampler), seeds in sorted(found.items()):
+        distinct = statistics.median(f["distinct"] for f in seeds.values())
+        first = statistics.median(f["first"] or budget + 1 for f in seeds.values())
+        sums[sampler]["distinct"] += distinct
+        sums[sampler]["first"] += first
+        print(f"median over seeds {sorted(seeds)}: {room} {variant} {sampler}: {distinct:g} distinct "
+              f"({', '.join(str(f['distinct']) for f in seeds.values())}), first failure at {first:g} "
+              f"({', '.join(str(f['first'] or '-') for f in seeds.values())})")
+    tpe, rnd = sums["tpe"], sums["random"]
+    return [
         _ratio("distinct failures, search / random", tpe["distinct"], rnd["distinct"], DISTINCT_GOAL, True),
         _ratio("evaluations to the first failure, search / random", tpe["first"], rnd["first"], FIRST_GOAL, False),
     ]
-    per_hour = 3600 * (tpe["evaluations"] + rnd["evaluations"]) / max(tpe["wall"] + rnd["wall"], 1e-9)
-    codes.append(_ratio("throughput, search evaluations per hour / campaign runs per hour", per_hour,
-                        campaign, THROUGHPUT_GOAL, True))
-    print(f"searches without any failure: tpe {tpe['unfound']}, random {rnd['unfound']} (each counted as budget + 1)")
-    print(f"load average after: {_load()}")
-    return max(codes)
 
 
-def _search(spec: Path, out: Path, sampler: str, budget: int, workers: int) -> dict[str, Any]:
-    target = out.with_name(f"{out.name}-{sampler}")
+def _search(spec: Path, target: Path, sampler: str, budget: int, workers: int) -> dict[str, Any]:
+    shutil.rmtree(target, ignore_errors=True)  # a search left there would resume, and its wall time would mean nothing
+    load = _load()
     started = time.perf_counter()
     subprocess.run([sys.executable, "-m", "rei.cli", "search", str(spec), "-o", str(target), "--sampler", sampler,
                     "--budget", str(budget), "--workers", str(workers), "--no-shrink"],
                    check=False, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=_env())
     wall = time.perf_counter() - started
+    (target / BENCH).write_text(json.dumps({"budget": budget, "wall": wall, "workers": workers, "load_before": load,
+                                            "load_after": _load()}) + "\n", encoding="utf-8")
+    return _figures(target, wall)
+
+
+def _reused(target: Path, budget: int) -> dict[str, Any] | None:
+    """A search finished in an earlier invocation at this budget, or None."""
+    try:
+        bench = json.loads((target / BENCH).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+    if bench.get("budget") != budget:
+        return None
+    return {**_figures(target, float(bench["wall"])), "reused": True}
+
+
+def _figures(target: Path, wall: float) -> dict[str, Any]:
     document = json.loads((target / "search.json").read_text(encoding="utf-8"))
     counts = document["counts"]
     return {"distinct": counts["distinct_failures"], "first": counts["first_failure_at"],
-            "evaluations": counts["simulated"], "wall": wall}
+            "failing": counts["failing"], "evaluations": counts["simulated"], "wall": wall, "reused": False,
+            "folder": target}
 
 
-def _campaign(folder: Path, workers: int) -> float:
-    """Runs per hour of a campaign of the cases the random searches simulated (comparable rooms: the same
-    candidates; a campaign gives each run the spec's seed, so the runs are alike, not identical), same workers."""
-    cases = sorted(folder.glob("*-random/candidates/*.rei"))
+def _campaign(folder: Path, fresh: list[tuple[str, dict[str, Any]]], runs: int, workers: int) -> float:
+    """Runs per hour of a campaign of ``runs`` candidates the searches in ``fresh`` evaluated, evenly spaced over
+    all of them, each with its search's controller, same workers. The campaign gives every run seed 0, as the
+    searches of the crossing and doorways rooms (no seed parameter) did: there its runs are the searches' runs;
+    simple_navigation's candidates ran with their own seeds, so there they are alike, not identical."""
+    pool = [(controller, case) for controller, figures in fresh
+            for case in sorted((figures["folder"] / "candidates").glob("*.rei"))]
+    chosen = [pool[i * len(pool) // runs] for i in range(min(runs, len(pool)))]
     (folder / "throughput").mkdir(exist_ok=True)
-    names = []
-    for i, case in enumerate(cases):
-        names.append(f"throughput/c{i:04d}.rei")
-        shutil.copy(case, folder / names[-1])
+    groups: dict[str, list[str]] = {}
+    for i, (controller, case) in enumerate(chosen):
+        name = f"throughput/c{i:04d}.rei"
+        shutil.copy(case, folder / name)
+        groups.setdefault(controller, []).append(name)
+    body = "".join(f"  - name: g{g}\n    cases: [{', '.join(names)}]\n    variants: [{{name: base, controller: "
+                   f"\"{controller}\"}}]\n" for g, (controller, names) in enumerate(groups.items()))
     spec = folder / "throughput.yaml"
-    spec.write_text(f"name: throughput\ntimeout: 300\ngroups:\n  - name: candidates\n    cases: [{', '.join(names)}]\n",
-                    encoding="utf-8")
+    spec.write_text(f"name: throughput\nseed: 0\ntimeout: 300\ngroups:\n{body}", encoding="utf-8")
+    shutil.rmtree(folder / "campaign", ignore_errors=True)
+    load = _load()
     started = time.perf_counter()
     subprocess.run([sys.executable, "-m", "rei.cli", "campaign", str(spec), "-o", str(folder / "campaign"),
                     "--workers", str(workers)], check=False, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                    env=_env())
     wall = time.perf_counter() - started
-    per_hour = 3600 * len(cases) / wall
-    print(f"campaign: the {len(cases)} cases the random searches ran, in {wall:.0f} s, {per_hour:.0f} runs per hour",
-          flush=True)
+    per_hour = 3600 * len(chosen) / wall
+    print(f"campaign: {len(chosen)} of the {len(pool)} candidates the searches ran, in {wall:.0f} s, "
+          f"{per_hour:.0f} runs per hour (load {load} before, {_load()} after)", flush=True)
     return per_hour
 
 
