@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: EPL-2.0
 """world.json's ``map`` member (a room from an occupancy map): read, its files resolved against the case folder,
-and every wrong value refused with the field named."""
+and every wrong value refused with the field named. ``map_case``: the fixture room with a map (tests/conftest.py)."""
 
 from __future__ import annotations
 
@@ -8,27 +8,11 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-import numpy as np
 import pytest
 
 from rei.artifacts import ArtifactError, read_case, read_world
 
 Edit = Callable[[Path, Callable[[Any], None]], None]
-MAP = {"yaml": "map.yaml", "image": "map.pgm", "resolution": 0.05, "origin": [0.0, 0.0, 0.0], "width": 120,
-       "height": 80, "unknownFree": False}
-
-
-@pytest.fixture
-def map_case(room_copy: Path, edit_json: Edit) -> Path:
-    """The 6 x 4 m fixture room with a 120 x 80 map of its own extent: free, but one occupied cell (col 7,
-    row 2 from the bottom)."""
-    pixels = np.full((80, 120), 254, dtype=np.uint8)
-    pixels[80 - 1 - 2, 7] = 0
-    (room_copy / "map.pgm").write_bytes(b"P5\n120 80\n255\n" + pixels.tobytes())
-    (room_copy / "map.yaml").write_text("image: map.pgm\nresolution: 0.05\norigin: [0.0, 0.0, 0.0]\nnegate: 0\n"
-                                        "occupied_thresh: 0.65\nfree_thresh: 0.196\n", encoding="utf-8")
-    edit_json(room_copy / "world.json", lambda d: d.update(map=dict(MAP)))
-    return room_copy
 
 
 def _error(path: Path) -> str:

@@ -182,7 +182,7 @@ def _map_section(data: RunData, tracks: Tracks) -> str:
     if data.world is None and len(tracks.robot) == 0:
         return ('<section><h2>Map</h2><p class="missing" id="map-missing">no world.json and no state recording: '
                 'nothing to draw</p></section>')
-    svg = render_map(data.world, tracks, data.goals, data.signals)
+    svg = render_map(data.world, tracks, data.goals, data.signals, data.picture)
     kinds = sorted({s.signal for s in data.signals}, key=signal_sort_key)
     legend = [f'<span><span class="ln" style="border-top:3px solid {ROBOT_TRUE}"></span>true path</span>',
               (f'<span><span class="ln" style="border-top:2px dashed {ROBOT_BELIEVED}"></span>believed path '

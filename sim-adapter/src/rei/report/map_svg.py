@@ -13,6 +13,7 @@ import math
 from collections.abc import Mapping, Sequence
 from typing import Any
 
+from rei.maps import MapPicture
 from rei.report.colours import HUMAN_PATH, ROBOT_BELIEVED, ROBOT_TRUE, css_colour, signal_colour
 from rei.report.decimate import MAX_PATH_POINTS, decimate
 from rei.report.run_data import Goal, SignalRecord
@@ -53,15 +54,18 @@ def map_bounds(world: Mapping[str, Any] | None, tracks: Tracks) -> tuple[float, 
 
 
 def render_map(world: Mapping[str, Any] | None, tracks: Tracks, goals: Sequence[Goal],
-               signals: Sequence[SignalRecord]) -> str:
-    """The map as an inline `<svg id="map">`; layers have ids too (`map-robot-path`, `map-signals`, ...)."""
+               signals: Sequence[SignalRecord], picture: MapPicture | None = None) -> str:
+    """The map as an inline `<svg id="map">`; layers have ids too (`map-robot-path`, `map-signals`, ...).
+    ``picture``: a map room's occupancy map, drawn under the floors (`map-occupancy`)."""
     tf = MapTransform.fit(map_bounds(world, tracks), MAP_WIDTH, max_height_px=MAP_MAX_HEIGHT)
     parts = [(f'<svg id="map" xmlns="http://www.w3.org/2000/svg" width="{num(tf.width)}" '
              f'height="{num(tf.height)}" viewBox="0 0 {num(tf.width)} {num(tf.height)}" role="img" '
              f'aria-label="map of the room with the robot\'s path">'),
              f'<rect x="0" y="0" width="{num(tf.width)}" height="{num(tf.height)}" fill="#fbfbf8"/>']
+    if picture is not None:
+        parts.append(_picture(picture, tf))
     if world is not None:
-        parts.append(_world_layer(world, tf))
+        parts.append(_world_layer(world, tf, see_through=picture is not None))
     parts.append(_grid_labels(tf))
     parts.append(_others_layer(tracks.others.values(), tf))
     parts.append(_goals_layer(goals, tf))
@@ -85,7 +89,18 @@ def _footprint(body: Mapping[str, Any]) -> list[tuple[float, float]] | None:
     return box_corners(x, y, sx, sy, yaw)
 
 
-def _world_layer(world: Mapping[str, Any], tf: MapTransform) -> str:
+def _picture(picture: MapPicture, tf: MapTransform) -> str:
+    """The map's PNG over its extent: its first row is the top, as SVG's y axis goes (no flip needed)."""
+    xmin, ymin, xmax, ymax = picture.extent
+    x, y = tf.point(xmin, ymax)
+    return (f'<image id="map-occupancy" x="{num(x)}" y="{num(y)}" width="{num(tf.length(xmax - xmin))}" '
+            f'height="{num(tf.length(ymax - ymin))}" preserveAspectRatio="none" style="image-rendering:pixelated" '
+            f'data-cells-per-pixel="{picture.factor}" href="{picture.data_uri()}"><title>the occupancy map'
+            f'</title></image>')
+
+
+def _world_layer(world: Mapping[str, Any], tf: MapTransform, *, see_through: bool = False) -> str:
+    """``see_through``: over a map's picture, floors and walls are translucent, so the map shows beneath them."""
     order = {"FLOOR": 0, "STATIC": 1, "DYNAMIC": 2, "WALL": 3}
     bodies = sorted((b for b in world.get("objects") or () if b.get("category") in order),
                     key=lambda b: order[b["category"]])
@@ -98,7 +113,8 @@ def _world_layer(world: Mapping[str, Any], tf: MapTransform) -> str:
         name = esc(body.get("name", ""))
         title = f"<title>{name} ({esc(body.get('type', category))})</title>"
         if category == "FLOOR":
-            out.append(f'<polygon class="floor" points="{tf.points_attr(corners)}" fill="#efebe4" '
+            opacity = ' fill-opacity="0.45"' if see_through else ""
+            out.append(f'<polygon class="floor" points="{tf.points_attr(corners)}" fill="#efebe4"{opacity} '
                        f'stroke="#ddd6ca" stroke-width="0.5"/>')
             continue
         fill = "#4a4a4a" if category == "WALL" else css_colour(body.get("colour"))
@@ -109,7 +125,7 @@ def _world_layer(world: Mapping[str, Any], tf: MapTransform) -> str:
             out.append(f'<circle class="{category.lower()}" cx="{num(cx)}" cy="{num(cy)}" r="{num(r)}" '
                        f'fill="{fill}" fill-opacity="0.85" stroke="#333" stroke-width="0.8"{dash}>{title}</circle>')
         else:
-            opacity = "1" if category == "WALL" else "0.85"
+            opacity = ("0.3" if see_through else "1") if category == "WALL" else "0.85"
             out.append(f'<polygon class="{category.lower()}" points="{tf.points_attr(corners)}" fill="{fill}" '
                        f'fill-opacity="{opacity}" stroke="#333" stroke-width="0.8"{dash}>{title}</polygon>')
             if category == "STATIC":

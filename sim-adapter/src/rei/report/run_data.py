@@ -18,6 +18,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from rei.artifacts import ArtifactError, read_world
+from rei.maps import MapPicture, map_picture
 from rei.wamp.recording import iter_recording, stream_path
 
 
@@ -61,6 +63,7 @@ class RunData:
     out_dir: Path
     case_dir: Path
     world: dict[str, Any] | None = None
+    picture: MapPicture | None = None  # a room from an occupancy map: the map, drawn under the floors
     mission_name: str | None = None
     goals: list[Goal] = field(default_factory=list)
     mission_events: list[dict[str, Any]] = field(default_factory=list)
@@ -101,6 +104,7 @@ def load_run(out_dir: Path, case_dir: Path | None = None) -> RunData:
     out_dir = Path(out_dir)
     data = RunData(out_dir=out_dir, case_dir=Path(case_dir) if case_dir else out_dir / "case")
     data.world = _read_json(data.case_dir / "world.json", data.notes, "no world.json: the map is not drawn")
+    data.picture = _read_picture(data)
     _read_mission_xml(data)
     data.summary = _read_json(out_dir / "summary.json", data.notes,
                               "no summary.json: no verdicts (the evaluator did not run)")
@@ -133,6 +137,18 @@ def _read_json(path: Path, notes: list[str] | None, missing: str | None) -> dict
             notes.append(f"{path.name} could not be read: {error}")
         return None
     return value if isinstance(value, dict) else None
+
+
+def _read_picture(data: RunData) -> MapPicture | None:
+    """The occupancy map of a map room (world.json's ``map``), as the picture drawn under the floors."""
+    if data.world is None or data.world.get("map") is None:
+        return None
+    try:
+        spec = read_world(data.case_dir / "world.json").map
+        return map_picture(spec.load()) if spec is not None else None
+    except ArtifactError as error:
+        data.notes.append(f"the room's occupancy map is not drawn: {error}")
+        return None
 
 
 def _read_mission_xml(data: RunData) -> None:

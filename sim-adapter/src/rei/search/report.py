@@ -181,7 +181,7 @@ def _map(run_dir: Path) -> str:
 
         case_dir = Path(json.loads(task.read_text(encoding="utf-8"))["case_dir"])
         data = load_run(run_dir, case_dir)
-        return render_map(data.world, collect_tracks(data.states()), data.goals, data.signals)
+        return render_map(data.world, collect_tracks(data.states()), data.goals, data.signals, data.picture)
     except (OSError, ValueError, KeyError) as error:
         return f"<p class=\"muted\">no map: {_e(str(error))}</p>"
 
