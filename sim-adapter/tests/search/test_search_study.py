@@ -93,3 +93,97 @@ def test_a_value_a_run_does_not_have_is_no_best_value(tmp_path: Path, monkeypatc
     assert lines and all("1e+06" not in line for line in lines)
     assert "metric:clearance_humans_min absent" in lines[-1]
     assert lines[-1].endswith("best metric:clearance_humans_min -, utility 10")
+
+
+# -- the failure archive (``diversity``) and TPE's initial design ----------------------------------------------------
+
+def even_seed_fails(text: str, seed: int, fault: str | None) -> list[str]:
+    return ["wall"] if seed % 2 == 0 else []  # one failure, R1/wall/-, found again and again
+
+
+def told(trial: Any) -> float:
+    return float(trial.values[0])
+
+
+def test_a_run_that_only_repeats_a_known_failure_is_told_the_least_interesting_value(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    s = search(tmp_path, monkeypatch, FakePool(even_seed_fails), text=SPEC.replace("budget: 3", "budget: 12"))
+    s.run()
+    trials = [t for t in s.study.trials if t.user_attrs.get("simulated")]
+    failing = [t for t in trials if t.user_attrs["failures"]]
+    assert len(failing) >= 2 and any(not t.user_attrs["failures"] for t in trials)  # the rule had both kinds
+    assert not failing[0].user_attrs.get("repeat") and told(failing[0]) == -10.0  # found: its own utility
+    for t in failing[1:]:  # found again: the worst utility seen so far (a passing run's 10 once there was one)
+        own_so_far = [x.user_attrs["values"][0] for x in trials if x.number <= t.number]
+        assert t.user_attrs["repeat"] and t.user_attrs["values"] == [-10.0]
+        assert told(t) == max(own_so_far)
+    assert any(told(t) == 10.0 for t in failing[1:])
+    for record in records(s.study, s.out):  # search.json keeps the runs' own values
+        assert record["values"] == ([-10.0] if record["failures"] else [10.0])
+
+
+def test_without_diversity_every_run_is_told_its_own_value(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    text = SPEC.replace("budget: 3", "budget: 8") + "diversity: false\n"
+    s = search(tmp_path, monkeypatch, FakePool(even_seed_fails), text=text)
+    s.run()
+    simulated = [t for t in s.study.trials if t.user_attrs.get("simulated")]
+    assert sum(bool(t.user_attrs["failures"]) for t in simulated) >= 2
+    assert all(told(t) == t.user_attrs["values"][0] and not t.user_attrs.get("repeat") for t in simulated)
+
+
+def test_a_resumed_search_rebuilds_the_archive_from_the_journal(tmp_path: Path,
+                                                                monkeypatch: pytest.MonkeyPatch) -> None:
+    first = search(tmp_path, monkeypatch, FakePool(even_seed_fails), text=SPEC.replace("budget: 3", "budget: 6"))
+    first.run()
+    found = {f["signature"] for t in first.study.trials for f in t.user_attrs.get("failures") or []}
+    assert found == {"R1/wall/-"}
+    before = len(first.study.trials)
+    resumed = search(tmp_path, monkeypatch, FakePool(even_seed_fails), text=SPEC.replace("budget: 3", "budget: 14"))
+    resumed.run()
+    assert resumed._known == found
+    later = [t for t in resumed.study.trials[before:] if t.user_attrs.get("failures")]
+    # the first of them too: its failure is known from the first invocation's runs, not from this one's
+    assert later and all(t.user_attrs["repeat"] for t in later)
+
+
+TPE_SPEC = SPEC.replace("sampler: random", "sampler: tpe").replace("budget: 3", "budget: 40")
+
+
+def test_tpe_starts_from_a_sobol_design_not_from_random_samplings_draws(tmp_path: Path,
+                                                                         monkeypatch: pytest.MonkeyPatch) -> None:
+    from rei.search.design import sobol_design, startup_trials
+
+    s = search(tmp_path, monkeypatch, FakePool(even_seed_fails), text=TPE_SPEC.replace("budget: 40", "budget: 10"))
+    design = sobol_design(s.space.distributions, startup_trials(40), 1)
+    assert len(design) == 8 and design == sobol_design(s.space.distributions, 8, 1)  # deterministic
+    assert len({d["seed"] for d in design}) == 8  # spread over the range, no repeated draw
+    s.run()
+    asked = [t.params for t in s.study.trials]
+    assert asked[:2] == sobol_design(s.space.distributions, startup_trials(10), 1)
+    (tmp_path / "r").mkdir()
+    randomly = search(tmp_path / "r", monkeypatch, FakePool(even_seed_fails))
+    randomly.run()
+    assert asked[0] != randomly.study.trials[0].params  # the same seed no longer gives random's first point
+
+
+def test_a_resumed_tpe_search_does_not_enqueue_its_design_again(tmp_path: Path,
+                                                                 monkeypatch: pytest.MonkeyPatch) -> None:
+    from rei.search.design import sobol_design
+
+    first = search(tmp_path, monkeypatch, FakePool(even_seed_fails), text=TPE_SPEC)
+    design = sobol_design(first.space.distributions, 8, 1)
+    submit = first.pool.submit
+
+    def stop_after_five(task: Any) -> Any:  # stopped inside the design: 5 of its 8 points ran
+        if len(first.pool.ran) == 4:
+            first.stop.set()
+        return submit(task)
+
+    monkeypatch.setattr(first.pool, "submit", stop_after_five)
+    first.run()
+    assert [t.params for t in first.study.trials if t.user_attrs.get("simulated")] == design[:5]
+    resumed = search(tmp_path, monkeypatch, FakePool(even_seed_fails), text=TPE_SPEC.replace("budget: 40", "budget: 12"))
+    resumed.run()
+    asked = [t.params for t in resumed.study.trials if t.user_attrs.get("simulated")]
+    assert len(asked) == 12 and asked[:8] == design  # the rest of the design, once, then TPE's own points
+    assert all(params not in design for params in asked[8:])

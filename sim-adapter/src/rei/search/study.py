@@ -35,6 +35,7 @@ from rei.campaign.results import make_result, write_result
 from rei.campaign.supervise import Outcome
 from rei.search.base import with_base_case
 from rei.search.candidates import VALID, Candidate, CandidateMaker
+from rei.search.design import sobol_design, startup_trials
 from rei.search.failures import failures_of
 from rei.search.objectives import ABSENT, better, present, score
 from rei.search.pool import Pool
@@ -50,8 +51,8 @@ MAX_TRIES_PER_EVALUATION = 20
 
 
 def make_sampler(name: str, seed: int, budget: int) -> optuna.samplers.BaseSampler:
-    if name == "tpe":
-        return optuna.samplers.TPESampler(seed=seed, n_startup_trials=max(2, min(10, budget // 4)),
+    if name == "tpe":  # its start-up trials are the initial design (rei.search.design), enqueued by Search
+        return optuna.samplers.TPESampler(seed=seed, n_startup_trials=startup_trials(budget),
                                           multivariate=True, constant_liar=True)
     if name == "cmaes":
         return optuna.samplers.CmaEsSampler(seed=seed, n_startup_trials=1, warn_independent_sampling=False)
@@ -115,8 +116,12 @@ class Search:
             self.maker.close()
             raise
         started = open_study(self.out, spec)
+        so_far = len(started.trials)
+        if spec.sampler == "tpe" and not so_far:  # TPE starts from a Sobol design, not random sampling's draws
+            for params in sobol_design(self.space.distributions, startup_trials(spec.budget), spec.seed):
+                started.enqueue_trial(params, skip_if_exists=False)
         # a resumed sampler must not replay the draws of the first invocation (qmc's sequence is indexed instead)
-        self.study = started if spec.sampler == "qmc" else open_study(self.out, spec, spec.seed + len(started.trials))
+        self.study = started if spec.sampler == "qmc" else open_study(self.out, spec, spec.seed + so_far)
         self.progress = SearchProgress()
         self._known: set[str] = set()  # failure signatures found so far
         self._raw: list[list[float | None]] = []  # the simulated evaluations' own objective values (None: absent)
