@@ -25,6 +25,13 @@ export interface World {
   } | null;
 }
 
+/** A room from an occupancy map: the map as a PNG (data URI; its first row is the top) over `extent`
+ * [xmin, ymin, xmax, ymax] in metres (rei.maps.map_picture). */
+export interface Occupancy {
+  readonly png: string;
+  readonly extent: readonly number[];
+}
+
 /** A human's or dynamic object's Catmull-Rom trajectory, sampled by the server. */
 export interface PathSpec {
   readonly name: string;
@@ -53,6 +60,8 @@ export interface ViewConfig {
   readonly run_id: string;
   readonly topics: { readonly state: string; readonly mission: string; readonly signal: string };
   readonly world: World | null;
+  /** The map drawn under the floors of a room from an occupancy map; null for every other room. */
+  readonly occupancy: Occupancy | null;
   readonly paths: readonly PathSpec[];
   readonly mission: { readonly name: string; readonly goals: readonly Goal[] } | null;
   readonly utilities: Readonly<Record<string, number>>;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: EPL-2.0
 // The layer that never changes during a run: floors, walls, furniture (world.json footprints) and the
 // humans' trajectories drawn faintly. Drawn once per resize into its own canvas, then copied each frame.
-import type { PathSpec, World, WorldObject } from "../config";
+import type { Occupancy, PathSpec, World, WorldObject } from "../config";
 import type { Transform } from "../geometry";
 import { boxCorners } from "../geometry";
 import { cssColour, FLOOR, FLOOR_EDGE, HUMAN, WALL } from "./colours";
@@ -20,11 +20,28 @@ function outline(ctx: CanvasRenderingContext2D, tf: Transform, body: WorldObject
   ctx.closePath();
 }
 
-/** Draws in CSS pixels: the context's transform already scales to device pixels. */
+/** A room from an occupancy map: the map's picture and where it lies. */
+export interface MapPicture {
+  readonly image: CanvasImageSource;
+  readonly occupancy: Occupancy;
+}
+
+/** The map's picture over its extent, cells kept sharp; its first row is the top, as the canvas's y axis goes. */
+function drawPicture(ctx: CanvasRenderingContext2D, tf: Transform, picture: MapPicture): void {
+  const [x0 = 0, y0 = 0, x1 = 0, y1 = 0] = picture.occupancy.extent;
+  ctx.imageSmoothingEnabled = false;
+  ctx.drawImage(picture.image, tf.x(x0), tf.y(y1), (x1 - x0) * tf.scale, (y1 - y0) * tf.scale);
+  ctx.imageSmoothingEnabled = true;
+}
+
+/** Draws in CSS pixels: the context's transform already scales to device pixels. Over a map's picture, floors
+ * and walls are translucent so the map shows beneath them. */
 export function drawRoom(ctx: CanvasRenderingContext2D, width: number, height: number, tf: Transform,
-                         world: World | null, paths: readonly PathSpec[]): void {
+                         world: World | null, paths: readonly PathSpec[], picture: MapPicture | null = null): void {
   ctx.fillStyle = "#fbfbf8";
   ctx.fillRect(0, 0, width, height);
+  if (picture !== null) drawPicture(ctx, tf, picture);
+  const seeThrough = picture !== null;
   if (world !== null) {
     const bodies = world.objects.filter((b) => b.category in ORDER)
       .sort((a, b) => (ORDER[a.category] ?? 0) - (ORDER[b.category] ?? 0));
@@ -39,7 +56,8 @@ export function drawRoom(ctx: CanvasRenderingContext2D, width: number, height: n
         ctx.strokeStyle = "#333";
         ctx.lineWidth = 0.8;
       }
-      ctx.globalAlpha = body.category === "STATIC" || body.category === "DYNAMIC" ? 0.85 : 1;
+      ctx.globalAlpha = body.category === "STATIC" || body.category === "DYNAMIC" ? 0.85
+        : !seeThrough ? 1 : body.category === "FLOOR" ? 0.45 : 0.3;
       ctx.fill();
       ctx.globalAlpha = 1;
       ctx.stroke();

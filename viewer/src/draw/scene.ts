@@ -7,7 +7,7 @@ import { boxCorners, Transform, worldBounds } from "../geometry";
 import type { LiveModel, Zone } from "../model";
 import { HUMAN, LASER, ROBOT_BELIEVED, ROBOT_TRUE, signalColour, TASK, ZONE } from "./colours";
 import { Layer } from "./layer";
-import { drawRoom } from "./room";
+import { drawRoom, type MapPicture } from "./room";
 
 interface Mover {
   x: number;
@@ -38,6 +38,7 @@ export class MapView {
   private readonly radii = new Map<string, number>();
   private readonly robotSize: [number, number];
   private readonly lidarMax: number;
+  private picture: MapPicture | null = null;
 
   constructor(canvas: HTMLCanvasElement, private readonly config: ViewConfig, private readonly model: LiveModel) {
     this.screen = new Layer(canvas);
@@ -47,6 +48,15 @@ export class MapView {
     }
     this.robotSize = [world?.robot?.size[0] ?? 0.3, world?.robot?.size[1] ?? 0.3];
     this.lidarMax = world?.robot?.lidar?.rangeMax ?? 3.5;
+    const occupancy = config.occupancy;
+    if (occupancy !== null && occupancy !== undefined) {
+      const image = new Image();
+      image.onload = () => {
+        this.picture = { image, occupancy };
+        this.drawRoomLayer();
+      };
+      image.src = occupancy.png;
+    }
   }
 
   /** Fits the map to its box; redraws the static layers when the size changed. */
@@ -55,9 +65,17 @@ export class MapView {
     this.room.resize(width, height, ratio);
     this.marks.resize(width, height, ratio);
     this.transform = Transform.fit(worldBounds(this.config.world), width, height);
-    drawRoom(this.room.ctx, width, height, this.transform, this.config.world, this.config.paths);
+    this.drawRoomLayer();
     this.trailDrawn = 0;
     this.markersDrawn = 0;
+  }
+
+  /** The room, once per size, and again when the map's picture has loaded. */
+  private drawRoomLayer(): void {
+    const { width, height } = this.room;
+    if (width === 0 || height === 0) return;
+    this.room.reset();
+    drawRoom(this.room.ctx, width, height, this.transform, this.config.world, this.config.paths, this.picture);
   }
 
   /** Takes the newest state into account (null: nothing new) and draws the frame. */

@@ -18,6 +18,7 @@ from rei.artifacts.world import (
     Shape,
     WorldSpec,
     read_world,
+    read_world_map,
 )
 
 __all__ = [
@@ -48,4 +49,5 @@ __all__ = [
     "read_monitor",
     "read_sdf",
     "read_world",
+    "read_world_map",
 ]

@@ -200,6 +200,14 @@ def read_world(path: Path | str) -> WorldSpec:
     )
 
 
+def read_world_map(path: Path | str) -> MapSpec | None:
+    """Only the ``map`` member of ``world.json`` (None when the room is not from an occupancy map), for the pages
+    that draw the map and need nothing else of the world; raises :class:`~rei.artifacts.errors.ArtifactError`."""
+    path = Path(path)
+    root = load_json(path, WORLD_FORMAT)
+    return _map(root.child("map"), path.parent) if root.has("map") else None
+
+
 def _map(m: Fields, folder: Path) -> MapSpec:
     """The ``map`` member; its files must be in the case folder (a case folder is self-contained)."""
     def file(key: str) -> Path:

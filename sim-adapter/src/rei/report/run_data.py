@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from rei.artifacts import ArtifactError, read_world
+from rei.artifacts import ArtifactError, read_world_map
 from rei.maps import MapPicture, map_picture
 from rei.wamp.recording import iter_recording, stream_path
 
@@ -144,7 +144,7 @@ def _read_picture(data: RunData) -> MapPicture | None:
     if data.world is None or data.world.get("map") is None:
         return None
     try:
-        spec = read_world(data.case_dir / "world.json").map
+        spec = read_world_map(data.case_dir / "world.json")
         return map_picture(spec.load()) if spec is not None else None
     except ArtifactError as error:
         data.notes.append(f"the room's occupancy map is not drawn: {error}")

@@ -17,8 +17,9 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from rei.artifacts import ArtifactError, read_animation, read_mission
+from rei.artifacts import ArtifactError, read_animation, read_mission, read_world_map
 from rei.evaluation import load_utilities
+from rei.maps import map_picture
 from rei.report.colours import SIGNAL_COLOURS
 from rei.wamp.topics import Topics
 
@@ -63,6 +64,7 @@ def view_config(router_url: str, run_id: str, case_dir: Path | None, *, realm: s
         "run_id": run_id,
         "topics": {"state": topics.state, "mission": topics.mission, "signal": topics.signal},
         "world": world,
+        "occupancy": _occupancy(case_dir) if world is not None and world.get("map") is not None else None,
         "paths": _paths(case_dir / "animation.json") if case_dir is not None else [],
         "mission": _mission(case_dir / "mission.xml") if case_dir is not None else None,
         "utilities": dict(load_utilities(utilities, declared)),
@@ -81,6 +83,15 @@ def _json(path: Path) -> dict[str, Any] | None:
     if not isinstance(value, Mapping):
         raise ArtifactError(path, "expected a JSON object")
     return dict(value)
+
+
+def _occupancy(case_dir: Path) -> dict[str, Any] | None:
+    """A map room's occupancy map as the picture the page draws under the floors (rei.maps.map_picture)."""
+    spec = read_world_map(case_dir / "world.json")
+    if spec is None:
+        return None
+    picture = map_picture(spec.load())
+    return {"png": picture.data_uri(), "extent": list(picture.extent)}
 
 
 def _mission(path: Path) -> dict[str, Any] | None:
