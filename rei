@@ -28,7 +28,7 @@ REI_JARS=(
 )
 # Folders whose sources go into the jars; target/ and generated folders inside them are ignored.
 # (bundles/org.rei.eclipse* belong to the Eclipse reactor in releng/, which this build does not run)
-REI_JAVA_SOURCES=(metamodels bundles/org.rei.dsl bundles/org.rei.dsl.ide bundles/org.rei.dsl.edit generators queries cep warm-jvm wamp-auth runtime-monitor sut-kits)
+REI_JAVA_SOURCES=(maps metamodels bundles/org.rei.dsl bundles/org.rei.dsl.ide bundles/org.rei.dsl.edit generators queries cep warm-jvm wamp-auth runtime-monitor sut-kits)
 # Written after every successful Java build: a build that changes no jar (only a README changed) still counts.
 REI_JAVA_STAMP="target/rei-bootstrap/java-build.stamp"
 REI_VENV_STAMP=".venv/.rei-pyproject.sha256"

@@ -68,7 +68,8 @@ public final class ArtifactGenerator {
 	 *
 	 * @param testCase a test case with resolved cross-references; types may be missing on floors, walls, humans and
 	 *                 the robot (the default catalogue's Floor, Wall, Human and Waffle are used)
-	 * @return the written files in {@link #ARTIFACTS} order
+	 * @return the written files in {@link #ARTIFACTS} order, then for a room from an occupancy map the copies of its
+	 *         YAML and image
 	 * @throws GenerationException when the room cannot be laid out ({@link GenerationException#problems()}), an
 	 *                             object is not on a floor, a template fails or a file cannot be written
 	 */
@@ -76,15 +77,19 @@ public final class ArtifactGenerator {
 		if (testCase.getOwnedEnvironment() == null) {
 			throw new GenerationException("test case " + testCase.getName() + " has no environment");
 		}
-		FloorLayout layout = FloorLayout.compute(testCase.getOwnedEnvironment(), mapping.defaultWallType());
+		MapRoom mapRoom = MapRoom.of(testCase.getOwnedEnvironment());
+		FloorLayout layout = mapRoom == null
+				? FloorLayout.compute(testCase.getOwnedEnvironment(), mapping.defaultWallType())
+				: FloorLayout.compute(testCase.getOwnedEnvironment(), mapping.defaultWallType(),
+						mapRoom.map().originX(), mapRoom.map().originY());
 		if (!layout.isValid()) {
 			throw new GenerationException("the room of " + testCase.getName() + " cannot be laid out: "
 					+ layout.problems().get(0).message()
 					+ (layout.problems().size() > 1 ? " (and " + (layout.problems().size() - 1) + " more)" : ""),
 					layout.problems());
 		}
-		ConcreteMapping.Result model = mapping.map(testCase, layout);
-		TemplateSupport support = new TemplateSupport(layout, model, outputDir);
+		ConcreteMapping.Result model = mapping.map(testCase, layout, mapRoom);
+		TemplateSupport support = new TemplateSupport(layout, model, outputDir, mapRoom);
 		try {
 			Files.createDirectories(outputDir);
 		} catch (IOException e) {
@@ -102,6 +107,9 @@ public final class ArtifactGenerator {
 				throw new GenerationException("cannot write " + file, e);
 			}
 			written.add(file);
+		}
+		if (mapRoom != null) {
+			written.addAll(mapRoom.copyInto(outputDir));
 		}
 		return written;
 	}

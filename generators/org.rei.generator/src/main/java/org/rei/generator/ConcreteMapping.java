@@ -77,7 +77,7 @@ final class ConcreteMapping {
 		return wallType;
 	}
 
-	Result map(TestCase testCase, FloorLayout layout) throws GenerationException {
+	Result map(TestCase testCase, FloorLayout layout, MapRoom mapRoom) throws GenerationException {
 		Environment env = testCase.getOwnedEnvironment();
 		double size = env.getFloorSize();
 		ConcreteEnvironment world = RuntimeFactory.eINSTANCE.createConcreteEnvironment();
@@ -109,6 +109,9 @@ final class ConcreteMapping {
 			}
 			bodies.add(body);
 		}
+		if (mapRoom != null) {
+			bodies.addAll(mapWalls(mapRoom, types));
+		}
 		for (PhysicalObject object : env.getOwnedObjects()) {
 			ConcreteObject body = physical(object, layout, types);
 			bodies.add(body);
@@ -128,6 +131,25 @@ final class ConcreteMapping {
 		contain(world, "world.runtime");
 		contain(mission, "mission.mission");
 		return new Result(world, mission, bodies, floors, robot, animated, concrete, List.copyOf(types.values()));
+	}
+
+	/**
+	 * The obstacle rectangles of an occupancy room as walls of the default Wall type's height and colour, posed at
+	 * their centres (Python's {@code rei.maps.box_of}); they stand on no floor.
+	 */
+	private List<ConcreteObject> mapWalls(MapRoom room, Map<String, ObjectType> types) {
+		List<org.rei.maps.CellRect> rects = room.walls();
+		List<ConcreteObject> walls = new ArrayList<>(rects.size());
+		if (!rects.isEmpty()) {
+			typeOf(null, wallType, types);
+		}
+		double height = wallType.getSizeZ();
+		for (org.rei.maps.CellRect rect : rects) {
+			double[] box = room.map().boxOf(rect);
+			walls.add(body(MapRoom.wallName(rect), wallType, ObjectCategory.WALL, box[2], box[3], height, box[0],
+					box[1], height / 2, 0, null));
+		}
+		return walls;
 	}
 
 	/** InMemoryEmfModel needs a resource; nothing is ever saved. */

@@ -41,9 +41,12 @@ public final class TemplateSupport {
 	private final Map<ObjectType, String[]> colours = new IdentityHashMap<>();
 	private final Map<String, String> meshes = new HashMap<>();
 	private final Path outputDir;
+	private final MapRoom mapRoom;
 
-	TemplateSupport(FloorLayout layout, ConcreteMapping.Result model, Path outputDir) throws GenerationException {
+	TemplateSupport(FloorLayout layout, ConcreteMapping.Result model, Path outputDir, MapRoom mapRoom)
+			throws GenerationException {
 		this.layout = layout;
+		this.mapRoom = mapRoom;
 		this.concrete = model.concrete();
 		this.outputDir = outputDir;
 		for (ConcreteObject body : model.environment().getOwnedObjects()) {
@@ -219,14 +222,31 @@ public final class TemplateSupport {
 		return layout.centreOf(floor)[1];
 	}
 
-	/** Extent of the room along x. */
+	/** Extent of the room along x (a map room: of its map). */
 	public double width() {
-		return layout.columns() * layout.floorSize();
+		return mapRoom != null ? mapRoom.map().width() * mapRoom.map().resolution()
+				: layout.columns() * layout.floorSize();
 	}
 
-	/** Extent of the room along y. */
+	/** Extent of the room along y (a map room: of its map). */
 	public double height() {
-		return layout.rows() * layout.floorSize();
+		return mapRoom != null ? mapRoom.map().height() * mapRoom.map().resolution()
+				: layout.rows() * layout.floorSize();
+	}
+
+	/** The room's corner with the smallest x and y: a map room's map origin, else (0, 0). */
+	public double originX() {
+		return mapRoom != null ? mapRoom.map().originX() : 0;
+	}
+
+	/** See {@link #originX()}. */
+	public double originY() {
+		return mapRoom != null ? mapRoom.map().originY() : 0;
+	}
+
+	/** world.json's {@code map} member of a room from an occupancy map, {@code null} for another room. */
+	public String map() {
+		return mapRoom == null ? null : mapRoom.json();
 	}
 
 	/** The body an abstract object became. */

@@ -24,6 +24,7 @@ import org.rei.context.ContextPackage;
 import org.rei.context.Direction;
 import org.rei.context.Environment;
 import org.rei.context.Floor;
+import org.rei.context.OccupancyLayout;
 import org.rei.context.Wall;
 
 /**
@@ -33,6 +34,10 @@ import org.rei.context.Wall;
  * A breadth-first traversal from the start floor gives every floor a cell relative to its parent. Neighbour
  * references are followed in both directions; walls end a branch. Cells are then shifted so that the smallest x and
  * y are 0. Everything is linear in the number of floors: the benchmark lays out 10,000 of them.
+ * <p>
+ * A room from an occupancy map is not traversed: its floors are the map's free blocks, {@code F_x_y} at block
+ * {@code (x, y)} from the map's origin, which may form several unconnected areas; its centres are in the map's frame
+ * when the caller gives the origin ({@link #compute(Environment, ObjectType, double, double)}).
  * <p>
  * The result is immutable. When {@link #problems()} is not empty, cells and walls are what could be placed.
  */
@@ -51,8 +56,12 @@ public final class FloorLayout {
 	private final List<LayoutProblem> problems;
 	private final int columns;
 	private final int rows;
+	private final double originX;
+	private final double originY;
 
-	private FloorLayout(Builder b) {
+	private FloorLayout(Builder b, double originX, double originY) {
+		this.originX = originX;
+		this.originY = originY;
 		this.environment = b.environment;
 		this.floorSize = b.environment.getFloorSize();
 		this.start = b.start;
@@ -76,7 +85,17 @@ public final class FloorLayout {
 	 * @param defaultWallType type of walls that have none; {@code null} for the default catalogue's Wall
 	 */
 	public static FloorLayout compute(Environment env, ObjectType defaultWallType) {
-		return new Builder(env, defaultWallType).build();
+		return compute(env, defaultWallType, 0, 0);
+	}
+
+	/**
+	 * Lays out the environment with cell (0, 0)'s corner at {@code (originX, originY)}: an occupancy room's map
+	 * origin.
+	 *
+	 * @param defaultWallType type of walls that have none; {@code null} for the default catalogue's Wall
+	 */
+	public static FloorLayout compute(Environment env, ObjectType defaultWallType, double originX, double originY) {
+		return new Builder(env, defaultWallType).build(originX, originY);
 	}
 
 	/** The environment this layout was computed for. */
@@ -114,7 +133,7 @@ public final class FloorLayout {
 		if (cell == null) {
 			throw new IllegalArgumentException("floor " + (floor == null ? null : floor.getName()) + " has no cell");
 		}
-		return new double[] { (cell.x() + 0.5) * floorSize, (cell.y() + 0.5) * floorSize };
+		return new double[] { originX + (cell.x() + 0.5) * floorSize, originY + (cell.y() + 0.5) * floorSize };
 	}
 
 	/**
@@ -219,7 +238,7 @@ public final class FloorLayout {
 			this.defaultWallType = defaultWallType;
 		}
 
-		FloorLayout build() {
+		FloorLayout build(double originX, double originY) {
 			for (BuildingBlock block : environment.getOwnedBlocks()) {
 				if (block instanceof Floor floor) {
 					floorIndex.put(floor, floors.size());
@@ -231,11 +250,31 @@ public final class FloorLayout {
 			}
 			if (!floors.isEmpty()) {
 				start = startFloor();
-				placeFloors(links());
+				List<Link>[] links = links();
+				if (environment.getOwnedLayout() instanceof OccupancyLayout) {
+					placeMapFloors();
+				} else {
+					placeFloors(links);
+				}
 				placeWalls();
 			}
 			reportOrphanWalls();
-			return new FloorLayout(this);
+			return new FloorLayout(this, originX, originY);
+		}
+
+		/** The floors of an occupancy room are at their blocks of the map (their names say which). */
+		private void placeMapFloors() {
+			for (Floor floor : floors) {
+				var block = MapFiles.blockOf(floor);
+				if (block.isEmpty()) {
+					problems.add(new LayoutProblem(floor, null, LayoutIssueCodes.DISCONNECTED,
+							"floor " + floor.getName() + " is no block F_x_y of the room's map"));
+					continue;
+				}
+				cells.put(floor, block.get());
+				columns = Math.max(columns, block.get().x() + 1);
+				rows = Math.max(rows, block.get().y() + 1);
+			}
 		}
 
 		private Floor startFloor() {

@@ -31,6 +31,7 @@ import org.rei.context.DynamicObject;
 import org.rei.context.Environment;
 import org.rei.context.Floor;
 import org.rei.context.GridLayout;
+import org.rei.context.OccupancyLayout;
 import org.rei.context.Human;
 import org.rei.context.Mission;
 import org.rei.context.NamedElement;
@@ -428,6 +429,10 @@ final class ModelEditor {
 			throw new EditRefusedException("Cannot " + what + ": room '" + environment.getName() + "' derives its "
 					+ "floors and walls from its size " + grid.getColumns() + " x " + grid.getRows() + "; change the "
 					+ "size, or write the room as a floor graph (floor A right B ...)");
+		}
+		if (environment.getOwnedLayout() instanceof OccupancyLayout occupancy) {
+			throw new EditRefusedException("Cannot " + what + ": room '" + environment.getName() + "' derives its "
+					+ "floors from the occupancy map " + occupancy.getMap() + "; change the map or the floor size");
 		}
 		if (environment.getOwnedLayout() instanceof AsciiLayout) {
 			throw new EditRefusedException("Cannot " + what + ": room '" + environment.getName() + "' derives its "

@@ -4,21 +4,31 @@
  */
 package org.rei.dsl.derived;
 
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 
 import org.rei.context.AsciiLayout;
 import org.rei.context.BuildingBlock;
 import org.rei.context.ContextFactory;
+import org.rei.context.Environment;
 import org.rei.context.Floor;
 import org.rei.context.GridLayout;
 import org.rei.context.Layout;
+import org.rei.context.OccupancyLayout;
 import org.rei.context.Wall;
+import org.rei.context.layout.MapFiles;
+import org.rei.maps.FloorBlocks;
+import org.rei.maps.MapCache;
+import org.rei.maps.MapException;
+import org.rei.maps.OccupancyMap;
 
 /**
  * Turns a compact room description into the explicit floor graph of the context metamodel: floor F_x_y on every
  * cell (x from the left, y from the bottom) with its neighbours, and a wall W_x_y_side on every side that borders
- * no floor.
+ * no floor. A room from an occupancy map gets a floor F_x_y on every free block of the map (x, y counted from the map's
+ * origin) and no walls: the map's obstacle cells are its walls, which the generator places.
  */
 public final class RoomDesugaring {
 
@@ -31,6 +41,13 @@ public final class RoomDesugaring {
 	 * need 10^10 cells).
 	 */
 	public static final long MAX_CELLS = 40_000;
+
+	/**
+	 * The most floors a room from an occupancy map may have (free blocks; the map's size is not limited): about
+	 * 125 x 125 m of 0.25 m floors. Each floor is a model element the editor and the generator hold, so beyond
+	 * it nothing is derived and the validator asks for larger floors.
+	 */
+	public static final int MAX_MAP_FLOORS = 250_000;
 
 	private RoomDesugaring() {
 	}
@@ -45,7 +62,48 @@ public final class RoomDesugaring {
 		if (layout instanceof AsciiLayout ascii) {
 			return build(cellsOf(ascii.getMap()));
 		}
+		if (layout instanceof OccupancyLayout occupancy) {
+			return blocksOf(occupancy);
+		}
 		return List.of();
+	}
+
+	/**
+	 * The free blocks of the room's map; none when the map cannot be read, the floor size is not positive or there
+	 * are more than {@link #MAX_MAP_FLOORS} (the validator reports each).
+	 */
+	private static List<BuildingBlock> blocksOf(OccupancyLayout layout) {
+		Optional<FloorBlocks> found = freeBlocks(layout);
+		if (found.isEmpty() || found.get().freeCount() > MAX_MAP_FLOORS) {
+			return List.of();
+		}
+		FloorBlocks blocks = found.get();
+		boolean[][] cells = new boolean[blocks.columns()][blocks.rows()];
+		for (int x = 0; x < blocks.columns(); x++) {
+			for (int y = 0; y < blocks.rows(); y++) {
+				cells[x][y] = blocks.isFree(x, y);
+			}
+		}
+		return build(cells, false);
+	}
+
+	/** The room's map, read once per version of its files ({@link MapCache}). */
+	public static OccupancyMap mapOf(OccupancyLayout layout) throws MapException {
+		Path yaml = MapFiles.yamlOf(layout).orElseThrow(() -> new MapException(Path.of(String.valueOf(layout.getMap())),
+				1, 1, "file", "not a file path"));
+		return MapCache.get(yaml);
+	}
+
+	/** The floor blocks of an occupancy room, empty when its map cannot be read or its floor size is not positive. */
+	public static Optional<FloorBlocks> freeBlocks(OccupancyLayout layout) {
+		if (!(layout.eContainer() instanceof Environment environment) || !(environment.getFloorSize() > 0)) {
+			return Optional.empty();
+		}
+		try {
+			return Optional.of(mapOf(layout).floorBlocks(environment.getFloorSize(), layout.isUnknownFree()));
+		} catch (MapException e) {
+			return Optional.empty();
+		}
 	}
 
 	/** Whether the layout spans more than {@link #MAX_CELLS} cells (then it derives nothing). */
@@ -59,6 +117,11 @@ public final class RoomDesugaring {
 			return width * lines.size() > MAX_CELLS;
 		}
 		return false;
+	}
+
+	/** Metres as a message writes them: {@code 1}, {@code 0.25}. */
+	public static String metres(double value) {
+		return java.math.BigDecimal.valueOf(value).stripTrailingZeros().toPlainString();
 	}
 
 	public static String floorName(int x, int y) {
@@ -114,6 +177,11 @@ public final class RoomDesugaring {
 	}
 
 	private static List<BuildingBlock> build(boolean[][] cells) {
+		return build(cells, true);
+	}
+
+	/** Floors on the true cells with their neighbours; {@code walled}: a wall on every side that borders no floor. */
+	private static List<BuildingBlock> build(boolean[][] cells, boolean walled) {
 		int width = cells.length;
 		int height = width == 0 ? 0 : cells[0].length;
 		Floor[][] floors = new Floor[width][height];
@@ -135,10 +203,11 @@ public final class RoomDesugaring {
 				if (floor == null) {
 					continue;
 				}
-				floor.setTop(neighbour(floors, x, y + 1, x, y, "top", walls));
-				floor.setRight(neighbour(floors, x + 1, y, x, y, "right", walls));
-				floor.setBottom(neighbour(floors, x, y - 1, x, y, "bottom", walls));
-				floor.setLeft(neighbour(floors, x - 1, y, x, y, "left", walls));
+				List<BuildingBlock> sideWalls = walled ? walls : null;
+				floor.setTop(neighbour(floors, x, y + 1, x, y, "top", sideWalls));
+				floor.setRight(neighbour(floors, x + 1, y, x, y, "right", sideWalls));
+				floor.setBottom(neighbour(floors, x, y - 1, x, y, "bottom", sideWalls));
+				floor.setLeft(neighbour(floors, x - 1, y, x, y, "left", sideWalls));
 			}
 		}
 		blocks.addAll(walls);
@@ -150,6 +219,9 @@ public final class RoomDesugaring {
 		boolean inside = nx >= 0 && ny >= 0 && nx < floors.length && ny < floors[nx].length;
 		if (inside && floors[nx][ny] != null) {
 			return floors[nx][ny];
+		}
+		if (walls == null) {
+			return null; // an open side
 		}
 		Wall wall = DerivedMarker.mark(ContextFactory.eINSTANCE.createWall());
 		wall.setName(wallName(x, y, side));

@@ -4,6 +4,8 @@
  */
 package org.rei.dsl.scoping;
 
+import java.nio.file.Path;
+import java.util.Optional;
 import java.util.stream.Collectors;
 import java.util.stream.StreamSupport;
 
@@ -15,6 +17,14 @@ import org.eclipse.xtext.linking.impl.LinkingDiagnosticMessageProvider;
 import org.eclipse.xtext.scoping.IScope;
 import org.rei.catalogue.CataloguePackage;
 import org.rei.context.ContextPackage;
+import org.rei.context.Environment;
+import org.rei.context.OccupancyLayout;
+import org.rei.context.TestCase;
+import org.rei.context.layout.Cell;
+import org.rei.context.layout.MapFiles;
+import org.rei.dsl.derived.RoomDesugaring;
+import org.rei.maps.FloorBlocks;
+import org.eclipse.xtext.EcoreUtil2;
 
 import com.google.inject.Inject;
 
@@ -31,10 +41,49 @@ public class ReiLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessag
 	@Override
 	public DiagnosticMessage getUnresolvedProxyMessage(ILinkingDiagnosticContext context) {
 		EClass target = context.getReference().getEReferenceType();
+		String onMap = mapBlockMessage(context);
+		if (onMap != null) {
+			return new DiagnosticMessage(onMap, Severity.ERROR, Diagnostic.LINKING_DIAGNOSTIC);
+		}
 		String what = describe(target);
 		String message = "Unknown " + what + " '" + context.getLinkText() + "': expected the name of "
 				+ article(what) + " " + what + candidates(context);
 		return new DiagnosticMessage(message, Severity.ERROR, Diagnostic.LINKING_DIAGNOSTIC);
+	}
+
+	/**
+	 * In a room from an occupancy map, a name {@code F_x_y} that is no floor names a block of the map that is not
+	 * free, or none: say which, and why, instead of listing floors.
+	 */
+	private static String mapBlockMessage(ILinkingDiagnosticContext context) {
+		EClass target = context.getReference().getEReferenceType();
+		if (target != ContextPackage.Literals.FLOOR && target != ContextPackage.Literals.BUILDING_BLOCK) {
+			return null;
+		}
+		TestCase testCase = EcoreUtil2.getContainerOfType(context.getContext(), TestCase.class);
+		Environment environment = testCase == null ? null : testCase.getOwnedEnvironment();
+		if (environment == null || !(environment.getOwnedLayout() instanceof OccupancyLayout layout)) {
+			return null;
+		}
+		Optional<Cell> block = MapFiles.blockOf(context.getLinkText());
+		Optional<FloorBlocks> blocks = RoomDesugaring.freeBlocks(layout);
+		if (block.isEmpty() || blocks.isEmpty()) {
+			return null;
+		}
+		int x = block.get().x();
+		int y = block.get().y();
+		FloorBlocks map = blocks.get();
+		String file = Path.of(layout.getMap()).getFileName().toString();
+		if (!map.contains(x, y)) {
+			return context.getLinkText() + " is not a floor of " + file + ": the map has " + map.columns() + " x "
+					+ map.rows() + " blocks of " + RoomDesugaring.metres(map.floorSize()) + " m (F_0_0 to F_"
+					+ (map.columns() - 1) + "_" + (map.rows() - 1) + ")";
+		}
+		if (map.isFree(x, y)) {
+			return null; // a free block that is still no floor: too many floors, reported on the map
+		}
+		return context.getLinkText() + " is not a free floor of " + file + ": " + map.obstacleCells(x, y) + " of its "
+				+ map.cells(x, y) + " cells are obstacles" + (layout.isUnknownFree() ? "" : " (occupied or unknown)");
 	}
 
 	private String candidates(ILinkingDiagnosticContext context) {

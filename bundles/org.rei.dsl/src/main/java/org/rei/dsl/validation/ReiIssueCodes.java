@@ -14,6 +14,7 @@ public interface ReiIssueCodes {
 	String BLOCKS_WITH_LAYOUT = PREFIX + "blocksWithLayout";
 	String EMPTY_LAYOUT = PREFIX + "emptyLayout";
 	String ROOM_TOO_LARGE = PREFIX + "roomTooLarge";
+	String MAP_UNREADABLE = PREFIX + "mapUnreadable";
 	String NON_POSITIVE = PREFIX + "nonPositive";
 	String TYPE_CATEGORY = PREFIX + "typeCategory";
 	String FLOOR_OCCUPIED = PREFIX + "floorOccupied";

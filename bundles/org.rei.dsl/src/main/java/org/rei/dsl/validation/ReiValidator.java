@@ -19,7 +19,8 @@ import org.rei.context.ContextPackage;
  * Entry point of validation; the rules live in small validators, one concern each. Together they implement the
  * constraints of thesis 4.1.2 plus reachability, free floors, time order and threshold sanity.
  */
-@ComposedChecks(validators = { NamingValidator.class, RoomValidator.class, PlacementValidator.class,
+@ComposedChecks(validators = { NamingValidator.class, RoomValidator.class, MapRoomValidator.class,
+		PlacementValidator.class,
 		TrajectoryValidator.class, MissionValidator.class, MonitorValidator.class, CatalogueValidator.class })
 public class ReiValidator extends AbstractReiValidator {
 

@@ -16,7 +16,8 @@ public record Diagram(String testCase, Room room, List<Item> objects, Item robot
 		Mission mission, Monitor monitor) {
 
 	/**
-	 * @param form "grid" ({@code size C x R}), "map" or "graph" (floors and walls written out)
+	 * @param form "grid" ({@code size C x R}), "map", "occupancy" (an occupancy map) or "graph" (floors and walls
+	 *             written out)
 	 * @param columns cells along x of the laid-out floors
 	 */
 	public record Room(String name, String form, double floorSize, int columns, int rows, List<FloorCell> floors,

@@ -18,6 +18,7 @@ import org.rei.context.DynamicObject;
 import org.rei.context.Environment;
 import org.rei.context.Floor;
 import org.rei.context.GridLayout;
+import org.rei.context.OccupancyLayout;
 import org.rei.context.Human;
 import org.rei.context.MonitorSpec;
 import org.rei.context.NavigationTask;
@@ -81,7 +82,8 @@ public final class DiagramBuilder {
 					!DerivedMarker.isDerived(wall.wall())));
 		}
 		String form = environment.getOwnedLayout() instanceof GridLayout ? "grid"
-				: environment.getOwnedLayout() instanceof AsciiLayout ? "map" : "graph";
+				: environment.getOwnedLayout() instanceof AsciiLayout ? "map"
+				: environment.getOwnedLayout() instanceof OccupancyLayout ? "occupancy" : "graph";
 		return new Diagram.Room(environment.getName(), form, environment.getFloorSize(), layout.columns(),
 				layout.rows(), floors, walls);
 	}
