@@ -30,7 +30,7 @@ at most a third of random's evaluations, and at least 0.9x the campaign's throug
 
     .venv/bin/python benchmarks/falsification.py [--budget 200] [--seeds 1 2 3] [--workers 2] [--keep DIR]
         [--rooms crossing doorways simple_navigation] [--controllers reference weakened] [--samplers tpe random]
-        [--reuse random]
+        [--reuse random] [--no-campaign]
 """
 
 from __future__ import annotations
@@ -97,6 +97,7 @@ def main() -> int:
     parser.add_argument("--reuse", nargs="*", choices=SAMPLERS, default=[],
                         help="read these samplers' searches finished in --keep at this budget instead of running them")
     parser.add_argument("--keep", type=Path, help="output folder to keep (default: a temporary one)")
+    parser.add_argument("--no-campaign", action="store_true", help="no throughput figure (no campaign run)")
     args = parser.parse_args()
     if args.reuse and args.keep is None:
         parser.error("--reuse needs --keep (the folder holding the finished searches)")
@@ -127,7 +128,7 @@ def main() -> int:
                                     f"{figures['first'] or '-'}, {figures['evaluations']} evaluations in "
                                     f"{figures['wall']:.0f} s{' (reused)' if figures['reused'] else ''};")
                     print(" ".join(line) + f" load {_load()}", flush=True)
-        campaign = _campaign(folder, fresh, args.budget, args.workers) if fresh else None
+        campaign = _campaign(folder, fresh, args.budget, args.workers) if fresh and not args.no_campaign else None
     finally:
         if args.keep is None:
             shutil.rmtree(folder, ignore_errors=True)
