@@ -144,7 +144,7 @@ class Simulation:
             else None
         )
         floors = frozenset(self.world.body_of[o.name] for o in world.objects if o.category is Category.FLOOR)
-        self._contacts = ContactSensor(client, body, floors)
+        self._contacts = ContactSensor(client, body, floors, self.world.contact_name)
         self._moving = [
             (o.name, o.category.value, self.world.body_of[o.name])
             for o in world.objects
@@ -246,8 +246,7 @@ class Simulation:
             ObjectState(name=name, category=category, pose=self._pose(body), twist=self._twist(body))
             for name, category, body in self._moving
         )
-        name_of = self.world.name_of
-        contacts = tuple(sorted((robot_name, name_of[b]) for b in self._contacts.drain() if b in name_of))
+        contacts = tuple(sorted((robot_name, name) for name in self._contacts.drain()))
         scan = self._scan
         robot = RobotState(
             name=robot_name,

@@ -4,22 +4,56 @@
 pybullet's ``loadSDF`` returns bare body ids and ignores ``<static>``; downstream code speaks in model names and
 needs fixed bodies to really be fixed. So the loader keeps the name <-> id map and refuses a world whose bodies
 (count, names, order, fixedness) differ from world.json, naming the file and the first difference.
+
+Large rooms (an occupancy map's thousands of wall rectangles, a big grid's floors) do not fit one body per model:
+``loadSDF`` refuses more than ``SDF_BODY_LIMIT`` models, and every body costs each physics step (about 8 us per
+body: 10,000 walls made a step 80 ms). Beyond that limit, the walls and the floors, which never move, are merged
+into one fixed body per category whose compound shape holds each model's box (its own AABB tree, so a step, a
+ray or a contact costs what the robot's neighbourhood holds); the other models are loaded from world.sdf as
+before. A contact with a merged body is named after the box nearest the contact point.
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+import tempfile
+import xml.etree.ElementTree as ET
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from types import MappingProxyType
 
+import numpy as np
 import pybullet as p
 
 from rei.artifacts.errors import ArtifactError
-from rei.artifacts.world import ObjectSpec, WorldSpec
+from rei.artifacts.world import Category, ObjectSpec, WorldSpec
 from rei.sim.native_output import quiet_native_output
 
 GRAVITY = 9.81
+SDF_BODY_LIMIT = 512
+"""The most models pybullet's ``loadSDF`` loads from one file ("SDF exceeds body capacity")."""
+MERGE_ABOVE = SDF_BODY_LIMIT
+"""Worlds of more models than this have their walls and floors merged."""
+MERGED_CATEGORIES = (Category.WALL, Category.FLOOR)
+
+
+@dataclass(frozen=True, slots=True)
+class MergedBoxes:
+    """Boxes of many fixed models in one body: which model a point on its surface belongs to."""
+
+    body: int
+    names: tuple[str, ...]
+    centres: np.ndarray  # (n, 2) world x, y
+    half: np.ndarray  # (n, 2) half extents along the box's own axes
+    cos_sin: np.ndarray  # (n, 2) cos and sin of each box's yaw
+
+    def name_at(self, x: float, y: float) -> str:
+        """The model whose box is nearest ``(x, y)`` (a contact point lies on its surface)."""
+        dx, dy = x - self.centres[:, 0], y - self.centres[:, 1]
+        c, s = self.cos_sin[:, 0], self.cos_sin[:, 1]
+        gx = np.maximum(np.abs(c * dx + s * dy) - self.half[:, 0], 0.0)
+        gy = np.maximum(np.abs(-s * dx + c * dy) - self.half[:, 1], 0.0)
+        return self.names[int(np.argmin(gx * gx + gy * gy))]
 
 
 @dataclass(frozen=True, slots=True)
@@ -30,6 +64,13 @@ class LoadedWorld:
     body_of: Mapping[str, int]
     name_of: Mapping[int, str]
     spec_of: Mapping[str, ObjectSpec]
+    merged: Mapping[int, MergedBoxes]
+    """The bodies that hold many models (empty unless the world has more than ``MERGE_ABOVE`` models)."""
+
+    def contact_name(self, body: int, position: Sequence[float]) -> str | None:
+        """The model touched at ``position`` on ``body``, or None for a body that is no model of the world."""
+        boxes = self.merged.get(body)
+        return boxes.name_at(position[0], position[1]) if boxes is not None else self.name_of.get(body)
 
 
 def load_world(client: int, sdf_path: Path | str, world: WorldSpec) -> LoadedWorld:
@@ -38,16 +79,17 @@ def load_world(client: int, sdf_path: Path | str, world: WorldSpec) -> LoadedWor
     if not sdf_path.is_file():
         raise ArtifactError(sdf_path, "file is missing")
     p.setGravity(0.0, 0.0, -GRAVITY, physicsClientId=client)
-    try:
-        with quiet_native_output():
-            ids = p.loadSDF(str(sdf_path), physicsClientId=client)
-    except p.error as exc:
-        raise ArtifactError(sdf_path, f"pybullet could not load it: {exc}") from None
-    names = [p.getBodyInfo(b, physicsClientId=client)[1].decode("utf-8") for b in ids]
     expected = [o.name for o in world.objects]
-    if names != expected:
-        raise ArtifactError(sdf_path, _difference(names, expected, world.path.name))
-    for body, obj in zip(ids, world.objects, strict=True):
+    merged: dict[int, MergedBoxes] = {}
+    if len(world.objects) <= MERGE_ABOVE:
+        ids = _load_sdf(client, sdf_path, sdf_path)
+        names = [p.getBodyInfo(b, physicsClientId=client)[1].decode("utf-8") for b in ids]
+        if names != expected:
+            raise ArtifactError(sdf_path, _difference(names, expected, world.path.name))
+    else:
+        names, ids, merged = _load_large(client, sdf_path, world)
+    single = [(body, obj) for body, obj in zip(ids, world.objects, strict=True) if body not in merged]
+    for body, obj in single:
         mass = p.getDynamicsInfo(body, -1, physicsClientId=client)[0]
         if obj.category.fixed and mass != 0.0:
             raise ArtifactError(
@@ -61,8 +103,105 @@ def load_world(client: int, sdf_path: Path | str, world: WorldSpec) -> LoadedWor
     return LoadedWorld(
         client=client,
         body_of=MappingProxyType(dict(zip(names, ids, strict=True))),
-        name_of=MappingProxyType(dict(zip(ids, names, strict=True))),
+        name_of=MappingProxyType({body: obj.name for body, obj in single}),
         spec_of=MappingProxyType({o.name: o for o in world.objects}),
+        merged=MappingProxyType(merged),
+    )
+
+
+def _load_sdf(client: int, path: Path, shown: Path) -> list[int]:
+    try:
+        with quiet_native_output():
+            return list(p.loadSDF(str(path), physicsClientId=client))
+    except p.error as exc:
+        raise ArtifactError(shown, f"pybullet could not load it: {exc}") from None
+
+
+def _load_large(
+    client: int, sdf_path: Path, world: WorldSpec
+) -> tuple[list[str], list[int], dict[int, MergedBoxes]]:
+    """The walls and floors merged per category, the other models loaded from a copy of world.sdf holding only
+    them; names and body ids in world.json's order."""
+    root = ET.parse(sdf_path).getroot()
+    holder = root.find("world")
+    holder = holder if holder is not None else root
+    models = holder.findall("model")
+    loaded = [m.get("name") for m in models]
+    expected = [o.name for o in world.objects]
+    if loaded != expected:
+        raise ArtifactError(sdf_path, _difference([n or "" for n in loaded], expected, world.path.name))
+    boxes: dict[Category, list[tuple[str, tuple[float, ...], tuple[float, ...]]]] = {c: [] for c in MERGED_CATEGORIES}
+    for model, obj in zip(models, world.objects, strict=True):
+        box = _fixed_box(model) if obj.category in MERGED_CATEGORIES else None
+        if box is not None:
+            boxes[obj.category].append((obj.name, *box))
+            holder.remove(model)
+    rest = [m.get("name") for m in holder.findall("model")]
+    if len(rest) > SDF_BODY_LIMIT:
+        raise ArtifactError(
+            sdf_path,
+            f"{len(rest)} models besides walls and floors: pybullet loads at most {SDF_BODY_LIMIT} from one file",
+        )
+    body_of: dict[str, int] = {}
+    if rest:
+        for uri in holder.iter("uri"):  # mesh files are relative to world.sdf's folder
+            if uri.text and not Path(uri.text.strip()).is_absolute():
+                uri.text = str((sdf_path.parent / uri.text.strip()).resolve())
+        with tempfile.TemporaryDirectory(prefix="rei-world-") as folder:
+            part = Path(folder) / sdf_path.name
+            ET.ElementTree(root).write(part, encoding="utf-8", xml_declaration=True)
+            ids = _load_sdf(client, part, sdf_path)
+        names = [p.getBodyInfo(b, physicsClientId=client)[1].decode("utf-8") for b in ids]
+        if names != rest:
+            raise ArtifactError(sdf_path, _difference(names, [n or "" for n in rest], world.path.name))
+        body_of.update(zip(names, ids, strict=True))
+    merged: dict[int, MergedBoxes] = {}
+    for parts in boxes.values():
+        if parts:
+            boxes_body = _merge(client, parts)
+            merged[boxes_body.body] = boxes_body
+            body_of.update((name, boxes_body.body) for name in boxes_body.names)
+    return expected, [body_of[n] for n in expected], merged
+
+
+def _fixed_box(model: ET.Element) -> tuple[tuple[float, ...], tuple[float, ...]] | None:
+    """``(pose, size)`` of a fixed model whose one link collides as one box at the model's pose, else None."""
+    links = model.findall("link")
+    if len(links) != 1 or (model.findtext("static") or "").strip().lower() not in ("true", "1"):
+        return None
+    collisions = links[0].findall("collision")
+    if len(collisions) != 1 or collisions[0].find("pose") is not None or links[0].find("pose") is not None:
+        return None
+    size = collisions[0].findtext("geometry/box/size")
+    if size is None:
+        return None
+    try:
+        pose = tuple(float(v) for v in (model.findtext("pose") or "0 0 0 0 0 0").split())
+        extent = tuple(float(v) for v in size.split())
+    except ValueError:
+        return None
+    return (pose, extent) if len(pose) == 6 and len(extent) == 3 else None
+
+
+def _merge(client: int, parts: list[tuple[str, tuple[float, ...], tuple[float, ...]]]) -> MergedBoxes:
+    """One fixed body whose compound shape holds every part's box at its pose."""
+    poses = [pose for _, pose, _ in parts]
+    sizes = [size for _, _, size in parts]
+    shape = p.createCollisionShapeArray(
+        [p.GEOM_BOX] * len(parts),
+        halfExtents=[[v / 2 for v in size] for size in sizes],
+        collisionFramePositions=[list(pose[:3]) for pose in poses],
+        collisionFrameOrientations=[p.getQuaternionFromEuler(pose[3:]) for pose in poses],
+        physicsClientId=client,
+    )
+    body = p.createMultiBody(0.0, shape, -1, physicsClientId=client)
+    yaws = np.array([pose[5] for pose in poses])
+    return MergedBoxes(
+        body=body,
+        names=tuple(name for name, _, _ in parts),
+        centres=np.array([pose[:2] for pose in poses], dtype=float),
+        half=np.array([[size[0] / 2, size[1] / 2] for size in sizes], dtype=float),
+        cos_sin=np.column_stack([np.cos(yaws), np.sin(yaws)]) if len(yaws) else np.zeros((0, 2)),
     )
 
 
