@@ -19,7 +19,16 @@ from typing import Any
 
 import numpy as np
 
-from rei.artifacts import ArtifactError, Category, Shape, WorldSpec, read_mission, read_monitor, read_world
+from rei.artifacts import (
+    ArtifactError,
+    Category,
+    MonitorSpec,
+    Shape,
+    WorldSpec,
+    read_mission,
+    read_monitor,
+    read_world,
+)
 from rei.artifacts.case import case_of_run
 from rei.evaluation.metrics.definitions import NAMES
 from rei.evaluation.mission_info import MissionInfo, MissionInfoError
@@ -36,6 +45,11 @@ STANDING = 0.02
 REVERSAL = 0.02
 #: Rows of robot poses per block of the gap computation (bounds the temporary arrays to a few MB).
 _BLOCK = 2048
+#: Robot poses per block when choosing the static obstacles near them (about 3 s of a 20 Hz stream).
+_NEAR_BLOCK = 64
+#: How far (m) beyond the close threshold a footprint gap may be while the simulator still reports a contact
+#: (the robot's bodies are not exactly its footprint); generous, it only keeps a few more obstacles.
+_CONTACT_MARGIN = 1.0
 #: Below this length (m) a shortest path is empty: the start is at the goal (SPL 1 on success, not 0/0).
 _EMPTY_PATH = 1e-9
 
@@ -110,6 +124,11 @@ def measure(run_dir: Path, case_dir: Path | None = None) -> Measured:
     notes = ((f"{stream_path(run_dir, 'state')}: {states.skipped} malformed state message(s) left out of the "
               f"metrics (the first: {states.first_skipped})"),) if states.skipped else ()
     robot_size = (world.robot.size[0], world.robot.size[1])
+    try:
+        spec = read_monitor(case_dir / "monitor.json")
+    except (ArtifactError, OSError):
+        spec = None
+    statics = _near(statics, s.pose, robot_size, spec.close_threshold if spec is not None else 0.0)
     static_gaps = _gaps(s.pose, robot_size, statics.boxes, statics.circle)
     moving_gaps = _gaps(s.pose, robot_size, _moving_boxes(s.moving, moving.boxes), moving.circle)
     out: dict[str, Any] = dict.fromkeys(NAMES)
@@ -117,7 +136,7 @@ def measure(run_dir: Path, case_dir: Path | None = None) -> Measured:
     out["path_length"] = _path_length(s.pose)
     out.update(_clearances("static", static_gaps))
     out.update(_clearances("humans", moving_gaps[:, humans]))
-    out.update(_zones(run_dir, case_dir, s, np.hstack((static_gaps, moving_gaps)), (*statics.names, *moving.names)))
+    out.update(_zones(spec, s, np.hstack((static_gaps, moving_gaps)), (*statics.names, *moving.names)))
     out.update(_motion(s, t1 - t0, out["path_length"]))
     return Measured({k: None if isinstance(v, float) and not math.isfinite(v) else v for k, v in out.items()}, notes)
 
@@ -306,6 +325,34 @@ def _path_length(pose: np.ndarray) -> float:
     return float(np.hypot(np.diff(pose[:, 0]), np.diff(pose[:, 1])).sum())
 
 
+def _near(statics: _Obstacles, pose: np.ndarray, robot_size: tuple[float, float], close: float) -> _Obstacles:
+    """The static obstacles that can matter to the run: for some sample, the nearest one, or one within the close
+    threshold (a contact included) -- the others change no metric. A large room has thousands of walls and the
+    gaps are samples x obstacles, so each block of samples keeps only the obstacles whose least possible gap
+    (centre distance to the block's box of robot positions, less both circumradii) is within the block's
+    bound on the nearest gap (a gap is at most the centres' distance) or within the close threshold and a margin.
+    """
+    n = len(statics.names)
+    if n == 0 or len(pose) == 0:
+        return statics
+    centres = statics.boxes[:, :2]
+    radii = np.where(statics.circle, statics.boxes[:, 3] / 2, np.hypot(statics.boxes[:, 3], statics.boxes[:, 4]) / 2)
+    robot_radius = math.hypot(*robot_size) / 2
+    keep = np.zeros(n, dtype=bool)
+    for a in range(0, len(pose), _NEAR_BLOCK):
+        xy = pose[a:a + _NEAR_BLOCK, :2]
+        low, high = xy.min(axis=0), xy.max(axis=0)
+        inside = np.clip(centres, low, high)
+        nearest = np.hypot(*(centres - inside).T)  # least centre distance over the block's box
+        farthest = np.hypot(*np.maximum(np.abs(centres - low), np.abs(centres - high)).T)
+        bound = max(float(farthest.min()), close + _CONTACT_MARGIN)
+        keep |= nearest - robot_radius - radii <= bound
+    if keep.all():
+        return statics
+    return _Obstacles(tuple(name for name, k in zip(statics.names, keep, strict=True) if k), statics.boxes[keep],
+                      statics.circle[keep])
+
+
 def _gaps(pose: np.ndarray, robot_size: tuple[float, float], boxes: np.ndarray, circle: np.ndarray) -> np.ndarray:
     n = boxes.shape[-2] if boxes.ndim >= 2 else 0
     out = np.empty((len(pose), n))
@@ -336,14 +383,11 @@ def _clearances(which: str, gaps: np.ndarray) -> dict[str, float | None]:
     return {f"clearance_{which}_min": float(least.min()), f"clearance_{which}_mean_min": float(least.mean())}
 
 
-def _zones(run_dir: Path, case_dir: Path, s: _States, gaps: np.ndarray,
-           names: Sequence[str]) -> dict[str, Value]:
+def _zones(spec: MonitorSpec | None, s: _States, gaps: np.ndarray, names: Sequence[str]) -> dict[str, Value]:
     """The monitor's zones (queries/geometry.drl): COLLISION with an object when the simulator reports contact
     or the gap is below the collision threshold, CLOSE when it is below the close threshold; the robot is in
     COLLISION when it collides with anything, else CLOSE when it is close to anything."""
-    try:
-        spec = read_monitor(case_dir / "monitor.json")
-    except (ArtifactError, OSError):
+    if spec is None:
         return {"close_time": None, "collision_time": None, "collision_episodes": None, "collision_objects": None}
     column = {name: k for k, name in enumerate(names)}
     contact = np.zeros(gaps.shape, dtype=bool)

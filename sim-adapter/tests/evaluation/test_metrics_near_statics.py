@@ -1,0 +1,52 @@
+# SPDX-License-Identifier: EPL-2.0
+"""The metrics consider only the static obstacles near the robot's path (a large room has thousands of walls):
+the obstacles left out change no figure -- every sample's least gap and every gap within the close threshold
+are the same as with all of them."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from rei.evaluation.metrics.compute import _CONTACT_MARGIN, _gaps, _near, _Obstacles
+
+ROBOT = (0.281, 0.306)
+
+
+def _walls(rng: np.random.Generator, n: int) -> _Obstacles:
+    boxes = np.column_stack([rng.uniform(0, 40, n), rng.uniform(0, 25, n), rng.uniform(-np.pi, np.pi, n),
+                             rng.uniform(0.05, 3.0, n), rng.uniform(0.05, 0.6, n)])
+    circle = rng.random(n) < 0.2
+    return _Obstacles(tuple(f"W_{k}" for k in range(n)), boxes, circle)
+
+
+def _drive(rng: np.random.Generator, samples: int) -> np.ndarray:
+    """A wandering path at 20 Hz and about 0.3 m/s."""
+    heading = np.cumsum(rng.normal(0, 0.15, samples))
+    xy = np.array([20.0, 12.0]) + np.cumsum(0.015 * np.column_stack([np.cos(heading), np.sin(heading)]), axis=0)
+    return np.column_stack([xy, heading])
+
+
+@pytest.mark.parametrize("seed", [1, 2])
+@pytest.mark.parametrize("close", [0.0, 0.25, 2.0])
+def test_left_out_obstacles_change_no_least_gap_and_no_close_gap(seed: int, close: float) -> None:
+    rng = np.random.default_rng(seed)
+    walls, pose = _walls(rng, 1200), _drive(rng, 600)
+    near = _near(walls, pose, ROBOT, close)
+    assert 0 < len(near.names) < len(walls.names) / 3  # it does leave most of them out
+    every = _gaps(pose, ROBOT, walls.boxes, walls.circle)
+    kept = _gaps(pose, ROBOT, near.boxes, near.circle)
+    np.testing.assert_array_equal(kept.min(axis=1), every.min(axis=1))
+    column = {name: k for k, name in enumerate(walls.names)}
+    np.testing.assert_array_equal(kept, every[:, [column[name] for name in near.names]])
+    reach = close + _CONTACT_MARGIN
+    assert set(zip(*np.nonzero(every < reach), strict=True)) == {
+        (row, column[near.names[col]]) for row, col in zip(*np.nonzero(kept < reach), strict=True)}
+
+
+def test_a_room_without_static_obstacles_or_samples() -> None:
+    rng = np.random.default_rng(0)
+    empty = _Obstacles((), np.zeros((0, 5)), np.zeros(0, dtype=bool))
+    assert _near(empty, _drive(rng, 10), ROBOT, 0.25) is empty
+    walls = _walls(rng, 10)
+    assert _near(walls, np.zeros((0, 3)), ROBOT, 0.25) is walls
