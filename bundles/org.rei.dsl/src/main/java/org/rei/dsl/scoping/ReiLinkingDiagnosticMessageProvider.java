@@ -35,6 +35,9 @@ public class ReiLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessag
 
 	private static final int MAX_LISTED = 8;
 
+	/** A map room's floor is missing because its map is unusable: the map's error is the one to read. */
+	private static final String SAID_ON_THE_MAP = "";
+
 	@Inject
 	private IScopeProvider scopeProvider;
 
@@ -42,6 +45,9 @@ public class ReiLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessag
 	public DiagnosticMessage getUnresolvedProxyMessage(ILinkingDiagnosticContext context) {
 		EClass target = context.getReference().getEReferenceType();
 		String onMap = mapBlockMessage(context);
+		if (SAID_ON_THE_MAP.equals(onMap)) {
+			return null; // no diagnostic: the map's own error says why the room has no such floor
+		}
 		if (onMap != null) {
 			return new DiagnosticMessage(onMap, Severity.ERROR, Diagnostic.LINKING_DIAGNOSTIC);
 		}
@@ -53,7 +59,8 @@ public class ReiLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessag
 
 	/**
 	 * In a room from an occupancy map, a name {@code F_x_y} that is no floor names a block of the map that is not
-	 * free, or none: say which, and why, instead of listing floors.
+	 * free, or none: say which, and why, instead of listing floors ({@link #SAID_ON_THE_MAP} when the map itself
+	 * is unusable: unreadable, a floor size that is not positive, or too many floors).
 	 */
 	private static String mapBlockMessage(ILinkingDiagnosticContext context) {
 		EClass target = context.getReference().getEReferenceType();
@@ -66,9 +73,12 @@ public class ReiLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessag
 			return null;
 		}
 		Optional<Cell> block = MapFiles.blockOf(context.getLinkText());
-		Optional<FloorBlocks> blocks = RoomDesugaring.freeBlocks(layout);
-		if (block.isEmpty() || blocks.isEmpty()) {
+		if (block.isEmpty()) {
 			return null;
+		}
+		Optional<FloorBlocks> blocks = RoomDesugaring.freeBlocks(layout);
+		if (blocks.isEmpty() || blocks.get().freeCount() > RoomDesugaring.MAX_MAP_FLOORS) {
+			return SAID_ON_THE_MAP;
 		}
 		int x = block.get().x();
 		int y = block.get().y();
@@ -80,7 +90,7 @@ public class ReiLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessag
 					+ (map.columns() - 1) + "_" + (map.rows() - 1) + ")";
 		}
 		if (map.isFree(x, y)) {
-			return null; // a free block that is still no floor: too many floors, reported on the map
+			return null; // cannot be: a free block is a floor
 		}
 		return context.getLinkText() + " is not a free floor of " + file + ": " + map.obstacleCells(x, y) + " of its "
 				+ map.cells(x, y) + " cells are obstacles" + (layout.isUnknownFree() ? "" : " (occupied or unknown)");
