@@ -187,3 +187,31 @@ def test_a_resumed_tpe_search_does_not_enqueue_its_design_again(tmp_path: Path,
     asked = [t.params for t in resumed.study.trials if t.user_attrs.get("simulated")]
     assert len(asked) == 12 and asked[:8] == design  # the rest of the design, once, then TPE's own points
     assert all(params not in design for params in asked[8:])
+
+
+class LatePool(FakePool):
+    """FakePool's runs, each ending a little later in a thread of its own (the ready candidate is waiting then)."""
+
+    def submit(self, task: Any) -> Any:
+        from concurrent.futures import Future
+
+        done = super().submit(task)
+        late: Future[Any] = Future()
+        threading.Timer(0.05 * (1 + len(self.ran) % 3), lambda: late.set_result(done.result())).start()
+        return late
+
+
+def test_with_one_worker_the_candidates_do_not_depend_on_when_runs_end(tmp_path: Path,
+                                                                      monkeypatch: pytest.MonkeyPatch) -> None:
+    # the ready candidate starts before the finished run is told; asks and tells keep their order, so TPE asks for
+    # the same points whether a run ends before its successor is ready or after
+    text = TPE_SPEC.replace("budget: 40", "budget: 14")
+    (tmp_path / "a").mkdir()
+    (tmp_path / "b").mkdir()
+    at_once = search(tmp_path / "a", monkeypatch, FakePool(even_seed_fails), text=text)
+    at_once.run()
+    later = search(tmp_path / "b", monkeypatch, LatePool(even_seed_fails), text=text)
+    later.run()
+    assert len(at_once.study.trials) == len(later.study.trials) == 14
+    assert [t.params for t in at_once.study.trials] == [t.params for t in later.study.trials]
+    assert [t.values for t in at_once.study.trials] == [t.values for t in later.study.trials]

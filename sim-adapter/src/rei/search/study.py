@@ -167,8 +167,8 @@ class Search:
 
     def _loop(self) -> None:
         """Keeps every worker busy and one candidate ready beside them: the next one is asked, edited and generated
-        while the runs go on, so a worker that ends gets it at once (TPE's constant liar treats the ready one as
-        running)."""
+        while the runs go on, so a worker that ends gets it at once, before its run is read and told (TPE's
+        constant liar treats the ready one as running)."""
         running: dict[Future[Outcome], Prepared] = {}
         ready: Prepared | None = None
         tries = 0
@@ -194,8 +194,14 @@ class Search:
                     self.log(f"search: stopped after {tries} candidates, most of them not valid: widen the domains")
                 return
             done, _ = wait(running, timeout=0.5, return_when=FIRST_COMPLETED)
-            for future in done:
-                trial, candidate, task = running.pop(future)
+            finished = [(future, running.pop(future)) for future in done]
+            if finished and ready is not None and not self.stop.is_set():
+                # the ready candidate starts on the freed worker before the finished runs are read and told
+                # (reading a failing run's streams for its failures' places takes a while); asks and tells keep
+                # their order, so the candidates are the same as if it started after them
+                running[self.pool.submit(ready[2])] = ready
+                ready = None
+            for future, (trial, candidate, task) in finished:
                 self._finish(trial, candidate, task, future.result())
 
     def _prepare(self) -> Prepared | None:
