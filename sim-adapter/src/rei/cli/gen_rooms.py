@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: EPL-2.0
-"""`rei gen-rooms --size S [--density D] [--humans N] --count K --seed S [--catalogue FILE] -o DIR`: procedural
-test rooms.
+"""`rei gen-rooms --size S|--map FILE.yaml [--density D] [--humans N] --count K --seed S [--catalogue FILE] -o DIR`:
+procedural test rooms.
 
 Writes K `.rei` test cases (thesis 7.4): a grid of floors with walls, furniture from the catalogue, humans
 walking lanes of free floors, the robot on the left wall and a mission whose first goal is on the right wall.
@@ -8,8 +8,11 @@ The same settings and seed always give the same files. Sizes: small 7 x 5 m (den
 10 x 7 m (sparse: 9 objects, one walking human), large 15 x 10 m (sparse: 20 objects, two humans); see
 docs/campaigns.md. `--catalogue FILE` furnishes the rooms with a user catalogue's object types instead (equally
 frequent, at most 1.2 x 1.2 m each) and gives the robot its robot type (`--robot NAME` when it has several); the
-rooms import it. Every leg of every mission is checked with the reference navigation's planner (`--no-check`
-skips it). Exit 0: written; 1: a room failed the check; 2: bad arguments or an invalid catalogue.
+rooms import it. `--map FILE.yaml` furnishes a real building instead: a ROS occupancy map (map_server format),
+its free blocks of `--floor-size` metres (1.0 by default) as floors, the rooms written as `occupancy` rooms that
+name the map by its path relative to them (rei.rooms.on_map; a room drawn on a map is drawn again until the planner
+finds every leg). Every leg of every mission is checked with the reference navigation's planner (`--no-check`
+skips it). Exit 0: written; 1: a room failed the check; 2: bad arguments, an invalid catalogue or map.
 """
 
 from __future__ import annotations
@@ -27,7 +30,14 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
 
     parser = subparsers.add_parser("gen-rooms", help="generate procedural test rooms (.rei files)",
                                    description=__doc__.split("\n\n", 1)[1] if __doc__ else None)
-    parser.add_argument("--size", choices=SIZES, required=True, help="room class")
+    where = parser.add_mutually_exclusive_group(required=True)
+    where.add_argument("--size", choices=SIZES, help="room class")
+    where.add_argument("--map", type=Path, metavar="FILE.yaml",
+                       help="furnish this occupancy map (ROS map_server YAML) instead of a grid room")
+    parser.add_argument("--floor-size", type=float, metavar="M",
+                        help="with --map: the edge of a floor block, m (default 1.0)")
+    parser.add_argument("--unknown-free", action="store_true",
+                        help="with --map: unknown cells are floor (default: obstacles)")
     parser.add_argument("--density", choices=DENSITIES, help="furniture density (default: the class's)")
     parser.add_argument("--humans", type=int, metavar="N", help="walking humans (default: the class's)")
     parser.add_argument("--count", type=int, default=1, metavar="K", help="rooms to write (default 1)")
@@ -48,9 +58,14 @@ def run(args: argparse.Namespace) -> int:
         raise CommandError(f"--count must be at least 1, got {args.count}")
     if args.robot is not None and args.catalogue is None:
         raise CommandError("--robot picks a robot type of --catalogue FILE: give the catalogue too")
+    if args.map is None and (args.floor_size is not None or args.unknown_free):
+        raise CommandError("--floor-size and --unknown-free describe the floors of --map FILE.yaml: give the map too")
     try:
         types = DEFAULT_TYPES if args.catalogue is None else room_types(args.catalogue, args.robot)
-        written = write_rooms(args.output, args.size, args.density, args.humans, args.seed, args.count, types)
+        if args.map is not None:
+            written = _write_map_rooms(args, types)
+        else:
+            written = write_rooms(args.output, args.size, args.density, args.humans, args.seed, args.count, types)
     except (ValueError, GenerationError) as error:
         raise CommandError(str(error)) from None
     except OSError as error:
@@ -62,6 +77,22 @@ def run(args: argparse.Namespace) -> int:
               + ("" if not problems else "  UNPLANNABLE: " + "; ".join(problems)))
         failed += bool(problems)
     return EXIT_INVALID if failed else EXIT_OK
+
+
+def _write_map_rooms(args: argparse.Namespace, types: Any) -> list[tuple[Any, Path]]:
+    from rei.maps import MapError
+    from rei.rooms import write_map_rooms
+    from rei.rooms.on_map import load_site
+
+    floor_size = 1.0 if args.floor_size is None else args.floor_size
+    if not floor_size > 0:
+        raise CommandError(f"--floor-size must be above 0 m, got {floor_size:g}")
+    try:
+        site = load_site(args.map, floor_size, args.unknown_free)
+    except MapError as error:
+        raise CommandError(str(error)) from None
+    return write_map_rooms(args.output, site, args.density, args.humans, args.seed, args.count, types,
+                           check=not args.no_check)
 
 
 def _check(room: Any) -> list[str]:

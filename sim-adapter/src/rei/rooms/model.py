@@ -11,6 +11,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from rei.maps import OccupancyMap
+
 Cell = tuple[int, int]
 
 #: Footprints (x, y) in metres of the default catalogue's STATIC types
@@ -98,6 +100,22 @@ class Goal:
 
 
 @dataclass(frozen=True, slots=True)
+class MapSite:
+    """A real building to furnish (``rei gen-rooms --map``): an occupancy map and its free floor blocks of
+    ``floor_size`` metres (rei.maps.floor_blocks), ``F_x_y`` counted from the map's origin."""
+
+    yaml: Path
+    floor_size: float
+    unknown_free: bool
+    free: frozenset[Cell]
+    occupancy: OccupancyMap = field(compare=False, repr=False)
+
+    def centre(self, cell: Cell) -> tuple[float, float]:
+        ox, oy, _ = self.occupancy.origin
+        return (ox + (cell[0] + 0.5) * self.floor_size, oy + (cell[1] + 0.5) * self.floor_size)
+
+
+@dataclass(frozen=True, slots=True)
 class Room:
     testcase: str
     size: str
@@ -111,14 +129,22 @@ class Room:
     furniture: tuple[Furniture, ...]
     walkers: tuple[Walker, ...]
     types: RoomTypes = DEFAULT_TYPES
+    site: MapSite | None = None  # a room on an occupancy map; None: a grid of 1 m floors with walls around
 
     @property
     def stem(self) -> str:
-        """File name without ``.rei``: sorts by class, seed and index."""
-        return f"{self.size}_{self.density}_h{len(self.walkers)}_s{self.seed}_{self.index:02d}"
+        """File name without ``.rei``: sorts by class (or map), seed and index."""
+        kind = self.size if self.site is None else self.site.yaml.stem
+        return f"{kind}_{self.density}_h{len(self.walkers)}_s{self.seed}_{self.index:02d}"
 
     def contains(self, cell: Cell) -> bool:
+        if self.site is not None:
+            return cell in self.site.free
         return 0 <= cell[0] < self.width and 0 <= cell[1] < self.height
+
+    def centre(self, cell: Cell) -> tuple[float, float]:
+        """The floor's centre in the world, m."""
+        return floor_centre(cell) if self.site is None else self.site.centre(cell)
 
 
 def floor_name(cell: Cell) -> str:
