@@ -73,7 +73,7 @@ class Plan:
 
 
 def plan_campaign(spec: Spec, out: Path) -> Plan:
-    from rei.rooms import generate_rooms, render
+    from rei.rooms import render
 
     out = out.resolve()
     cases: dict[str, CaseSource] = {}
@@ -82,7 +82,7 @@ def plan_campaign(spec: Spec, out: Path) -> Plan:
         sources: list[CaseSource] = []
         if group.rooms is not None:
             r = group.rooms
-            for room in generate_rooms(r.size, r.density, r.humans, r.seed, r.count, r.types):
+            for room in r.generate():
                 sources.append(CaseSource(room.stem, group.name, None, render(room, r.count, out / "rooms")))
         else:
             for path in group.cases:

@@ -35,7 +35,7 @@ from typing import Any
 import yaml
 
 from rei import located_yaml
-from rei.rooms.model import DEFAULT_TYPES, RoomTypes
+from rei.rooms.model import DEFAULT_TYPES, Room, RoomTypes
 from rei.sut.external.options import DEFAULT_DEADLINE, DEFAULT_JOIN_TIMEOUT
 
 MODES = ("replay", "pipeline")
@@ -77,14 +77,28 @@ class Variant:
 
 @dataclass(frozen=True, slots=True)
 class RoomSettings:
-    """``rei gen-rooms`` settings of a group."""
+    """``rei gen-rooms`` settings of a group: a room class (``size``), or an occupancy map to furnish (``map``,
+    with ``floor_size`` and ``unknown_free``: ``rei gen-rooms --map``)."""
 
-    size: str
+    size: str | None
     density: str | None = None
     humans: int | None = None
     count: int = 1
     seed: int = 0
     types: RoomTypes = DEFAULT_TYPES  # a user catalogue's furniture and robot (``catalogue``, ``robot``)
+    map: Path | None = None
+    floor_size: float = 1.0
+    unknown_free: bool = False
+
+    def generate(self, count: int | None = None) -> list[Room]:
+        """The first ``count`` rooms of these settings (default: ``count`` of the settings)."""
+        from rei.rooms import generate_map_rooms, generate_rooms, load_site
+
+        count = self.count if count is None else count
+        if self.map is None:
+            return generate_rooms(str(self.size), self.density, self.humans, self.seed, count, self.types)
+        site = load_site(self.map, self.floor_size, self.unknown_free)
+        return generate_map_rooms(site, self.density, self.humans, self.seed, count, self.types)
 
 
 @dataclass(frozen=True, slots=True)
@@ -177,20 +191,31 @@ def _group(r: _Reader, base: Path, controller: str, sut: ExternalSut | None, var
 
 
 def _rooms(r: _Reader, base: Path) -> RoomSettings:
-    from rei.rooms import generate_room
+    from rei.maps import MapError
+    from rei.rooms import GenerationError
     from rei.rooms.catalogue import room_types
 
-    r.only("size", "density", "humans", "count", "seed", "catalogue", "robot")
+    r.only("size", "map", "floor_size", "unknown_free", "density", "humans", "count", "seed", "catalogue", "robot")
     catalogue, robot = r.get("catalogue"), r.get("robot")
     if robot is not None and catalogue is None:
         raise SpecError(f"{r.where}: 'robot' picks a robot type of 'catalogue': give the catalogue too")
+    if (r.get("size") is None) == (r.get("map") is None):
+        raise SpecError(f"{r.where}: give exactly one of 'size' (a room class) and 'map' (an occupancy map's YAML "
+                        "file to furnish)")
+    if r.get("map") is None and (r.get("floor_size") is not None or r.get("unknown_free") is not None):
+        raise SpecError(f"{r.where}: 'floor_size' and 'unknown_free' describe the floors of 'map': give the map too")
     try:
         types = DEFAULT_TYPES if catalogue is None else room_types((base / str(catalogue)).resolve(),
                                                                     None if robot is None else str(robot))
-        settings = RoomSettings(size=r.str("size", None), density=r.get("density"), humans=r.get("humans"),
-                                count=r.int("count", 1, minimum=1), seed=r.int("seed", 0, minimum=0), types=types)
-        generate_room(settings.size, settings.density, settings.humans, settings.seed, 1, types)  # checks them
-    except (ValueError, TypeError) as error:
+        on_map = r.get("map") is not None
+        settings = RoomSettings(size=None if on_map else r.str("size", None), density=r.get("density"),
+                                humans=r.get("humans"), count=r.int("count", 1, minimum=1),
+                                seed=r.int("seed", 0, minimum=0), types=types,
+                                map=(base / r.str("map", None)).resolve() if on_map else None,
+                                floor_size=r.number("floor_size", 1.0),
+                                unknown_free=r.bool("unknown_free", False))
+        settings.generate(1)  # checks them
+    except (ValueError, TypeError, GenerationError, MapError) as error:
         raise SpecError(f"{r.where}: {error}") from None
     return settings
 

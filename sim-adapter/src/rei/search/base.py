@@ -9,7 +9,7 @@ import dataclasses
 from collections.abc import Callable
 from pathlib import Path
 
-from rei.rooms import write_rooms
+from rei.rooms import render
 from rei.rooms.render import ROBOT
 from rei.search.spec import SearchSpec
 
@@ -22,7 +22,10 @@ def with_base_case(spec: SearchSpec, out: Path, log: Callable[[str], None] = pri
     if spec.rooms is None:
         return spec
     rooms = spec.rooms
-    [(room, path)] = write_rooms(out / BASE, rooms.size, rooms.density, rooms.humans, rooms.seed, 1, rooms.types)
+    [room] = rooms.generate(1)
+    path = out / BASE / f"{room.stem}.rei"
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(render(room, 1, path.parent), encoding="utf-8")
     log(f"base case: {path} (generated room; `rei gen-rooms` with these settings writes the same first room)")
     log(f"  objects: {', '.join(f.name for f in room.furniture) or 'none'}; humans: "
         f"{', '.join(w.name for w in room.walkers) or 'none'}; robot: {ROBOT}; goals: 0 to {len(room.goals) - 1}")
