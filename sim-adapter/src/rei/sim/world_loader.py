@@ -7,14 +7,16 @@ needs fixed bodies to really be fixed. So the loader keeps the name <-> id map a
 
 Large rooms (an occupancy map's thousands of wall rectangles, a big grid's floors) do not fit one body per model:
 ``loadSDF`` refuses more than ``SDF_BODY_LIMIT`` models, and every body costs each physics step (about 8 us per
-body: 10,000 walls made a step 80 ms). Beyond that limit, the walls and the floors, which never move, are merged
-into one fixed body per category whose compound shape holds each model's box (its own AABB tree, so a step, a
-ray or a contact costs what the robot's neighbourhood holds); the other models are loaded from world.sdf as
-before. A contact with a merged body is named after the box nearest the contact point.
+body: 10,000 walls made a step 80 ms). Beyond that limit, the walls and the floors, which never move, are merged:
+fixed bodies whose compound shapes hold up to ``COMPOUND_LIMIT`` boxes each (pybullet's most), boxes near each
+other together (Z-order of their centres), so the broadphase still sees small bodies where they are; the other
+models are loaded from world.sdf as before. A contact with a merged body is named after its box nearest the
+contact point.
 """
 
 from __future__ import annotations
 
+import math
 import tempfile
 import xml.etree.ElementTree as ET
 from collections.abc import Mapping, Sequence
@@ -32,6 +34,8 @@ from rei.sim.native_output import quiet_native_output
 GRAVITY = 9.81
 SDF_BODY_LIMIT = 512
 """The most models pybullet's ``loadSDF`` loads from one file ("SDF exceeds body capacity")."""
+COMPOUND_LIMIT = 16
+"""The most children pybullet's ``createCollisionShapeArray`` keeps (it drops the others silently)."""
 MERGE_ABOVE = SDF_BODY_LIMIT
 """Worlds of more models than this have their walls and floors merged."""
 MERGED_CATEGORIES = (Category.WALL, Category.FLOOR)
@@ -157,11 +161,21 @@ def _load_large(
         body_of.update(zip(names, ids, strict=True))
     merged: dict[int, MergedBoxes] = {}
     for parts in boxes.values():
-        if parts:
-            boxes_body = _merge(client, parts)
-            merged[boxes_body.body] = boxes_body
-            body_of.update((name, boxes_body.body) for name in boxes_body.names)
+        order = sorted(range(len(parts)), key=lambda k: (_z_order(parts[k][1][0], parts[k][1][1]), k))
+        for start in range(0, len(order), COMPOUND_LIMIT):
+            chunk = _merge(client, [parts[k] for k in order[start:start + COMPOUND_LIMIT]])
+            merged[chunk.body] = chunk
+            body_of.update((name, chunk.body) for name in chunk.names)
     return expected, [body_of[n] for n in expected], merged
+
+
+def _z_order(x: float, y: float) -> int:
+    """The Morton code of the 1 m tile holding ``(x, y)``: near tiles have near codes."""
+    tx, ty = math.floor(x) + (1 << 15), math.floor(y) + (1 << 15)
+    code = 0
+    for bit in range(17):
+        code |= ((tx >> bit) & 1) << (2 * bit) | ((ty >> bit) & 1) << (2 * bit + 1)
+    return code
 
 
 def _fixed_box(model: ET.Element) -> tuple[tuple[float, ...], tuple[float, ...]] | None:
@@ -184,7 +198,7 @@ def _fixed_box(model: ET.Element) -> tuple[tuple[float, ...], tuple[float, ...]]
 
 
 def _merge(client: int, parts: list[tuple[str, tuple[float, ...], tuple[float, ...]]]) -> MergedBoxes:
-    """One fixed body whose compound shape holds every part's box at its pose."""
+    """One fixed body whose compound shape holds every part's box at its pose (at most ``COMPOUND_LIMIT``)."""
     poses = [pose for _, pose, _ in parts]
     sizes = [size for _, _, size in parts]
     shape = p.createCollisionShapeArray(
@@ -194,7 +208,8 @@ def _merge(client: int, parts: list[tuple[str, tuple[float, ...], tuple[float, .
         collisionFrameOrientations=[p.getQuaternionFromEuler(pose[3:]) for pose in poses],
         physicsClientId=client,
     )
-    body = p.createMultiBody(0.0, shape, -1, physicsClientId=client)
+    # A plain rigid body (maximal coordinates): a fixed one costs a step less than a multibody.
+    body = p.createMultiBody(0.0, shape, -1, useMaximalCoordinates=True, physicsClientId=client)
     yaws = np.array([pose[5] for pose in poses])
     return MergedBoxes(
         body=body,
