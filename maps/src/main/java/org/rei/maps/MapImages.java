@@ -237,7 +237,7 @@ final class MapImages {
 				palette[i][1] = Integer.parseInt(attribute(e, "green"));
 				palette[i][2] = Integer.parseInt(attribute(e, "blue"));
 			}
-			Node alphas = trns == null ? null : child(trns, "TRNS_Palette");
+			Node alphas = trns == null ? null : child(trns, "tRNS_Palette");
 			if (alphas != null) {
 				for (Node e = alphas.getFirstChild(); e != null; e = e.getNextSibling()) {
 					palette[Integer.parseInt(attribute(e, "index"))][3] = Integer.parseInt(attribute(e, "alpha"));
@@ -272,7 +272,7 @@ final class MapImages {
 			}
 		} else if (trns != null) {
 			// one colour (or grey) stands for transparent: alpha 0 there, opaque elsewhere
-			Node key = child(trns, grey ? "TRNS_Grayscale" : "TRNS_RGB");
+			Node key = child(trns, grey ? "tRNS_Grayscale" : "tRNS_RGB");
 			if (key != null) {
 				int[] k = grey ? new int[] { Integer.parseInt(attribute(key, "gray")) }
 						: new int[] { Integer.parseInt(attribute(key, "red")),
