@@ -11,7 +11,7 @@ import pytest
 from rei.run import MissionRunOptions, run_mission
 from rei.wamp.recording import read_recording
 
-EXAMPLES = ("simple_navigation", "warehouse", "l_shaped_office")
+EXAMPLES = ("simple_navigation", "warehouse", "l_shaped_office", "maps/two_rooms")
 
 
 @pytest.fixture(scope="session")
@@ -19,7 +19,7 @@ def cases(run_cli, repo_root: Path, tmp_path_factory: pytest.TempPathFactory) ->
     """Every example generated once for the session."""
     generated = {}
     for name in EXAMPLES:
-        out = tmp_path_factory.mktemp(name)
+        out = tmp_path_factory.mktemp(name.replace("/", "_"))
         result = run_cli("generate", repo_root / "examples" / f"{name}.rei", "-o", out)
         assert result.returncode == 0, result.stderr
         generated[name] = out
