@@ -56,7 +56,7 @@ export class Editor implements Actions {
   private accept(state: State): void {
     this.state = state;
     this.status = state;
-    this.index = new RoomIndex(state.diagram);
+    this.index = new RoomIndex(state.diagram, state.occupancy ?? null);
     this.issues = issuesByKey(state.issues);
     this.selection = this.existing(this.selection);
     const tool = this.tool;

@@ -297,6 +297,10 @@ export function goalNumber(index: RoomIndex, goalIndex: number): number {
 }
 
 export function layoutHint(index: RoomIndex): string {
+  if (index.occupancy !== null) {
+    return "The floors of this room are the free blocks of its occupancy map: edit the map (or floorSize) to change "
+      + "them.";
+  }
   return index.form === "map"
     ? "The floors and walls of this room come from its map: edit the map in the text to change them."
     : "The floors and walls of this room come from its size (`size C x R`): change the size in the text.";

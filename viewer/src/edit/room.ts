@@ -3,7 +3,7 @@
 // room can grow (ghosts), and every name in use. Hit-testing goes through the cell index, not through the
 // DOM, so a drop or a tool click finds its floor in O(1) even on a 100 x 100 room and even when an object or
 // a label covers the floor.
-import type { Diagram, FloorCell, Side } from "./types";
+import type { Diagram, FloorCell, Occupancy, Side } from "./types";
 import { SIDES } from "./types";
 
 export interface PlacedFloor extends FloorCell {
@@ -47,7 +47,8 @@ export class RoomIndex {
   private readonly originX: number;
   private readonly originY: number;
 
-  constructor(readonly diagram: Diagram) {
+  /** `occupancy`: the room is made from an occupancy map, whose free blocks are its floors. */
+  constructor(readonly diagram: Diagram, readonly occupancy: Occupancy | null = null) {
     const room = diagram.room;
     this.size = room !== null && room.floorSize > 0 ? room.floorSize : 1;
     let originX = 0;
@@ -81,7 +82,18 @@ export class RoomIndex {
 
   /** Floors and walls are statements of the text only in a floor graph; elsewhere the size or map makes them. */
   get editableLayout(): boolean {
-    return this.form === "graph";
+    return this.form === "graph" && this.occupancy === null;
+  }
+
+  /** Where the occupancy map's picture lies, in the diagram's metres: cell (0, 0) starts at the map's origin. */
+  pictureBox(): [number, number, number, number] | null {
+    const occupancy = this.occupancy;
+    if (occupancy === null) return null;
+    const [x0 = 0, y0 = 0, x1 = 0, y1 = 0] = occupancy.extent;
+    const [ox = 0, oy = 0] = occupancy.origin;
+    const dx = this.placed.length > 0 ? this.originX - ox : 0;
+    const dy = this.placed.length > 0 ? this.originY - oy : 0;
+    return [x0 + dx, y0 + dy, x1 + dx, y1 + dy];
   }
 
   cell(x: number, y: number): PlacedFloor | undefined {

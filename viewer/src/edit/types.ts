@@ -3,7 +3,7 @@
 // are bundles/org.rei.dsl.edit/.../diagram/Diagram.java written by Jackson: every component by name, nulls kept.
 // Units: metres, seconds, degrees; x right, y up, origin at the room's bottom-left corner.
 
-export type RoomForm = "grid" | "map" | "graph";
+export type RoomForm = "grid" | "map" | "graph" | "occupancy";
 export type Side = "top" | "right" | "bottom" | "left";
 export const SIDES: readonly Side[] = ["top", "right", "bottom", "left"];
 
@@ -142,6 +142,14 @@ export interface Status {
   canRedo: boolean;
 }
 
+/** A room from an occupancy map: the map the text names, as a PNG data URI whose first row is the top, over
+ * `extent` [xmin, ymin, xmax, ymax], the map's `origin` [x, y] (metres). */
+export interface Occupancy {
+  png: string;
+  extent: number[];
+  origin: number[];
+}
+
 export interface State extends Status {
   file: string;
   text: string;
@@ -149,6 +157,8 @@ export interface State extends Status {
   issues: Issue[];
   palette: PaletteType[];
   notice: string | null;
+  /** Null unless the room is made from an occupancy map that can be read. */
+  occupancy: Occupancy | null;
 }
 
 export interface PointSpec {

@@ -6,7 +6,7 @@ import type { PathDraft, Selection } from "../model";
 import { selectionKey } from "../model";
 import type { RoomIndex } from "../room";
 import { placed } from "../room";
-import { clear, svg } from "../svg";
+import { clear, r, svg, Y } from "../svg";
 import type { Footprint, Issue } from "../types";
 import type { Bounds } from "../viewport";
 import { Viewport } from "../viewport";
@@ -32,6 +32,8 @@ export class DiagramView {
   readonly world: SVGGElement;
   readonly view: Viewport;
   private readonly floorLayer: FloorLayer;
+  private readonly map: SVGGElement;
+  private mapDrawn = "";
   private readonly walls: SVGGElement;
   private readonly route: SVGGElement;
   private readonly objects: SVGGElement;
@@ -52,6 +54,7 @@ export class DiagramView {
   constructor(readonly root: SVGSVGElement, labelBox: HTMLElement) {
     this.world = svg("g", { class: "world" }, root);
     const layer = (name: string): SVGGElement => svg("g", { class: `layer ${name}` }, this.world);
+    this.map = layer("map");
     const floors = layer("floors");
     const ghosts = layer("ghosts");
     this.walls = layer("walls");
@@ -80,6 +83,7 @@ export class DiagramView {
   render(input: RenderInput): void {
     const { index } = input;
     this.index = index;
+    this.drawMap(index);
     if (this.floorLayer.update(index)) this.labelledFloors = index.placed.length;
     const registry: Registry = new Map();
     for (const group of [this.walls, this.route, this.objects, this.movers, this.robot, this.goals, this.labels,
@@ -104,6 +108,22 @@ export class DiagramView {
     }
     this.showIssueLabels(input);
     this.zoomed();
+  }
+
+  /** A room from an occupancy map: the map's picture under the floors (which the page's style makes translucent
+   * over it), its first row at the top, cells kept sharp; replaced only when the picture or its place changed. */
+  private drawMap(index: RoomIndex): void {
+    const box = index.pictureBox();
+    const png = index.occupancy?.png ?? "";
+    const drawn = box === null ? "" : `${png.length}:${png.slice(-64)}:${box.join(",")}`;
+    this.root.classList.toggle("over-map", box !== null);
+    if (drawn === this.mapDrawn) return;
+    this.mapDrawn = drawn;
+    clear(this.map);
+    if (box === null) return;
+    const [x0, y0, x1, y1] = box;
+    svg("image", { href: png, x: r(x0), y: r(Y(y1)), width: r(x1 - x0), height: r(y1 - y0),
+      preserveAspectRatio: "none", "image-rendering": "pixelated", "data-kind": "map" }, this.map);
   }
 
   /** The classes `selected` and `has-issue`: on floors through the floor layer, on the rest through the registry. */
@@ -211,6 +231,11 @@ export class DiagramView {
       const around = index.editableLayout ? index.size : 0;
       for (const floor of index.placed) grow(floor.centreX, floor.centreY, half + around);
       for (const wall of index.diagram.room?.walls ?? []) grow(wall.x, wall.y, Math.max(wall.sizeX, wall.sizeY) / 2);
+      const picture = index.pictureBox();  // a map room: its whole map, not only the free floors
+      if (picture !== null) {
+        grow(picture[0], picture[1]);
+        grow(picture[2], picture[3]);
+      }
     }
     const [x0 = 0, y0 = 0, x1 = 1, y1 = 1] = box;
     return Number.isFinite(x0) ? [x0, y0, x1, y1] : [0, 0, 1, 1];

@@ -1,0 +1,66 @@
+# SPDX-License-Identifier: EPL-2.0
+"""The occupancy map under a room from an occupancy map, for the room editor's page: the map the text names
+(``room NAME occupancy "FILE.yaml"``, relative to the file), as the picture the report and the live view draw.
+
+The engine's diagram gives the floors (the map's free blocks) but not the map; the map is found in the text, so
+an edit of the path shows at once. A map that cannot be read gives no picture: the validator already puts its
+error on the room. Pictures are kept while the map's files are unchanged, so a State costs no map reading.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+from typing import Any
+
+from rei.maps import MapError, load_map, map_picture
+
+#: ``room NAME occupancy "PATH"``: the room form's keyword and its string (docs/language.md).
+_OCCUPANCY = re.compile(r'\broom\s+\^?\w+\s+occupancy\s+"((?:[^"\\\n]|\\.)*)"')
+
+
+class MapPictures:
+    """The picture of the map a test case's text names, cached by the map files' modification times."""
+
+    def __init__(self, folder: Path) -> None:
+        self.folder = folder
+        self._key: tuple[Any, ...] | None = None
+        self._value: dict[str, Any] | None = None
+
+    def of_text(self, text: str) -> dict[str, Any] | None:
+        """``{png, extent, origin}`` (a data URI, the metres it covers, the map's origin), or None."""
+        found = _OCCUPANCY.search(_without_comments(text))
+        if found is None:
+            return None
+        yaml = Path(found.group(1).replace('\\"', '"').replace("\\\\", "\\"))
+        yaml = yaml if yaml.is_absolute() else self.folder / yaml
+        key = (yaml, *_stamps(yaml))
+        if key != self._key:
+            self._key, self._value = key, _picture(yaml)
+        return self._value
+
+
+def _picture(yaml: Path) -> dict[str, Any] | None:
+    try:
+        occupancy = load_map(yaml)
+    except MapError:
+        return None
+    picture = map_picture(occupancy)
+    return {"png": picture.data_uri(), "extent": list(picture.extent), "origin": list(occupancy.origin[:2])}
+
+
+def _stamps(yaml: Path) -> tuple[int | None, ...]:
+    """The YAML's and the images' (any file beside it) modification times: a changed map is read again."""
+    stamps: list[int | None] = []
+    for path in (yaml, *sorted(yaml.parent.glob(f"{yaml.stem}*"))) if yaml.parent.is_dir() else (yaml,):
+        try:
+            stamps.append(path.stat().st_mtime_ns)
+        except OSError:
+            stamps.append(None)
+    return tuple(stamps)
+
+
+def _without_comments(text: str) -> str:
+    """The text with its ``//`` and ``/* */`` comments blanked (strings kept), so a commented-out room is not read."""
+    return re.sub(r'"(?:[^"\\\n]|\\.)*"|//[^\n]*|/\*.*?\*/',
+                  lambda m: m.group(0) if m.group(0).startswith('"') else " ", text, flags=re.DOTALL)
