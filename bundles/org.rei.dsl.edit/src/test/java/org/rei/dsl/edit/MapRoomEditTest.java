@@ -1,0 +1,81 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.dsl.edit;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.rei.context.Direction;
+import org.rei.dsl.edit.EditOperation.AddGoal;
+import org.rei.dsl.edit.EditOperation.AddObject;
+import org.rei.dsl.edit.EditOperation.AddWall;
+import org.rei.dsl.edit.EditOperation.MoveObject;
+
+/**
+ * A room from an occupancy map (the DSL tests' 12 x 8 cell map, six free blocks of 0.2 m) is edited like every
+ * other room: furniture and goals on its free floors, saved through the serializer without touching the map line.
+ */
+class MapRoomEditTest {
+
+	private static final String TEXT = """
+			testcase T {
+			  // the map's YAML is beside this file
+			  room R occupancy "small.yaml" unknownFree floorSize 0.2 {
+			    object crate : Box on F_4_2
+			    robot r : Waffle on F_2_1
+			  }
+			  mission M { goto F_4_1 goto F_2_2 }
+			}
+			""";
+
+	private static Path write(Path folder) throws IOException {
+		Path maps = Texts.repository().resolve("bundles/org.rei.dsl/src/test/resources/maps");
+		Files.copy(maps.resolve("small.yaml"), folder.resolve("small.yaml"));
+		Files.copy(maps.resolve("small.pgm"), folder.resolve("small.pgm"));
+		Path file = folder.resolve("room.rei");
+		Files.writeString(file, TEXT);
+		return file;
+	}
+
+	@Test
+	void furnitureAndGoalsAreSavedThroughTheSerializer(@TempDir Path folder) throws IOException {
+		RoomDocument document = RoomDocument.open(write(folder));
+		String original = document.text();
+		List<EditOperation> batch = List.of(new AddObject("bin", "Bin", "F_3_2"), new MoveObject("r", "F_3_1"),
+				new AddGoal("F_1_2", 2, null));
+		EditResult result = document.apply(batch);
+
+		assertEquals(List.of("-    robot r : Waffle on F_2_1", "+    object bin : Bin on F_3_2",
+				"+    robot r : Waffle on F_3_1", "-  mission M { goto F_4_1 goto F_2_2 }",
+				"+  mission M { goto F_4_1 goto F_2_2 goto F_1_2 }"), Texts.diff(original, result.text()));
+		assertEquals(List.of(), result.issues());
+		assertTrue(result.text().contains("  room R occupancy \"small.yaml\" unknownFree floorSize 0.2 {\n"),
+				result.text());
+		assertTrue(!result.text().contains("floor F"), "the map's floors stay derived: " + result.text());
+		Texts.assertReadsBackAsEdited(original, document.uri(), result.text(), batch.toArray(EditOperation[]::new));
+
+		assertEquals("occupancy", document.diagram().room().form());
+		assertEquals(7, document.diagram().room().floors().size());
+		assertEquals(List.of(), document.diagram().room().walls());
+		assertEquals(original, document.undo().text());
+	}
+
+	@Test
+	void aMapRoomRefusesWalls(@TempDir Path folder) throws IOException {
+		RoomDocument document = RoomDocument.open(write(folder));
+		EditRefusedException refused = assertThrows(EditRefusedException.class,
+				() -> document.apply(new AddWall("W", "F_2_1", Direction.LEFT)));
+		assertEquals("Cannot add wall W: room 'R' derives its floors from the occupancy map small.yaml; change the "
+				+ "map or the floor size", refused.getMessage());
+	}
+}
