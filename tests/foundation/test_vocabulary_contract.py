@@ -27,6 +27,7 @@ from rei.mission.executor import MissionEventKind
 from rei.run import jvm
 from rei.sut.external import protocol
 from rei.sut.external.process import Connection
+from rei.wamp.crossbar_config import MAX_MESSAGE_SIZE
 from rei.wamp.topics import RUN_ID_PATTERN, TOPIC_NAMES, TOPIC_TEMPLATE, Topics
 
 HERE = Path(__file__).parent
@@ -49,6 +50,7 @@ def java_facts(java, monitor_jar: Path, sut_kit_jar: Path, room_editor_jar: Path
 def test_python_copies(contract: dict) -> None:
     assert RUN_ID_PATTERN == contract["run_id_pattern"]
     assert TOPIC_TEMPLATE == contract["topic_template"]
+    assert MAX_MESSAGE_SIZE == contract["max_message_size"]
     assert TOPIC_NAMES == tuple(contract["topics"])
     topics = Topics("r1")
     assert [getattr(topics, name) for name in TOPIC_NAMES] == [
@@ -67,6 +69,7 @@ def test_python_copies(contract: dict) -> None:
 def test_java_copies(contract: dict, java_facts: dict) -> None:
     assert java_facts["run_id_pattern"] == contract["run_id_pattern"]
     assert java_facts["topic_template"] == contract["topic_template"].removesuffix("{name}")
+    assert java_facts["max_message_size"] == java_facts["sut_max_message_size"] == contract["max_message_size"]
     assert java_facts["mission_events"] == java_facts["vepl_mission_events"] == contract["mission_events"]
     assert java_facts["signal_record"] == java_facts["signal_payload"] == contract["signal_record"]
     sut = contract["sut"]

@@ -11,6 +11,7 @@ import org.rei.dsl.edit.EditOperation;
 import org.rei.dsl.edit.server.Protocol;
 import org.rei.monitor.config.MonitorSpec;
 import org.rei.monitor.signals.Signal;
+import org.rei.monitor.wamp.LiveMonitor;
 import org.rei.sut.kit.SutClient;
 import org.rei.vepl.runtime.MissionEvent;
 import org.rei.vepl.validation.VeplValidator;
@@ -27,6 +28,8 @@ public final class JavaVocabulary {
 		Map<String, Object> facts = new LinkedHashMap<>();
 		facts.put("run_id_pattern", MonitorSpec.RUN_ID_PATTERN);
 		facts.put("topic_template", MonitorSpec.TOPIC_TEMPLATE);
+		facts.put("max_message_size", LiveMonitor.MAX_MESSAGE_SIZE);
+		facts.put("sut_max_message_size", SutClient.MAX_MESSAGE_SIZE);
 		facts.put("mission_events", MissionEvent.KINDS);
 		facts.put("vepl_mission_events", VeplValidator.MISSION_EVENTS);
 		facts.put("signal_record", Arrays.stream(Signal.class.getRecordComponents()).map(c -> c.getName()).toList());

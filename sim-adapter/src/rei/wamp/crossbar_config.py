@@ -16,8 +16,10 @@ from typing import Any, Literal
 TransportKind = Literal["websocket", "rawsocket"]
 Serializer = Literal["msgpack", "json", "cbor"]
 
-#: Largest WAMP message the router accepts (bytes). A 360-beam full state is ~4 KB; a world is well below this.
-MAX_MESSAGE_SIZE = 1 << 20
+#: Largest WAMP message the router accepts and the Java clients read (bytes; contract/vocabulary.json). A 360-beam
+#: state is ~4 KB, but a full frame lists every static obstacle and the config RPC carries world.json: a room from
+#: an occupancy map has thousands of walls (the depot's full frame is 130 KB, its world.json 460 KB).
+MAX_MESSAGE_SIZE = 1 << 24
 
 
 @dataclass(frozen=True, slots=True)

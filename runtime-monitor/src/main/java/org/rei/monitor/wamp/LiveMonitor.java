@@ -33,6 +33,7 @@ import ws.wamp.jawampa.WampClient;
 import ws.wamp.jawampa.WampClientBuilder;
 import ws.wamp.jawampa.WampSerialization;
 import ws.wamp.jawampa.transport.netty.NettyWampClientConnectorProvider;
+import ws.wamp.jawampa.transport.netty.NettyWampConnectionConfig;
 
 /**
  * Live mode: joins realm {@code rei} over WebSocket with msgpack (jawampa on netty; netty enables TCP_NODELAY on
@@ -55,6 +56,11 @@ public final class LiveMonitor implements AutoCloseable {
 	 * ~6 s of simulated state after a restart, paced to real time).
 	 */
 	private static final int RECONNECT_MILLIS = 200;
+	/**
+	 * Largest message read (bytes; contract/vocabulary.json's max_message_size, the router's limit too). netty's
+	 * default of 64 KB closed the connection at every full frame of a room with a thousand walls (an occupancy map).
+	 */
+	public static final int MAX_MESSAGE_SIZE = 1 << 24;
 	/** Bounds of close(): the router may be gone for good. */
 	private static final long CLOSE_OUTBOX_MILLIS = 5_000;
 	private static final long CLOSE_SESSION_SECONDS = 10;
@@ -94,6 +100,8 @@ public final class LiveMonitor implements AutoCloseable {
 		this.log = log;
 		WampClientBuilder builder = new WampClientBuilder()
 				.withConnectorProvider(new NettyWampClientConnectorProvider()).withUri(router).withRealm(realm)
+				.withConnectionConfiguration(
+						new NettyWampConnectionConfig.Builder().withMaxFramePayloadLength(MAX_MESSAGE_SIZE).build())
 				.withSerializations(new WampSerialization[] { WampSerialization.MessagePack })
 				.withInfiniteReconnects().withReconnectInterval(RECONNECT_MILLIS, TimeUnit.MILLISECONDS);
 		if (credentials != null) {

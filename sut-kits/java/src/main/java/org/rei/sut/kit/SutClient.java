@@ -28,6 +28,7 @@ import ws.wamp.jawampa.PublishFlags;
 import ws.wamp.jawampa.WampClient;
 import ws.wamp.jawampa.WampClientBuilder;
 import ws.wamp.jawampa.WampSerialization;
+import ws.wamp.jawampa.transport.netty.NettyWampConnectionConfig;
 
 /**
  * Connects a {@link SystemUnderTest} to a run's router (docs/sut.md): WAMP-CRA as {@code sut}, msgpack over
@@ -57,6 +58,11 @@ public final class SutClient {
 
 	/** The protocol's URIs, {@code name} one of the lists below (docs/sut.md; contract/vocabulary.json). */
 	public static final String URI_TEMPLATE = "rei.run.{run_id}.sut.{name}";
+	/**
+	 * Largest message read (bytes; contract/vocabulary.json's max_message_size): hello carries the static map, which
+	 * in a room from an occupancy map lists thousands of walls, beyond netty's default of 64 KB.
+	 */
+	public static final int MAX_MESSAGE_SIZE = 1 << 24;
 	public static final String COMMAND = "command";
 	public static final String STATUS = "status";
 	public static final String HELLO = "hello";
@@ -192,6 +198,8 @@ public final class SutClient {
 			client = new WampClientBuilder()
 					.withConnectorProvider(new SubscribedSignal(() -> inbox.add(new Subscribed())))
 					.withUri(routerUrl).withRealm(realm)
+					.withConnectionConfiguration(
+							new NettyWampConnectionConfig.Builder().withMaxFramePayloadLength(MAX_MESSAGE_SIZE).build())
 					.withSerializations(new WampSerialization[] { WampSerialization.MessagePack })
 					.withAuthId(credentials.authid()).withAuthMethod(credentials.authentication()).build();
 		} catch (Exception e) {
