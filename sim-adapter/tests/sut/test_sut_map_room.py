@@ -52,3 +52,20 @@ def test_other_rooms_keep_the_rasterized_rectangles() -> None:
     cells = grid.data.reshape(grid.height, grid.width)
     assert (grid.x0, grid.y0, grid.resolution) == (-0.5, -0.5, 0.05)
     assert int((cells == 100).sum()) == 8 * 4 and set(np.unique(cells).tolist()) == {0, 100}
+
+
+def test_both_bridges_messages_carry_the_map_room_s_grid() -> None:
+    from rei.sut.ros1.environment import import_rospy
+    from rei.sut.ros2 import messages as ros2
+    from rei.sut.ros_conventions import Frames
+
+    import_rospy()  # Debian's ROS 1, installed by scripts/setup-ros1.sh (./run-tests runs it)
+    from rei.sut.ros1 import messages as ros1
+
+    occupancy = load_map(SHARED_MAPS / "tb3_sandbox.yaml")
+    for message in (ros1.occupancy_grid(STATIC, Frames(), occupancy=occupancy),
+                    ros2.occupancy_grid(STATIC, Frames(), occupancy=occupancy)):
+        assert (message.info.width, message.info.height) == (384, 384) and message.header.frame_id == "map"
+        assert abs(message.info.resolution - 0.05) < 1e-7
+        assert (message.info.origin.position.x, message.info.origin.position.y) == (-10.0, -10.0)
+        assert np.array_equal(np.asarray(message.data, dtype=np.int8).reshape(384, 384), occupancy.grid)
