@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: EPL-2.0
 """A campaign's generated rooms in a real building: ``rooms: {map: FILE.yaml, floor_size: M}`` furnishes the
-occupancy map as `rei gen-rooms --map` does, each room naming the map relative to OUT/rooms."""
+occupancy map as `rei gen-rooms --map` does, each room naming the map relative to OUT/rooms; a case is generated
+again when its map changed, and a case written elsewhere (a search's candidates) names its map from there."""
 
 from __future__ import annotations
 
@@ -13,7 +14,8 @@ from rei.campaign import SpecError, parse_spec, plan_campaign
 from rei.rooms import generate_map_room, load_site, render
 
 EXAMPLES = Path(__file__).resolve().parents[3] / "examples"
-MAP = EXAMPLES / "maps" / "two_rooms.yaml"
+MAPS = EXAMPLES / "maps"
+MAP = MAPS / "two_rooms.yaml"
 
 
 def _spec(rooms: dict) -> dict:
@@ -41,3 +43,21 @@ def test_rooms_on_a_map_are_planned_as_gen_rooms_writes_them(tmp_path: Path) -> 
 def test_wrong_map_settings_are_refused_at_the_door(rooms: dict, message: str) -> None:
     with pytest.raises(SpecError, match=r"groups\[0\]: rooms: .*" + re.escape(message)):
         parse_spec(_spec(rooms), base=EXAMPLES)
+
+
+def test_a_changed_map_regenerates_the_case_and_moved_cases_keep_their_building(tmp_path: Path) -> None:
+    from rei.campaign.prepare import relocated_imports, source_digest
+
+    for name in ("two_rooms.rei", "two_rooms.yaml", "two_rooms.pgm"):
+        (tmp_path / name).write_bytes((MAPS / name).read_bytes())
+    case = tmp_path / "two_rooms.rei"
+    before = source_digest(case)
+    image = tmp_path / "two_rooms.pgm"
+    data = bytearray(image.read_bytes())
+    data[-1] ^= 0xFF  # one pixel of the map's image
+    image.write_bytes(bytes(data))
+    assert source_digest(case) != before
+    text = case.read_text(encoding="utf-8")
+    moved = relocated_imports(text, tmp_path, tmp_path / "search" / "candidates")
+    assert 'room Office occupancy "../../two_rooms.yaml" floorSize 0.5 {' in moved
+    assert moved.replace('"../../two_rooms.yaml"', '"two_rooms.yaml"') == text

@@ -9,6 +9,7 @@ one JVM start for the campaign instead of one per case.
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import json
 import os
@@ -17,6 +18,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from rei.campaign.plan import CaseSource
+from rei.maps import MapError, load_map
+from rei.maps.references import OCCUPANCY, map_path, unquoted
 from rei.run.jvm import run_jar
 
 STAMP = ".source.sha256"
@@ -86,28 +89,31 @@ _IMPORT = re.compile(r'^\s*import\s+"((?:[^"\\]|\\.)*)"', re.MULTILINE)
 
 
 def source_digest(rei: Path) -> str:
-    """SHA-256 of the test case's text and of every catalogue it imports: a case is generated again when its
-    catalogue changed."""
+    """SHA-256 of the test case's text, of every catalogue it imports and of an occupancy room's map (its YAML and
+    image): a case is generated again when its catalogue or its map changed."""
     text = rei.read_bytes()
     digest = hashlib.sha256(text)
-    for path in _IMPORT.findall(text.decode("utf-8", errors="replace")):
-        imported = rei.parent / _unquoted(path)
-        if imported.is_file():  # a missing one fails the generation with the validator's message
-            digest.update(b"\0" + imported.read_bytes())
+    decoded = text.decode("utf-8", errors="replace")
+    used = [rei.parent / unquoted(path) for path in _IMPORT.findall(decoded)]
+    yaml = map_path(decoded, rei.parent)
+    if yaml is not None:
+        used.append(yaml)
+        with contextlib.suppress(MapError):
+            used.append(load_map(yaml).image)
+    for path in used:
+        if path.is_file():  # a missing one fails the generation with the validator's message
+            digest.update(b"\0" + path.read_bytes())
     return digest.hexdigest()
 
 
 def relocated_imports(text: str, origin: Path, folder: Path) -> str:
-    """``text``, written in ``origin``, with each catalogue import's path made relative to ``folder``, where it is
-    written instead (rei.search: a candidate or shrunk case imports the base case's catalogues)."""
+    """``text``, written in ``origin``, with each catalogue import's path and an occupancy room's map path made
+    relative to ``folder``, where it is written instead (rei.search: a candidate or shrunk case imports the base
+    case's catalogues and stands in its building)."""
 
     def relocate(match: re.Match[str]) -> str:
-        moved = Path(os.path.relpath((origin / _unquoted(match.group(1))).resolve(), folder.resolve())).as_posix()
+        moved = Path(os.path.relpath((origin / unquoted(match.group(1))).resolve(), folder.resolve())).as_posix()
         return match.group(0)[:match.start(1) - match.start(0) - 1] + json.dumps(moved)
 
-    return _IMPORT.sub(relocate, text)
+    return OCCUPANCY.sub(relocate, _IMPORT.sub(relocate, text))
 
-
-def _unquoted(path: str) -> str:
-    """An import's path as written between its quotes, unescaped."""
-    return path.replace('\\"', '"').replace("\\\\", "\\")

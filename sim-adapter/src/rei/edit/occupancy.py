@@ -9,14 +9,11 @@ error on the room. Pictures are kept while the map's files are unchanged, so a S
 
 from __future__ import annotations
 
-import re
 from pathlib import Path
 from typing import Any
 
 from rei.maps import MapError, load_map, map_picture
-
-#: ``room NAME occupancy "PATH"``: the room form's keyword and its string (docs/language.md).
-_OCCUPANCY = re.compile(r'\broom\s+\^?\w+\s+occupancy\s+"((?:[^"\\\n]|\\.)*)"')
+from rei.maps.references import map_path
 
 
 class MapPictures:
@@ -29,11 +26,9 @@ class MapPictures:
 
     def of_text(self, text: str) -> dict[str, Any] | None:
         """``{png, extent, origin}`` (a data URI, the metres it covers, the map's origin), or None."""
-        found = _OCCUPANCY.search(_without_comments(text))
-        if found is None:
+        yaml = map_path(text, self.folder)
+        if yaml is None:
             return None
-        yaml = Path(found.group(1).replace('\\"', '"').replace("\\\\", "\\"))
-        yaml = yaml if yaml.is_absolute() else self.folder / yaml
         key = (yaml, *_stamps(yaml))
         if key != self._key:
             self._key, self._value = key, _picture(yaml)
@@ -59,8 +54,3 @@ def _stamps(yaml: Path) -> tuple[int | None, ...]:
             stamps.append(None)
     return tuple(stamps)
 
-
-def _without_comments(text: str) -> str:
-    """The text with its ``//`` and ``/* */`` comments blanked (strings kept), so a commented-out room is not read."""
-    return re.sub(r'"(?:[^"\\\n]|\\.)*"|//[^\n]*|/\*.*?\*/',
-                  lambda m: m.group(0) if m.group(0).startswith('"') else " ", text, flags=re.DOTALL)
