@@ -144,6 +144,8 @@ class Simulation:
             else None
         )
         floors = frozenset(self.world.body_of[o.name] for o in world.objects if o.category is Category.FLOOR)
+        if self.world.ground is not None:
+            floors |= {self.world.ground}
         self._contacts = ContactSensor(client, body, floors, self.world.contact_name)
         self._moving = [
             (o.name, o.category.value, self.world.body_of[o.name])

@@ -39,6 +39,8 @@ COMPOUND_LIMIT = 16
 MERGE_ABOVE = SDF_BODY_LIMIT
 """Worlds of more models than this have their walls and floors merged."""
 MERGED_CATEGORIES = (Category.WALL, Category.FLOOR)
+GROUND = 0.01
+"""Thickness (m) of the ground under a room from an occupancy map: a floor's (the generator's floor slabs)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -70,6 +72,9 @@ class LoadedWorld:
     spec_of: Mapping[str, ObjectSpec]
     merged: Mapping[int, MergedBoxes]
     """The bodies that hold many models (empty unless the world has more than ``MERGE_ABOVE`` models)."""
+    ground: int | None = None
+    """A room from an occupancy map: a fixed slab under the whole map, level with the floors' tops. Its floors
+    are the free blocks only, and the robot drives between them up to the map's walls."""
 
     def contact_name(self, body: int, position: Sequence[float]) -> str | None:
         """The model touched at ``position`` on ``body``, or None for a body that is no model of the world."""
@@ -110,7 +115,17 @@ def load_world(client: int, sdf_path: Path | str, world: WorldSpec) -> LoadedWor
         name_of=MappingProxyType({body: obj.name for body, obj in single}),
         spec_of=MappingProxyType({o.name: o for o in world.objects}),
         merged=MappingProxyType(merged),
+        ground=_ground(client, world) if world.map is not None else None,
     )
+
+
+def _ground(client: int, world: WorldSpec) -> int:
+    """A slab over the world's bounds whose top is the floors' top (z = 0), as thick as a floor."""
+    xmin, ymin, xmax, ymax = world.bounds
+    shape = p.createCollisionShape(p.GEOM_BOX, halfExtents=[(xmax - xmin) / 2, (ymax - ymin) / 2, GROUND / 2],
+                                   physicsClientId=client)
+    return p.createMultiBody(0.0, shape, -1, basePosition=[(xmin + xmax) / 2, (ymin + ymax) / 2, -GROUND / 2],
+                             useMaximalCoordinates=True, physicsClientId=client)
 
 
 def _load_sdf(client: int, path: Path, shown: Path) -> list[int]:
