@@ -20,6 +20,7 @@ import org.rei.dsl.edit.EditOperation.AddGoal;
 import org.rei.dsl.edit.EditOperation.AddObject;
 import org.rei.dsl.edit.EditOperation.AddWall;
 import org.rei.dsl.edit.EditOperation.MoveObject;
+import org.rei.dsl.edit.diagram.Diagram;
 
 /**
  * A room from an occupancy map (the DSL tests' 12 x 8 cell map, six free blocks of 0.2 m) is edited like every
@@ -67,6 +68,14 @@ class MapRoomEditTest {
 		assertEquals("occupancy", document.diagram().room().form());
 		assertEquals(7, document.diagram().room().floors().size());
 		assertEquals(List.of(), document.diagram().room().walls());
+		Diagram.OccupancyMap map = document.diagram().room().map();
+		assertEquals(List.of(folder.resolve("small.pgm").toString(), 0.1, -0.6, 0.4, 12, 8, true), List.of(map.image(),
+				map.resolution(), map.originX(), map.originY(), map.width(), map.height(), map.unknownFree()));
+		Diagram.FloorCell f31 = document.diagram().room().floors().stream().filter(f -> f.name().equals("F_3_1"))
+				.findFirst().orElseThrow();
+		// in the map's frame: origin (-0.6, 0.4) + (3.5, 1.5) * 0.2
+		assertEquals(0.1, f31.centreX(), 1e-9);
+		assertEquals(0.7, f31.centreY(), 1e-9);
 		assertEquals(original, document.undo().text());
 	}
 

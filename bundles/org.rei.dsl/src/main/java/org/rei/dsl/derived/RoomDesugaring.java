@@ -18,6 +18,7 @@ import org.rei.context.GridLayout;
 import org.rei.context.Layout;
 import org.rei.context.OccupancyLayout;
 import org.rei.context.Wall;
+import org.rei.context.layout.FloorLayout;
 import org.rei.context.layout.MapFiles;
 import org.rei.maps.FloorBlocks;
 import org.rei.maps.MapCache;
@@ -85,6 +86,22 @@ public final class RoomDesugaring {
 			}
 		}
 		return build(cells, false);
+	}
+
+	/**
+	 * The layout of a room in the world frame: for a room from an occupancy map, cell (0, 0)'s corner at the map's
+	 * origin (world frame = map frame), as the generator places it.
+	 */
+	public static FloorLayout layoutOf(Environment environment) {
+		if (environment.getOwnedLayout() instanceof OccupancyLayout occupancy) {
+			try {
+				OccupancyMap map = mapOf(occupancy);
+				return FloorLayout.compute(environment, null, map.originX(), map.originY());
+			} catch (MapException e) {
+				// no map, no floors: the validator reports it
+			}
+		}
+		return FloorLayout.compute(environment);
 	}
 
 	/** The room's map, read once per version of its files ({@link MapCache}). */

@@ -22,6 +22,7 @@ import org.rei.context.StaticObject;
 import org.rei.context.Trajectory;
 import org.rei.context.Wall;
 import org.rei.context.layout.FloorLayout;
+import org.rei.dsl.derived.RoomDesugaring;
 
 /**
  * What an editor's hover shows (Markdown; the language server sends it as the hover's contents): where a floor
@@ -66,7 +67,7 @@ public class ReiDocumentationProvider implements IEObjectDocumentationProvider {
 		if (!(f.eContainer() instanceof Environment env)) {
 			return "not in a room";
 		}
-		FloorLayout layout = FloorLayout.compute(env);
+		FloorLayout layout = RoomDesugaring.layoutOf(env);
 		Optional<?> cell = layout.cellOf(f);
 		if (cell.isEmpty()) {
 			return "no place in the room's layout (see the layout errors)";

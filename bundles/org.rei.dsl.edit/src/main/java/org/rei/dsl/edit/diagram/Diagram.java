@@ -19,9 +19,18 @@ public record Diagram(String testCase, Room room, List<Item> objects, Item robot
 	 * @param form "grid" ({@code size C x R}), "map", "occupancy" (an occupancy map) or "graph" (floors and walls
 	 *             written out)
 	 * @param columns cells along x of the laid-out floors
+	 * @param map the occupancy map of an "occupancy" room (drawn under its floors), else {@code null}
 	 */
 	public record Room(String name, String form, double floorSize, int columns, int rows, List<FloorCell> floors,
-			List<WallSide> walls) {
+			List<WallSide> walls, OccupancyMap map) {
+	}
+
+	/**
+	 * An occupancy room's map: its files (absolute paths) and where its image lies in the room: the image's
+	 * bottom-left corner at the origin, {@code width x height} cells of {@code resolution} metres.
+	 */
+	public record OccupancyMap(String yaml, String image, double resolution, double originX, double originY,
+			int width, int height, boolean unknownFree) {
 	}
 
 	/** @param written whether the floor is a statement of the text (not derived from a grid or a map) */

@@ -30,6 +30,7 @@ import org.rei.context.layout.Cell;
 import org.rei.context.layout.FloorLayout;
 import org.rei.context.layout.WallPlacement;
 import org.rei.dsl.derived.DerivedMarker;
+import org.rei.dsl.derived.RoomDesugaring;
 
 /**
  * Builds a {@link Diagram} from a test case. Floor cells, centres and wall places come from {@link FloorLayout}, the
@@ -46,7 +47,7 @@ public final class DiagramBuilder {
 			return new Diagram(testCase.getName(), null, List.of(), null, List.of(), mission(testCase, null),
 					monitor(testCase.getOwnedMonitor()));
 		}
-		FloorLayout layout = FloorLayout.compute(environment);
+		FloorLayout layout = RoomDesugaring.layoutOf(environment); // a map room: in the map's frame
 		Catalogue defaults = Catalogues.loadDefault(resourceSet(testCase));
 		List<Diagram.Item> objects = new ArrayList<>();
 		List<Diagram.Mover> movers = new ArrayList<>();
@@ -85,7 +86,22 @@ public final class DiagramBuilder {
 				: environment.getOwnedLayout() instanceof AsciiLayout ? "map"
 				: environment.getOwnedLayout() instanceof OccupancyLayout ? "occupancy" : "graph";
 		return new Diagram.Room(environment.getName(), form, environment.getFloorSize(), layout.columns(),
-				layout.rows(), floors, walls);
+				layout.rows(), floors, walls, occupancyMap(environment));
+	}
+
+	/** The map of an occupancy room, {@code null} for another room or a map that cannot be read. */
+	private static Diagram.OccupancyMap occupancyMap(Environment environment) {
+		if (!(environment.getOwnedLayout() instanceof OccupancyLayout layout)) {
+			return null;
+		}
+		try {
+			org.rei.maps.OccupancyMap map = RoomDesugaring.mapOf(layout);
+			return new Diagram.OccupancyMap(map.yaml().toAbsolutePath().toString(),
+					map.image().toAbsolutePath().toString(), map.resolution(), map.originX(), map.originY(),
+					map.width(), map.height(), layout.isUnknownFree());
+		} catch (org.rei.maps.MapException e) {
+			return null; // the validator reports it
+		}
 	}
 
 	private static Diagram.Item item(PhysicalObject object, String kind, FloorLayout layout, Catalogue defaults) {
