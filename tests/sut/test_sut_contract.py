@@ -223,9 +223,16 @@ def test_what_rei_sends_and_takes_is_what_the_document_says(
     case = tmp_path / "contract.rei"
     case.write_text(CASE)
     (tmp_path / "types.rei").write_text(CATALOGUE)
+    # the lockstep run's room is the same room made from an occupancy map (all free, 6 x 4 m), so that hello's
+    # map carries its occupancy too
+    map_case = tmp_path / "contract_map.rei"
+    map_case.write_text(CASE.replace("room Lab size 6 x 4 {", 'room Lab occupancy "lab.yaml" {'))
+    (tmp_path / "lab.pgm").write_bytes(b"P5\n120 80\n255\n" + bytes([254]) * (120 * 80))
+    (tmp_path / "lab.yaml").write_text("image: lab.pgm\nresolution: 0.05\norigin: [0.0, 0.0, 0.0]\nnegate: 0\n"
+                                       "occupied_thresh: 0.65\nfree_thresh: 0.196\n")
     lockstep, realtime = tmp_path / "lockstep", tmp_path / "realtime"
     with ThreadPoolExecutor(2) as pool:  # both at once: the realtime run mostly waits for the wall clock
-        first = pool.submit(_run, run_cli, case, lockstep, _plan(doc, False), "--sut-map")
+        first = pool.submit(_run, run_cli, map_case, lockstep, _plan(doc, False), "--sut-map")
         second = pool.submit(_run, run_cli, case, realtime, _plan(doc, True), "--sut-clock", "realtime")
         runs = {lockstep: first.result(), realtime: second.result()}
     seen: dict[str, set] = {name: set() for name in doc}
@@ -238,6 +245,7 @@ def test_what_rei_sends_and_takes_is_what_the_document_says(
 
     received, sim = runs[lockstep]
     hello = received[0][1]
+    assert hello["map"]["occupancy"] == str((lockstep / "case" / "map.yaml").resolve())
     ticks = [p for name, p in received if name == "tick"]
     assert [p["tick"] for p in ticks] == list(range(len(ticks)))
     assert ticks[0]["odom"]["pose"] == hello["start"] and ticks[1]["odom"]["pose"] != hello["start"]
