@@ -13,6 +13,9 @@ from typing import Any
 
 from rei.edit import TOKEN_HEADER, EditEngine, EditServer, EditSession
 
+#: Screenshots the page tests leave for people (target/ is build output, git-ignored); README's come from here.
+SHOTS = Path(__file__).resolve().parents[2] / "target" / "edit"
+
 
 @dataclass
 class Editor:

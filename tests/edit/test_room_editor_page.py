@@ -10,96 +10,37 @@ from __future__ import annotations
 
 import difflib
 import re
-import time
-from collections.abc import Iterator
 from pathlib import Path
 
-import pytest
-from edit_helpers import Editor, write_as_another_program
-from playwright.sync_api import Browser, Locator, Page
+from edit_helpers import SHOTS, Editor, write_as_another_program
+from page_helpers import click_floor, drag, element, open_page, settled
+from playwright.sync_api import Page
 
-PAGE_TIMEOUT_MS = 60_000
-VIEWPORT = {"width": 1400, "height": 900}
-#: Screenshots the tests leave for people (target/ is build output, git-ignored); README's come from here.
 REPO = Path(__file__).resolve().parents[2]
-SHOTS = REPO / "target" / "edit"
-
-
-@pytest.fixture
-def page(browser: Browser) -> Iterator[Page]:
-    SHOTS.mkdir(parents=True, exist_ok=True)
-    opened = browser.new_page(viewport=VIEWPORT)  # type: ignore[arg-type]
-    opened.set_default_timeout(PAGE_TIMEOUT_MS)
-    errors: list[str] = []
-    opened.on("pageerror", lambda error: errors.append(str(error)))
-    yield opened
-    opened.close()
-    assert not errors, f"the page threw: {errors}"
-
-
-def _open(page: Page, editor: Editor) -> None:
-    page.goto(editor.server.url)
-    page.locator('[data-kind="robot"]').wait_for()
-
-
-def _element(page: Page, kind: str, name: str) -> Locator:
-    return page.locator(f'[data-kind="{kind}"][data-name="{name}"]').first
-
-
-def _centre(locator: Locator) -> tuple[float, float]:
-    box = locator.bounding_box()
-    assert box is not None, f"{locator} is not drawn"
-    return box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
-
-
-def _click_floor(page: Page, name: str) -> None:
-    x, y = _centre(_element(page, "floor", name))
-    page.mouse.click(x, y)
-
-
-def _settled(editor: Editor, page: Page, version: int, timeout: float = 60.0) -> int:
-    """Waits until an operation the page sent landed (the session moved past ``version``) and the page drew the
-    state that came back."""
-    deadline = time.monotonic() + timeout
-    while (now := int(editor.session.status()["version"])) <= version:
-        if time.monotonic() > deadline:
-            raise AssertionError(f"no change reached the editor within {timeout} s")
-        time.sleep(0.05)
-    page.wait_for_function("v => (window.reiEdit?.state?.version ?? 0) >= v", arg=now)
-    return now
-
-
-def _drag(page: Page, source: Locator, target: Locator) -> None:
-    (x0, y0), (x1, y1) = _centre(source), _centre(target)
-    page.mouse.move(x0, y0)
-    page.mouse.down()
-    page.mouse.move((x0 + x1) / 2, (y0 + y1) / 2, steps=5)
-    page.mouse.move(x1, y1, steps=5)
-    page.mouse.up()
 
 
 def test_drag_add_goal_draw_path_and_save_change_only_those_lines(open_editor, page: Page, run_cli) -> None:
     editor: Editor = open_editor("examples/simple_navigation.rei")
     before = editor.case.read_text(encoding="utf-8")
-    _open(page, editor)
+    open_page(page, editor)
     page.screenshot(path=str(SHOTS / "opened.png"))
     version = editor.session.status()["version"]
 
-    _drag(page, _element(page, "object", "table1"), _element(page, "floor", "F_3_3"))
-    version = _settled(editor, page, version)
+    drag(page, element(page, "object", "table1"), element(page, "floor", "F_3_3"))
+    version = settled(editor, page, version)
     page.locator("#dirty").wait_for(state="visible")
 
     page.click("#add-goal")
-    _click_floor(page, "F_2_3")
-    version = _settled(editor, page, version)
+    click_floor(page, "F_2_3")
+    version = settled(editor, page, version)
     page.locator('[data-kind="goal"][data-index="2"]').wait_for()
 
-    _element(page, "human", "walker").click()
+    element(page, "human", "walker").click()
     page.click("#draw-path")
     for floor in ("F_0_2", "F_2_2", "F_4_3"):
-        _click_floor(page, floor)
+        click_floor(page, floor)
     page.click("#finish-path")
-    version = _settled(editor, page, version)
+    version = settled(editor, page, version)
 
     page.click("#save")
     page.locator("#dirty").wait_for(state="hidden")
@@ -120,15 +61,15 @@ def test_drag_add_goal_draw_path_and_save_change_only_those_lines(open_editor, p
 
 def test_two_objects_on_one_floor_show_the_validators_message_on_both(open_editor, page: Page) -> None:
     editor: Editor = open_editor("examples/simple_navigation.rei")
-    _open(page, editor)
+    open_page(page, editor)
     version = editor.session.status()["version"]
     page.click('[data-type="Box"]')
-    _click_floor(page, "F_2_1")  # table1's floor
-    _settled(editor, page, version)
+    click_floor(page, "F_2_1")  # table1's floor
+    settled(editor, page, version)
     issues = page.locator("#issues")
     issues.get_by_text("is already taken by 'table1'").wait_for()
     for name in ("table1", "box1"):
-        assert "has-issue" in (_element(page, "object", name).get_attribute("class") or "")
+        assert "has-issue" in (element(page, "object", name).get_attribute("class") or "")
         label = page.locator(f'.issue-label[data-for="{name}"]')
         label.wait_for(state="visible")
         assert "already taken" in label.inner_text()
@@ -139,14 +80,14 @@ def test_two_objects_on_one_floor_show_the_validators_message_on_both(open_edito
 def test_a_moving_object_from_the_palette_is_one_new_line(open_editor, page: Page, run_cli) -> None:
     editor: Editor = open_editor("examples/simple_navigation.rei")
     before = editor.case.read_text(encoding="utf-8")
-    _open(page, editor)
+    open_page(page, editor)
     version = editor.session.status()["version"]
     page.click('[data-type="Cart"]')
     for floor in ("F_1_1", "F_3_1", "F_3_3"):
-        _click_floor(page, floor)
+        click_floor(page, floor)
     page.click("#finish-path")
-    _settled(editor, page, version)
-    _element(page, "dynamic", "cart1").wait_for()
+    settled(editor, page, version)
+    element(page, "dynamic", "cart1").wait_for()
     page.click("#save")
     page.locator("#dirty").wait_for(state="hidden")
 
@@ -160,36 +101,36 @@ def test_a_moving_object_from_the_palette_is_one_new_line(open_editor, page: Pag
 def test_rotate_delete_reorder_goals_and_undo_redo(open_editor, page: Page) -> None:
     editor: Editor = open_editor("examples/simple_navigation.rei")
     before = editor.case.read_text(encoding="utf-8")
-    _open(page, editor)
+    open_page(page, editor)
     version = editor.session.status()["version"]
-    _element(page, "object", "table1").click()
+    element(page, "object", "table1").click()
     page.click("#rotate-left")
-    version = _settled(editor, page, version)
+    version = settled(editor, page, version)
     assert re.search(r"object table1 : Table on F_2_1 yaw -?90\b", editor.session.text)
-    _element(page, "object", "shelf1").click()
+    element(page, "object", "shelf1").click()
     page.keyboard.press("Delete")
-    version = _settled(editor, page, version)
+    version = settled(editor, page, version)
     assert "shelf1" not in editor.session.text
     page.locator('#goals li[data-index="1"] .up').click()
-    version = _settled(editor, page, version)
+    version = settled(editor, page, version)
     goals = re.findall(r"goto (\w+)", editor.session.text)
     assert goals == ["F_5_3", "F_4_0"], goals
 
     for _ in range(3):
         page.keyboard.press("Control+z")
-        version = _settled(editor, page, version)
+        version = settled(editor, page, version)
     assert editor.session.text == before and not editor.session.dirty
     page.keyboard.press("Control+Shift+z")
-    version = _settled(editor, page, version)
+    version = settled(editor, page, version)
     page.click("#redo")
-    _settled(editor, page, version)
+    settled(editor, page, version)
     assert "shelf1" not in editor.session.text and "yaw" in editor.session.text
     assert re.findall(r"goto (\w+)", editor.session.text) == ["F_4_0", "F_5_3"], "redo went past its step"
 
 
 def test_a_file_changed_on_disk_is_noticed(open_editor, page: Page) -> None:
     editor: Editor = open_editor("examples/simple_navigation.rei")
-    _open(page, editor)
+    open_page(page, editor)
     text = editor.case.read_text(encoding="utf-8")
     # No unsaved edits: the editor follows the file and says so.
     write_as_another_program(editor.case, text.replace("shelf1 : Shelf on F_0_3", "shelf1 : Shelf on F_1_3"))
@@ -200,8 +141,8 @@ def test_a_file_changed_on_disk_is_noticed(open_editor, page: Page) -> None:
     }""")
     # Unsaved edits: the editor asks, and keeps both versions until the user chooses.
     version = editor.session.status()["version"]
-    _drag(page, _element(page, "object", "table1"), _element(page, "floor", "F_3_3"))
-    _settled(editor, page, version)
+    drag(page, element(page, "object", "table1"), element(page, "floor", "F_3_3"))
+    settled(editor, page, version)
     theirs = text.replace("close 0.25", "close 0.5")
     write_as_another_program(editor.case, theirs)
     banner = page.locator("#disk-banner")
@@ -218,18 +159,18 @@ def test_a_file_changed_on_disk_is_noticed(open_editor, page: Page) -> None:
 
 def test_graph_rooms_gain_and_lose_floors_and_walls(open_editor, page: Page, run_cli, tmp_path: Path) -> None:
     editor: Editor = open_editor("tests/edit/rooms/corridor.rei")
-    _open(page, editor)
+    open_page(page, editor)
     floors = page.locator('[data-kind="floor"]')
     assert floors.count() == 3
     version = editor.session.status()["version"]
     ghost = page.locator('[data-kind="ghost"]').first
     ghost.click()
-    version = _settled(editor, page, version)
+    version = settled(editor, page, version)
     page.wait_for_function("document.querySelectorAll('[data-kind=\"floor\"]').length === 4")
-    _element(page, "floor", "A").click(position={"x": 4, "y": 4})  # a corner: the robot stands in the middle
+    element(page, "floor", "A").click(position={"x": 4, "y": 4})  # a corner: the robot stands in the middle
     page.locator("#wall-bottom").click()  # only free sides get a strip: the new floor may be on top
-    version = _settled(editor, page, version)
-    _element(page, "wall", "W_A_bottom").wait_for()
+    version = settled(editor, page, version)
+    element(page, "wall", "W_A_bottom").wait_for()
     page.click("#save")
     page.locator("#dirty").wait_for(state="hidden")
     assert run_cli("validate", editor.case).returncode == 0
@@ -238,13 +179,13 @@ def test_graph_rooms_gain_and_lose_floors_and_walls(open_editor, page: Page, run
     assert added is not None and "floor A right B bottom W_A_bottom" in text and "wall W_A_bottom" in text, text
     assert "// the corridor's comment stays" in text
 
-    _element(page, "wall", "W_A_bottom").click()
+    element(page, "wall", "W_A_bottom").click()
     page.keyboard.press("Delete")
-    version = _settled(editor, page, version)
-    _element(page, "wall", "W_A_bottom").wait_for(state="detached")
-    _element(page, "floor", added.group(1)).click(position={"x": 4, "y": 4})
+    version = settled(editor, page, version)
+    element(page, "wall", "W_A_bottom").wait_for(state="detached")
+    element(page, "floor", added.group(1)).click(position={"x": 4, "y": 4})
     page.keyboard.press("Delete")
-    _settled(editor, page, version)
+    settled(editor, page, version)
     page.click("#save")
     page.locator("#dirty").wait_for(state="hidden")
     assert editor.case.read_text(encoding="utf-8") == (REPO / "tests/edit/rooms/corridor.rei").read_text(encoding="utf-8")
@@ -257,7 +198,7 @@ def test_generated_rooms_and_the_examples_open(open_editor, page: Page, run_cli,
     cases = [*sorted(generated.glob("*.rei")), *sorted(Path("examples").glob("*.rei"))]
     for case in cases:
         editor: Editor = open_editor(case.resolve(), copy=False)  # in place: own_types imports a neighbour
-        _open(page, editor)
+        open_page(page, editor)
         diagram = editor.session.state()["diagram"]
         assert page.locator('[data-kind="floor"]').count() == len(diagram["room"]["floors"]), case
         assert page.locator('[data-kind="object"]').count() == len(diagram["objects"]), case
