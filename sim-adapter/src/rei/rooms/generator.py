@@ -151,9 +151,9 @@ def _fits(item: Furniture, placed: dict[Cell, Furniture], reserved: set[Cell], w
     x, y = item.cell
     for cell in ((x + dx, y + dy) for dx in (-1, 0, 1) for dy in (-1, 0, 1) if dx or dy):
         other = placed.get(cell)
-        if other is not None and _gap(box, _rect(cell, other.half_extents())) < GAP:
+        if other is not None and rect_gap(box, _rect(cell, other.half_extents())) < GAP:
             return False
-        if cell in reserved and _gap(box, _rect(cell, (0.5, 0.5))) < GAP:
+        if cell in reserved and rect_gap(box, _rect(cell, (0.5, 0.5))) < GAP:
             return False
     return True
 
@@ -163,7 +163,7 @@ def _rect(cell: Cell, half: tuple[float, float]) -> tuple[float, float, float, f
     return (cx - half[0], cy - half[1], cx + half[0], cy + half[1])
 
 
-def _gap(a: tuple[float, float, float, float], b: tuple[float, float, float, float]) -> float:
+def rect_gap(a: tuple[float, float, float, float], b: tuple[float, float, float, float]) -> float:
     """Distance between two axis-aligned rectangles; <= 0 when they touch or overlap."""
     dx, dy = max(b[0] - a[2], a[0] - b[2]), max(b[1] - a[3], a[1] - b[3])
     return math.hypot(dx, dy) if dx > 0 and dy > 0 else max(dx, dy)

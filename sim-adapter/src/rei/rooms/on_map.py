@@ -31,7 +31,7 @@ from pathlib import Path
 import numpy as np
 
 from rei.maps import MapError, floor_blocks, load_map, obstacle_mask
-from rei.rooms.generator import GAP, HUMAN_SPEED, GenerationError
+from rei.rooms.generator import GAP, HUMAN_SPEED, GenerationError, rect_gap
 from rei.rooms.model import DEFAULT_TYPES, Cell, Furniture, Goal, MapSite, Room, RoomTypes, Walker
 
 #: Furnished share of the floors per density: the share of the generated grid rooms (thesis 7.4's classes).
@@ -262,9 +262,9 @@ def _fits(item: Furniture, site: MapSite, blocked: np.ndarray, placed: dict[Cell
     half = site.floor_size / 2
     for cell in ((x + dx, y + dy) for dx in range(-reach, reach + 1) for dy in range(-reach, reach + 1) if dx or dy):
         other = placed.get(cell)
-        if other is not None and _gap(box, _rect(site, cell, other.half_extents())) < LANE:
+        if other is not None and rect_gap(box, _rect(site, cell, other.half_extents())) < LANE:
             return False
-        if cell in reserved and _gap(box, _rect(site, cell, (half, half))) < GAP:
+        if cell in reserved and rect_gap(box, _rect(site, cell, (half, half))) < GAP:
             return False
     return True
 
@@ -272,12 +272,6 @@ def _fits(item: Furniture, site: MapSite, blocked: np.ndarray, placed: dict[Cell
 def _rect(site: MapSite, cell: Cell, half: tuple[float, float]) -> tuple[float, float, float, float]:
     cx, cy = site.centre(cell)
     return (cx - half[0], cy - half[1], cx + half[0], cy + half[1])
-
-
-def _gap(a: tuple[float, float, float, float], b: tuple[float, float, float, float]) -> float:
-    """Distance between two axis-aligned rectangles; <= 0 when they touch or overlap."""
-    dx, dy = max(b[0] - a[2], a[0] - b[2]), max(b[1] - a[3], a[1] - b[3])
-    return math.hypot(dx, dy) if dx > 0 and dy > 0 else max(dx, dy)
 
 
 def _still_navigable(cell: Cell, placed: dict[Cell, Furniture], robot_cells: set[Cell], floors: set[Cell]) -> bool:
