@@ -24,10 +24,12 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.ExtendWith;
 import org.junit.jupiter.api.io.TempDir;
 import org.rei.context.BuildingBlock;
+import org.rei.context.ContextPackage;
 import org.rei.context.Floor;
 import org.rei.context.OccupancyLayout;
 import org.rei.context.TestCase;
 import org.rei.dsl.derived.RoomDesugaring;
+import org.rei.dsl.validation.ReiIssueCodes;
 import org.rei.maps.MapCache;
 
 import com.google.inject.Inject;
@@ -85,6 +87,28 @@ class MapRoomTest {
 		assertSame(first, RoomDesugaring.mapOf(layout(room(yaml, ""))), "revalidation reads no file");
 		Files.setLastModifiedTime(image, FileTime.fromMillis(Files.getLastModifiedTime(image).toMillis() + 2000));
 		assertNotSame(first, MapCache.get(yaml), "a changed image is read again");
+	}
+
+	@Test
+	void aMapOfMoreFreeBlocksThanTheLimitAsksForLargerFloors(@TempDir Path folder) throws Exception {
+		// 501 x 501 free cells of 0.1 m: 251,001 free blocks of 0.1 m, 2,500 of 1 m
+		int side = 501;
+		byte[] header = ("P5\n" + side + " " + side + "\n255\n").getBytes(java.nio.charset.StandardCharsets.US_ASCII);
+		byte[] image = java.util.Arrays.copyOf(header, header.length + side * side);
+		java.util.Arrays.fill(image, header.length, image.length, (byte) 254);
+		Files.write(folder.resolve("hall.pgm"), image);
+		Path yaml = Files.writeString(folder.resolve("hall.yaml"), "image: hall.pgm\nresolution: 0.1\n"
+				+ "origin: [0, 0, 0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.25\n");
+		String text = "testcase T {\n  room R occupancy \"" + yaml + "\" floorSize SIZE {\n"
+				+ "    robot r : Waffle on F_0_0\n  }\n  mission M { goto F_1_0 goto F_2_0 }\n}\n";
+		TestCase tooMany = parser.parse(text.replace("SIZE", "0.1"));
+		validation.assertError(tooMany, ContextPackage.Literals.OCCUPANCY_LAYOUT, ReiIssueCodes.ROOM_TOO_LARGE,
+				"has 251001 free blocks of 0.1 m: a room may have at most 250000 floors from a map; use a larger "
+						+ "floorSize");
+		assertEquals(1, validation.validate(tooMany).size(), "no error for each floor it names");
+		TestCase fine = parser.parse(text.replace("SIZE", "1.0"));
+		validation.assertNoErrors(fine);
+		assertEquals(2_500, fine.getOwnedEnvironment().getOwnedBlocks().size());
 	}
 
 	private static OccupancyLayout layout(TestCase testCase) {
