@@ -1,11 +1,12 @@
 # SPDX-License-Identifier: EPL-2.0
 """The report of a run in a room from an occupancy map: the map's picture under the floors, over exactly the
-map's extent; a map that can not be read is said, not drawn."""
+map's extent, and the map's cells as run.mcap's /map; a map that can not be read is said, not drawn."""
 
 from __future__ import annotations
 
 import base64
 import io
+import json
 import re
 from collections.abc import Callable
 from pathlib import Path
@@ -54,3 +55,23 @@ def test_other_rooms_have_no_picture_and_a_broken_map_is_noted(tmp_path: Path, o
     assert data.picture is None and data.world is not None
     assert any("the room's occupancy map is not drawn" in note and "origin: missing" in note for note in data.notes)
     assert "map-occupancy" not in render_report(data) and 'class="floor"' in render_report(data)
+
+
+def test_the_mcap_carries_the_map_as_a_foxglove_grid(tmp_path: Path, occupancy_map: AddMap) -> None:
+    from mcap.reader import make_reader
+
+    from rei.report import write_mcap
+
+    out = make_run(tmp_path / "run")
+    occupancy_map(out / "case")
+    with open(write_mcap(out), "rb") as f:
+        found = [(schema.name, json.loads(message.data)) for schema, channel, message in
+                 make_reader(f).iter_messages(topics=["/map"])]
+    assert [name for name, _ in found] == ["foxglove.Grid"]
+    grid = found[0][1]
+    assert (grid["frame_id"], grid["column_count"], grid["cell_size"]) == ("world", 120, {"x": 0.05, "y": 0.05})
+    assert grid["pose"]["position"] == {"x": 0.0, "y": 0.0, "z": 0.0}
+    assert (grid["row_stride"], grid["cell_stride"], grid["fields"]) == (120, 1, [{"name": "occupancy", "offset": 0,
+                                                                                    "type": 2}])
+    cells = np.frombuffer(base64.b64decode(grid["data"]), dtype=np.int8).reshape(80, 120)
+    assert cells[2, 7] == 100 and int((cells != 0).sum()) == 1  # row 2 from the bottom: rows go up from y = 0

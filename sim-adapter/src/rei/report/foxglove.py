@@ -9,10 +9,13 @@ renderer by schema name, the JSON schema documents the message for other tools.
 
 from __future__ import annotations
 
+import base64
 import math
 from collections.abc import Sequence
 from importlib import resources
 from typing import Any
+
+import numpy as np
 
 from rei.geometry import quaternion_of_yaw
 
@@ -22,7 +25,9 @@ ROBOT_FRAME = "base_link"
 #: foxglove.LogLevel values.
 INFO, WARNING, ERROR = 2, 3, 4
 
-SCHEMA_NAMES = ("SceneUpdate", "LaserScan", "Log", "FrameTransform")
+SCHEMA_NAMES = ("SceneUpdate", "LaserScan", "Log", "FrameTransform", "Grid")
+#: foxglove.NumericType of an occupancy value (-1 unknown, 0..100).
+INT8 = 2
 
 
 def schema_bytes(name: str) -> bytes:
@@ -112,6 +117,17 @@ def laser_scan(t: float, ranges: Sequence[float], mount_height: float) -> dict[s
     clean = [float(r) if isinstance(r, int | float) and math.isfinite(r) else 0.0 for r in ranges]
     return {"timestamp": timestamp(t), "frame_id": ROBOT_FRAME, "pose": pose(0.0, 0.0, mount_height),
             "start_angle": 0.0, "end_angle": (beams - 1) * increment, "ranges": clean, "intensities": []}
+
+
+def occupancy_grid(t: float, cells: np.ndarray, resolution: float, x0: float, y0: float) -> dict[str, Any]:
+    """An occupancy map as a foxglove.Grid in the world frame: ``cells`` (rows from the bottom, int8 values as
+    ``map_server`` publishes them), cell (0, 0)'s corner at ``(x0, y0)``, for Studio's 3D panel to draw as a
+    grid layer under the scene."""
+    columns = cells.shape[1]
+    return {"timestamp": timestamp(t), "frame_id": WORLD_FRAME, "pose": pose(x0, y0, 0.0),
+            "column_count": int(columns), "cell_size": {"x": float(resolution), "y": float(resolution)},
+            "row_stride": int(columns), "cell_stride": 1, "fields": [{"name": "occupancy", "offset": 0, "type": INT8}],
+            "data": base64.b64encode(np.ascontiguousarray(cells, dtype=np.int8).tobytes()).decode("ascii")}
 
 
 def log(t: float, level: int, name: str, message: str) -> dict[str, Any]:

@@ -10,6 +10,7 @@ Topics (JSON encoding, `jsonschema` schemas named `foxglove.<Type>`):
 | topic | schema | messages |
 |---|---|---|
 | `/world` | foxglove.SceneUpdate | 1: floors, walls, furniture, goals (static, never replaced) |
+| `/map` | foxglove.Grid | 1, in a room from an occupancy map: the map's cells (int8, as `map_server` publishes them) |
 | `/paths` | foxglove.SceneUpdate | 1: the whole true and believed paths as lines, to see where the run goes |
 | `/bodies` | foxglove.SceneUpdate | 1 per state: the robot, its believed pose (ghost), humans, dynamic objects |
 | `/tf` | foxglove.FrameTransform | 1 per state: `world` -> `base_link` (true pose) |
@@ -66,6 +67,10 @@ class _McapRun:
         t0 = 0.0
         if self.data.world is not None:
             self.publish("/world", "SceneUpdate", t0, fg.scene_update(self._static_entities(t0)))
+        occupancy = self.data.occupancy
+        if occupancy is not None:
+            self.publish("/map", "Grid", t0, fg.occupancy_grid(t0, occupancy.grid, occupancy.resolution,
+                                                                occupancy.origin[0], occupancy.origin[1]))
         tracks = collect_tracks(self.data.states())
         if len(tracks.robot):
             paths = [fg.line_entity(t0, "true_path", decimate(tracks.robot.xy()), _ROBOT_RGBA)]

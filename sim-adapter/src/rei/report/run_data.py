@@ -19,7 +19,7 @@ from pathlib import Path
 from typing import Any
 
 from rei.artifacts import ArtifactError, read_world_map
-from rei.maps import MapPicture, map_picture
+from rei.maps import MapPicture, OccupancyMap, map_picture
 from rei.wamp.recording import iter_recording, stream_path
 
 
@@ -63,7 +63,8 @@ class RunData:
     out_dir: Path
     case_dir: Path
     world: dict[str, Any] | None = None
-    picture: MapPicture | None = None  # a room from an occupancy map: the map, drawn under the floors
+    occupancy: OccupancyMap | None = None  # a room from an occupancy map: its map
+    picture: MapPicture | None = None  # ... and the map's picture, drawn under the floors
     mission_name: str | None = None
     goals: list[Goal] = field(default_factory=list)
     mission_events: list[dict[str, Any]] = field(default_factory=list)
@@ -104,7 +105,8 @@ def load_run(out_dir: Path, case_dir: Path | None = None) -> RunData:
     out_dir = Path(out_dir)
     data = RunData(out_dir=out_dir, case_dir=Path(case_dir) if case_dir else out_dir / "case")
     data.world = _read_json(data.case_dir / "world.json", data.notes, "no world.json: the map is not drawn")
-    data.picture = _read_picture(data)
+    data.occupancy = _read_occupancy(data)
+    data.picture = map_picture(data.occupancy) if data.occupancy is not None else None
     _read_mission_xml(data)
     data.summary = _read_json(out_dir / "summary.json", data.notes,
                               "no summary.json: no verdicts (the evaluator did not run)")
@@ -139,13 +141,13 @@ def _read_json(path: Path, notes: list[str] | None, missing: str | None) -> dict
     return value if isinstance(value, dict) else None
 
 
-def _read_picture(data: RunData) -> MapPicture | None:
-    """The occupancy map of a map room (world.json's ``map``), as the picture drawn under the floors."""
+def _read_occupancy(data: RunData) -> OccupancyMap | None:
+    """The occupancy map of a map room (world.json's ``map``): drawn under the floors, and the MCAP's /map."""
     if data.world is None or data.world.get("map") is None:
         return None
     try:
         spec = read_world_map(data.case_dir / "world.json")
-        return map_picture(spec.load()) if spec is not None else None
+        return spec.load() if spec is not None else None
     except ArtifactError as error:
         data.notes.append(f"the room's occupancy map is not drawn: {error}")
         return None
