@@ -275,12 +275,29 @@ def _rect(site: MapSite, cell: Cell, half: tuple[float, float]) -> tuple[float, 
 
 
 def _still_navigable(cell: Cell, placed: dict[Cell, Furniture], robot_cells: set[Cell], floors: set[Cell]) -> bool:
-    blocked = set(placed) | {cell}
+    """The free floors stay connected with ``cell`` furnished. They are connected before (the area is, and every
+    piece kept them so), so they stay connected exactly when ``cell``'s free neighbours still reach each other:
+    a search from one of them that stops once it has met the others, mostly a few floors around ``cell``, where a
+    search of the whole area per piece would make a large building's furnishing quadratic."""
+    def free(c: Cell) -> bool:
+        return c in floors and c not in placed and c != cell
+
     for c in robot_cells:
-        if sum(n in floors and n not in blocked for n in _neighbours(c)) < 2:
+        if sum(free(n) for n in _neighbours(c)) < 2:
             return False
-    free = floors - blocked
-    return len(_component(next(iter(free)), free)) == len(free)
+    around = [n for n in _neighbours(cell) if free(n)]
+    if len(around) < 2:
+        return True
+    missing = set(around[1:])
+    seen = {around[0]}
+    queue = deque([around[0]])
+    while queue and missing:
+        for n in _neighbours(queue.popleft()):
+            if n not in seen and free(n):
+                seen.add(n)
+                missing.discard(n)
+                queue.append(n)
+    return not missing
 
 
 def _neighbours(cell: Cell) -> Iterable[Cell]:
