@@ -250,11 +250,10 @@ public final class FloorLayout {
 			}
 			if (!floors.isEmpty()) {
 				start = startFloor();
-				List<Link>[] links = links();
 				if (environment.getOwnedLayout() instanceof OccupancyLayout) {
 					placeMapFloors();
 				} else {
-					placeFloors(links);
+					placeFloors(links());
 				}
 				placeWalls();
 			}
@@ -262,9 +261,17 @@ public final class FloorLayout {
 			return new FloorLayout(this, originX, originY);
 		}
 
-		/** The floors of an occupancy room are at their blocks of the map (their names say which). */
+		/**
+		 * The floors of an occupancy room are at their blocks of the map (their names say which); the map names
+		 * every neighbour on both sides, so there is nothing to traverse or infer.
+		 */
 		private void placeMapFloors() {
 			for (Floor floor : floors) {
+				BuildingBlock[] sides = new BuildingBlock[4];
+				for (Direction side : SIDES) {
+					sides[side.getValue()] = declared(floor, side);
+				}
+				neighbours.put(floor, sides);
 				var block = MapFiles.blockOf(floor);
 				if (block.isEmpty()) {
 					problems.add(new LayoutProblem(floor, null, LayoutIssueCodes.DISCONNECTED,

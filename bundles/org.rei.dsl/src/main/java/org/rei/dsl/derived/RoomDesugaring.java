@@ -206,7 +206,9 @@ public final class RoomDesugaring {
 		for (int y = 0; y < height; y++) {
 			for (int x = 0; x < width; x++) {
 				if (cells[x][y]) {
-					Floor floor = DerivedMarker.mark(ContextFactory.eINSTANCE.createFloor());
+					// marked once built: an element without adapters sends no notifications, which for 100,000s
+					// of floors is most of the work
+					Floor floor = ContextFactory.eINSTANCE.createFloor();
 					floor.setName(floorName(x, y));
 					floors[x][y] = floor;
 					blocks.add(floor);
@@ -228,6 +230,7 @@ public final class RoomDesugaring {
 			}
 		}
 		blocks.addAll(walls);
+		blocks.forEach(DerivedMarker::mark);
 		return blocks;
 	}
 
@@ -240,7 +243,7 @@ public final class RoomDesugaring {
 		if (walls == null) {
 			return null; // an open side
 		}
-		Wall wall = DerivedMarker.mark(ContextFactory.eINSTANCE.createWall());
+		Wall wall = ContextFactory.eINSTANCE.createWall();
 		wall.setName(wallName(x, y, side));
 		walls.add(wall);
 		return wall;
