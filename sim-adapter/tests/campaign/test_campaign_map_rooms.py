@@ -61,3 +61,13 @@ def test_a_changed_map_regenerates_the_case_and_moved_cases_keep_their_building(
     moved = relocated_imports(text, tmp_path, tmp_path / "search" / "candidates")
     assert 'room Office occupancy "../../two_rooms.yaml" floorSize 0.5 {' in moved
     assert moved.replace('"../../two_rooms.yaml"', '"two_rooms.yaml"') == text
+
+
+def test_the_building_example_spec_plans_its_rooms_on_the_map(tmp_path: Path) -> None:
+    from rei.campaign import load_spec
+
+    plan = plan_campaign(load_spec(EXAMPLES / "campaigns" / "building.yaml"), tmp_path)
+    assert [c.key for c in plan.cases] == [f"two_rooms_sparse_h1_s1_0{i}" for i in (1, 2, 3)]
+    assert len(plan.runs) == 3 * 2
+    named = re.search(r'occupancy "([^"]+)"', plan.cases[0].text)
+    assert named is not None and (tmp_path.resolve() / "rooms" / named.group(1)).resolve() == MAP.resolve()
