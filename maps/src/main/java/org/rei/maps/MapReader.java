@@ -117,8 +117,10 @@ public final class MapReader {
 		});
 		byte[] grid = cells(pixels, (String) mode, negated, occupiedThresh, freeThresh);
 		Node imageNode = fields.nodes.get("image");
-		return new OccupancyMap(yaml, image, fields.text, imageNode.getStartMark().getIndex(),
-				imageNode.getEndMark().getIndex(), resolution, ((Number) xyz.get(0)).doubleValue(),
+		// marks count code points; the copy's YAML cuts the text by chars
+		int start = fields.text.offsetByCodePoints(0, imageNode.getStartMark().getIndex());
+		int end = fields.text.offsetByCodePoints(0, imageNode.getEndMark().getIndex());
+		return new OccupancyMap(yaml, image, fields.text, start, end, resolution, ((Number) xyz.get(0)).doubleValue(),
 				((Number) xyz.get(1)).doubleValue(), negated, occupiedThresh, freeThresh, (String) mode,
 				pixels.width(), pixels.height(), grid);
 	}

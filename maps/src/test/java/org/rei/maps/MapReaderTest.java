@@ -72,6 +72,11 @@ class MapReaderTest {
 	void theCopysYamlKeepsEverythingButTheImageName() throws Exception {
 		OccupancyMap map = MapReader.read(write(YAML, PGM));
 		assertEquals(YAML.replace("image: room.pgm", "image: map.pgm"), map.yamlNaming("map.pgm"));
+		// a character beyond 16 bits before the field (YAML marks count code points), a quoted name and a comment
+		String quoted = "# plan of the \uD83C\uDFED hall\n"
+				+ YAML.replace("image: room.pgm", "image: \"room.pgm\"  # the scan");
+		assertEquals(quoted.replace("\"room.pgm\"", "map.pgm"),
+				MapReader.read(write(quoted, PGM)).yamlNaming("map.pgm"));
 		assertEquals("pgm", map.imageFormat());
 	}
 

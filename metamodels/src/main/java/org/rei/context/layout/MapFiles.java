@@ -60,7 +60,9 @@ public final class MapFiles {
 	/** The block {@code (x, y)} a name {@code F_x_y} stands for; empty for another name. */
 	public static Optional<Cell> blockOf(String name) {
 		Matcher m = name == null ? null : FLOOR_NAME.matcher(name);
-		return m != null && m.matches() ? Optional.of(new Cell(Integer.parseInt(m.group(1)), Integer.parseInt(m.group(2))))
-				: Optional.empty();
+		if (m == null || !m.matches()) {
+			return Optional.empty();
+		}
+		return Optional.of(new Cell(Integer.parseInt(m.group(1)), Integer.parseInt(m.group(2))));
 	}
 }
