@@ -1,14 +1,14 @@
 # SPDX-License-Identifier: EPL-2.0
-"""The metrics consider only the static obstacles near the robot's path (a large room has thousands of walls):
-the obstacles left out change no figure -- every sample's least gap and every gap within the close threshold
-are the same as with all of them."""
+"""The metrics measure the gaps to the static obstacles near the robot's path only (a large room has thousands of
+walls): every sample's least gap, and every gap within the close threshold and a margin, are the very gaps
+measured to all of them; the rest are +inf, which changes no figure."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from rei.evaluation.metrics.compute import _CONTACT_MARGIN, _gaps, _near, _Obstacles
+from rei.evaluation.metrics.compute import _CONTACT_MARGIN, _gaps, _Obstacles, _static_gaps
 
 ROBOT = (0.281, 0.306)
 
@@ -29,17 +29,19 @@ def _drive(rng: np.random.Generator, samples: int) -> np.ndarray:
 
 @pytest.mark.parametrize("seed", [1, 2])
 @pytest.mark.parametrize("close", [0.0, 0.25, 2.0])
-def test_left_out_obstacles_change_no_least_gap_and_no_close_gap(seed: int, close: float) -> None:
+def test_left_out_gaps_change_no_least_gap_and_no_close_gap(seed: int, close: float) -> None:
     rng = np.random.default_rng(seed)
     walls, pose = _walls(rng, 1200), _drive(rng, 600)
-    near = _near(walls, pose, ROBOT, close)
+    near, kept = _static_gaps(walls, pose, ROBOT, close)
     assert 0 < len(near.names) < len(walls.names) / 3  # it does leave most of them out
     every = _gaps(pose, ROBOT, walls.boxes, walls.circle)
-    kept = _gaps(pose, ROBOT, near.boxes, near.circle)
-    np.testing.assert_array_equal(kept.min(axis=1), every.min(axis=1))
     column = {name: k for k, name in enumerate(walls.names)}
-    np.testing.assert_array_equal(kept, every[:, [column[name] for name in near.names]])
+    same = every[:, [column[name] for name in near.names]]
+    np.testing.assert_array_equal(kept.min(axis=1), every.min(axis=1))
+    measured = np.isfinite(kept)
+    np.testing.assert_array_equal(kept[measured], same[measured])  # a gap measured is the gap
     reach = close + _CONTACT_MARGIN
+    assert (same[~measured] > reach).all()  # one left out is beyond the close threshold and the margin
     assert set(zip(*np.nonzero(every < reach), strict=True)) == {
         (row, column[near.names[col]]) for row, col in zip(*np.nonzero(kept < reach), strict=True)}
 
@@ -47,6 +49,8 @@ def test_left_out_obstacles_change_no_least_gap_and_no_close_gap(seed: int, clos
 def test_a_room_without_static_obstacles_or_samples() -> None:
     rng = np.random.default_rng(0)
     empty = _Obstacles((), np.zeros((0, 5)), np.zeros(0, dtype=bool))
-    assert _near(empty, _drive(rng, 10), ROBOT, 0.25) is empty
+    near, gaps = _static_gaps(empty, _drive(rng, 10), ROBOT, 0.25)
+    assert near is empty and gaps.shape == (10, 0)
     walls = _walls(rng, 10)
-    assert _near(walls, np.zeros((0, 3)), ROBOT, 0.25) is walls
+    near, gaps = _static_gaps(walls, np.zeros((0, 3)), ROBOT, 0.25)
+    assert near is walls and gaps.shape == (0, 10)
