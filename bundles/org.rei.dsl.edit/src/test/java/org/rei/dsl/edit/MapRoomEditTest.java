@@ -17,14 +17,17 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.rei.context.Direction;
 import org.rei.dsl.edit.EditOperation.AddGoal;
+import org.rei.dsl.edit.EditOperation.AddHuman;
 import org.rei.dsl.edit.EditOperation.AddObject;
 import org.rei.dsl.edit.EditOperation.AddWall;
 import org.rei.dsl.edit.EditOperation.MoveObject;
+import org.rei.dsl.edit.EditOperation.Waypoint;
 import org.rei.dsl.edit.diagram.Diagram;
 
 /**
  * A room from an occupancy map (the DSL tests' 12 x 8 cell map, six free blocks of 0.2 m) is edited like every
- * other room: furniture and goals on its free floors, saved through the serializer without touching the map line.
+ * other room: furniture, humans and goals on its free floors, saved through the serializer without touching the map
+ * line.
  */
 class MapRoomEditTest {
 
@@ -77,6 +80,44 @@ class MapRoomEditTest {
 		assertEquals(0.1, f31.centreX(), 1e-9);
 		assertEquals(0.7, f31.centreY(), 1e-9);
 		assertEquals(original, document.undo().text());
+	}
+
+	@Test
+	void aHumanWalksTheMapsFreeFloorsAndIsSavedAndReadBack(@TempDir Path folder) throws IOException {
+		Path file = write(folder);
+		RoomDocument document = RoomDocument.open(file);
+		String original = document.text();
+		// the free blocks of the map are F_2_1..F_4_1 and F_1_2..F_4_2; F_1_1 is on its wall
+		assertThrows(EditRefusedException.class, () -> document.apply(new AddHuman("lost", null,
+				List.of(new Waypoint("F_1_2", 0), new Waypoint("F_1_1", 3)), true)));
+		AddHuman add = new AddHuman("visitor", null, List.of(new Waypoint("F_1_2", 0), new Waypoint("F_3_2", 4),
+				new Waypoint("F_3_1", 6.5)), true);
+		EditResult result = document.apply(add);
+
+		assertEquals(List.of("+    human visitor trajectory [F_1_2 @ 0s, F_3_2 @ 4s, F_3_1 @ 6.5s] loop"),
+				Texts.diff(original, result.text()));
+		assertEquals(List.of(), result.issues());
+		Texts.assertReadsBackAsEdited(original, document.uri(), result.text(), add);
+
+		document.save();
+		RoomDocument reopened = RoomDocument.open(file);
+		assertEquals(result.text(), Files.readString(file));
+		assertEquals(List.of(), reopened.issues());
+		assertEquals("occupancy", reopened.diagram().room().form());
+		Diagram.Mover visitor = reopened.diagram().movers().stream().filter(m -> m.name().equals("visitor"))
+				.findFirst().orElseThrow();
+		assertEquals(List.of("human", "Human", true), List.of(visitor.kind(), visitor.footprint().type(),
+				visitor.loop()));
+		// in the map's frame: origin (-0.6, 0.4) + (3.5, 2.5) * 0.2
+		assertEquals(new Diagram.Waypoint("F_3_2", 4, 0.1, 0.9), roundedPoint(visitor.points().get(1)));
+		assertEquals(List.of("F_1_2", "F_3_2", "F_3_1"), visitor.points().stream().map(Diagram.Waypoint::floor)
+				.toList());
+	}
+
+	/** A waypoint with its centre rounded to micrometres: the map's frame is sums of decimal fractions. */
+	private static Diagram.Waypoint roundedPoint(Diagram.Waypoint point) {
+		return new Diagram.Waypoint(point.floor(), point.seconds(), Math.round(point.x() * 1e6) / 1e6,
+				Math.round(point.y() * 1e6) / 1e6);
 	}
 
 	@Test
