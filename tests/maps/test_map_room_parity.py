@@ -10,8 +10,9 @@ warm JVM for the many small ones) and checked against ``floor_blocks``, ``merge_
 
 * the two maps from Nav2's bringup (the depot, and tb3_sandbox with and without ``unknownFree``);
 * small maps this test writes, covering every mode (trinary, scale, raw, and the default), negate, thresholds,
-  PGM P2/P5 with 8 and 16 bits and an odd maxval, PNG grey (4, 8, 16 bits, with alpha, with a transparent key),
-  RGB (8, 16 bits, with a transparent key), RGBA (8, 16 bits) and palettes (with and without tRNS alpha).
+  PGM P2/P5 with 8 and 16 bits and maxvals below 255 and odd ones above, and every PNG colour type at every bit
+  depth it allows: grey (1, 2, 4, 8, 16 bits), grey with alpha (8, 16), RGB and RGBA (8, 16), grey and RGB with a
+  tRNS transparent key (8, 16) and palettes (1, 2, 4, 8 bits, with and without tRNS alpha).
 
 Bad input goes through ``rei generate``: each case is an error at the ``.rei`` file's line and column naming the
 YAML field (with its line and column) or the image's problem, exit code 1, and nothing generated.
@@ -169,7 +170,7 @@ class Variant:
     negate: int
     occupied: float
     free: float
-    depth: int = 8  # PNG bit depth; for PGM the maxval is `maxval`
+    depth: int = 8  # PNG bit depth (a palette's index depth); for PGM the maxval is `maxval`
     maxval: int = 255
     palette_alpha: bool = False
     resolution: float = 0.05
@@ -200,6 +201,16 @@ VARIANTS = [
     Variant("png-palette-alpha-scale", "png-palette", "scale", 0, 0.65, 0.196, palette_alpha=True),
     Variant("png-palette-alpha-trinary-negate", "png-palette", "trinary", 1, 0.65, 0.3, palette_alpha=True,
             unknown_free=True),
+    Variant("p5-maxval-15-trinary", "p5", "trinary", 0, 0.65, 0.196, maxval=15),
+    Variant("p2-maxval-100-scale-negate", "p2", "scale", 1, 0.65, 0.25, maxval=100, unknown_free=True),
+    Variant("png-grey1-trinary", "png-grey", "trinary", 0, 0.65, 0.196, depth=1),
+    Variant("png-grey2-scale-negate", "png-grey", "scale", 1, 0.65, 0.2, depth=2),
+    Variant("png-grey-alpha16-scale", "png-grey-alpha", "scale", 0, 0.65, 0.196, depth=16),
+    Variant("png-grey16-key-trinary", "png-grey-key", "trinary", 0, 0.65, 0.196, depth=16),
+    Variant("png-rgb16-key-scale", "png-rgb-key", "scale", 0, 0.65, 0.196, depth=16),
+    Variant("png-palette1-trinary", "png-palette", "trinary", 0, 0.65, 0.196, depth=1),
+    Variant("png-palette2-scale-alpha", "png-palette", "scale", 0, 0.65, 0.196, depth=2, palette_alpha=True),
+    Variant("png-palette4-raw", "png-palette", "raw", 0, 0.65, 0.196, depth=4, floor_size=0.2),
 ]
 
 WIDTH, HEIGHT = 48, 36
@@ -243,6 +254,9 @@ def write_image(path: Path, variant: Variant, shade: np.ndarray, alpha: np.ndarr
     full = 2 ** variant.depth - 1
     grey = np.rint(shade * full).astype(np.int64)
     a = np.rint(alpha * full).astype(np.int64)
+    if variant.image == "png-palette" and variant.depth < 8:
+        write_small_palette(path, variant, shade)
+        return
     if variant.image == "png-palette":
         # a palette of greys and a few colours; with tRNS some entries are (partly) transparent
         colours: dict[tuple[int, ...], int] = {}
@@ -281,6 +295,22 @@ def write_image(path: Path, variant: Variant, shade: np.ndarray, alpha: np.ndarr
                             bitdepth=variant.depth, transparent=key)
     with path.open("wb") as stream:
         writer.write(stream, pixels.tolist())
+
+
+def write_small_palette(path: Path, variant: Variant, shade: np.ndarray) -> None:
+    """A palette of 2^depth entries, evenly spaced greys (every third one tinted, its mean still near the grey);
+    each pixel takes the entry nearest its shade. With tRNS alpha every other entry but white is half transparent."""
+    entries = 2 ** variant.depth
+    palette: list[tuple[int, ...]] = []
+    for k in range(entries):
+        g = round(k * 255 / (entries - 1))
+        colour: tuple[int, ...] = (g, g, g) if k % 3 else (g, min(255, g + 30), max(0, g - 30))
+        if variant.palette_alpha:
+            colour = (*colour, 255 if k % 2 == 0 or k == entries - 1 else 128)  # white (the floor) opaque
+        palette.append(colour)
+    rows = np.rint(shade * (entries - 1)).astype(np.int64).tolist()
+    with path.open("wb") as stream:
+        png.Writer(shade.shape[1], shade.shape[0], palette=palette, bitdepth=variant.depth).write(stream, rows)
 
 
 def write_map(folder: Path, variant: Variant, seed: int) -> Path:
@@ -324,16 +354,20 @@ def test_small_maps_generate_as_python_reads_them(generator: Path, tmp_path: Pat
 
 
 def test_the_small_maps_cover_every_reading() -> None:
-    """The variants above are what this file claims: every mode, negate, both PGM encodings at 8 and 16 bits, and
-    every PNG colour type with alpha, palette and transparent keys."""
+    """The variants above are what this file (and docs/language.md) claims: every mode, negate, both PGM encodings
+    at 8 and 16 bits and maxvals below 255, and every PNG colour type at each of its bit depths, with alpha,
+    palette alpha and transparent keys at 8 and 16 bits."""
     assert {v.mode for v in VARIANTS} == {None, "trinary", "scale", "raw"}
     for mode in ("trinary", "scale", "raw"):
         assert {v.negate for v in VARIANTS if (v.mode or "trinary") == mode} == {0, 1}, mode
     assert {(v.image, v.maxval > 255) for v in VARIANTS if v.image in ("p2", "p5")} == {
         ("p2", False), ("p2", True), ("p5", False), ("p5", True)}
-    assert {v.image for v in VARIANTS} >= {"png-grey", "png-grey-alpha", "png-grey-key", "png-rgb", "png-rgb-key",
-                                           "png-rgba", "png-palette"}
-    assert {v.depth for v in VARIANTS if v.image.startswith("png")} == {4, 8, 16}
+    assert {v.maxval for v in VARIANTS if v.image in ("p2", "p5") and v.maxval < 255} >= {15, 100}
+    # PNG's colour types and the bit depths each allows (PNG specification, table 11.1)
+    depths = {"png-grey": {1, 2, 4, 8, 16}, "png-grey-alpha": {8, 16}, "png-grey-key": {8, 16}, "png-rgb": {8, 16},
+              "png-rgb-key": {8, 16}, "png-rgba": {8, 16}, "png-palette": {1, 2, 4, 8}}
+    for image, allowed in depths.items():
+        assert {v.depth for v in VARIANTS if v.image == image} == allowed, image
     assert {v.palette_alpha for v in VARIANTS if v.image == "png-palette"} == {False, True}
     assert {v.unknown_free for v in VARIANTS} == {False, True}
 
