@@ -9,7 +9,8 @@ from pathlib import Path
 import pybullet as p
 import pytest
 
-from rei.artifacts import ArtifactError, read_world
+from rei.artifacts import ArtifactError, Category, read_world
+from rei.geometry import Twist2D
 from rei.sim.simulation import Simulation
 from rei.sim.world_loader import load_world
 
@@ -99,3 +100,24 @@ def test_static_body_with_mass_is_refused(room: Path, tmp_path: Path) -> None:
     finally:
         p.disconnect(client)
     assert "model 'table1' is STATIC but has mass 5.0; fixed bodies need mass 0" in str(info.value)
+
+
+def test_a_map_room_s_floors_are_places_on_the_ground_slab_not_bodies(map_case: Path) -> None:
+    world = read_world(map_case / "world.json")
+    floors = [o for o in world.objects if o.category is Category.FLOOR]
+    with Simulation(map_case) as sim:
+        loaded = sim.world
+        assert loaded.ground is not None and floors
+        assert list(loaded.body_of) == [o.name for o in world.objects]  # every name kept, floors on the slab
+        assert {loaded.body_of[o.name] for o in floors} == {loaded.ground}
+        others = [o for o in world.objects if o.category is not Category.FLOOR]
+        assert p.getNumBodies(physicsClientId=sim.client) == len(others) + 2  # and the ground and the robot
+        for floor in floors:  # a point on the slab is named after the floor it lies on
+            x, y = floor.pose[0] + 0.3 * floor.size[0], floor.pose[1] - 0.3 * floor.size[1]
+            assert loaded.contact_name(loaded.ground, (x, y, 0.0)) == floor.name
+        for _ in range(240):  # the robot stands on the slab, which is no contact
+            sim.step(Twist2D(0.0, 0.0))
+        state = sim.state()
+        assert abs(state.robot.pose[2]) < 0.01 and state.contacts == ()
+        under = p.getContactPoints(bodyA=sim.robot_body, bodyB=loaded.ground, physicsClientId=sim.client)
+        assert {loaded.contact_name(loaded.ground, pt[6]) for pt in under} == {world.robot.floor}

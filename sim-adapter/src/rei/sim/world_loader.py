@@ -12,6 +12,10 @@ fixed bodies whose compound shapes hold up to ``COMPOUND_LIMIT`` boxes each (pyb
 other together (Z-order of their centres), so the broadphase still sees small bodies where they are; the other
 models are loaded from world.sdf as before. A contact with a merged body is named after its box nearest the
 contact point.
+
+A room from an occupancy map stands on one ground slab under the whole map, so its floors (the free blocks, named
+places only) get no collision body of their own: each floor's name maps to the slab, whose contact points are
+named after the floor block nearest them. Only the models that do become bodies count towards the merge limit.
 """
 
 from __future__ import annotations
@@ -37,7 +41,7 @@ SDF_BODY_LIMIT = 512
 COMPOUND_LIMIT = 16
 """The most children pybullet's ``createCollisionShapeArray`` keeps (it drops the others silently)."""
 MERGE_ABOVE = SDF_BODY_LIMIT
-"""Worlds of more models than this have their walls and floors merged."""
+"""Worlds of more models than this (not counting a map room's floors) have their walls and floors merged."""
 MERGED_CATEGORIES = (Category.WALL, Category.FLOOR)
 GROUND = 0.01
 """Thickness (m) of the ground under a room from an occupancy map: a floor's (the generator's floor slabs)."""
@@ -74,7 +78,8 @@ class LoadedWorld:
     """The bodies that hold many models (empty unless the world has more than ``MERGE_ABOVE`` models)."""
     ground: int | None = None
     """A room from an occupancy map: a fixed slab under the whole map, level with the floors' tops. Its floors
-    are the free blocks only, and the robot drives between them up to the map's walls."""
+    are the free blocks only, and the robot drives between them up to the map's walls; they have no bodies of
+    their own: ``body_of`` maps each to the slab, and ``merged`` names a point on the slab after its floor."""
 
     def contact_name(self, body: int, position: Sequence[float]) -> str | None:
         """The model touched at ``position`` on ``body``, or None for a body that is no model of the world."""
@@ -90,13 +95,17 @@ def load_world(client: int, sdf_path: Path | str, world: WorldSpec) -> LoadedWor
     p.setGravity(0.0, 0.0, -GRAVITY, physicsClientId=client)
     expected = [o.name for o in world.objects]
     merged: dict[int, MergedBoxes] = {}
-    if len(world.objects) <= MERGE_ABOVE:
+    placed = [o for o in world.objects if world.map is None or o.category is not Category.FLOOR]
+    if len(placed) == len(world.objects) <= MERGE_ABOVE:
         ids = _load_sdf(client, sdf_path, sdf_path)
         names = [p.getBodyInfo(b, physicsClientId=client)[1].decode("utf-8") for b in ids]
         if names != expected:
             raise ArtifactError(sdf_path, _difference(names, expected, world.path.name))
     else:
-        names, ids, merged = _load_large(client, sdf_path, world)
+        names, ids, merged = _load_large(client, sdf_path, world, merge=len(placed) > MERGE_ABOVE)
+    ground = _ground(client, world, merged) if world.map is not None else None
+    if ground is not None:
+        ids = [ground if body < 0 else body for body in ids]
     single = [(body, obj) for body, obj in zip(ids, world.objects, strict=True) if body not in merged]
     for body, obj in single:
         mass = p.getDynamicsInfo(body, -1, physicsClientId=client)[0]
@@ -115,17 +124,28 @@ def load_world(client: int, sdf_path: Path | str, world: WorldSpec) -> LoadedWor
         name_of=MappingProxyType({body: obj.name for body, obj in single}),
         spec_of=MappingProxyType({o.name: o for o in world.objects}),
         merged=MappingProxyType(merged),
-        ground=_ground(client, world) if world.map is not None else None,
+        ground=ground,
     )
 
 
-def _ground(client: int, world: WorldSpec) -> int:
-    """A slab over the world's bounds whose top is the floors' top (z = 0), as thick as a floor."""
+def _ground(client: int, world: WorldSpec, merged: dict[int, MergedBoxes]) -> int:
+    """A slab over the world's bounds whose top is the floors' top (z = 0), as thick as a floor; entered in
+    ``merged`` with the floors' boxes, so a point on it is named after the floor it lies on."""
     xmin, ymin, xmax, ymax = world.bounds
     shape = p.createCollisionShape(p.GEOM_BOX, halfExtents=[(xmax - xmin) / 2, (ymax - ymin) / 2, GROUND / 2],
                                    physicsClientId=client)
-    return p.createMultiBody(0.0, shape, -1, basePosition=[(xmin + xmax) / 2, (ymin + ymax) / 2, -GROUND / 2],
+    body = p.createMultiBody(0.0, shape, -1, basePosition=[(xmin + xmax) / 2, (ymin + ymax) / 2, -GROUND / 2],
                              useMaximalCoordinates=True, physicsClientId=client)
+    floors = [o for o in world.objects if o.category is Category.FLOOR]
+    yaws = np.array([o.pose[3] for o in floors], dtype=float)
+    merged[body] = MergedBoxes(
+        body=body,
+        names=tuple(o.name for o in floors),
+        centres=np.array([o.pose[:2] for o in floors], dtype=float).reshape(-1, 2),
+        half=np.array([o.size[:2] for o in floors], dtype=float).reshape(-1, 2) / 2,
+        cos_sin=np.column_stack([np.cos(yaws), np.sin(yaws)]).reshape(-1, 2),
+    )
+    return body
 
 
 def _load_sdf(client: int, path: Path, shown: Path) -> list[int]:
@@ -137,10 +157,10 @@ def _load_sdf(client: int, path: Path, shown: Path) -> list[int]:
 
 
 def _load_large(
-    client: int, sdf_path: Path, world: WorldSpec
+    client: int, sdf_path: Path, world: WorldSpec, *, merge: bool
 ) -> tuple[list[str], list[int], dict[int, MergedBoxes]]:
-    """The walls and floors merged per category, the other models loaded from a copy of world.sdf holding only
-    them; names and body ids in world.json's order."""
+    """The walls and floors merged per category (when ``merge``), a map room's floors left out (body id -1), the
+    other models loaded from a copy of world.sdf holding only them; names and body ids in world.json's order."""
     root = ET.parse(sdf_path).getroot()
     holder = root.find("world")
     holder = holder if holder is not None else root
@@ -150,8 +170,13 @@ def _load_large(
     if loaded != expected:
         raise ArtifactError(sdf_path, _difference([n or "" for n in loaded], expected, world.path.name))
     boxes: dict[Category, list[tuple[str, tuple[float, ...], tuple[float, ...]]]] = {c: [] for c in MERGED_CATEGORIES}
+    body_of: dict[str, int] = {}
     for model, obj in zip(models, world.objects, strict=True):
-        box = _fixed_box(model) if obj.category in MERGED_CATEGORIES else None
+        if world.map is not None and obj.category is Category.FLOOR:
+            body_of[obj.name] = -1
+            holder.remove(model)
+            continue
+        box = _fixed_box(model) if merge and obj.category in MERGED_CATEGORIES else None
         if box is not None:
             boxes[obj.category].append((obj.name, *box))
             holder.remove(model)
@@ -161,7 +186,6 @@ def _load_large(
             sdf_path,
             f"{len(rest)} models besides walls and floors: pybullet loads at most {SDF_BODY_LIMIT} from one file",
         )
-    body_of: dict[str, int] = {}
     if rest:
         for uri in holder.iter("uri"):  # mesh files are relative to world.sdf's folder
             if uri.text and not Path(uri.text.strip()).is_absolute():
