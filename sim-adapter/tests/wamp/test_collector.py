@@ -117,8 +117,7 @@ def test_objects_select_the_moving_objects_in_every_message(tmp_path: Path, worl
     messages = _run(tmp_path, CollectorConfig(rate_hz=20.0, objects=objects), 480, world)
     assert {o["name"] for m in messages for o in m["objects"] if o["type"] in ("HUMAN", "DYNAMIC")} == published
     full = [m for m in messages if m.get("full")]
-    assert len(full) == 2 and all(o["type"] in ("WALL", "STATIC") or o["name"] in published
-                                  for m in full for o in m["objects"])
+    assert len(full) == 2 and all(o["name"] in published for m in full for o in m["objects"])
     with DataCollector("run1", tmp_path / "c", config=CollectorConfig(objects=objects), world=world) as collector:
         wire = collector.serve_config()["collector"]["objects"]
     assert wire == (None if objects is None else list(objects))
@@ -128,3 +127,15 @@ def test_objects_must_name_a_moving_object_or_a_category(tmp_path: Path, world):
     with pytest.raises(ValueError, match=r"'table1' is neither a moving object of the case \(h1\) nor a category "
                                          r"\(DYNAMIC, HUMAN\)"):
         DataCollector("run1", tmp_path, config=CollectorConfig(objects=("table1",)), world=world)
+
+
+def test_full_frames_carry_no_static_obstacle_of_the_world(tmp_path: Path, world):
+    # world.json's walls and static furniture never move: a receiver has them from world.json, and repeating them
+    # made every full frame of a map room (1,327 walls in Nav2's depot) ~140 KB
+    statics = {o["name"] for o in world["objects"] if o["category"] in ("WALL", "STATIC", "FLOOR")}
+    assert statics
+    messages = _run(tmp_path, CollectorConfig(rate_hz=20.0, full_frame_period=1.0), 480, world)
+    full = [m for m in messages if m.get("full")]
+    assert [m["seq"] for m in full] == [0, 20]
+    assert all({o["name"] for o in m["objects"]} == {"h1"} for m in messages)
+    assert statics.isdisjoint(o["name"] for m in messages for o in m["objects"])

@@ -101,7 +101,7 @@ class LaserMode(enum.Enum):
     NONE = "none"
 
 
-#: Categories of world.json objects repeated in full frames (they never move; floors are not obstacles).
+#: Categories of world.json's static obstacles (they never move; floors are not obstacles).
 STATIC_CATEGORIES = frozenset({"WALL", "STATIC"})
 
 
@@ -130,7 +130,9 @@ def encode_object(name: str, category: str, pose: Sequence[float], twist: Sequen
 
 
 def static_objects(world: Mapping[str, Any] | None) -> list[dict[str, Any]]:
-    """The ``objects`` entries a full frame adds: world.json's walls and static furniture, at rest."""
+    """world.json's walls and static furniture at rest, as ``objects`` entries. REI's collector leaves them out
+    of its full frames (receivers have them from world.json); a producer may still re-list them
+    (docs/protocol.md), as the monitor's tests of that path do."""
     if world is None:
         return []
     return [

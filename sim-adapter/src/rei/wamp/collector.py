@@ -31,7 +31,6 @@ from rei.wamp.codec import (
     encode_mission_event,
     encode_state,
     pack,
-    static_objects,
 )
 from rei.wamp.recording import RecordingWriter, stream_path
 from rei.wamp.topics import Topics
@@ -149,7 +148,6 @@ class DataCollector:
         self._full_clock = (
             _SimClock(self.config.full_frame_period) if self.config.full_frame_period > 0 else None
         )
-        self._static = static_objects(world)
         self._observed = self.config.observed(world)
         self._served = _check_packable(
             "config",
@@ -197,7 +195,8 @@ class DataCollector:
             contacts=self.config.contacts,
             odometry=self.config.odometry,
             nav_state=nav_state if self.config.nav_state else None,
-            full_frame_objects=self._static if full else None,
+            # world.json's statics are left out: they never move, and a map room has thousands of them
+            full_frame_objects=() if full else None,
             observed=self._observed,
         )
         self._recording.write(message)

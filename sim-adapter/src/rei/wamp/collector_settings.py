@@ -7,7 +7,7 @@ FILE``. Every key is optional; what is left out keeps its default::
     contacts: true         # the simulator's contact pairs
     odometry: true         # the robot's odometry pose
     nav_state: true        # the navigation's state (IDLE, ACTIVE, ...)
-    full_frame_period: 1.0 # seconds between full frames (every static object again); 0: the first only
+    full_frame_period: 1.0 # seconds between full frames (every published moving object); 0: the first only
     objects: [walker, DYNAMIC]  # the moving objects published, by name or category (default: all)
 
 A problem names the file, the line and column, and what was expected: a typo must not silently run with a

@@ -17,9 +17,9 @@ TransportKind = Literal["websocket", "rawsocket"]
 Serializer = Literal["msgpack", "json", "cbor"]
 
 #: Largest WAMP message the router accepts and the Java clients read (bytes; contract/vocabulary.json). A 360-beam
-#: state is ~4 KB, but a full frame lists every static obstacle and the config RPC carries world.json: a room from
-#: an occupancy map has thousands of walls (the depot's full frame is 130 KB, its world.json 460 KB).
-MAX_MESSAGE_SIZE = 1 << 24
+#: state is ~4 KB (full frames carry no static obstacle), but the config RPC carries world.json: a room from an
+#: occupancy map has thousands of walls (msgpack: the depot's 404 KB, the 30 x 50 m test building's 894 KB).
+MAX_MESSAGE_SIZE = 1 << 20
 
 
 @dataclass(frozen=True, slots=True)

@@ -58,9 +58,9 @@ public final class LiveMonitor implements AutoCloseable {
 	private static final int RECONNECT_MILLIS = 200;
 	/**
 	 * Largest message read (bytes; contract/vocabulary.json's max_message_size, the router's limit too). netty's
-	 * default of 64 KB closed the connection at every full frame of a room with a thousand walls (an occupancy map).
+	 * default of 64 KB is less than the config RPC's world.json of a room from an occupancy map (the depot's: 404 KB).
 	 */
-	public static final int MAX_MESSAGE_SIZE = 1 << 24;
+	public static final int MAX_MESSAGE_SIZE = 1 << 20;
 	/** Bounds of close(): the router may be gone for good. */
 	private static final long CLOSE_OUTBOX_MILLIS = 5_000;
 	private static final long CLOSE_SESSION_SECONDS = 10;
