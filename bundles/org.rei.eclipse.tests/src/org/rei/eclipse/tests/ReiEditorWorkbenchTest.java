@@ -262,6 +262,49 @@ class ReiEditorWorkbenchTest {
 		Workbench.page().closeEditor(active, false);
 	}
 
+	/**
+	 * A room from an occupancy map: the language server and the generator read the map (its YAML with SnakeYAML,
+	 * its image) beside the file, inside the plug-in as on the command line.
+	 */
+	@Test
+	@Order(8)
+	void aMapRoomIsCheckedAgainstItsMapAndGeneratesTheMapCopy() throws Exception {
+		Path maps = Path.of(System.getProperty("rei.root"), "examples", "maps");
+		String testCase = Files.readString(maps.resolve("two_rooms.rei"));
+		assertTrue(testCase.contains("occupancy \"two_rooms.yaml\""), "the example still names its map");
+		Workbench.write(project, "two_rooms.yaml", Files.readString(maps.resolve("two_rooms.yaml")));
+		byte[] image = Files.readAllBytes(maps.resolve("two_rooms.pgm"));
+		Workbench.write(project, "two_rooms.pgm", image);
+		IFile file = Workbench.write(project, "map_room.rei", testCase.replace("\"two_rooms.yaml\"", "\"no_such_map.yaml\""));
+		ITextEditor editor = (ITextEditor) IDE.openEditor(Workbench.page(), file);
+		try {
+			IDocument document = Workbench.documentOf(editor);
+			int map = document.get().indexOf("\"no_such_map.yaml\"");
+			Workbench.waitUntil(() -> Workbench.markers(file).stream()
+					.anyMatch(marker -> marker.getAttribute(IMarker.CHAR_START, -1) == map
+							&& marker.getAttribute(IMarker.SEVERITY, -1) == IMarker.SEVERITY_ERROR
+							&& marker.getAttribute(IMarker.MESSAGE, "").contains("no_such_map.yaml")),
+					SERVER_MILLIS, () -> "an error at the map's name; markers: " + Workbench.describe(Workbench.markers(file)));
+
+			document.replace(map, "\"no_such_map.yaml\"".length(), "\"two_rooms.yaml\"");
+			Workbench.waitUntil(() -> Workbench.markers(file).isEmpty(), SERVER_MILLIS,
+					() -> "no markers once the map exists; markers: " + Workbench.describe(Workbench.markers(file)));
+			editor.doSave(null);
+
+			PlatformUI.getWorkbench().getService(IHandlerService.class).executeCommand(ReiIds.GENERATE_COMMAND, null);
+			Job.getJobManager().join(ReiIds.JOB_FAMILY, null);
+			Workbench.flush(200);
+			Path written = Generator.outputFor(file.getLocation().toFile().toPath());
+			assertArrayEquals(image, Files.readAllBytes(written.resolve("map.pgm")), "the map's image, copied byte for byte");
+			assertTrue(Files.readString(written.resolve("map.yaml")).contains("image: map.pgm"),
+					"the copy's YAML names the copied image");
+			String world = Files.readString(written.resolve("world.json"));
+			assertTrue(world.contains("\"W_map_"), "the map's obstacles are walls of the world");
+		} finally {
+			Workbench.page().closeEditor(editor, false);
+		}
+	}
+
 	private static List<String> names(Path folder) throws IOException {
 		try (Stream<Path> files = Files.list(folder)) {
 			return files.map(path -> path.getFileName().toString()).sorted().toList();

@@ -50,8 +50,12 @@ final class Workbench {
 	}
 
 	static IFile write(IProject project, String name, String text) throws CoreException {
+		return write(project, name, text.getBytes(StandardCharsets.UTF_8));
+	}
+
+	static IFile write(IProject project, String name, byte[] bytes) throws CoreException {
 		IFile file = project.getFile(name);
-		ByteArrayInputStream contents = new ByteArrayInputStream(text.getBytes(StandardCharsets.UTF_8));
+		ByteArrayInputStream contents = new ByteArrayInputStream(bytes);
 		if (file.exists()) {
 			file.setContents(contents, IResource.FORCE, null);
 		} else {
