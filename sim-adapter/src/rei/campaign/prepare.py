@@ -19,7 +19,7 @@ from pathlib import Path
 
 from rei.campaign.plan import CaseSource
 from rei.maps import MapError, load_map
-from rei.maps.references import OCCUPANCY, map_path, unquoted
+from rei.maps.references import map_path, map_reference, unescaped
 from rei.run.jvm import run_jar
 
 STAMP = ".source.sha256"
@@ -94,7 +94,7 @@ def source_digest(rei: Path) -> str:
     text = rei.read_bytes()
     digest = hashlib.sha256(text)
     decoded = text.decode("utf-8", errors="replace")
-    used = [rei.parent / unquoted(path) for path in _IMPORT.findall(decoded)]
+    used = [rei.parent / unescaped(path) for path in _IMPORT.findall(decoded)]
     yaml = map_path(decoded, rei.parent)
     if yaml is not None:
         used.append(yaml)
@@ -111,9 +111,14 @@ def relocated_imports(text: str, origin: Path, folder: Path) -> str:
     relative to ``folder``, where it is written instead (rei.search: a candidate or shrunk case imports the base
     case's catalogues and stands in its building)."""
 
-    def relocate(match: re.Match[str]) -> str:
-        moved = Path(os.path.relpath((origin / unquoted(match.group(1))).resolve(), folder.resolve())).as_posix()
-        return match.group(0)[:match.start(1) - match.start(0) - 1] + json.dumps(moved)
+    def moved(path: str) -> str:
+        return json.dumps(Path(os.path.relpath((origin / path).resolve(), folder.resolve())).as_posix())
 
-    return OCCUPANCY.sub(relocate, _IMPORT.sub(relocate, text))
+    def relocate(match: re.Match[str]) -> str:
+        return match.group(0)[:match.start(1) - match.start(0) - 1] + moved(unescaped(match.group(1)))
+
+    occupancy = map_reference(text)
+    if occupancy is not None:  # first: its offsets are those of the text before the imports are rewritten
+        text = text[:occupancy.start] + moved(occupancy.path) + text[occupancy.end:]
+    return _IMPORT.sub(relocate, text)
 

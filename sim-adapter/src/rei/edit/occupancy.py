@@ -1,34 +1,36 @@
 # SPDX-License-Identifier: EPL-2.0
-"""The occupancy map under a room from an occupancy map, for the room editor's page: the map the text names
-(``room NAME occupancy "FILE.yaml"``, relative to the file), as the picture the report and the live view draw.
+"""The occupancy map under a room from an occupancy map, for the room editor's page: the map of the engine's
+diagram (``room.map``: the DSL's own reading of the room, relative paths resolved), as the picture the report and
+the live view draw.
 
-The engine's diagram gives the floors (the map's free blocks) but not the map; the map is found in the text, so
-an edit of the path shows at once. A map that cannot be read gives no picture: the validator already puts its
-error on the room. Pictures are kept while the map's files are unchanged, so a State costs no map reading.
+A map that cannot be read gives no picture: the validator already puts its error on the room. Pictures are kept
+while the map's files are unchanged, so a State costs no map reading.
 """
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
 from rei.maps import MapError, load_map, map_picture
-from rei.maps.references import map_path
 
 
 class MapPictures:
-    """The picture of the map a test case's text names, cached by the map files' modification times."""
+    """The picture of the map a diagram's room is drawn on, cached by the map files' modification times."""
 
-    def __init__(self, folder: Path) -> None:
-        self.folder = folder
+    def __init__(self) -> None:
         self._key: tuple[Any, ...] | None = None
         self._value: dict[str, Any] | None = None
 
-    def of_text(self, text: str) -> dict[str, Any] | None:
-        """``{png, extent, origin}`` (a data URI, the metres it covers, the map's origin), or None."""
-        yaml = map_path(text, self.folder)
-        if yaml is None:
+    def of_diagram(self, diagram: Mapping[str, Any] | None) -> dict[str, Any] | None:
+        """``{png, extent, origin}`` (a data URI, the metres it covers, the map's origin), or None for a room
+        without a map (or a text the engine could not lay out)."""
+        room = (diagram or {}).get("room") or {}
+        occupancy = room.get("map")
+        if not occupancy:
             return None
+        yaml = Path(occupancy["yaml"])
         key = (yaml, *_stamps(yaml))
         if key != self._key:
             self._key, self._value = key, _picture(yaml)

@@ -64,7 +64,7 @@ class EditSession:
         if self._disk.text is None:
             raise FileNotFoundError(f"{path}: no such file")
         self._disk_changed = False
-        self._maps = MapPictures(path.resolve().parent)
+        self._maps = MapPictures()
         self._answer = engine.request("open", path=str(path.resolve()))
 
     # -- what the page reads ------------------------------------------------------------------------------------
@@ -82,7 +82,7 @@ class EditSession:
             return {**self._status(), "file": str(self.path), "text": answer["text"],
                     "diagram": answer.get("diagram"), "issues": answer.get("issues", []),
                     "palette": answer.get("palette", []), "notice": notice,
-                    "occupancy": self._maps.of_text(str(answer["text"]))}
+                    "occupancy": self._maps.of_diagram(answer.get("diagram"))}
 
     # No lock for these two: `rei edit` asks them when it stops, and a request may hold the lock for as long as a
     # hung engine takes to be stopped. Each reads references that are replaced whole, never changed in place.
