@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: EPL-2.0
 """The room editor's state of a room from an occupancy map, from a real edit engine: the picture under the floors is
 the map of the engine's diagram (the DSL's reading of the room, so every order of its header works: here
-floorSize first)."""
+floorSize first), and the paths the page receives are relative to the case's folder, not the machine's."""
 
 from __future__ import annotations
 
@@ -29,3 +29,6 @@ def test_a_map_room_written_floor_size_first_is_drawn_on_its_map(open_editor, tm
     state = editor.session.state()
     assert state["occupancy"] is not None, state["issues"]
     assert state["occupancy"]["extent"] == [0.0, 0.0, 10.0, 6.0] and state["occupancy"]["png"].startswith("data:")
+    room_map = state["diagram"]["room"]["map"]
+    assert (room_map["yaml"], room_map["image"]) == ("maps/two_rooms.yaml", "maps/two_rooms.pgm")
+    assert str(tmp_path) not in str(state["diagram"])

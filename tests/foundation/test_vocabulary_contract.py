@@ -61,7 +61,7 @@ def test_python_copies(contract: dict) -> None:
     assert protocol.URI_TEMPLATE == sut["uri_template"]
     assert (protocol.FROM_SIMULATION, protocol.FROM_SUT, protocol.PROCEDURES) == (
         tuple(sut["from_simulation"]), tuple(sut["from_sut"]), tuple(sut["procedures"]))
-    env = Connection("ws://x", "rei", "r1", Path("auth"), "rs://x").environment()
+    env = Connection("ws://x", "rei", "r1", Path("auth"), "rs://x", Path("case")).environment()
     assert list(env) == sut["environment"] + sut["optional_environment"]
     assert (jvm.REQUEST_WORDS, jvm.ANSWER_WORD) == (tuple(contract["warm_jvm"]["request"]), contract["warm_jvm"]["answer"])
 

@@ -184,7 +184,8 @@ def test_the_environment_table_names_exactly_what_a_started_sut_gets(repo_root: 
     section = DOC.read_text(encoding="utf-8").split("## Environment of a started SUT")[1].split("\n## ")[0]
     documented = re.findall(r"^\| `(REI_\w+)` \|", section, flags=re.MULTILINE)
     contract = json.loads((repo_root / "contract" / "vocabulary.json").read_text(encoding="utf-8"))["sut"]
-    given = Connection("ws://127.0.0.1:1/ws", "rei", "r1", Path("sut.json"), "rs://127.0.0.1:2").environment()
+    given = Connection("ws://127.0.0.1:1/ws", "rei", "r1", Path("sut.json"), "rs://127.0.0.1:2",
+                       Path("out/case")).environment()
     assert sorted(documented) == sorted(given) == sorted(contract["environment"] + contract["optional_environment"])
 
 
@@ -245,7 +246,7 @@ def test_what_rei_sends_and_takes_is_what_the_document_says(
 
     received, sim = runs[lockstep]
     hello = received[0][1]
-    assert hello["map"]["occupancy"] == str((lockstep / "case" / "map.yaml").resolve())
+    assert hello["map"]["occupancy"] == "map.yaml"  # relative to REI_CASE_DIR, the run's case folder
     ticks = [p for name, p in received if name == "tick"]
     assert [p["tick"] for p in ticks] == list(range(len(ticks)))
     assert ticks[0]["odom"]["pose"] == hello["start"] and ticks[1]["odom"]["pose"] != hello["start"]

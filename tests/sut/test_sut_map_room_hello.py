@@ -37,7 +37,7 @@ def test_hello_offers_the_map_s_walls_as_rectangles_and_names_the_map(run_cli, r
     (name, hello), *_ = msgpack.unpackb((out / "contract.msgpack").read_bytes())
     assert name == "hello"
     static = hello["map"]
-    assert static["occupancy"] == str((out / "case" / "map.yaml").resolve())
+    assert static["occupancy"] == "map.yaml"  # relative to REI_CASE_DIR, the run's case folder
     assert static["bounds"] == [0.0, 0.0, 10.0, 6.0]
     offered = {_box(box) for box in static["obstacles"]}
     world = json.loads((out / "case" / "world.json").read_text())

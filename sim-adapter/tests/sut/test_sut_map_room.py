@@ -21,17 +21,18 @@ ROBOT = {"name": "tb3", "footprint": [0.3, 0.3], "max_linear": 0.26, "max_angula
          "lidar": {"beams": 360, "range_min": 0.12, "range_max": 3.5, "rate": 10.0}}
 
 
-def _hello(static_map: StaticMap | None, occupancy: Path | None) -> dict:
+def _hello(static_map: StaticMap | None, occupancy: str | None) -> dict:
     return protocol.hello_answer(run_id="r1", clock="lockstep", control_rate=10.0, deadline=10.0,
                                  start=Pose2D(0.5, 0.5, 0.0), robot=ROBOT, goals=1, static_map=static_map,
                                  occupancy=occupancy)
 
 
 def test_hello_names_the_map_room_s_yaml_only_with_the_static_map() -> None:
-    yaml = SHARED_MAPS / "depot.yaml"
+    yaml = "depot.yaml"  # relative to the case's folder (REI_CASE_DIR)
     hello = _hello(STATIC, yaml)
-    assert hello["map"]["occupancy"] == str(yaml)
-    assert Session.from_hello(hello).occupancy == yaml
+    assert hello["map"]["occupancy"] == yaml
+    assert Session.from_hello(hello, SHARED_MAPS).occupancy == SHARED_MAPS / "depot.yaml"
+    assert Session.from_hello(hello).occupancy == Path("depot.yaml")
     assert "occupancy" not in _hello(STATIC, None)["map"] and Session.from_hello(_hello(STATIC, None)).occupancy is None
     assert _hello(None, yaml)["map"] is None and Session.from_hello(_hello(None, yaml)).occupancy is None
 

@@ -80,7 +80,8 @@ class EditSession:
             notice, self._notice = self._notice, None
             answer = self._answer
             return {**self._status(), "file": str(self.path), "text": answer["text"],
-                    "diagram": answer.get("diagram"), "issues": answer.get("issues", []),
+                    "diagram": _relative_map(answer.get("diagram"), self.path.resolve().parent),
+                    "issues": answer.get("issues", []),
                     "palette": answer.get("palette", []), "notice": notice,
                     "occupancy": self._maps.of_diagram(answer.get("diagram"))}
 
@@ -205,3 +206,14 @@ def _write_atomically(path: Path, text: str) -> None:
         with contextlib.suppress(OSError):
             os.unlink(temporary)
         raise
+
+
+def _relative_map(diagram: dict[str, Any] | None, folder: Path) -> dict[str, Any] | None:
+    """The diagram for the page: a map room's files named relative to the case's folder (the engine resolves them;
+    the browser needs no path of this machine)."""
+    room = (diagram or {}).get("room") or {}
+    occupancy = room.get("map")
+    if diagram is None or not occupancy:
+        return diagram
+    relative = {key: Path(os.path.relpath(occupancy[key], folder)).as_posix() for key in ("yaml", "image")}
+    return {**diagram, "room": {**room, "map": {**occupancy, **relative}}}

@@ -63,11 +63,12 @@ class Session:
     occupancy: Path | None = None  # a map room's map.yaml (map_server format), offered with the static map
 
     @classmethod
-    def from_hello(cls, hello: Mapping[str, Any]) -> Session:
+    def from_hello(cls, hello: Mapping[str, Any], case_dir: Path | None = None) -> Session:
+        """``case_dir``: the run's case folder (``REI_CASE_DIR``), which ``map.occupancy`` is relative to."""
         return cls(run_id=str(hello["run_id"]), clock=str(hello["clock"]), control_rate=float(hello["control_rate"]),
                    deadline=float(hello["deadline"]), start=protocol.read_pose(hello["start"]), robot=hello["robot"],
                    goals=int(hello["goals"]), static_map=protocol.read_static_map(hello),
-                   occupancy=protocol.read_occupancy(hello))
+                   occupancy=protocol.read_occupancy(hello, case_dir))
 
 
 @dataclass(frozen=True, slots=True)
@@ -219,7 +220,8 @@ def run(sut: SystemUnderTest, *, environ: Mapping[str, str] = os.environ, name: 
         # an attached SUT may be quicker than the simulation's registration: retry within the default join window
         hello = client.call_when_registered(protocol.uri(run_id, "hello"), {"name": name or type(sut).__name__},
                                             timeout=DEFAULT_JOIN_TIMEOUT)
-        _serve(sut, client, run_id, _read(Session.from_hello, hello, "hello's answer"), inbox)
+        case_dir = Path(environ["REI_CASE_DIR"]) if environ.get("REI_CASE_DIR") else None
+        _serve(sut, client, run_id, _read(lambda h: Session.from_hello(h, case_dir), hello, "hello's answer"), inbox)
     except WampError as error:
         raise SutConnectionError(str(error)) from None
     except Exception as error:

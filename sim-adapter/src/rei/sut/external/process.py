@@ -38,6 +38,7 @@ class Connection:
     run_id: str
     auth_file: Path | None
     rawsocket_url: str | None = None  # the same router over RawSocket: less framing for clients that have it
+    case_dir: Path | None = None  # the run's generated case (world.json, a map room's map.yaml)
 
     def environment(self) -> dict[str, str]:
         env = {"REI_ROUTER_URL": self.router_url, "REI_REALM": self.realm, "REI_RUN_ID": self.run_id}
@@ -45,6 +46,8 @@ class Connection:
             env["REI_AUTH_FILE"] = str(self.auth_file)
         if self.rawsocket_url is not None:
             env["REI_ROUTER_RAWSOCKET_URL"] = self.rawsocket_url
+        if self.case_dir is not None:
+            env["REI_CASE_DIR"] = str(self.case_dir)
         return env
 
     def write_env_file(self, path: Path) -> Path:

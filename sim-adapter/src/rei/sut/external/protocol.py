@@ -61,9 +61,9 @@ class RobotLimits:
 
 def hello_answer(*, run_id: str, clock: str, control_rate: float, deadline: float, start: Pose2D,
                  robot: Mapping[str, Any], goals: int, static_map: StaticMap | None,
-                 occupancy: Path | None = None) -> dict[str, Any]:
-    """The session description ``hello`` returns (docs/sut.md); ``occupancy``: a map room's ``map.yaml`` (absolute),
-    offered with the static map."""
+                 occupancy: str | None = None) -> dict[str, Any]:
+    """The session description ``hello`` returns (docs/sut.md); ``occupancy``: a map room's ``map.yaml``, named
+    relative to the case's folder (``REI_CASE_DIR``), offered with the static map."""
     answer: dict[str, Any] = {
         "protocol": PROTOCOL_VERSION, "run_id": run_id, "clock": clock, "control_rate": float(control_rate),
         "deadline": float(deadline), "start": _pose(start), "robot": dict(robot), "goals": goals,
@@ -73,7 +73,7 @@ def hello_answer(*, run_id: str, clock: str, control_rate: float, deadline: floa
         },
     }
     if static_map is not None and occupancy is not None:
-        answer["map"]["occupancy"] = str(occupancy)
+        answer["map"]["occupancy"] = occupancy
     return answer
 
 
@@ -133,11 +133,14 @@ def read_static_map(hello: Mapping[str, Any]) -> StaticMap | None:
                      robot_size=(float(size_x), float(size_y)))
 
 
-def read_occupancy(hello: Mapping[str, Any]) -> Path | None:
-    """The map room's ``map.yaml`` the static map came from (``map.occupancy``), or None."""
+def read_occupancy(hello: Mapping[str, Any], case_dir: Path | None = None) -> Path | None:
+    """The map room's ``map.yaml`` the static map came from (``map.occupancy``, relative to ``case_dir``: the
+    run's case folder, ``REI_CASE_DIR``), or None."""
     data = hello.get("map")
     path = data.get("occupancy") if isinstance(data, Mapping) else None
-    return Path(path) if isinstance(path, str) else None
+    if not isinstance(path, str):
+        return None
+    return Path(path) if case_dir is None else case_dir / path
 
 
 def read_scan(data: Mapping[str, Any]) -> LaserScan:

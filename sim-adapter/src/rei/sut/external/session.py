@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import contextlib
+import os
 from collections.abc import Callable, Iterator
 from pathlib import Path
 from urllib.parse import urlparse
@@ -32,7 +33,7 @@ def external_sut(options: SutOptions, client: WampClient, run_id: str, out_dir: 
         run_id=run_id, clock=options.clock, control_rate=control_rate, deadline=options.deadline,
         start=case.mission.start, goals=len(case.mission.goals),
         static_map=static_map if options.offer_map else None,
-        occupancy=case.world.map.yaml.resolve() if case.world.map is not None else None,
+        occupancy=_in_case(case.world.map.yaml, case.folder) if case.world.map is not None else None,
         robot={"name": robot.name, "footprint": [float(robot.size[0]), float(robot.size[1])],
                "max_linear": limits.max_linear, "max_angular": limits.max_angular,
                "lidar": {"beams": robot.lidar.beams, "range_min": float(robot.lidar.range_min),
@@ -41,7 +42,7 @@ def external_sut(options: SutOptions, client: WampClient, run_id: str, out_dir: 
     # the simulation's own session is RawSocket when it can be (rei sim, rei run): offered to the SUT too, but
     # only where it reaches the same router as the URL the SUT was given
     rawsocket = client.url if client.url.startswith(("rs://", "rss://")) and _host(client.url) == _host(url) else None
-    connection = Connection(url, client.realm, run_id, options.auth_file, rawsocket)
+    connection = Connection(url, client.realm, run_id, options.auth_file, rawsocket, case.folder.resolve())
     started = None
     try:
         if options.command is not None:
@@ -68,3 +69,8 @@ def external_sut(options: SutOptions, client: WampClient, run_id: str, out_dir: 
 
 def _host(url: str) -> str | None:
     return urlparse(url).hostname
+
+
+def _in_case(path: Path, folder: Path) -> str:
+    """``path`` named relative to the case's folder: a name, not a path of this machine (docs/sut.md)."""
+    return Path(os.path.relpath(path.resolve(), folder.resolve())).as_posix()
