@@ -14,8 +14,9 @@ warm JVM for the many small ones) and checked against ``floor_blocks``, ``merge_
   depth it allows: grey (1, 2, 4, 8, 16 bits), grey with alpha (8, 16), RGB and RGBA (8, 16), grey and RGB with a
   tRNS transparent key (8, 16) and palettes (1, 2, 4, 8 bits, with and without tRNS alpha).
 
-Bad input goes through ``rei generate``: each case is an error at the ``.rei`` file's line and column naming the
-YAML field (with its line and column) or the image's problem, exit code 1, and nothing generated.
+Bad input: each case is an error at the ``.rei`` file's line and column naming the YAML field (with its line and
+column) or the image's problem, exit code 1, and nothing generated - each through the generator in the warm JVM,
+and one through ``rei generate``, the command users run.
 """
 
 from __future__ import annotations
@@ -388,7 +389,7 @@ testcase Bad {
 """
 
 
-@pytest.mark.parametrize(("yaml", "image", "room", "expected"), [
+BAD_MAPS = [
     pytest.param(GOOD_YAML, None, ROOM,
                  [(3, 15, "room.yaml:1:8: image: cannot read the image", "room.pgm: No such file or directory")],
                  id="missing-image"),
@@ -414,24 +415,49 @@ testcase Bad {
                  [(4, 25, "F_4_2 is not a floor of room.yaml: the map has 4 x 3 blocks of 0.5 m", ""),
                   (6, 20, "F_0_0 is not a free floor of room.yaml: 1 of its 1 cells are obstacles", "")],
                  id="robot-outside-and-goal-on-an-occupied-block"),
-])
-def test_bad_maps_are_positioned_errors_and_generate_nothing(
-        run_cli: Callable[..., Any], tmp_path: Path, yaml: str, image: str | None, room: str,
-        expected: list[tuple[int, int, str, str]]) -> None:
-    (tmp_path / "room.yaml").write_text(yaml, encoding="utf-8")
+]
+
+
+def write_bad_case(folder: Path, yaml: str, image: str | None, room: str) -> Path:
+    (folder / "room.yaml").write_text(yaml, encoding="utf-8")
     if image is not None:
-        (tmp_path / "room.pgm").write_bytes(image.encode("latin-1"))
-    source = tmp_path / "case.rei"
+        (folder / "room.pgm").write_bytes(image.encode("latin-1"))
+    source = folder / "case.rei"
     source.write_text(room, encoding="utf-8")
-    out = tmp_path / "out"
-    result = run_cli("generate", source, "-o", out)
-    assert result.returncode == 1, result.stderr
-    errors = [line for line in result.stderr.splitlines() if ": error: " in line]
-    assert len(errors) == len(expected), result.stderr
+    return source
+
+
+def check_errors(output: str, source: Path, expected: list[tuple[int, int, str, str]]) -> None:
+    errors = [line for line in output.splitlines() if ": error: " in line]
+    assert len(errors) == len(expected), output
     for (line, column, start, end), error in zip(expected, sorted(errors, key=_position), strict=True):
         assert error.startswith((f"{source}:{line}:{column}: error: ", f"case.rei:{line}:{column}: error: ")), error
         message = error.split(": error: ", 1)[1]
         assert start in message and end in message, error
+
+
+@pytest.mark.parametrize(("yaml", "image", "room", "expected"), BAD_MAPS)
+def test_bad_maps_are_positioned_errors_and_generate_nothing(
+        generator: Path, tmp_path: Path, yaml: str, image: str | None, room: str,
+        expected: list[tuple[int, int, str, str]]) -> None:
+    source = write_bad_case(tmp_path, yaml, image, room)
+    out = tmp_path / "out"
+    log = tmp_path / "generate.log"
+    result = run_jar("cli", ["generate", str(source), "-o", str(out)], log, timeout=GENERATE_TIMEOUT_S,
+                     server=generator)
+    assert result.code == 1, result.log_tail
+    check_errors(log.read_text(encoding="utf-8"), source, expected)
+    assert not out.exists(), "nothing is generated for a bad map"
+
+
+def test_a_bad_map_through_rei_generate(run_cli: Callable[..., Any], tmp_path: Path) -> None:
+    """The command users run: its exit code and its error output (the others above run in the warm JVM)."""
+    yaml, image, room, expected = BAD_MAPS[0].values
+    source = write_bad_case(tmp_path, yaml, image, room)
+    out = tmp_path / "out"
+    result = run_cli("generate", source, "-o", out)
+    assert result.returncode == 1, result.stderr
+    check_errors(result.stderr, source, expected)
     assert not out.exists(), "nothing is generated for a bad map"
 
 
