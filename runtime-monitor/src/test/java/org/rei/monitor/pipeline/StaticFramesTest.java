@@ -24,8 +24,9 @@ import org.rei.monitor.wire.StateMessage;
 import org.rei.monitor.wire.WireDecoder;
 
 /**
- * Full frames re-list every static obstacle; the monitor skips the entries that repeat the last applied bytes, and
- * still re-places a static that moved, whichever way it moved.
+ * Full frames that re-list static obstacles (other producers, older recordings): the monitor skips the entries that
+ * repeat the last applied bytes, and still re-places a static that moved, whichever way it moved; full frames
+ * without them (REI's collector) judge the same.
  */
 class StaticFramesTest {
 
@@ -196,6 +197,34 @@ class StaticFramesTest {
 			assertTrue(fast.signals.size() >= 6, lines(fast.signals).toString());
 			assertEquals(Snapshots.toXmi(plain.monitor.model().resource()),
 					Snapshots.toXmi(fast.monitor.model().resource()));
+		}
+	}
+
+	/**
+	 * REI's collector no longer re-lists world.json's statics in full frames (docs/protocol.md): a stream whose full
+	 * frames carry them at their world.json pose and the same stream without them give the same signals and model.
+	 */
+	@Test
+	void fullFramesWithoutTheStaticsGiveTheSameSignalsAndModel() {
+		try (TestRuns with = new TestRuns(); TestRuns without = new TestRuns()) {
+			for (int k = 0; k < 200; k++) {
+				boolean full = k % 20 == 0;
+				// the human walks towards the robot's right side and stops beside it
+				Entry human = new Entry("h1", "HUMAN", new double[] { Math.max(1.95, 3.5 - 0.01 * k), 1.5, 0.85, 0 });
+				List<Entry> listed = new ArrayList<>(List.of(human));
+				if (full) {
+					listed.addAll(statics(TABLE));
+				}
+				feed(with, frame(k, full, listed));
+				feed(without, frame(k, full, List.of(human)));
+			}
+			assertEquals(0, without.monitor.staticEntriesSkipped());
+			assertTrue(with.monitor.staticEntriesSkipped() > 0);
+			assertEquals(lines(with.signals), lines(without.signals));
+			assertTrue(geometry(without).stream().anyMatch(s -> s.contains(" h1 ")), geometry(without).toString());
+			assertEquals(Snapshots.toXmi(with.monitor.model().resource()),
+					Snapshots.toXmi(without.monitor.model().resource()));
+			assertTrue(without.monitor.guard().problems().isEmpty(), without.monitor.guard().problems().toString());
 		}
 	}
 
