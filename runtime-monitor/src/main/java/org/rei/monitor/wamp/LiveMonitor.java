@@ -58,9 +58,10 @@ public final class LiveMonitor implements AutoCloseable {
 	private static final int RECONNECT_MILLIS = 200;
 	/**
 	 * Largest message read (bytes; contract/vocabulary.json's max_message_size, the router's limit too). netty's
-	 * default of 64 KB is less than the config RPC's world.json of a room from an occupancy map (the depot's: 404 KB).
+	 * default of 64 KB is less than the config RPC's world.json of a room from an occupancy map (the depot's: 404 KB);
+	 * the router's limit is larger than 1 MiB for the snapshot this monitor answers (the XMI of a large map room).
 	 */
-	public static final int MAX_MESSAGE_SIZE = 1 << 20;
+	public static final int MAX_MESSAGE_SIZE = 1 << 24;
 	/** Bounds of close(): the router may be gone for good. */
 	private static final long CLOSE_OUTBOX_MILLIS = 5_000;
 	private static final long CLOSE_SESSION_SECONDS = 10;

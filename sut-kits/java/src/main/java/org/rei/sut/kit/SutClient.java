@@ -62,7 +62,7 @@ public final class SutClient {
 	 * Largest message read (bytes; contract/vocabulary.json's max_message_size): hello carries the static map, which
 	 * in a room from an occupancy map lists thousands of walls, beyond netty's default of 64 KB.
 	 */
-	public static final int MAX_MESSAGE_SIZE = 1 << 20;
+	public static final int MAX_MESSAGE_SIZE = 1 << 24;
 	public static final String COMMAND = "command";
 	public static final String STATUS = "status";
 	public static final String HELLO = "hello";
