@@ -23,9 +23,8 @@ from __future__ import annotations
 
 import math
 import random
-from collections import deque
-from collections.abc import Iterable
 
+from rei.rooms import floors
 from rei.rooms.classes import MAX_HUMANS, RoomClass, room_class
 from rei.rooms.model import DEFAULT_TYPES, Cell, Furniture, Goal, Room, RoomTypes, Walker
 
@@ -35,9 +34,6 @@ WALL_CLEARANCE = 0.05 + 0.03
 GAP = 0.05
 HUMAN_SPEED = (0.4, 0.7)  # m/s
 MAX_ATTEMPTS = 200
-
-_SIDES: dict[str, tuple[int, int]] = {"left": (-1, 0), "right": (1, 0), "bottom": (0, -1), "top": (0, 1)}
-
 
 class GenerationError(RuntimeError):
     """No room of these settings could be drawn (only possible for settings beyond the documented ones)."""
@@ -72,6 +68,7 @@ def generate_rooms(size: str, density: str | None = None, humans: int | None = N
 def _attempt(rng: random.Random, cls: RoomClass, density: str, humans: int, seed: int, index: int,
              types: RoomTypes) -> Room | None:
     w, h = cls.width, cls.height
+    room_floors = floors.grid(w, h)
     start = (0, rng.randrange(h))
     goals = _goals(rng, cls, start)
     walkers = _walkers(rng, cls, humans, start, goals)
@@ -91,7 +88,7 @@ def _attempt(rng: random.Random, cls: RoomClass, density: str, humans: int, seed
             kind = rng.choices(list(types.weights), weights=list(types.weights.values()))[0]
             sx, sy = types.furniture[kind]
             item = Furniture("", kind, cell, rng.choice((0, 90)) if sx != sy else 0, (sx, sy))
-            if _fits(item, placed, reserved, w, h) and _still_navigable(cell, placed, robot_cells, w, h):
+            if _fits(item, placed, reserved, w, h) and floors.still_navigable(cell, placed, robot_cells, room_floors):
                 counters[kind] = counters.get(kind, 0) + 1
                 placed[cell] = Furniture(f"{kind.lower()}{counters[kind]}", kind, cell, item.yaw, item.size)
                 break
@@ -118,7 +115,7 @@ def _goals(rng: random.Random, cls: RoomClass, start: Cell) -> list[Cell]:
 def _walkers(rng: random.Random, cls: RoomClass, humans: int, start: Cell, goals: list[Cell]) -> list[Walker] | None:
     """Straight lanes of 3 to 6 floors, away from the robot's start (and its neighbours) and the goals, one lane
     per human so that humans do not walk into each other."""
-    banned = {start, *_neighbours(start, cls.width, cls.height), *goals}
+    banned = {start, *floors.neighbours(start), *goals}  # a lane never leaves the room: no bounds needed
     walkers: list[Walker] = []
     for number in range(1, humans + 1):
         for _ in range(100):
@@ -167,33 +164,6 @@ def rect_gap(a: tuple[float, float, float, float], b: tuple[float, float, float,
     """Distance between two axis-aligned rectangles; <= 0 when they touch or overlap."""
     dx, dy = max(b[0] - a[2], a[0] - b[2]), max(b[1] - a[3], a[1] - b[3])
     return math.hypot(dx, dy) if dx > 0 and dy > 0 else max(dx, dy)
-
-
-def _still_navigable(cell: Cell, placed: dict[Cell, Furniture], robot_cells: set[Cell], w: int, h: int) -> bool:
-    blocked = set(placed) | {cell}
-    for c in robot_cells:
-        if sum(n not in blocked for n in _neighbours(c, w, h)) < 2:
-            return False
-    free = [(x, y) for x in range(w) for y in range(h) if (x, y) not in blocked]
-    return len(_component(free[0], blocked, w, h)) == len(free)
-
-
-def _component(origin: Cell, blocked: set[Cell], w: int, h: int) -> set[Cell]:
-    seen = {origin}
-    queue = deque([origin])
-    while queue:
-        for n in _neighbours(queue.popleft(), w, h):
-            if n not in blocked and n not in seen:
-                seen.add(n)
-                queue.append(n)
-    return seen
-
-
-def _neighbours(cell: Cell, w: int, h: int) -> Iterable[Cell]:
-    for dx, dy in _SIDES.values():
-        x, y = cell[0] + dx, cell[1] + dy
-        if 0 <= x < w and 0 <= y < h:
-            yield (x, y)
 
 
 def _manhattan(a: Cell, b: Cell) -> int:

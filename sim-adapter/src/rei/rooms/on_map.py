@@ -24,13 +24,12 @@ from __future__ import annotations
 
 import math
 import random
-from collections import deque
-from collections.abc import Iterable
 from pathlib import Path
 
 import numpy as np
 
 from rei.maps import MapError, floor_blocks, load_map, obstacle_mask
+from rei.rooms.floors import SIDES, component, distances, neighbours, still_navigable
 from rei.rooms.generator import GAP, HUMAN_SPEED, GenerationError, rect_gap
 from rei.rooms.model import DEFAULT_TYPES, Cell, Furniture, Goal, MapSite, Room, RoomTypes, Walker
 
@@ -46,8 +45,6 @@ WALL_GAP = 0.03
 MAX_ATTEMPTS = 40
 #: Furniture edge allowed per floor edge (as MAX_FURNITURE / FLOOR in generated grid rooms).
 REACH = 1.2
-
-_SIDES = ((-1, 0), (1, 0), (0, -1), (0, 1))
 
 
 def load_site(yaml: Path, floor_size: float = 1.0, unknown_free: bool = False) -> MapSite:
@@ -113,7 +110,7 @@ def generate_map_rooms(site: MapSite, density: str | None = None, humans: int | 
 def _attempt(rng: random.Random, site: MapSite, area: list[Cell], furniture: dict[str, tuple[float, float]],
              density: str, humans: int, seed: int, index: int, types: RoomTypes) -> Room | None:
     floors = set(area)
-    roomy = [c for c in area if sum(n in floors for n in _neighbours(c)) >= 2]
+    roomy = [c for c in area if sum(n in floors for n in neighbours(c)) >= 2]
     if not roomy:
         return None
     start = rng.choice(roomy)
@@ -138,7 +135,7 @@ def _attempt(rng: random.Random, site: MapSite, area: list[Cell], furniture: dic
         kind = rng.choices(list(weights), weights=list(weights.values()))[0]
         sx, sy = furniture[kind]
         item = Furniture("", kind, cell, rng.choice((0, 90)) if sx != sy else 0, (sx, sy))
-        if _fits(item, site, blocked, placed, reserved) and _still_navigable(cell, placed, robot_cells, floors):
+        if _fits(item, site, blocked, placed, reserved) and still_navigable(cell, placed, robot_cells, floors):
             counters[kind] = counters.get(kind, 0) + 1
             placed[cell] = Furniture(f"{kind.lower()}{counters[kind]}", kind, cell, item.yaw, item.size)
     name = f"{_identifier(site.yaml.stem)}{density.capitalize()}_{seed}_{index}"
@@ -158,44 +155,20 @@ def _largest_area(free: frozenset[Cell]) -> list[Cell]:
     for cell in sorted(free):
         if cell in seen:
             continue
-        area = _component(cell, free)
+        area = component(cell, free)
         seen |= area
         if len(area) > len(best):
             best = area
     return sorted(best)
 
 
-def _component(origin: Cell, floors: set[Cell] | frozenset[Cell]) -> set[Cell]:
-    seen = {origin}
-    queue = deque([origin])
-    while queue:
-        for n in _neighbours(queue.popleft()):
-            if n in floors and n not in seen:
-                seen.add(n)
-                queue.append(n)
-    return seen
-
-
-def _distances(floors: set[Cell], origin: Cell) -> dict[Cell, int]:
-    """Floors from ``origin`` along the floors (4-neighbours)."""
-    distance = {origin: 0}
-    queue = deque([origin])
-    while queue:
-        cell = queue.popleft()
-        for n in _neighbours(cell):
-            if n in floors and n not in distance:
-                distance[n] = distance[cell] + 1
-                queue.append(n)
-    return distance
-
-
 def _distance(floors: set[Cell], a: Cell, b: Cell) -> int:
-    return _distances(floors, a).get(b, 0)
+    return distances(floors, a).get(b, 0)
 
 
 def _goals(rng: random.Random, floors: set[Cell], roomy: list[Cell], start: Cell) -> list[Cell] | None:
     """The first goal among the roomy floors farthest from the start, the next at least a third of that far."""
-    from_start = _distances(floors, start)
+    from_start = distances(floors, start)
     reach = max(from_start.values())
     if reach < 2:
         return None
@@ -204,7 +177,7 @@ def _goals(rng: random.Random, floors: set[Cell], roomy: list[Cell], start: Cell
         return None
     goals = [rng.choice(far)]
     while len(goals) < GOALS:
-        from_last = _distances(floors, goals[-1])
+        from_last = distances(floors, goals[-1])
         options = sorted(c for c in roomy if c != start and c not in goals and from_last.get(c, 0) >= reach / 3)
         if not options:
             return None
@@ -215,13 +188,13 @@ def _goals(rng: random.Random, floors: set[Cell], roomy: list[Cell], start: Cell
 def _walkers(rng: random.Random, site: MapSite, floors: set[Cell], humans: int, start: Cell,
              goals: list[Cell]) -> list[Walker] | None:
     """Straight lanes of 3 to 6 floors, away from the start (and its neighbours) and the goals, one per human."""
-    banned = {start, *_neighbours(start), *goals}
+    banned = {start, *neighbours(start), *goals}
     cells = sorted(floors)
     walkers: list[Walker] = []
     for number in range(1, humans + 1):
         for _ in range(200):
             first = rng.choice(cells)
-            dx, dy = rng.choice(_SIDES)
+            dx, dy = rng.choice(SIDES)
             length = rng.randint(3, 6)
             last = (first[0] + (length - 1) * dx, first[1] + (length - 1) * dy)
             walker = Walker(f"walker{number}", first, last, 0)
@@ -272,37 +245,6 @@ def _fits(item: Furniture, site: MapSite, blocked: np.ndarray, placed: dict[Cell
 def _rect(site: MapSite, cell: Cell, half: tuple[float, float]) -> tuple[float, float, float, float]:
     cx, cy = site.centre(cell)
     return (cx - half[0], cy - half[1], cx + half[0], cy + half[1])
-
-
-def _still_navigable(cell: Cell, placed: dict[Cell, Furniture], robot_cells: set[Cell], floors: set[Cell]) -> bool:
-    """The free floors stay connected with ``cell`` furnished. They are connected before (the area is, and every
-    piece kept them so), so they stay connected exactly when ``cell``'s free neighbours still reach each other:
-    a search from one of them that stops once it has met the others, mostly a few floors around ``cell``, where a
-    search of the whole area per piece would make a large building's furnishing quadratic."""
-    def free(c: Cell) -> bool:
-        return c in floors and c not in placed and c != cell
-
-    for c in robot_cells:
-        if sum(free(n) for n in _neighbours(c)) < 2:
-            return False
-    around = [n for n in _neighbours(cell) if free(n)]
-    if len(around) < 2:
-        return True
-    missing = set(around[1:])
-    seen = {around[0]}
-    queue = deque([around[0]])
-    while queue and missing:
-        for n in _neighbours(queue.popleft()):
-            if n not in seen and free(n):
-                seen.add(n)
-                missing.discard(n)
-                queue.append(n)
-    return not missing
-
-
-def _neighbours(cell: Cell) -> Iterable[Cell]:
-    for dx, dy in _SIDES:
-        yield (cell[0] + dx, cell[1] + dy)
 
 
 def _timeout(floors_apart: int, floor_size: float) -> int:

@@ -1,0 +1,77 @@
+# SPDX-License-Identifier: EPL-2.0
+"""Floors side by side, for both room generators: a grid room's floors are all the cells of its rectangle, a map
+room's the map's free blocks. What is reachable, how far, and whether a room stays navigable with one more piece
+of furniture are the same questions on both."""
+
+from __future__ import annotations
+
+from collections import deque
+from collections.abc import Collection, Iterable, Mapping
+
+from rei.rooms.model import Cell
+
+#: The four sides of a floor (4-neighbours), in the order both generators have always walked them.
+SIDES = ((-1, 0), (1, 0), (0, -1), (0, 1))
+
+
+def grid(width: int, height: int) -> frozenset[Cell]:
+    """Every floor of a ``width`` x ``height`` grid room."""
+    return frozenset((x, y) for x in range(width) for y in range(height))
+
+
+def neighbours(cell: Cell) -> Iterable[Cell]:
+    for dx, dy in SIDES:
+        yield (cell[0] + dx, cell[1] + dy)
+
+
+def component(origin: Cell, floors: Collection[Cell]) -> set[Cell]:
+    """The floors reachable from ``origin`` side by side."""
+    seen = {origin}
+    queue = deque([origin])
+    while queue:
+        for n in neighbours(queue.popleft()):
+            if n in floors and n not in seen:
+                seen.add(n)
+                queue.append(n)
+    return seen
+
+
+def distances(floors: Collection[Cell], origin: Cell) -> dict[Cell, int]:
+    """Floors from ``origin`` along the floors (4-neighbours)."""
+    distance = {origin: 0}
+    queue = deque([origin])
+    while queue:
+        cell = queue.popleft()
+        for n in neighbours(cell):
+            if n in floors and n not in distance:
+                distance[n] = distance[cell] + 1
+                queue.append(n)
+    return distance
+
+
+def still_navigable(cell: Cell, placed: Mapping[Cell, object], robot_cells: Iterable[Cell],
+                    floors: Collection[Cell]) -> bool:
+    """Whether the free floors stay connected with ``cell`` furnished, and the start and goals (``robot_cells``)
+    keep two free neighbours. The free floors are connected before (the room's area is, and every piece kept
+    them so), so they stay connected exactly when ``cell``'s free neighbours still reach each other: a search from
+    one of them that stops once it has met the others, mostly a few floors around ``cell``, where a search of the
+    whole area per piece would make a large building's furnishing quadratic."""
+    def free(c: Cell) -> bool:
+        return c in floors and c not in placed and c != cell
+
+    for c in robot_cells:
+        if sum(free(n) for n in neighbours(c)) < 2:
+            return False
+    around = [n for n in neighbours(cell) if free(n)]
+    if len(around) < 2:
+        return True
+    missing = set(around[1:])
+    seen = {around[0]}
+    queue = deque([around[0]])
+    while queue and missing:
+        for n in neighbours(queue.popleft()):
+            if n not in seen and free(n):
+                seen.add(n)
+                missing.discard(n)
+                queue.append(n)
+    return not missing
