@@ -4,7 +4,9 @@ reference navigation and a weakened variant of it, and the search's throughput a
 
 For every room (the crossing example; the thesis's simple navigation room with its person's timing and the
 table's floor free; ``doorways``, benchmarks/falsification/doorways.{rei,yaml}: two people crossing a corridor, where
-failures are rare under random sampling, so a guided search can show its gain), controller (``nav``; the weakened
+failures are rare under random sampling, so a guided search can show its gain; ``crossings``,
+benchmarks/falsification/crossings.{rei,yaml}: four people whose long lanes cross a longer corridor, where failures
+are rarer still and come in more kinds), controller (``nav``; the weakened
 ``nav:moving_horizon=0``: the local planner no longer predicts where the people walk, so it meets a person it would
 have let pass; in the doorways corridor, one floor wide, a smaller planner margin such as ``inflation_margin=0``
 changes nothing) and seed, one search with ``--sampler tpe`` and one with ``--sampler random`` run with the same
@@ -29,7 +31,7 @@ Goals (issue 30): at a budget of 200, at least 3x the distinct failures of rando
 at most a third of random's evaluations, and at least 0.9x the campaign's throughput.
 
     .venv/bin/python benchmarks/falsification.py [--budget 200] [--seeds 1 2 3] [--workers 2] [--keep DIR]
-        [--rooms crossing doorways simple_navigation] [--controllers reference weakened] [--samplers tpe random]
+        [--rooms crossing crossings doorways simple_navigation] [--controllers reference weakened] [--samplers tpe random]
         [--reuse random] [--no-campaign]
 """
 
@@ -83,6 +85,7 @@ objectives:
   - {metric: clearance_humans_min}
 """),
     "doorways": _spec_room(REPO / "benchmarks" / "falsification" / "doorways.yaml"),
+    "crossings": _spec_room(REPO / "benchmarks" / "falsification" / "crossings.yaml"),
 }
 
 
