@@ -1,7 +1,7 @@
 // A falsification benchmark room (docs/search.md, Benchmark) where failures are rare under random sampling and
 // come in many kinds: the robot drives a corridor one floor wide, 17 floors long, from its west end to its east
-// end (about a minute), and four people's lanes cross it, each lane 5 floors either side of the corridor, at
-// x = 2, 6, 10 and 14 (the robot passes them at about 7, 20, 34 and 48 s). In this base case every person sets
+// end (62 simulated seconds), and four people's lanes cross it, each lane 5 floors either side of the corridor, at
+// x = 2, 6, 10 and 14 (the robot passes them at about 8, 23, 39 and 54 s). In this base case every person sets
 // off long after the robot has arrived. The search spec lets each person set off anywhere in 15 minutes at a
 // wide range of speeds: a person meets the robot only if they reach the corridor within a second or two of the
 // robot's passage, but while a person walks their long lane as the robot passes, the robot's clearance to them
