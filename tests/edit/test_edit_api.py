@@ -85,6 +85,19 @@ def test_refused_operations_and_bad_requests_change_nothing(open_editor) -> None
     assert editor.apply(MOVE)["canUndo"] is True, "the editor stopped working after bad requests"
 
 
+def test_an_internal_failure_of_the_engine_is_shown_as_such_not_as_a_refusal(open_editor) -> None:
+    editor: Editor = open_editor(CASE)
+    # a yaw the grammar cannot write: the engine's read-back check fails inside it (the edit is not refused)
+    status, answer = editor.call("POST", "/api/apply", {"operations": [
+        {"op": "rotateObject", "name": "table1", "yawDegrees": 1e300}]})
+    assert status == 500 and answer["kind"] == "internal", answer
+    assert answer["error"].startswith("Internal failure of the room editor, not a fault of your edit"), answer
+    assert "does not read back" in answer["error"], answer
+    status, answer = editor.call("POST", "/api/apply", {"operations": [{**MOVE, "floor": "F_9_9"}]})
+    assert status == 422 and "kind" not in answer and "Internal" not in answer["error"], answer
+    assert editor.apply(MOVE)["canUndo"] is True
+
+
 def test_a_change_on_disk_is_followed_without_unsaved_edits_and_asked_about_with_them(open_editor) -> None:
     editor: Editor = open_editor(CASE)
     text = editor.case.read_text(encoding="utf-8")

@@ -19,7 +19,7 @@ import pytest
 
 from rei.artifacts import ArtifactError
 from rei.artifacts.monitor import read_monitor
-from rei.edit import TOKEN_HEADER
+from rei.edit import TOKEN_HEADER, engine
 from rei.edit.server import ROUTES
 from rei.evaluation import DEFAULT_UTILITIES, load_declared_transitions, load_declared_utilities
 from rei.evaluation.signals import DEFAULT_TRANSITIONS, SIGNAL_RECORD, Signal
@@ -81,6 +81,7 @@ def test_java_copies(contract: dict, java_facts: dict) -> None:
     assert java_facts["warm_jvm_answer"] == contract["warm_jvm"]["answer"]
     editor = contract["room_editor"]
     assert java_facts["room_editor_commands"] == editor["engine_commands"]
+    assert java_facts["room_editor_error_kinds"] == editor["engine_error_kinds"]
     assert java_facts["room_editor_operations"] == editor["operations"]
     assert java_facts["room_editor_point"] == editor["point"]
     assert java_facts["room_editor_sides"] == editor["sides"]
@@ -89,6 +90,7 @@ def test_java_copies(contract: dict, java_facts: dict) -> None:
 def test_room_editor_python_copies(contract: dict) -> None:
     editor = contract["room_editor"]
     assert TOKEN_HEADER == editor["token_header"]
+    assert [engine.REFUSED, engine.INTERNAL] == editor["engine_error_kinds"]
     assert [f"{method} {path}" for method, path in ROUTES] == editor["api"]
 
 

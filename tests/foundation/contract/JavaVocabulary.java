@@ -43,6 +43,7 @@ public final class JavaVocabulary {
 		facts.put("warm_jvm_request", CommandServer.REQUEST);
 		facts.put("warm_jvm_answer", CommandServer.ANSWER);
 		facts.put("room_editor_commands", Protocol.COMMANDS);
+		facts.put("room_editor_error_kinds", Protocol.ERROR_KINDS);
 		facts.put("room_editor_sides", Protocol.SIDES);
 		Map<String, List<String>> operations = new LinkedHashMap<>();
 		for (String op : Protocol.OPERATIONS) {

@@ -11,7 +11,8 @@ campaign's workers (or Ray) while Optuna's sampler (tpe, cmaes, nsga2, qmc, or r
 next. Each distinct failure is then shrunk to a smaller case that fails the same way. Writes OUT/search.json,
 OUT/verdicts.xml, OUT/search.html, every candidate as OUT/candidates/*.rei and its run in OUT/runs/. A stopped
 search resumes when started again with the same OUT. Exit 0: no failure found; 1: failures found; 2: bad spec
-or arguments, or no failure found but evaluations in ERROR (or none simulated); 130: interrupted.
+or arguments, the room editor's engine failed (the search stops), or no failure found but evaluations in ERROR (or
+none simulated); 130: interrupted.
 """
 
 from __future__ import annotations
@@ -44,6 +45,7 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
 def run(args: argparse.Namespace) -> int:
     from rei.campaign.backends import RayUnavailableError
     from rei.campaign.spec import SpecError
+    from rei.edit import EngineError
     from rei.lifetime import sigterm_unwinds
     from rei.search.run import run_search
     from rei.search.spec import load_search_spec
@@ -64,6 +66,12 @@ def run(args: argparse.Namespace) -> int:
                                 shrink_failures=not args.no_shrink)
     except (SpecError, RayUnavailableError) as error:
         raise CommandError(str(error)) from None
+    except EngineError as error:
+        # the engine broke, not the candidate: no candidate is told invalid for it, and the one it was making is
+        # asked again when the search resumes
+        raise CommandError(f"search stopped: {error}; finished evaluations are kept: fix the room editor's engine "
+                           f"(rebuild rei-room-editor.jar) and run the same command to resume",
+                           EXIT_RUN_ERROR) from None
     counts = result["counts"]
     print(f"{counts['simulated']} evaluations ({counts['errors']} in ERROR), {counts['invalid']} invalid and "
           f"{counts['unplannable']} unplannable candidates not simulated; {counts['failing']} failing, "

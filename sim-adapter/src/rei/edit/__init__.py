@@ -6,9 +6,9 @@ this package's loopback HTTP server, which owns the file; and the edit engine, a
 model (``rei-room-editor.jar``), which applies the page's operations and saves them through the serializer.
 """
 
-from rei.edit.engine import EditEngine, EngineError, engine_command
+from rei.edit.engine import EditEngine, EngineError, EngineFailure, engine_command
 from rei.edit.server import PAGE, TOKEN_HEADER, EditServer, EditServerError
 from rei.edit.session import EditSession, SessionConflict
 
 __all__ = ["PAGE", "TOKEN_HEADER", "EditEngine", "EditServer", "EditServerError", "EditSession", "EngineError",
-           "SessionConflict", "engine_command"]
+           "EngineFailure", "SessionConflict", "engine_command"]

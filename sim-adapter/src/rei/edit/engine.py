@@ -28,6 +28,11 @@ REQUEST_TIMEOUT = 120.0
 _STDERR_LINES = 40
 
 
+#: The ``kind`` of an ``ok: false`` answer (org.rei.dsl.edit.server.Protocol, contract/vocabulary.json): the
+#: request's fault, or the engine's own.
+REFUSED, INTERNAL = "refused", "internal"
+
+
 class EngineError(RuntimeError):
     """The engine refused a request (``refused``) or broke (it died, hung, or said something unreadable)."""
 
@@ -35,6 +40,11 @@ class EngineError(RuntimeError):
         super().__init__(message)
         self.refused = refused
         self.ended = ended  # the engine was gone before it could answer: the request may be tried again
+
+
+class EngineFailure(EngineError):
+    """The engine answered that it failed inside (an exception in it, such as its jar replaced under it): nothing
+    was changed, and nothing is known about the request; asking again may fail the same way."""
 
 
 class EditEngine:
@@ -165,7 +175,10 @@ class EditEngine:
             self._kill()
             raise self._broken(f"the edit engine answered out of turn: {raw[:200]!r}")
         if not answer.get("ok"):
-            raise EngineError(str(answer.get("error") or "refused without a reason"), refused=True)
+            reason = str(answer.get("error") or "refused without a reason")
+            if answer.get("kind") == INTERNAL:
+                raise EngineFailure(reason)
+            raise EngineError(reason, refused=True)
         if message["command"] == "open":
             self._opened = message["path"]
         if isinstance(answer.get("text"), str):

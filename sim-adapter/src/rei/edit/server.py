@@ -19,7 +19,7 @@ from pathlib import Path
 from typing import Any
 from urllib.parse import urlsplit
 
-from rei.edit.engine import EngineError
+from rei.edit.engine import INTERNAL, EngineError, EngineFailure
 from rei.edit.session import EditSession, SessionConflict
 from rei.view import STATIC_DIR
 from rei.view.loopback import LoopbackServer, content_type, send, static_file
@@ -32,6 +32,8 @@ ROUTES: Mapping[tuple[str, str], str] = {
     ("POST", "/api/undo"): "undo", ("POST", "/api/redo"): "redo", ("POST", "/api/save"): "save",
     ("POST", "/api/reload"): "reload", ("POST", "/api/keep"): "keep",
 }
+#: How the page is told that the engine failed inside: the edit may well be fine.
+INTERNAL_FAILURE = "Internal failure of the room editor, not a fault of your edit (nothing was changed)"
 #: A room's text is small; a bigger body is a mistake or an attack.
 MAX_BODY = 4 * 1024 * 1024
 
@@ -128,6 +130,10 @@ class EditServer(LoopbackServer):
                     self._send(error.status, {"error": str(error)})
                 except SessionConflict as error:
                     self._send(HTTPStatus.CONFLICT, {"error": str(error)})
+                except EngineFailure as error:
+                    # the engine's own failure, not the edit's: the page's message says so (nothing was changed)
+                    self._send(HTTPStatus.INTERNAL_SERVER_ERROR,
+                               {"error": f"{INTERNAL_FAILURE}: {error}", "kind": INTERNAL})
                 except EngineError as error:
                     status = HTTPStatus.UNPROCESSABLE_ENTITY if error.refused else HTTPStatus.INTERNAL_SERVER_ERROR
                     self._send(status, {"error": str(error)})

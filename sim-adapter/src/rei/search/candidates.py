@@ -7,10 +7,15 @@ is a ``reset`` to the base text and one ``apply`` of its operations (tens of mil
 or whose mission the reference global planner finds no path for (the room generator's check,
 rei.rooms.check), is never simulated. Valid ones are written to ``OUT/candidates/<key>.rei`` and generated into
 ``OUT/cases/<key>/`` in one warm generator JVM.
+
+An engine that fails inside (``EngineFailure``: an exception in it, such as its jar rebuilt under it), dies or hangs
+says nothing about the candidate: it is started again once, and if it fails again an ``EngineFailure`` goes to the
+caller (`rei search` stops), never an invalid candidate.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -18,7 +23,7 @@ from typing import Any
 from rei import toolchain
 from rei.campaign.prepare import relocated_imports
 from rei.campaign.spec import SpecError
-from rei.edit import EditEngine, EngineError, engine_command
+from rei.edit import EditEngine, EngineError, EngineFailure, engine_command
 from rei.rooms.check import diagram_static_map, unplannable
 from rei.run.jvm import JarServer, JarServerError, run_jar
 from rei.search.space import Edit
@@ -40,16 +45,24 @@ class Candidate:
 
 
 class CandidateMaker:
-    """Edits the base case ``base`` (a .rei file) into candidates; ``out``: the search's folder."""
+    """Edits the base case ``base`` (a .rei file) into candidates; ``out``: the search's folder; ``engine``: the
+    edit engine's argument vector (default: the built ``rei-room-editor.jar``); ``log`` gets a restart's line."""
 
-    def __init__(self, base: Path, out: Path) -> None:
+    def __init__(self, base: Path, out: Path, *, engine: Sequence[str] | None = None,
+                 log: Callable[[str], None] = print) -> None:
         self.out = out
-        self._base_folder = base.resolve().parent  # the engine resolves the base's imports from there
-        self._engine = EditEngine(engine_command(toolchain.find_jar("room-editor"), toolchain.find_java().executable))
+        self._base = base.resolve()
+        self._base_folder = self._base.parent  # the engine resolves the base's imports from there
+        self._command = list(engine) if engine is not None else engine_command(
+            toolchain.find_jar("room-editor"), toolchain.find_java().executable)
+        self._log = log
+        self._engine = EditEngine(self._command)
         try:
-            answer = self._engine.request("open", path=str(base.resolve()))
+            answer = self._engine.request("open", path=str(self._base))
         except EngineError as error:
             self._engine.close()
+            if not error.refused:  # the engine's own failure, not the base case's
+                raise
             raise SpecError(f"{base}: {error}") from None
         errors = [i for i in answer.get("issues") or [] if i.get("severity") == "error"]
         if errors:
@@ -64,10 +77,9 @@ class CandidateMaker:
     def make(self, key: str, edit: Edit) -> Candidate:
         """The candidate ``key`` from the base case and ``edit``; nothing is written for one that is not valid."""
         try:
-            self._engine.request("reset", text=self.base_text)
-            answer = self._engine.request("apply", operations=list(edit.operations))
+            answer = self._edited(key, edit)
         except EngineError as error:
-            if not error.refused:
+            if not error.refused:  # EngineFailure, or an engine that died or hung: not the candidate's fault
                 raise
             return Candidate(key, edit, INVALID, None, (f"refused by the room editor: {error}",))
         errors = [f"{i['line']}:{i['column']}: {i['message']}" for i in answer.get("issues") or []
@@ -79,6 +91,36 @@ class CandidateMaker:
         if no_path:
             return Candidate(key, edit, UNPLANNABLE, answer["text"], tuple(no_path))
         return Candidate(key, edit, VALID, answer["text"], diagram=diagram)
+
+    def _edited(self, key: str, edit: Edit) -> dict[str, Any]:
+        """The engine's answer to the base case edited by ``edit``; after a failure of the engine (``EngineFailure``,
+        or an engine that died or hung) it is started again and asked once more, and a second failure is raised as
+        an ``EngineFailure``."""
+        try:
+            return self._apply(edit)
+        except EngineError as error:
+            if error.refused:  # the candidate's own fault
+                raise
+            first = error
+        self._log(f"  {key}: the room editor's engine failed inside ({first}); starting it again")
+        self._engine.close()
+        self._engine = EditEngine(self._command)
+        try:
+            self._engine.request("open", path=str(self._base))
+        except EngineError as error:  # the base case opened before: whatever fails now is the engine's
+            raise EngineFailure(f"the room editor's engine failed inside on candidate {key} ({first}) and could not "
+                                f"be started again: {error}") from None
+        try:
+            return self._apply(edit)
+        except EngineError as error:
+            if error.refused:  # the candidate's own fault
+                raise
+            raise EngineFailure(f"the room editor's engine failed inside on candidate {key}, and again after a "
+                                f"restart: {error}") from None
+
+    def _apply(self, edit: Edit) -> dict[str, Any]:
+        self._engine.request("reset", text=self.base_text)
+        return self._engine.request("apply", operations=list(edit.operations))
 
     def write(self, candidate: Candidate, path: Path | None = None) -> Path:
         """``OUT/candidates/<key>.rei`` (or ``path``), its seed and fault in a comment at its top (`rei run

@@ -109,7 +109,7 @@ class Search:
         # a ``rooms:`` spec's base case is generated now, into OUT, before the parameters are checked against it
         self.spec = spec = with_base_case(spec, self.out, log)
         assert spec.case is not None
-        self.maker = CandidateMaker(spec.case, self.out)
+        self.maker = CandidateMaker(spec.case, self.out, log=log)
         try:
             self.space = Space(spec.parameters, self.maker.diagram, self.maker.palette)
         except BaseException:  # a parameter the base case does not have: the engine's JVM goes now

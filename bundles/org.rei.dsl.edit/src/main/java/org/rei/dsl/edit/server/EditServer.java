@@ -22,6 +22,8 @@ import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 import org.rei.dsl.edit.EditRefusedException;
 import org.rei.dsl.edit.RoomDocument;
@@ -47,9 +49,10 @@ import com.fasterxml.jackson.databind.node.NullNode;
  * the console): stdout carries answers only. The engine exits 0 when stdin closes.
  * <p>
  * Every request is answered, whatever it holds: unreadable JSON, an unknown command or op, a missing field, a
- * command before {@code open}, a refused edit and a failure inside the engine are answered
- * {@code {"id": N, "ok": false, "error": "..."}} (id null when the line is not a JSON object) and the document is
- * as it was before the request.
+ * command before {@code open} and a refused edit are answered
+ * {@code {"id": N, "ok": false, "kind": "refused", "error": "..."}} (id null when the line is not a JSON object); a
+ * failure inside the engine is answered the same with {@code "kind": "internal"}, so that a caller does not take it
+ * for a fault of its request. Either way the document is as it was before the request.
  */
 public final class EditServer {
 
@@ -62,6 +65,10 @@ public final class EditServer {
 			.enable(JsonWriteFeature.ESCAPE_NON_ASCII)
 			.addMixIn(ValidationIssue.class, IssueMixIn.class)
 			.build();
+
+	/** A request's id as written at the start of its line: a number, a string without escapes, or null. */
+	private static final Pattern REQUEST_ID = Pattern.compile(
+			"^\\s*\\{\\s*\"id\"\\s*:\\s*(-?\\d+|\"[^\"\\\\]*\"|null)\\s*[,}]");
 
 	private abstract static class IssueMixIn {
 		@JsonIgnore
@@ -116,14 +123,26 @@ public final class EditServer {
 			if (line.isBlank()) {
 				continue;
 			}
-			answers.write(answer(line));
+			String answer;
+			try {
+				answer = answer(line);
+			} catch (RuntimeException | LinkageError e) {
+				// the failure handler failed too: the jar's own classes (Jackson's) can no longer be loaded, as when
+				// the jar is rebuilt under the running engine; still an answer, an internal failure
+				log.println("rei-room-editor: answering failed: " + e);
+				answer = handMadeFailure(line, e);
+			}
+			answers.write(answer);
 			answers.write('\n');
 			answers.flush();
 		}
 		log.println("rei-room-editor: stdin closed, exiting");
 	}
 
-	/** The answer line to one request line; never throws but for what only kills the JVM anyway. */
+	/**
+	 * The answer line to one request line; never throws but for what only kills the JVM anyway, or a failure of
+	 * the failure handler itself ({@link #handMadeFailure}).
+	 */
 	String answer(String line) {
 		long start = System.nanoTime();
 		JsonNode request;
@@ -131,11 +150,12 @@ public final class EditServer {
 			request = MAPPER.readTree(line);
 		} catch (JsonProcessingException e) {
 			return error(NullNode.instance, "malformed JSON: " + e.getOriginalMessage() + " (one JSON object per "
-					+ "line expected)", "?", start);
+					+ "line expected)", "?", start, Protocol.REFUSED);
 		}
 		if (request == null || !request.isObject()) {
 			return error(NullNode.instance, "a request is a JSON object {\"id\": N, \"command\": C, ...}, got "
-					+ OperationDecoder.describe(request == null ? NullNode.instance : request), "?", start);
+					+ OperationDecoder.describe(request == null ? NullNode.instance : request), "?", start,
+					Protocol.REFUSED);
 		}
 		JsonNode id = request.hasNonNull("id") ? request.get("id") : NullNode.instance;
 		String command = request.hasNonNull("command") ? request.get("command").asText() : "?";
@@ -150,12 +170,12 @@ public final class EditServer {
 					json.length());
 			return json;
 		} catch (RequestException | EditRefusedException e) {
-			return error(id, e.getMessage(), command, start);
+			return error(id, e.getMessage(), command, start, Protocol.REFUSED);
 		} catch (Exception | StackOverflowError | LinkageError | AssertionError e) {
 			// a failure of the engine: the document re-read its text (RoomDocument.apply), the server goes on
 			log.println("rei-room-editor: #" + id + " " + command + " failed:");
 			e.printStackTrace(log);
-			return error(id, failure(e), command, start);
+			return error(id, failure(e), command, start, Protocol.INTERNAL);
 		}
 	}
 
@@ -256,17 +276,46 @@ public final class EditServer {
 		return value.asText();
 	}
 
-	private String error(JsonNode id, String message, String command, long start) {
-		log.printf("rei-room-editor: #%s %s refused, %d ms: %s%n", id, command, millis(start), firstLine(message));
+	/** An {@code ok: false} answer; {@code kind}: {@link Protocol#REFUSED} or {@link Protocol#INTERNAL}. */
+	private String error(JsonNode id, String message, String command, long start, String kind) {
+		log.printf("rei-room-editor: #%s %s %s, %d ms: %s%n", id, command,
+				Protocol.REFUSED.equals(kind) ? "refused" : "failed", millis(start), firstLine(message));
 		Map<String, Object> answer = new LinkedHashMap<>();
 		answer.put("id", id);
 		answer.put("ok", false);
+		answer.put("kind", kind);
 		answer.put("error", message);
 		try {
 			return MAPPER.writeValueAsString(answer);
 		} catch (JsonProcessingException e) {
 			throw new IllegalStateException(e); // a node, a boolean and a string always write
 		}
+	}
+
+	/**
+	 * The answer to {@code line} when the engine failed so that even Jackson cannot be loaded: written with the
+	 * JDK's classes only, its {@code id} taken from the line as written (the callers put it first; null when the
+	 * line has none that reads as a number, a simple string or null).
+	 */
+	static String handMadeFailure(String line, Throwable e) {
+		Matcher id = REQUEST_ID.matcher(line);
+		return "{\"id\":" + (id.find() ? id.group(1) : "null") + ",\"ok\":false,\"kind\":\"" + Protocol.INTERNAL
+				+ "\",\"error\":\"" + asciiJson(failure(e)) + "\"}";
+	}
+
+	/** {@code text} as the inside of a JSON string, in ASCII. */
+	private static String asciiJson(String text) {
+		StringBuilder out = new StringBuilder(text.length() + 16);
+		for (char c : text.toCharArray()) {
+			if (c == '"' || c == '\\') {
+				out.append('\\').append(c);
+			} else if (c < 0x20 || c > 0x7e) {
+				out.append(String.format("\\u%04x", (int) c));
+			} else {
+				out.append(c);
+			}
+		}
+		return out.toString();
 	}
 
 	/** An engine failure for the user: what failed, without the text a read-back failure appends. */

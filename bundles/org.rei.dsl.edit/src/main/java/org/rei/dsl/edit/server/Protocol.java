@@ -23,6 +23,15 @@ public final class Protocol {
 			"addHuman", "addDynamic", "addFloor", "removeFloor", "addWall", "removeWall", "setTrajectory", "addGoal",
 			"removeGoal", "moveGoal");
 
+	/**
+	 * The {@code kind} of an {@code ok: false} answer: {@code refused}, the request's fault (an edit the text cannot
+	 * express, a missing field, an unknown command); {@code internal}, the engine's own failure (an exception in
+	 * it, such as its jar replaced under it), which says nothing about the request.
+	 */
+	public static final String REFUSED = "refused";
+	public static final String INTERNAL = "internal";
+	public static final List<String> ERROR_KINDS = List.of(REFUSED, INTERNAL);
+
 	/** Sides of a floor and neighbour keys: the grammar's keywords. */
 	public static final List<String> SIDES = List.of("top", "right", "bottom", "left");
 

@@ -187,6 +187,7 @@ class EditServerTest {
 		assertTrue(malformed.get("id").isNull());
 		assertFalse(malformed.get("ok").asBoolean());
 		assertTrue(malformed.get("error").asText().startsWith("malformed JSON: "), malformed::toString);
+		assertEquals(Protocol.REFUSED, malformed.get("kind").asText(), malformed::toString);
 		assertTrue(ask("[1, 2]").get("id").isNull());
 		assertTrue(ask("{\"id\": 4} {\"id\": 5}").get("error").asText().startsWith("malformed JSON"));
 		assertRefused(ask("{\"id\": 6}"), 6, "missing field 'command'");
@@ -245,9 +246,11 @@ class EditServerTest {
 		// a batch with an undecodable operation is not applied at all
 		assertRefused(apply(5, "{\"op\": \"moveObject\", \"name\": \"shelf1\", \"floor\": \"F_1_1\"}, "
 				+ "{\"op\": \"moveGoal\", \"from\": 0}"), 5, "operation 1 (moveGoal): missing field 'to'");
-		// a yaw the grammar cannot write: the read-back check fails inside the engine
+		// a yaw the grammar cannot write: the read-back check fails inside the engine, which says so (internal), so
+		// that a caller does not take its own failure for a fault of the edit
 		JsonNode failed = apply(6, "{\"op\": \"rotateObject\", \"name\": \"table1\", \"yawDegrees\": 1e300}");
 		assertFalse(failed.get("ok").asBoolean());
+		assertEquals(Protocol.INTERNAL, failed.get("kind").asText(), failed::toString);
 		assertTrue(failed.get("error").asText().contains("nothing was changed"), failed::toString);
 		assertFalse(failed.get("error").asText().contains("\n"), failed::toString);
 
@@ -258,6 +261,23 @@ class EditServerTest {
 		JsonNode undone = ask("{\"id\": 8, \"command\": \"undo\"}");
 		assertEquals(original, undone.get("text").asText());
 		assertFalse(undone.get("canUndo").asBoolean(), "a refused apply is no undo step");
+	}
+
+	@Test
+	void anAnswerMadeWithoutJacksonIsAnInternalFailureOfTheSameRequest() throws Exception {
+		// what the engine answers when even its failure handler fails (its jar rebuilt under it)
+		NoClassDefFoundError gone = new NoClassDefFoundError("com/fasterxml/jackson/X \"\u00e9\"\nmore");
+		JsonNode answer = JSON.readTree(EditServer.handMadeFailure("{\"id\": 42, \"command\": \"apply\"}", gone));
+		assertEquals(List.of("id", "ok", "kind", "error"), fieldNames(answer));
+		assertEquals(42, answer.get("id").asInt());
+		assertFalse(answer.get("ok").asBoolean());
+		assertEquals(Protocol.INTERNAL, answer.get("kind").asText());
+		assertEquals("The edit engine failed (NoClassDefFoundError: com/fasterxml/jackson/X \"\u00e9\"); nothing was "
+				+ "changed", answer.get("error").asText());
+		String text = EditServer.handMadeFailure("{\"id\": \"a-1\", \"command\": \"state\"}", gone);
+		assertTrue(text.chars().allMatch(c -> c < 128), text);
+		assertEquals("a-1", JSON.readTree(text).get("id").asText());
+		assertTrue(JSON.readTree(EditServer.handMadeFailure("[1, 2]", gone)).get("id").isNull());
 	}
 
 	@Test
@@ -300,7 +320,7 @@ class EditServerTest {
 				fieldNames(opened.at("/diagram/robot")));
 		assertEquals(List.of("name", "category", "shape", "sizeX", "sizeY", "colour"),
 				fieldNames(opened.at("/palette/0")));
-		assertEquals(List.of("id", "ok", "error"), fieldNames(ask("{\"id\": 2, \"command\": \"redo\"}")));
+		assertEquals(List.of("id", "ok", "kind", "error"), fieldNames(ask("{\"id\": 2, \"command\": \"redo\"}")));
 	}
 
 	// -- the harness -------------------------------------------------------------------------------------------
@@ -334,6 +354,7 @@ class EditServerTest {
 	private static void assertRefused(JsonNode answer, int id, String message) {
 		assertEquals(id, answer.get("id").asInt(), answer::toString);
 		assertFalse(answer.get("ok").asBoolean(), answer::toString);
+		assertEquals(Protocol.REFUSED, answer.get("kind").asText(), answer::toString);
 		assertTrue(answer.get("error").asText().contains(message), answer.get("error")::asText);
 	}
 
