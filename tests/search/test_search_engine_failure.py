@@ -2,14 +2,12 @@
 """The room editor's engine failing inside is not an invalid candidate: with the real engine run from a copy of
 its jar, overwritten in place while it runs (as a rebuild does: its classes and its default catalogue can no longer
 be read), the search's candidate maker starts the engine again once; when the new engine works the candidate is
-made as usual, and when it fails again the search stops with ``EngineFailure`` and tells the study nothing about
-the candidate (no invalid trial, no penalty: the trial is asked again when the search resumes)."""
+made as usual, and when it fails again `rei search` stops (exit 2, a message) and tells the study nothing about the
+candidate (no invalid trial, no penalty: the trial is asked again when the search resumes)."""
 
 from __future__ import annotations
 
-import functools
 import shutil
-import threading
 from pathlib import Path
 from typing import Any
 
@@ -17,11 +15,12 @@ import pytest
 from optuna.trial import TrialState
 
 from rei import toolchain
-from rei.edit import EngineFailure, engine_command
+from rei.cli import main
+from rei.edit import engine_command
 from rei.search import candidates, study
 from rei.search.candidates import CandidateMaker
 from rei.search.spec import load_search_spec
-from rei.search.study import Search
+from rei.search.study import open_study
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
 EXAMPLE = REPO_ROOT / "examples" / "search"
@@ -50,38 +49,29 @@ def jar(tmp_path: Path, room_editor_jar: Path) -> _Jar:
     return _Jar(room_editor_jar, tmp_path / "engine")
 
 
-def _search(tmp_path: Path, jar: _Jar, log: Any, monkeypatch: pytest.MonkeyPatch) -> Search:
+def test_an_engine_failing_twice_stops_rei_search_and_no_candidate_is_told_invalid(
+        tmp_path: Path, jar: _Jar, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]) -> None:
     folder = tmp_path / "spec"
     folder.mkdir()
     for name in ("crossing.rei", "crossing.yaml"):
         shutil.copy(EXAMPLE / name, folder / name)
-    spec = load_search_spec(folder / "crossing.yaml").with_options(budget=2)
     command = engine_command(jar.path, toolchain.find_java().executable)
-    monkeypatch.setattr(study, "CandidateMaker", functools.partial(CandidateMaker, engine=command))
-    # the pool is never reached: the first candidate fails before it would run
-    from rei.search.run import _LazyPool
 
-    def no_pool() -> Any:
-        raise AssertionError("a candidate reached the pool")
+    def maker(*args: Any, **options: Any) -> CandidateMaker:
+        made = CandidateMaker(*args, engine=command, **options)
+        jar.break_()  # rebuilt while the search runs, after the base case was opened
+        return made
 
-    return Search(spec, tmp_path / "out", _LazyPool(no_pool, 1, "local"), threading.Event(), log)
-
-
-def test_an_engine_failing_twice_stops_the_search_and_no_candidate_is_told_invalid(
-        tmp_path: Path, jar: _Jar, monkeypatch: pytest.MonkeyPatch) -> None:
-    lines: list[str] = []
-    search = _search(tmp_path, jar, lines.append, monkeypatch)
-    try:
-        jar.break_()
-        with pytest.raises(EngineFailure) as failure:
-            search.run()
-    finally:
-        search.close()
-    assert "failed inside" in str(failure.value) and "could not be started again" in str(failure.value), failure.value
-    assert "The edit engine failed (" in str(failure.value), failure.value  # the engine's own answer, kind internal
-    assert any("starting it again" in line for line in lines), lines
-    assert search.progress.invalid == 0
-    trials = search.study.get_trials(deepcopy=False)
+    monkeypatch.setattr(study, "CandidateMaker", maker)
+    out = tmp_path / "out"
+    code = main(["search", str(folder / "crossing.yaml"), "-o", str(out), "--workers", "1", "--budget", "2"])
+    printed = capsys.readouterr()
+    assert code == 2, printed
+    assert "rei: error: search stopped: the room editor's engine failed inside on candidate tpe-0000" in printed.err
+    assert "could not be started again" in printed.err and "run the same command to resume" in printed.err
+    assert "The edit engine failed (" in printed.out, printed.out  # the engine's own answer: kind internal
+    assert "tpe-0000: the room editor's engine failed inside" in printed.out and "invalid" not in printed.out
+    trials = open_study(out, load_search_spec(folder / "crossing.yaml").with_options(budget=2)).get_trials(deepcopy=False)
     # the candidate's trial stays running (asked again when the search resumes); the others are TPE's start-up
     # design, still waiting; none was told anything
     assert [t.state for t in trials if t.state != TrialState.WAITING] == [TrialState.RUNNING], trials
