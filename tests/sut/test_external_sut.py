@@ -118,7 +118,8 @@ def test_a_sut_the_user_starts_attaches_with_the_run_s_environment(
             time.sleep(0.2)
         assert env_file.is_file(), "rei run did not write OUT/sut.env"
         variables = dict(line.split("=", 1) for line in env_file.read_text().splitlines())
-        assert set(variables) == {"REI_ROUTER_URL", "REI_ROUTER_RAWSOCKET_URL", "REI_REALM", "REI_RUN_ID", "REI_AUTH_FILE"}
+        assert set(variables) == {"REI_ROUTER_URL", "REI_ROUTER_RAWSOCKET_URL", "REI_REALM", "REI_RUN_ID", "REI_AUTH_FILE",
+                                  "REI_CASE_DIR"}
         assert "secret" not in env_file.read_text()
         sut = subprocess.Popen([str(rei_script), "nav-sut"], env={**env, **variables}, stdout=subprocess.PIPE,
                                stderr=subprocess.STDOUT, text=True)
