@@ -42,7 +42,7 @@ def spec(folder: Path, text: str = SPEC) -> SearchSpec:
 def search(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, pool: FakePool, broken: tuple[str, ...] = (),
            text: str = SPEC) -> study.Search:
     out = tmp_path / "out"
-    monkeypatch.setattr(study, "CandidateMaker", lambda case, folder: FakeMaker(folder, DIAGRAM, broken))
+    monkeypatch.setattr(study, "CandidateMaker", lambda case, folder, log=print: FakeMaker(folder, DIAGRAM, broken))
     return study.Search(spec(tmp_path, text), out, pool, threading.Event(), log=lambda _: None)
 
 
