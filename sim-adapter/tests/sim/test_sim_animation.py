@@ -11,7 +11,7 @@ import pytest
 
 from rei.geometry import Twist2D
 from rei.sim.simulation import Simulation
-from rei.sim.spline import Trajectory
+from rei.spline import Trajectory
 
 # control points of h1 in the fixture; the loop closes after another 4 s (period 14 s)
 CONTROL = {

@@ -7,7 +7,7 @@ import math
 
 import pytest
 
-from rei.sim.spline import Trajectory
+from rei.spline import Trajectory
 
 # Once trajectory x: 0 -> 2 -> 2 at t = 0, 1, 3 (y stays 0). Knot velocities: v0 = 2 (one-sided), v1 = (2 + 0)/2
 # = 1, v2 = 0. Segment 0 (h=1): a = (1+2) - 2*2 = -1, b = 3*2 - (1+2*2) = 1, c = 2, d = 0.

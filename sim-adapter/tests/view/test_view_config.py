@@ -11,7 +11,7 @@ import pytest
 from rei.artifacts import ArtifactError
 from rei.evaluation import DEFAULT_UTILITIES
 from rei.report.colours import SIGNAL_COLOURS
-from rei.sim.spline import Trajectory
+from rei.spline import Trajectory
 from rei.view import RouterAuth, view_config
 
 URL = "ws://127.0.0.1:8080/ws"

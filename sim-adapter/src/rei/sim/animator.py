@@ -27,7 +27,7 @@ from dataclasses import dataclass
 import pybullet as p
 
 from rei.geometry import yaw_of_quaternion
-from rei.sim.spline import Trajectory
+from rei.spline import Trajectory
 
 MAX_SPEED = 3.0
 _TILT = 1e-3

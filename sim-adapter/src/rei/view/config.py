@@ -21,6 +21,7 @@ from rei.artifacts import ArtifactError, read_animation, read_mission, read_worl
 from rei.evaluation import load_utilities
 from rei.maps import map_picture
 from rei.report.colours import SIGNAL_COLOURS
+from rei.spline import Trajectory
 from rei.wamp.topics import Topics
 
 FORMAT = "rei-view/1"
@@ -107,10 +108,6 @@ def _paths(path: Path) -> list[dict[str, Any]]:
     """Each animated object's trajectory over one period (a loop) or from its first to its last point."""
     if not path.is_file():
         return []
-    from rei.sim.spline import (
-        Trajectory,  # imports pybullet via rei.sim: only when there is something to draw
-    )
-
     out = []
     for obj in read_animation(path).objects:
         trajectory = Trajectory([p.t for p in obj.points], [(p.x, p.y) for p in obj.points], obj.loop)

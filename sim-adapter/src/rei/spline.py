@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: EPL-2.0
 """Catmull-Rom (cubic Hermite) trajectories through timed control points, exactly as thesis 4.2.1 defines them.
 
-Kept free of pybullet so the mathematics can be tested against hand-computed values.
+Kept out of rei.sim (no pybullet) so the mathematics can be tested against hand-computed values, and so the
+view and the metrics evaluate a schedule as the simulator walks it.
 
 Per segment ``i`` (``h = t[i+1] - t[i]``, ``s = t - t[i]``) and per axis, Table 1 of the thesis::
 
