@@ -42,6 +42,7 @@ METRICS: tuple[Metric, ...] = (
     Metric("clearance_static_mean_min", "m", Kind.CONTINUOUS, Better.HIGHER, "mean min. clearance, static"),
     Metric("clearance_humans_min", "m", Kind.CONTINUOUS, Better.HIGHER, "min. clearance, humans"),
     Metric("clearance_humans_mean_min", "m", Kind.CONTINUOUS, Better.HIGHER, "mean min. clearance, humans"),
+    Metric("encounter_margin_humans", "s", Kind.CONTINUOUS, Better.HIGHER, "encounter margin, humans"),
     Metric("close_time", "s", Kind.CONTINUOUS, Better.LOWER, "time in CLOSE"),
     Metric("collision_time", "s", Kind.CONTINUOUS, Better.LOWER, "time in COLLISION"),
     Metric("collision_episodes", "", Kind.COUNT, Better.LOWER, "collision episodes"),
