@@ -25,7 +25,6 @@ Each figure is printed for both rooms and as the ratio map / grid, with the load
 from __future__ import annotations
 
 import argparse
-import importlib.util
 import itertools
 import json
 import math
@@ -42,6 +41,11 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
+
+# the synthetic building's drawing lives with the test support; the tests import it the same way (pytest.ini)
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "test-support" / "maps"))
+
+import synthetic_building
 
 from rei import toolchain
 from rei.maps import floor_blocks, load_map, merge_rectangles, obstacle_mask
@@ -153,16 +157,6 @@ def _replayed(output: str) -> tuple[int, float]:
     return int(found[1]), float(found[2])
 
 
-def _building(folder: Path) -> Path:
-    path = REPO / "test-support" / "maps" / "synthetic_building.py"
-    spec = importlib.util.spec_from_file_location("rei_synthetic_building", path)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = module
-    spec.loader.exec_module(module)
-    return module.write(folder)
-
-
 def _free_near(free: np.ndarray, x: float, y: float) -> str:
     """The free 1 m floor block nearest map metres ``(x, y)``."""
     ys, xs = np.nonzero(free)
@@ -237,7 +231,7 @@ def main() -> int:
         if args.depot is not None:
             maps.append(("depot", args.depot))
         if not args.no_building:
-            maps.append(("building", _building(work / "building-map")))
+            maps.append(("building", synthetic_building.write(work / "building-map")))
         if not maps:
             sys.exit("benchmark: no map to measure (--depot FILE.yaml, or leave the building in)")
         failed, jars = False, _jars(work)

@@ -13,15 +13,13 @@ monitor and the evaluator.
 from __future__ import annotations
 
 import csv
-import importlib.util
 import json
 import math
-import sys
 from pathlib import Path
-from types import ModuleType
 
 import numpy as np
 import pytest
+import synthetic_building  # test-support/maps, on the path by pytest.ini
 
 from rei.geometry import footprint_gaps
 from rei.maps import box_of, floor_blocks, load_map, merge_rectangles, obstacle_mask
@@ -128,17 +126,6 @@ def test_a_drive_into_a_map_wall_is_close_then_a_collision_when_the_geometry_say
     assert states[-1]["robot"]["pose"][0] < 0.4 and abs(states[-1]["robot"]["pose"][2]) < 0.05  # at the wall
 
 
-@pytest.fixture(scope="module")
-def building() -> ModuleType:
-    path = REPO / "test-support" / "maps" / "synthetic_building.py"
-    spec = importlib.util.spec_from_file_location("rei_synthetic_building", path)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = module
-    spec.loader.exec_module(module)
-    return module
-
-
 def _free_block_near(free: np.ndarray, x: float, y: float) -> str:
     """The free 1 m floor block nearest map metres (x, y)."""
     ys, xs = np.nonzero(free)
@@ -147,13 +134,13 @@ def _free_block_near(free: np.ndarray, x: float, y: float) -> str:
 
 
 def test_a_30_by_50_metre_map_at_3_cm_validates_generates_simulates_and_is_monitored(
-        building: ModuleType, run_cli, tmp_path: Path) -> None:
-    yaml = building.write(tmp_path / "map")
+        run_cli, tmp_path: Path) -> None:
+    yaml = synthetic_building.write(tmp_path / "map")
     occupancy = load_map(yaml)
     assert occupancy.width * occupancy.height > 1_600_000
     rectangles = merge_rectangles(obstacle_mask(occupancy))
     free = floor_blocks(occupancy, 1.0).free
-    (x0, y0), (x1, y1) = building.CORRIDOR_GOALS
+    (x0, y0), (x1, y1) = synthetic_building.CORRIDOR_GOALS
     start, middle = _free_block_near(free, x0, y0), _free_block_near(free, x0, y0 + 10.0)
     case = _case(f"""testcase Building {{
   room Floor3 occupancy "map/{yaml.name}" floorSize 1.0 {{
