@@ -1,7 +1,9 @@
 # SPDX-License-Identifier: EPL-2.0
 """The navigation metrics (docs/metrics.md) of scripted drives in the real simulation, each against a computation
 of its own from the recorded states and the case: a straight drive of known length and speed that stops 0.1 m
-from a table, a turn in place followed by back-and-forth, and a drive into the table."""
+from a table, a turn in place followed by back-and-forth, and a drive into the table. A human walks the next lane
+during the runs; another waits in the lane beyond it and crosses the robot's lane only after the runs, where the
+straight drives passed (the encounter margin counts the schedule past the run's end)."""
 
 from __future__ import annotations
 
@@ -17,9 +19,10 @@ from rei.evaluation.metrics import LIST_KEYS, NAMES, compute_metrics
 from rei.wamp.recording import read_recording
 
 CASE = """testcase MetricsDrive {
-  room Lane size 5 x 2 {
+  room Lane size 5 x 3 {
     object table1 : Table on F_3_0
     human walker trajectory [F_0_1 @ 0s, F_4_1 @ 10s] once
+    human crosser trajectory [F_1_2 @ 20s, F_1_0 @ 30s] once
     robot tb3 : Waffle on F_0_0
   }
   mission ToTable { goto F_2_0 within 60s goto F_2_0 }
@@ -49,9 +52,9 @@ class Drive:
         self.begin = next(m["t"] for m in self.mission if m["event"] == "BEGIN")
         self.end = next(m["t"] for m in self.mission if m["event"] == "END")
 
-    def human(self) -> np.ndarray:
+    def human(self, name: str = "walker") -> np.ndarray:
         return np.array([[o["pose"][0], o["pose"][1]] for s in self.states for o in s["objects"]
-                         if o["name"] == "walker"])
+                         if o["name"] == name])
 
 
 @pytest.fixture(scope="module")
@@ -102,12 +105,67 @@ def test_a_drive_that_stops_a_tenth_of_a_metre_from_the_table(drives: dict[str, 
     assert abs(m["clearance_static_min"] - 0.1) <= SPEED * 0.05
     # CLOSE (monitor.json close 0.25 m) only at the table: the walls are 0.297 m from the footprint's sides
     assert abs(m["close_time"] - 0.05 * np.count_nonzero(gap < 0.25)) <= 0.05 + 1e-9
-    # the human walks the parallel lane 1 m away: a circle of 0.5 m against the rectangle
-    human = d.human()
-    dx, dy = np.abs(human[:, 0] - d.x) - HALF_X, np.abs(human[:, 1] - d.y) - HALF_Y
-    human_gap = np.hypot(np.maximum(dx, 0), np.maximum(dy, 0)) - 0.25
+    # the walker walks the parallel lane 1 m away, the crosser waits 2 m away: circles of 0.5 m against the rectangle
+    gaps = []
+    for name in ("walker", "crosser"):
+        human = d.human(name)
+        dx, dy = np.abs(human[:, 0] - d.x) - HALF_X, np.abs(human[:, 1] - d.y) - HALF_Y
+        gaps.append(np.hypot(np.maximum(dx, 0), np.maximum(dy, 0)) - 0.25)
+    human_gap = np.min(gaps, axis=0)
     assert abs(m["clearance_humans_min"] - human_gap.min()) <= 0.002
     assert abs(m["clearance_humans_mean_min"] - human_gap.mean()) <= 0.002
+
+
+def own_encounter_margin(d: Drive) -> tuple[float | None, float]:
+    """The least |t_k - tau| over the mission's state samples k and each human's schedule (animation.json, every
+    0.01 s and at the samples' times, up to a second past the later of the run's and the schedule's ends) where
+    its circle (world.json) comes nearer than the collision threshold (monitor.json) to the robot's rectangle;
+    and how far the recorded humans were from their schedules at the samples' times."""
+    case = d.out.parent / "case"
+    animation = json.loads((case / "animation.json").read_text())
+    world = json.loads((case / "world.json").read_text())
+    threshold = json.loads((case / "monitor.json").read_text())["thresholds"]["collision"]
+    inside = (d.t >= d.begin - 1e-9) & (d.t <= d.end + 1e-9)
+    t, x, y, yaw = d.t[inside], d.x[inside, None], d.y[inside, None], d.yaw[inside, None]
+    least, off_schedule = None, 0.0
+    for o in animation["objects"]:
+        if o["category"] != "HUMAN":
+            continue
+        # two control points walked once: the Catmull-Rom is the straight uniform walk between them, waiting at
+        # the first before and staying at the last after, which np.interp gives exactly
+        assert len(o["points"]) == 2 and not o["loop"]
+        times = [p["t"] for p in o["points"]]
+        xs, ys = [p["x"] for p in o["points"]], [p["y"] for p in o["points"]]
+        recorded = d.human(o["name"])
+        scheduled = np.column_stack((np.interp(d.t, times, xs), np.interp(d.t, times, ys)))
+        off_schedule = max(off_schedule, float(np.hypot(*(recorded - scheduled).T).max()))
+        taus = np.union1d(np.arange(0.0, max(d.end, times[-1]) + 1.0, 0.01), t)
+        dx, dy = np.interp(taus, times, xs)[None, :] - x, np.interp(taus, times, ys)[None, :] - y
+        along = np.abs(np.cos(yaw) * dx + np.sin(yaw) * dy)  # the human's centre in the robot's frame
+        across = np.abs(-np.sin(yaw) * dx + np.cos(yaw) * dy)
+        distance = np.hypot(np.maximum(along - HALF_X, 0), np.maximum(across - HALF_Y, 0))
+        radius = next(w["size"][0] / 2 for w in world["objects"] if w["name"] == o["name"])
+        conflict = distance < radius + threshold
+        if conflict.any():
+            margin = float(np.abs(t[:, None] - taus[None, :])[conflict].min())
+            least = margin if least is None else min(least, margin)
+    return least, off_schedule
+
+
+def test_the_encounter_margin_counts_a_crossing_after_the_run(drives: dict[str, Drive]) -> None:
+    for name, d in drives.items():
+        own, off_schedule = own_encounter_margin(d)
+        assert off_schedule < 0.02, name  # the simulator walks the schedule on the states' clock
+        m = d.metrics["encounter_margin_humans"]
+        if own is None:
+            assert m is None, name
+        else:  # within one state sample (0.05 s) and the metric's schedule step (0.05 s)
+            assert m is not None and abs(m - own) <= 0.05 + 0.05 + 1e-9, (name, m, own)
+    # the straight drives pass x = 1.5 about 5 s in; the crosser, who sets off at 20 s, would meet their
+    # footprints about 22 s later. The turn stays at the start, 0.56 m from the crosser's line: no margin
+    for name in ("straight", "ram"):
+        assert 20.0 < drives[name].metrics["encounter_margin_humans"] < 23.0, name
+    assert drives["turn"].metrics["encounter_margin_humans"] is None
 
 
 def test_jerk_is_the_integrated_squared_second_difference(drives: dict[str, Drive]) -> None:
