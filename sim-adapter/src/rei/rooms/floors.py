@@ -1,17 +1,19 @@
 # SPDX-License-Identifier: EPL-2.0
 """Floors side by side, for both room generators: a grid room's floors are all the cells of its rectangle, a map
-room's the map's free blocks. What is reachable, how far, and whether a room stays navigable with one more piece
-of furniture are the same questions on both."""
+room's the map's free blocks. What is reachable, how far, whether a room stays navigable with one more piece
+of furniture, and where humans walk are the same questions on both."""
 
 from __future__ import annotations
 
+import random
 from collections import deque
-from collections.abc import Collection, Iterable, Mapping
+from collections.abc import Callable, Collection, Iterable, Mapping
 
-from rei.rooms.model import Cell
+from rei.rooms.model import Cell, Walker
 
 #: The four sides of a floor (4-neighbours), in the order both generators have always walked them.
 SIDES = ((-1, 0), (1, 0), (0, -1), (0, 1))
+HUMAN_SPEED = (0.4, 0.7)  # m/s
 
 
 def grid(width: int, height: int) -> frozenset[Cell]:
@@ -75,3 +77,28 @@ def still_navigable(cell: Cell, placed: Mapping[Cell, object], robot_cells: Iter
                 missing.discard(n)
                 queue.append(n)
     return not missing
+
+
+def draw_walkers(rng: random.Random, humans: int, start: Cell, goals: Iterable[Cell],
+                 lane: Callable[[random.Random], tuple[Cell, Cell]], floors: Collection[Cell], floor_size: float,
+                 tries: int) -> list[Walker] | None:
+    """One straight lane per human, so that humans do not walk into each other: ``lane`` draws its first and last
+    floor, kept when every floor between lies in ``floors`` and away from the robot's start (and its neighbours),
+    the goals and the lanes before; a human walks it at a speed drawn from ``HUMAN_SPEED`` (``floor_size`` metres
+    a floor). None when a human's lane is not found in ``tries`` draws."""
+    banned = {start, *neighbours(start), *goals}
+    walkers: list[Walker] = []
+    for number in range(1, humans + 1):
+        for _ in range(tries):
+            first, last = lane(rng)
+            walker = Walker(f"walker{number}", first, last, 0)
+            cells = set(walker.cells())
+            if not cells <= floors or cells & banned:
+                continue
+            period = max(2, round((len(cells) - 1) * floor_size / rng.uniform(*HUMAN_SPEED)))
+            walkers.append(Walker(walker.name, first, last, period))
+            banned |= cells
+            break
+        else:
+            return None
+    return walkers

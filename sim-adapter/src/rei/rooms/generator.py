@@ -23,16 +23,16 @@ from __future__ import annotations
 
 import math
 import random
+from functools import partial
 
 from rei.rooms import floors
 from rei.rooms.classes import MAX_HUMANS, RoomClass, room_class
-from rei.rooms.model import DEFAULT_TYPES, Cell, Furniture, Goal, Room, RoomTypes, Walker
+from rei.rooms.model import DEFAULT_TYPES, Cell, Furniture, Goal, Room, RoomTypes
 
 #: Wall half thickness plus the gap kept between furniture and a wall, in metres.
 WALL_CLEARANCE = 0.05 + 0.03
 #: Smallest gap between two pieces of furniture, and how close one may come to a reserved floor's edge.
 GAP = 0.05
-HUMAN_SPEED = (0.4, 0.7)  # m/s
 MAX_ATTEMPTS = 200
 
 class GenerationError(RuntimeError):
@@ -71,7 +71,8 @@ def _attempt(rng: random.Random, cls: RoomClass, density: str, humans: int, seed
     room_floors = floors.grid(w, h)
     start = (0, rng.randrange(h))
     goals = _goals(rng, cls, start)
-    walkers = _walkers(rng, cls, humans, start, goals)
+    walkers = floors.draw_walkers(rng, humans, start, goals, partial(_lane, cls), room_floors, floor_size=1.0,
+                                  tries=100)
     if walkers is None:
         return None
     robot_cells = {start, *goals}
@@ -112,32 +113,15 @@ def _goals(rng: random.Random, cls: RoomClass, start: Cell) -> list[Cell]:
     return goals
 
 
-def _walkers(rng: random.Random, cls: RoomClass, humans: int, start: Cell, goals: list[Cell]) -> list[Walker] | None:
-    """Straight lanes of 3 to 6 floors, away from the robot's start (and its neighbours) and the goals, one lane
-    per human so that humans do not walk into each other."""
-    banned = {start, *floors.neighbours(start), *goals}  # a lane never leaves the room: no bounds needed
-    walkers: list[Walker] = []
-    for number in range(1, humans + 1):
-        for _ in range(100):
-            horizontal = rng.random() < 0.5
-            span = cls.width if horizontal else cls.height
-            length = rng.randint(3, min(6, span))
-            a = rng.randrange(span - length + 1)
-            b = rng.randrange(cls.height if horizontal else cls.width)
-            first, last = ((a, b), (a + length - 1, b)) if horizontal else ((b, a), (b, a + length - 1))
-            if rng.random() < 0.5:
-                first, last = last, first
-            walker = Walker(f"walker{number}", first, last, 0)
-            lane = set(walker.cells())
-            if lane & banned:
-                continue
-            period = max(2, round((length - 1) / rng.uniform(*HUMAN_SPEED)))
-            walkers.append(Walker(walker.name, first, last, period))
-            banned |= lane
-            break
-        else:
-            return None
-    return walkers
+def _lane(cls: RoomClass, rng: random.Random) -> tuple[Cell, Cell]:
+    """A walker's lane: 3 to 6 floors along a row or a column of the room, walked from either end."""
+    horizontal = rng.random() < 0.5
+    span = cls.width if horizontal else cls.height
+    length = rng.randint(3, min(6, span))
+    a = rng.randrange(span - length + 1)
+    b = rng.randrange(cls.height if horizontal else cls.width)
+    first, last = ((a, b), (a + length - 1, b)) if horizontal else ((b, a), (b, a + length - 1))
+    return (last, first) if rng.random() < 0.5 else (first, last)
 
 
 def _fits(item: Furniture, placed: dict[Cell, Furniture], reserved: set[Cell], w: int, h: int) -> bool:

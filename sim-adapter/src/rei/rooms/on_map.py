@@ -24,14 +24,15 @@ from __future__ import annotations
 
 import math
 import random
+from functools import partial
 from pathlib import Path
 
 import numpy as np
 
 from rei.maps import MapError, floor_blocks, load_map, obstacle_mask
-from rei.rooms.floors import SIDES, component, distances, neighbours, still_navigable
-from rei.rooms.generator import GAP, HUMAN_SPEED, GenerationError, rect_gap
-from rei.rooms.model import DEFAULT_TYPES, Cell, Furniture, Goal, MapSite, Room, RoomTypes, Walker
+from rei.rooms.floors import SIDES, component, distances, draw_walkers, neighbours, still_navigable
+from rei.rooms.generator import GAP, GenerationError, rect_gap
+from rei.rooms.model import DEFAULT_TYPES, Cell, Furniture, Goal, MapSite, Room, RoomTypes
 
 #: Furnished share of the floors per density: the share of the generated grid rooms (thesis 7.4's classes).
 SHARES = {"dense": 0.25, "sparse": 0.12}
@@ -117,7 +118,8 @@ def _attempt(rng: random.Random, site: MapSite, area: list[Cell], furniture: dic
     goals = _goals(rng, floors, roomy, start)
     if goals is None:
         return None
-    walkers = _walkers(rng, site, floors, humans, start, goals)
+    walkers = draw_walkers(rng, humans, start, goals, partial(_lane, sorted(floors)), floors,
+                           floor_size=site.floor_size, tries=200)
     if walkers is None:
         return None
     robot_cells = {start, *goals}
@@ -185,29 +187,12 @@ def _goals(rng: random.Random, floors: set[Cell], roomy: list[Cell], start: Cell
     return goals
 
 
-def _walkers(rng: random.Random, site: MapSite, floors: set[Cell], humans: int, start: Cell,
-             goals: list[Cell]) -> list[Walker] | None:
-    """Straight lanes of 3 to 6 floors, away from the start (and its neighbours) and the goals, one per human."""
-    banned = {start, *neighbours(start), *goals}
-    cells = sorted(floors)
-    walkers: list[Walker] = []
-    for number in range(1, humans + 1):
-        for _ in range(200):
-            first = rng.choice(cells)
-            dx, dy = rng.choice(SIDES)
-            length = rng.randint(3, 6)
-            last = (first[0] + (length - 1) * dx, first[1] + (length - 1) * dy)
-            walker = Walker(f"walker{number}", first, last, 0)
-            lane = set(walker.cells())
-            if not lane <= floors or lane & banned:
-                continue
-            period = max(2, round((length - 1) * site.floor_size / rng.uniform(*HUMAN_SPEED)))
-            walkers.append(Walker(walker.name, first, last, period))
-            banned |= lane
-            break
-        else:
-            return None
-    return walkers
+def _lane(cells: list[Cell], rng: random.Random) -> tuple[Cell, Cell]:
+    """A walker's lane: 3 to 6 floors straight on from one of ``cells`` (it may leave them: the caller checks)."""
+    first = rng.choice(cells)
+    dx, dy = rng.choice(SIDES)
+    length = rng.randint(3, 6)
+    return first, (first[0] + (length - 1) * dx, first[1] + (length - 1) * dy)
 
 
 def _blocked_table(site: MapSite) -> np.ndarray:
