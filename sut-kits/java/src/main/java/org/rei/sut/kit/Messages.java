@@ -66,7 +66,12 @@ final class Messages {
 			double[] v = numbers(o, 5, what + ": obstacle");
 			obstacles.add(new Session.Obstacle(v[0], v[1], v[2], v[3], v[4]));
 		}
-		return new Session.StaticMap(b[0], b[1], b[2], b[3], List.copyOf(obstacles));
+		JsonNode occupancy = map.get("occupancy");
+		if (occupancy != null && !occupancy.isNull() && !occupancy.isTextual()) {
+			throw malformed(what, "'occupancy' is not a string");
+		}
+		return new Session.StaticMap(b[0], b[1], b[2], b[3], List.copyOf(obstacles),
+				occupancy == null || occupancy.isNull() ? null : occupancy.asText());
 	}
 
 	static Goal goal(JsonNode m) {

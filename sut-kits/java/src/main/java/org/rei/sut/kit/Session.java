@@ -4,7 +4,9 @@
  */
 package org.rei.sut.kit;
 
+import java.nio.file.Path;
 import java.util.List;
+import java.util.Map;
 
 /**
  * What {@code hello} answered: the run, the robot and (with {@code --sut-map}) the static map.
@@ -27,8 +29,42 @@ public record Session(int protocol, String runId, Clock clock, double controlRat
 	public record Lidar(int beams, double rangeMin, double rangeMax, double rate) {
 	}
 
-	/** Walls and furniture (never humans) inside the floors' bounds. */
-	public record StaticMap(double xmin, double ymin, double xmax, double ymax, List<Obstacle> obstacles) {
+	/**
+	 * Walls and furniture (never humans) inside the floors' bounds.
+	 *
+	 * @param occupancy in a room from an occupancy map, the test case's copy of the map ({@code map.yaml}, ROS
+	 *                  map_server format) named relative to the case folder ({@link #occupancyPath()}); else null
+	 */
+	public record StaticMap(double xmin, double ymin, double xmax, double ymax, List<Obstacle> obstacles,
+			String occupancy) {
+
+		/** A map of rectangles only, not from an occupancy map. */
+		public StaticMap(double xmin, double ymin, double xmax, double ymax, List<Obstacle> obstacles) {
+			this(xmin, ymin, xmax, ymax, obstacles, null);
+		}
+
+		/**
+		 * {@link #occupancy} in the case folder {@code REI_CASE_DIR} (which REI sets for a SUT it starts and writes
+		 * to OUT/sut.env), or null without an occupancy map; as the Python kit, the name as it is when the variable
+		 * is unset or empty.
+		 */
+		public Path occupancyPath() {
+			return occupancyPath(System.getenv());
+		}
+
+		/** {@link #occupancy} in {@code caseDir}, the run's case folder; the name as it is when that is null. */
+		public Path occupancyPath(Path caseDir) {
+			if (occupancy == null) {
+				return null;
+			}
+			return caseDir == null ? Path.of(occupancy) : caseDir.resolve(occupancy);
+		}
+
+		/** {@link #occupancyPath(Path)} with the case folder of {@code env}'s {@code REI_CASE_DIR}. */
+		Path occupancyPath(Map<String, String> env) {
+			String caseDir = env.get(SutClient.ENV_CASE_DIR);
+			return occupancyPath(caseDir == null || caseDir.isEmpty() ? null : Path.of(caseDir));
+		}
 	}
 
 	/** An oriented rectangle: centre, yaw and full sizes. */

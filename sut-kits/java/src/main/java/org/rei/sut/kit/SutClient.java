@@ -55,6 +55,8 @@ public final class SutClient {
 	public static final String ENV_REALM = "REI_REALM";
 	public static final String ENV_RUN_ID = "REI_RUN_ID";
 	public static final String ENV_AUTH_FILE = "REI_AUTH_FILE";
+	/** Optional: the run's case folder, which {@code hello}'s {@code map.occupancy} is relative to. */
+	public static final String ENV_CASE_DIR = "REI_CASE_DIR";
 
 	/** The protocol's URIs, {@code name} one of the lists below (docs/sut.md; contract/vocabulary.json). */
 	public static final String URI_TEMPLATE = "rei.run.{run_id}.sut.{name}";

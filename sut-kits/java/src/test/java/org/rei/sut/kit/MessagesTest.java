@@ -10,9 +10,13 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.List;
+import java.util.Map;
 
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import org.msgpack.core.MessagePack;
 import org.msgpack.core.MessageUnpacker;
 import org.msgpack.value.Value;
@@ -69,6 +73,43 @@ class MessagesTest {
 		Session.StaticMap map = Messages.session(msgpack(hello)).map();
 		assertEquals(6.0, map.xmax());
 		assertEquals(List.of(new Session.Obstacle(2.5, 1.5, 0.0, 1.2, 0.8)), map.obstacles());
+		assertNull(map.occupancy()); // a room of rectangles, not from an occupancy map
+		assertNull(map.occupancyPath(Path.of("/case")));
+		assertNull(map.occupancyPath(Map.of(SutClient.ENV_CASE_DIR, "/case")));
+	}
+
+	static String helloWithOccupancy(String value) {
+		return HELLO.replace("\"map\": null", "\"map\": {\"bounds\": [0, 0, 10, 6], "
+				+ "\"obstacles\": [[5.0, 0.075, 0.0, 10.0, 0.15]], \"occupancy\": " + value + "}");
+	}
+
+	@Test
+	void namesTheOccupancyMapInTheCaseFolder(@TempDir Path caseDir) throws Exception {
+		Files.writeString(caseDir.resolve("map.yaml"), "image: map.pgm\n");
+		Session.StaticMap map = Messages.session(msgpack(helloWithOccupancy("\"map.yaml\""))).map();
+		assertEquals("map.yaml", map.occupancy());
+		assertEquals(List.of(new Session.Obstacle(5.0, 0.075, 0.0, 10.0, 0.15)), map.obstacles());
+		Path resolved = map.occupancyPath(caseDir);
+		assertEquals(caseDir.resolve("map.yaml"), resolved);
+		assertEquals("image: map.pgm\n", Files.readString(resolved));
+		assertEquals(resolved, map.occupancyPath(Map.of(SutClient.ENV_CASE_DIR, caseDir.toString())));
+		// as the Python kit: without a case folder (REI_CASE_DIR unset or empty), the name as it is
+		assertEquals(Path.of("map.yaml"), map.occupancyPath((Path) null));
+		assertEquals(Path.of("map.yaml"), map.occupancyPath(Map.of()));
+		assertEquals(Path.of("map.yaml"), map.occupancyPath(Map.of(SutClient.ENV_CASE_DIR, "")));
+		assertEquals(map.occupancyPath(System.getenv()), map.occupancyPath());
+		assertNull(Messages.session(msgpack(helloWithOccupancy("null"))).map().occupancy());
+	}
+
+	@Test
+	void refusesAnOccupancyThatIsNotAString() throws Exception {
+		for (String value : List.of("3", "[\"map.yaml\"]", "{\"yaml\": \"map.yaml\"}", "true")) {
+			SutException e = assertThrows(SutException.class,
+					() -> Messages.session(msgpack(helloWithOccupancy(value))), value);
+			assertEquals(SutClient.EXIT_CONNECTION, e.exitCode());
+			assertEquals("malformed hello's answer: map from the simulation: 'occupancy' is not a string",
+					e.getMessage());
+		}
 	}
 
 	@Test
