@@ -77,6 +77,7 @@ def test_java_copies(contract: dict, java_facts: dict) -> None:
     assert (java_facts["sut_from_simulation"], java_facts["sut_from_sut"], java_facts["sut_procedures"]) == (
         sut["from_simulation"], sut["from_sut"], sut["procedures"])
     assert java_facts["sut_environment"] == sut["environment"]
+    assert java_facts["sut_case_dir"] in sut["optional_environment"]  # hello's map.occupancy is relative to it
     assert java_facts["warm_jvm_request"] == contract["warm_jvm"]["request"]
     assert java_facts["warm_jvm_answer"] == contract["warm_jvm"]["answer"]
     editor = contract["room_editor"]

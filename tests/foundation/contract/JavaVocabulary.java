@@ -40,6 +40,7 @@ public final class JavaVocabulary {
 		facts.put("sut_procedures", SutClient.PROCEDURES);
 		facts.put("sut_environment", List.of(SutClient.ENV_ROUTER_URL, SutClient.ENV_REALM, SutClient.ENV_RUN_ID,
 				SutClient.ENV_AUTH_FILE));
+		facts.put("sut_case_dir", SutClient.ENV_CASE_DIR);
 		facts.put("warm_jvm_request", CommandServer.REQUEST);
 		facts.put("warm_jvm_answer", CommandServer.ANSWER);
 		facts.put("room_editor_commands", Protocol.COMMANDS);
