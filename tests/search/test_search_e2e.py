@@ -71,7 +71,7 @@ def test_the_search_finds_the_collision_in_the_corridor(searched: Searched) -> N
     xml = (searched.out / "verdicts.xml").read_text(encoding="utf-8")
     assert f'name="{crossing[0]}"' in xml and "reproduce: " in xml
     html = (searched.out / "search.html").read_text(encoding="utf-8")
-    assert 'id="objective-0"' in html and 'id="map"' in html and crossing[0] in html
+    assert 'id="objective-0"' in html and 'id="failure-1-map"' in html and crossing[0] in html
 
 
 def test_a_stopped_search_resumes_without_running_an_evaluation_again(searched: Searched) -> None:

@@ -9,6 +9,7 @@ not have (rei.search.objectives.ABSENT) is left out of the charts, the front and
 from __future__ import annotations
 
 import html
+import re
 import warnings
 from collections.abc import Mapping, Sequence
 from pathlib import Path
@@ -19,6 +20,8 @@ from optuna.trial import TrialState
 from rei.search.objectives import present
 
 PAGE = "search.html"
+#: An id of the run report's map (rei.report.map_svg: the svg's ``map``, its layers' ``map-...``).
+_MAP_ID = re.compile(r'\bid="(map(?:-[^"]*)?)"')
 _W, _H, _PAD = 560, 220, 36
 _CSS = """body{font-family:system-ui,sans-serif;margin:24px;color:#222;max-width:1100px}
 table{border-collapse:collapse;font-size:13px}td,th{border:1px solid #ddd;padding:3px 8px;text-align:left}
@@ -155,7 +158,7 @@ def _failures(out: Path, document: Mapping[str, Any]) -> str:
     if not failures:
         return "<section id=\"failures\"><h2>Distinct failures</h2><p>none found</p></section>"
     parts = ["<section id=\"failures\"><h2>Distinct failures (most severe first)</h2>"]
-    for failure in failures:
+    for n, failure in enumerate(failures, start=1):
         shrunk = failure.get("shrunk") or {}
         links = [f"<a href=\"{_rel(out, failure['case'])}\">case</a>",
                  f"<a href=\"{_rel(out, failure['report'])}\">run report</a>"]
@@ -165,12 +168,14 @@ def _failures(out: Path, document: Mapping[str, Any]) -> str:
         parts.append(f"<div class=\"failure\"><h3>{_e(failure['signature'])}</h3><p>{_e(failure['message'])}; "
                      f"worst utility {failure['worst_utility']:g}; found in {len(failure['evaluations'])} "
                      f"evaluation(s), first {_e(failure['first'])} (seed {failure.get('seed')}). "
-                     + " · ".join(links) + "</p>" + _map(Path(failure["run"])) + "</div>")
+                     + " · ".join(links) + "</p>" + _map(Path(failure["run"]), f"failure-{n}") + "</div>")
     parts.append("</section>")
     return "\n".join(parts)
 
 
-def _map(run_dir: Path) -> str:
+def _map(run_dir: Path, prefix: str) -> str:
+    """The run report's map of ``run_dir``, its ids (``map``, ``map-robot-path``, ...) prefixed with ``prefix``:
+    the page holds one map per failure, and an id is unique in a page."""
     from rei.report.map_svg import render_map
     from rei.report.run_data import load_run
     from rei.report.tracks import collect_tracks
@@ -181,7 +186,8 @@ def _map(run_dir: Path) -> str:
 
         case_dir = Path(json.loads(task.read_text(encoding="utf-8"))["case_dir"])
         data = load_run(run_dir, case_dir)
-        return render_map(data.world, collect_tracks(data.states()), data.goals, data.signals, data.picture)
+        svg = render_map(data.world, collect_tracks(data.states()), data.goals, data.signals, data.picture)
+        return _MAP_ID.sub(lambda m: f'id="{prefix}-{m.group(1)}"', svg)
     except (OSError, ValueError, KeyError) as error:
         return f"<p class=\"muted\">no map: {_e(str(error))}</p>"
 
