@@ -42,3 +42,29 @@ def test_each_failure_s_map_has_ids_of_its_own(tmp_path: Path) -> None:
         assert f'<svg id="failure-{n}-map"' in page
         assert f'id="failure-{n}-map-robot-path"' in page and f'id="failure-{n}-map-world"' in page
     assert 'id="map"' not in page
+
+
+def front_of(page: str) -> list[list[str]]:
+    table = page[page.index('id="pareto"'):]
+    table = table[:table.index("</table>")]
+    return [re.findall(r"<td>([^<]*)</td>", row) for row in re.findall(r"<tr><td>.*?</tr>", table)]
+
+
+def test_the_pareto_front_of_three_objectives_lists_the_non_dominated_evaluations(tmp_path: Path) -> None:
+    doc = document(["clearance", "utility", "time"], [
+        [0.5, 10.0, 30.0],  # tpe-0000: dominated by 0001 (closer, lower utility, longer)
+        [0.2, 5.0, 40.0],   # tpe-0001: on the front
+        [0.1, 8.0, 35.0],   # tpe-0002: on the front (closest)
+        [0.3, 2.0, 20.0],   # tpe-0003: on the front (lowest utility), though the shortest
+        [1e6, 1.0, 50.0],   # tpe-0004: a clearance it did not have: left out
+        [0.2, 5.0, 40.0],   # tpe-0005: the same point as 0001, which does not dominate it
+    ], [])
+    doc["objectives"][2]["direction"] = "maximize"  # a longer run is worse for the robot here
+    page = render(tmp_path, doc)
+    assert front_of(page) == [["tpe-0002", "0.1", "8", "35"], ["tpe-0001", "0.2", "5", "40"],
+                              ["tpe-0005", "0.2", "5", "40"], ["tpe-0003", "0.3", "2", "20"]]
+    assert "<th>time (maximize)</th>" in page and "4 of 5 evaluations" in page
+
+
+def test_one_objective_has_no_front(tmp_path: Path) -> None:
+    assert 'id="pareto"' not in render(tmp_path, document(["utility"], [[1.0], [2.0]], []))

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: EPL-2.0
 """``OUT/search.html``: one page, no script: each objective over the evaluations (search and, when one ran in
-the same folder, the random baseline) with the best so far, the Pareto front for two objectives, parameter
+the same folder, the random baseline) with the best so far, the Pareto front for several objectives, parameter
 importance (optuna.importance's default evaluator, PED-ANOVA), and each distinct failure with a small map of its
 run (the run report's map, rei.report.map_svg) and links to its case, report and shrunk case. A value a run did
 not have (rei.search.objectives.ABSENT) is left out of the charts, the front and the importance.
@@ -45,7 +45,7 @@ def render(out: Path, document: Mapping[str, Any]) -> str:
              f"failure at evaluation {counts['first_failure_at'] or '-'}.</p>")]
     for i, objective in enumerate(document["objectives"]):
         parts.append(_objective_section(i, objective, document["evaluations"], document.get("baseline")))
-    if len(document["objectives"]) == 2:
+    if len(document["objectives"]) >= 2:
         parts.append(_pareto(document))
     parts.append(_importance(out, document))
     parts.append(_failures(out, document))
@@ -105,21 +105,26 @@ def _chart(series: Sequence[tuple[str, list[float | None], str]], minimize: bool
 
 
 def _pareto(document: Mapping[str, Any]) -> str:
-    points = [(r["values"][0], r["values"][1], r["key"]) for r in document["evaluations"]
+    """The non-dominated evaluations, one row each with every objective's value (any number of objectives)."""
+    objectives = document["objectives"]
+    points = [(tuple(r["values"]), r["key"]) for r in document["evaluations"]
               if r.get("values") and all(present(v) for v in r["values"])]
     if not points:
         return ""
-    d = [o["direction"] == "minimize" for o in document["objectives"]]
+    # as minimized values, so one comparison serves every direction
+    signs = [1.0 if o["direction"] == "minimize" else -1.0 for o in objectives]
 
-    def dominates(a: tuple[float, float, str], b: tuple[float, float, str]) -> bool:
-        better = [(a[i] <= b[i]) if d[i] else (a[i] >= b[i]) for i in (0, 1)]
-        return all(better) and a[:2] != b[:2]
+    def dominates(a: tuple[float, ...], b: tuple[float, ...]) -> bool:
+        pairs = [(s * x, s * y) for s, x, y in zip(signs, a, b, strict=True)]
+        return all(x <= y for x, y in pairs) and any(x < y for x, y in pairs)
 
-    front = [p for p in points if not any(dominates(q, p) for q in points)]
-    rows = "".join(f"<tr><td>{_e(k)}</td><td>{a:g}</td><td>{b:g}</td></tr>" for a, b, k in sorted(front))
-    labels = [o["label"] for o in document["objectives"]]
-    return (f"<section id=\"pareto\"><h2>Pareto front</h2><table><tr><th>evaluation</th><th>{_e(labels[0])}</th>"
-            f"<th>{_e(labels[1])}</th></tr>{rows}</table></section>")
+    front = sorted(p for p in points if not any(dominates(q[0], p[0]) for q in points))
+    rows = "".join(f"<tr><td>{_e(k)}</td>" + "".join(f"<td>{v:g}</td>" for v in values) + "</tr>"
+                   for values, k in front)
+    heads = "".join(f"<th>{_e(o['label'])} ({_e(o['direction'])})</th>" for o in objectives)
+    return (f"<section id=\"pareto\"><h2>Pareto front</h2><p class=\"muted\">{len(front)} of {len(points)} "
+            "evaluations with every objective's value: none of the others is at least as good in every objective "
+            f"and better in one.</p><table><tr><th>evaluation</th>{heads}</tr>{rows}</table></section>")
 
 
 def _importance(out: Path, document: Mapping[str, Any]) -> str:
