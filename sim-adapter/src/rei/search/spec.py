@@ -35,9 +35,10 @@ Checked completely at the door; every mistake is reported as ``FILE:LINE:COLUMN:
 from __future__ import annotations
 
 import dataclasses
+import difflib
 import re
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -49,6 +50,8 @@ from rei.evaluation.metrics import BY_NAME, NAMES, Better
 from rei.search import SAMPLERS
 
 DIRECTIONS = ("minimize", "maximize")
+#: Samplers that search one objective only (Optuna's CmaEsSampler refuses a multi-objective study at its first ask).
+SINGLE_OBJECTIVE = ("cmaes",)
 #: The direction in which each kind of objective is worse for the robot (what a falsification looks for).
 _WORSE = {"utility": "minimize", "time": "maximize", "verdict": "minimize"}
 
@@ -124,9 +127,16 @@ class SearchSpec:
     diversity: bool = True
     source: Path | None = None
     rooms: RoomSettings | None = None
+    #: FILE:LINE:COLUMN of each top-level key's value, for messages about a setting after parsing
+    positions: Mapping[str, str] = field(default_factory=dict, compare=False, repr=False)
 
     def with_options(self, **changes: Any) -> SearchSpec:
-        return dataclasses.replace(self, **{k: v for k, v in changes.items() if v is not None})
+        """The spec with the command line's overrides (``budget``, ``sampler``; None: the spec's), checked as the
+        spec's own values are."""
+        spec = dataclasses.replace(self, **{k: v for k, v in changes.items() if v is not None})
+        if changes.get("sampler") is not None:
+            _check_sampler(spec, self.positions.get("objectives", str(self.source or "spec")), "--sampler ")
+        return spec
 
 
 class _Located:
@@ -215,7 +225,7 @@ def parse_search_spec(text: str, *, base: Path, file: str = "spec", default_name
                 "budget", lambda r: r.int("budget", 8, minimum=0))
     parameters = _parameters(top["parameters"][1], loc)
     objectives = _objectives(top["objectives"][1], loc)
-    return SearchSpec(
+    spec = SearchSpec(
         name=reader.call("name", lambda r: r.name("name", default_name)), case=case, controller=controller, sut=sut,
         seed=reader.call("seed", lambda r: r.int("seed", 0, minimum=0)),
         budget=reader.call("budget", lambda r: r.int("budget", 20, minimum=1)),
@@ -223,7 +233,19 @@ def parse_search_spec(text: str, *, base: Path, file: str = "spec", default_name
         timeout=reader.call("timeout", lambda r: r.number("timeout", 300.0)),
         humans=reader.call("humans", lambda r: r.bool("humans", True)),
         parameters=parameters, objectives=objectives, shrink_budget=shrink_budget,
-        diversity=reader.call("diversity", lambda r: r.bool("diversity", True)), rooms=rooms)
+        diversity=reader.call("diversity", lambda r: r.bool("diversity", True)), rooms=rooms,
+        positions={name: loc.at(value) for name, (_, value) in top.items()})
+    _check_sampler(spec, spec.positions.get("sampler", file))
+    return spec
+
+
+def _check_sampler(spec: SearchSpec, where: str, given: str = "") -> None:
+    """A sampler that searches one objective is refused for several (``given``: how it was chosen, when on the
+    command line)."""
+    if spec.sampler in SINGLE_OBJECTIVE and len(spec.objectives) > 1:
+        raise SpecError(f"{where}: {given}{spec.sampler} searches a single objective, the spec gives "
+                        f"{len(spec.objectives)} ({', '.join(o.label for o in spec.objectives)}): use nsga2 (or tpe) "
+                        f"for several, or keep one objective")
 
 
 def _room_settings(node: yaml.Node, base: Path, loc: _Located) -> RoomSettings:
@@ -310,13 +332,17 @@ def _parameters(node: yaml.Node, loc: _Located) -> tuple[Parameter, ...]:
 
             if not isinstance(name_value, str):
                 raise SpecError(f"{loc.at(name_node)}: 'fault' is the fault the values change, such as \"laser:1%\"")
-            _at(loc.at(name_node), lambda text=name_value: _fault_checked(parse_fault, text))
+            base_fault = _at(loc.at(name_node), lambda text=name_value: _fault_checked(parse_fault, text))
+            if base_fault is None:
+                raise SpecError(f"{loc.at(name_node)}: 'fault' is the fault the values change, such as \"laser:1%\", "
+                                f"got {name_value!r} (no fault)")
             if not props:
                 raise SpecError(f"{loc.at(item)}: give at least one of rate, gain, width")
             for prop in props:
-                parameters.append(Parameter("fault", "", prop, _range(loc.value(entry[prop][1]), entry[prop][1], loc,
-                                                                      integer=prop == "width"),
-                                            loc.at(entry[prop][1]), base=name_value))
+                value_node = entry[prop][1]
+                domain = _range(loc.value(value_node), value_node, loc, integer=prop == "width")
+                _check_fault_range(base_fault, prop, domain, loc.at(value_node))
+                parameters.append(Parameter("fault", "", prop, domain, loc.at(value_node), base=name_value))
             continue
         if target == "goal":
             if isinstance(name_value, bool) or not isinstance(name_value, int) or name_value < 0:
@@ -355,11 +381,22 @@ def _furniture(types: Any, node: yaml.Node, entry: dict[str, tuple[yaml.Node, ya
                      name_at=loc.at(node))
 
 
-def _fault_checked(parse: Any, text: str) -> None:
+def _fault_checked(parse: Any, text: str) -> Any:
     try:
-        parse(text)
+        return parse(text)
     except ValueError as error:
         raise SpecError(f": {error}") from None
+
+
+def _check_fault_range(fault: Any, prop: str, domain: Range, where: str) -> None:
+    """Both ends of a searched fault value are values the fault accepts (its own check, rei.sim.faults.LaserFault,
+    says the allowed interval); the accepted values are intervals, so every value between the ends is one too."""
+    for end in (domain.low, domain.high):
+        try:
+            dataclasses.replace(fault, **{prop: int(end) if domain.integer else end})
+        except ValueError as error:
+            raise SpecError(f"{where}: {prop} [{domain.low:g}, {domain.high:g}] reaches outside what the fault "
+                            f"accepts: {error}") from None
 
 
 def _domain(prop: str, node: yaml.Node, loc: _Located) -> Any:
@@ -456,6 +493,7 @@ def _objectives(node: yaml.Node, loc: _Located) -> tuple[Objective, ...]:
                                 f"{', '.join(REQUIREMENTS)}")
         of = ""
         if kind == "signal":
+            _check_signal(value, loc.at(value_node))
             of_node = entry.get("of", (None, None))[1]
             of = "count" if of_node is None else loc.value(of_node)
             if of not in ("count", "first"):
@@ -472,6 +510,16 @@ def _objectives(node: yaml.Node, loc: _Located) -> tuple[Objective, ...]:
     if len(set(labels)) != len(labels):
         raise SpecError(f"{loc.at(node)}: an objective is given twice")
     return tuple(objectives)
+
+
+def _check_signal(name: str, where: str) -> None:
+    """A signal of the default patterns (rei.evaluation.signals, checked against cep/patterns and the contract)."""
+    from rei.evaluation.signals import KNOWN_SIGNALS
+
+    if name not in KNOWN_SIGNALS:
+        close = difflib.get_close_matches(name, KNOWN_SIGNALS, n=1)
+        hint = f" (did you mean {close[0]}?)" if close else ""
+        raise SpecError(f"{where}: unknown signal {name!r}{hint}; known: {', '.join(sorted(KNOWN_SIGNALS))}")
 
 
 def _article(word: str) -> str:
