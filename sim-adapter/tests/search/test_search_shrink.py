@@ -27,7 +27,7 @@ def test_moving_the_seed_or_fault_back_is_simulated_and_kept_only_when_it_still_
     pool = FakePool(lambda text, seed, fault: ["walker"] if seed == 7 else [])
     maker = FakeMaker(tmp_path, DIAGRAM)
     values = {"bin1.floor": "F_2_0", "seed": 7, "fault.rate": 0.5}
-    result = shrink(FAILURE, values, space(), maker, pool, task_of, tmp_path, 1, 10, log=lambda _: None,
+    result = shrink(FAILURE, values, space(), maker, pool, task_of, tmp_path, "f1", 10, log=lambda _: None,
                     run="original-run")
     assert [(t.seed, t.fault) for t in pool.ran] == [(7, "laser-noise,rate=0.5"), (0, "laser-noise,rate=0.5"),
                                                      (7, None)]
@@ -45,10 +45,10 @@ def test_a_case_already_simulated_with_another_seed_is_simulated_again(tmp_path:
     maker = FakeMaker(tmp_path, DIAGRAM)
     values = {"bin1.floor": "F_2_0", "seed": 7, "fault.rate": None}
     seen: dict[Any, tuple[list[str], str]] = {}
-    shrink(FAILURE, {**values, "seed": 0}, space(), maker, pool, task_of, tmp_path, 1, 10, log=lambda _: None,
+    shrink(FAILURE, {**values, "seed": 0}, space(), maker, pool, task_of, tmp_path, "f1", 10, log=lambda _: None,
            seen=seen)
     before = len(pool.ran)
-    result = shrink(FAILURE, values, space(), maker, pool, task_of, tmp_path, 2, 10, log=lambda _: None,
+    result = shrink(FAILURE, values, space(), maker, pool, task_of, tmp_path, "f2", 10, log=lambda _: None,
                     seen=seen, run="original-run")
     assert result.removed == ["bin1"] and result.values["seed"] == 7
     assert len(pool.ran) > before
@@ -57,6 +57,6 @@ def test_a_case_already_simulated_with_another_seed_is_simulated_again(tmp_path:
 def test_nothing_kept_leaves_the_failures_own_run(tmp_path: Path) -> None:
     pool = FakePool(lambda text, seed, fault: ["walker"] if seed == 7 and "F_2_0" in text and fault else [])
     result = shrink(FAILURE, {"bin1.floor": "F_2_0", "seed": 7, "fault.rate": 0.5}, space(),
-                    FakeMaker(tmp_path, DIAGRAM), pool, task_of, tmp_path, 1, 10, log=lambda _: None,
+                    FakeMaker(tmp_path, DIAGRAM), pool, task_of, tmp_path, "f1", 10, log=lambda _: None,
                     run="original-run")
     assert (result.kept, result.removed, result.run) == (0, [], "original-run")

@@ -12,7 +12,7 @@ from typing import Any
 from rei.search.failures import Failure, distinct
 from rei.search.outputs import records, write_outputs
 from rei.search.pool import LocalPool, Pool, RayPool
-from rei.search.shrink import Case, shrink
+from rei.search.shrink import Case, failure_id, shrink
 from rei.search.spec import SearchSpec
 from rei.search.study import Search, open_study
 
@@ -67,7 +67,7 @@ def _shrink_all(search: Search, shrunk: dict[str, Any], log: Callable[[str], Non
     evaluations = records(search.study, search.out)
     completed = [r for r in evaluations if r["status"] == "COMPLETED"]
     seen: dict[Case, tuple[list[str], str]] = {}  # cases simulated while shrinking, shared between failures
-    for index, group in enumerate(distinct(completed), start=1):
+    for group in distinct(completed):  # named by signature, not rank: a resumed search may rank a new one higher
         signature = group.failure.signature
         if signature in shrunk:
             continue
@@ -76,7 +76,7 @@ def _shrink_all(search: Search, shrunk: dict[str, Any], log: Callable[[str], Non
         log(f"shrinking {signature} (from {group.first})")
         result = shrink(failure, first["params"], search.space, search.maker, search.pool,
                         lambda key, cand, case_dir, run_dir: search.task(key, cand, case_dir, run_dir), search.out,
-                        index, search.spec.shrink_budget, log, seen, first["run"])
+                        failure_id(signature), search.spec.shrink_budget, log, seen, first["run"])
         shrunk[signature] = result.to_dict()
         (search.out / SHRUNK).write_text(json.dumps(shrunk, indent=2, default=str) + "\n", encoding="utf-8")
         log(f"  shrunk: {result.kept} reduction(s) kept in {result.steps} simulation(s), removed "

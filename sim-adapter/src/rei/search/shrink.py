@@ -5,12 +5,15 @@ each step that still fails the same way (same requirement, same element, same pl
 Steps, in order: remove each object and human the failure does not name, then the extra pieces of furniture
 (the last first), then move each parameter back to the base case's value. Each step is one candidate (validated and checked like any other) and, when valid, one
 simulation; ``budget`` caps the simulations per failure. The shrunk case is written to
-``OUT/shrunk/shrunk-<n>.rei`` with its run in ``OUT/shrunk/runs/<n>-<step>/``.
+``OUT/shrunk/<id>.rei`` with its runs in ``OUT/shrunk/runs/<id>-<step>/``, ``<id>`` the failure's (``failure_id``):
+named by what failed, not by its rank, which a resumed search with a larger budget may change.
 """
 
 from __future__ import annotations
 
+import hashlib
 import json
+import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from pathlib import Path
@@ -27,6 +30,14 @@ EXTRA_COUNT = "furniture.count"
 #: What makes a run: the .rei text, the seed and the laser fault (the last two are not in the text, only in the
 #: header ``CandidateMaker.write`` adds, so two candidates with one text but another seed are two cases).
 Case = tuple[str | None, int, str | None]
+
+
+def failure_id(signature: str) -> str:
+    """A distinct failure's name in file names, the same in every invocation: its signature's parts joined by ``-``
+    (other characters than letters, digits, ``_`` and ``.`` as ``_``) and 6 hex digits of the signature's hash, which
+    keep apart two signatures that read alike (``MISSION_SIMPLE/walker/F_2_1``: ``MISSION_SIMPLE-walker-F_2_1-65a958``)."""
+    readable = "-".join(re.sub(r"[^A-Za-z0-9_.]", "_", part) for part in signature.split("/"))
+    return f"{readable[:80]}-{hashlib.sha256(signature.encode('utf-8')).hexdigest()[:6]}"
 
 
 def case_of(candidate: Candidate) -> Case:
@@ -48,13 +59,13 @@ class Shrunk:
 
 
 def shrink(failure: Failure, values: Mapping[str, Any], space: Space, maker: CandidateMaker, pool: Pool,
-           task_of: Callable[[str, Candidate, Path, Path], Any], out: Path, index: int, budget: int,
+           task_of: Callable[[str, Candidate, Path, Path], Any], out: Path, failure_name: str, budget: int,
            log: Callable[[str], None] = print, seen: dict[Case, tuple[list[str], str]] | None = None,
            run: str | None = None) -> Shrunk:
     """The smallest case found within ``budget`` simulations that still fails as ``failure`` does; ``run``: the
     run that showed the failure (the shrunk case's run while no reduction is kept). ``seen``: the failures
     (signatures, run folder) of cases simulated while shrinking other failures, by case (``case_of``); a case is
-    not simulated twice."""
+    not simulated twice. ``failure_name``: the failure's name in file names (``failure_id``)."""
     seen = {} if seen is None else seen
     base = space.base_values()
     current = dict(values)
@@ -66,7 +77,7 @@ def shrink(failure: Failure, values: Mapping[str, Any], space: Space, maker: Can
     def fails(trial_values: dict[str, Any], trial_removed: list[str]) -> tuple[bool, str | None, Case | None]:
         """Whether the case still fails the same way, the run that shows it, and the case."""
         nonlocal steps
-        key = f"{index}-{steps + 1}"
+        key = f"{failure_name}-{steps + 1}"
         candidate = maker.make(f"shrink-{key}", space.edit(trial_values, trial_removed))
         if candidate.status != VALID or candidate.text is None:
             return False, None, None
@@ -92,7 +103,7 @@ def shrink(failure: Failure, values: Mapping[str, Any], space: Space, maker: Can
         found = failures_of(summary, run_dir, case_dir, space.floor_at)
         seen[case] = ([f.signature for f in found], str(run_dir))
         same = any(f.signature == failure.signature for f in found)
-        log(f"  shrink {index} step {steps}: {'still fails' if same else 'passes or fails otherwise'}")
+        log(f"  shrink {failure.signature} step {steps}: {'still fails' if same else 'passes or fails otherwise'}")
         return same, str(run_dir) if same else None, case
 
     def keep(attempt: dict[str, Any], attempt_removed: list[str]) -> bool:
@@ -107,7 +118,7 @@ def shrink(failure: Failure, values: Mapping[str, Any], space: Space, maker: Can
         current, removed = attempt, attempt_removed
         return True
 
-    current_case = case_of(maker.make(f"shrink-{index}-0", space.edit(current, removed)))
+    current_case = case_of(maker.make(f"shrink-{failure_name}-0", space.edit(current, removed)))
     # removals first, as property-based shrinkers delete before they simplify: the biggest reduction per step
     for element in space.removable():
         if steps >= budget:
@@ -121,8 +132,8 @@ def shrink(failure: Failure, values: Mapping[str, Any], space: Space, maker: Can
         if steps >= budget:
             break
         keep({**current, name: base.get(name)}, removed)
-    final = maker.make(f"shrunk-{index}", space.edit(current, removed))
-    path: Path | None = folder / f"shrunk-{index}.rei"
+    final = maker.make(f"shrunk-{failure_name}", space.edit(current, removed))
+    path: Path | None = folder / f"{failure_name}.rei"
     if final.status == VALID:
         path.parent.mkdir(parents=True, exist_ok=True)
         maker.write(final, path)

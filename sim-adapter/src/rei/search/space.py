@@ -37,8 +37,10 @@ class Space:
     """The parameters of a spec over one base case (its room editor diagram)."""
 
     def __init__(self, parameters: Sequence[Parameter], diagram: Mapping[str, Any],
-                 palette: Sequence[Mapping[str, Any]] = ()) -> None:
+                 palette: Sequence[Mapping[str, Any]] = (), *, humans: bool = True) -> None:
+        """``humans``: whether the runs have the humans (a spec's ``humans: false`` leaves them out)."""
         self.parameters = tuple(parameters)
+        self._with_humans = humans
         self._diagram = diagram
         self._floors = {f["name"]: (float(f["centreX"]), float(f["centreY"])) for f in diagram["room"]["floors"]}
         objects = {o["name"]: o for o in diagram.get("objects") or []}
@@ -68,6 +70,10 @@ class Space:
         if p.target == "human" and p.name not in self._humans:
             raise SpecError(f"{at}: the base case has no human or moving object named {p.name!r}; it has "
                             f"{', '.join(self._humans) or 'none'}")
+        if p.target == "human" and not self._with_humans and self._humans[p.name].get("kind") == "human":
+            # the runs leave the humans out (a moving object stays): searching one's walk would change nothing
+            raise SpecError(f"{at}: {p.name} is a human and the spec runs without humans (humans: false): its "
+                            f"{p.prop} would change nothing; remove its parameters or set humans: true")
         if p.target == "goal" and int(p.name) >= len(self._goals):
             raise SpecError(f"{at}: the mission has {len(self._goals)} goal(s): index {p.name} is not one")
         if p.target == "furniture":

@@ -111,7 +111,7 @@ class Search:
         assert spec.case is not None
         self.maker = CandidateMaker(spec.case, self.out, log=log)
         try:
-            self.space = Space(spec.parameters, self.maker.diagram, self.maker.palette)
+            self.space = Space(spec.parameters, self.maker.diagram, self.maker.palette, humans=spec.humans)
         except BaseException:  # a parameter the base case does not have: the engine's JVM goes now
             self.maker.close()
             raise
