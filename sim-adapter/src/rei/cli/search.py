@@ -12,7 +12,7 @@ next. Each distinct failure is then shrunk to a smaller case that fails the same
 OUT/verdicts.xml, OUT/search.html, every candidate as OUT/candidates/*.rei and its run in OUT/runs/. A stopped
 search resumes when started again with the same OUT. Exit 0: no failure found; 1: failures found; 2: bad spec
 or arguments, the room editor's engine failed (the search stops), or no failure found but evaluations in ERROR (or
-none simulated); 130: interrupted.
+none simulated); 130: interrupted (Ctrl-C); 143: stopped by SIGTERM.
 """
 
 from __future__ import annotations
@@ -81,8 +81,8 @@ def run(args: argparse.Namespace) -> int:
         print(f"  {failure['signature']}: {len(failure['evaluations'])} evaluation(s), worst utility "
               f"{failure['worst_utility']:g}; case {shrunk.get('case') or failure['case']}")
     print(f"report:  {args.output / 'search.html'}")
-    if result.get("interrupted"):
-        return 130
+    if result.get("interrupted"):  # the exit status the stop calls for: 130 after Ctrl-C, 143 after SIGTERM
+        return int(result["interrupted"])
     if result["failures"]:
         return EXIT_FOUND
     # nothing found, but evaluations that could not be judged (or none at all) vouch for nothing

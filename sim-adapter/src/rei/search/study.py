@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import json
 import shutil
+import signal
 import threading
 from collections.abc import Callable
 from concurrent.futures import FIRST_COMPLETED, Future, wait
@@ -90,7 +91,9 @@ class SearchProgress:
     invalid: int = 0
     errors: int = 0
     failing: int = 0
-    interrupted: bool = False
+    #: The exit status the stop calls for, 0 when the search ran to its end: 130 after Ctrl-C, 143 (128 + the
+    #: signal) after SIGTERM, so a supervisor that sent SIGTERM sees it was obeyed
+    interrupted: int = 0
 
 
 #: A candidate ready to run: its trial, the candidate, its run.
@@ -135,11 +138,16 @@ class Search:
         try:
             self._resume()
             self._loop()
-        except (KeyboardInterrupt, SystemExit):
-            self.progress.interrupted = True
-            self.stop.set()
-            self.log("search interrupted: finished evaluations are kept; run the same command to resume")
+        except KeyboardInterrupt:
+            self._stopped(128 + signal.SIGINT)
+        except SystemExit as stop:
+            self._stopped(stop.code if isinstance(stop.code, int) and stop.code else 128 + signal.SIGTERM)
         return self.progress
+
+    def _stopped(self, status: int) -> None:
+        self.progress.interrupted = status
+        self.stop.set()
+        self.log("search interrupted: finished evaluations are kept; run the same command to resume")
 
     def close(self) -> None:
         self.maker.close()
