@@ -118,6 +118,8 @@ class Search:
         except BaseException:  # a parameter the base case does not have: the engine's JVM goes now
             self.maker.close()
             raise
+        if spec.sampler == "cmaes":
+            _note_independent(self.space, log)
         started = open_study(self.out, spec)
         so_far = len(started.trials)
         if spec.sampler == "tpe" and not so_far:  # TPE starts from a Sobol design, not random sampling's draws
@@ -334,6 +336,17 @@ class Search:
                     best = value
             parts.append(f"{objective.label} {'-' if best is None else f'{best:g}'}")
         return ", ".join(parts)
+
+
+def _note_independent(space: Space, log: Callable[[str], None]) -> None:
+    """CMA-ES models continuous values only: it draws each categorical parameter (every floor, a loop, an extra
+    piece's type) independently at random, a fact its own warning would tell at every ask (switched off in
+    make_sampler), so it is said once here."""
+    categorical = [k for k, d in space.distributions.items() if isinstance(d, optuna.distributions.CategoricalDistribution)]
+    if categorical:
+        shown = ", ".join(categorical[:4]) + (f" and {len(categorical) - 4} more" if len(categorical) > 4 else "")
+        log(f"note: cmaes draws the categorical parameters ({shown}) independently at random, learning only the "
+            f"numeric ones; tpe or nsga2 learn both")
 
 
 def _figures(spec: SearchSpec, values: list[float] | None) -> str:
