@@ -119,8 +119,9 @@ class CandidateMaker:
                                 f"restart: {error}") from None
 
     def _apply(self, edit: Edit) -> dict[str, Any]:
-        self._engine.request("reset", text=self.base_text)
-        return self._engine.request("apply", operations=list(edit.operations))
+        answer = self._engine.request("reset", text=self.base_text)
+        # a point that only sets the run's seed or fault edits nothing: the engine refuses an empty apply
+        return self._engine.request("apply", operations=list(edit.operations)) if edit.operations else answer
 
     def write(self, candidate: Candidate, path: Path | None = None) -> Path:
         """``OUT/candidates/<key>.rei`` (or ``path``), its seed and fault in a comment at its top (`rei run
