@@ -3,7 +3,7 @@
 
 ``load_search_spec(path)`` -> ``run_search(spec, out, workers=N | ray=ADDRESS)``. Modules, in the order of
 imports: ``spec`` (the YAML, placed errors), ``base`` (a ``rooms:`` spec's generated base case), ``space`` (parameters as Optuna distributions and as the room
-editor's operations), ``candidates`` (the base case edited, validated, checked for a path, generated),
+editor's operations), ``reproduce`` (the `rei run` line of a saved case), ``candidates`` (the base case edited, validated, checked for a path, generated),
 ``objectives``, ``failures``, ``pool`` (the campaign's supervised workers, one run at a time), ``study`` (Optuna's
 ask/tell loop over a journal), ``shrink``, ``outputs`` and ``report``, and ``run``, which ties them together.
 This package may import rei.campaign, rei.evaluation, rei.edit, rei.rooms and rei.report; only rei.cli imports it.

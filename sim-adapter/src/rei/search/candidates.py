@@ -26,6 +26,7 @@ from rei.campaign.spec import SpecError
 from rei.edit import EditEngine, EngineError, EngineFailure, engine_command
 from rei.rooms.check import diagram_static_map, unplannable
 from rei.run.jvm import JarServer, JarServerError, run_jar
+from rei.search.reproduce import RunOptions, header
 from rei.search.space import Edit
 
 VALID, INVALID, UNPLANNABLE = "valid", "invalid", "unplannable"
@@ -46,11 +47,14 @@ class Candidate:
 
 class CandidateMaker:
     """Edits the base case ``base`` (a .rei file) into candidates; ``out``: the search's folder; ``engine``: the
-    edit engine's argument vector (default: the built ``rei-room-editor.jar``); ``log`` gets a restart's line."""
+    edit engine's argument vector (default: the built ``rei-room-editor.jar``); ``log`` gets a restart's line;
+    ``runs``: the options the search runs every candidate with (default: nav with the humans), for the `rei run`
+    line in each written case."""
 
     def __init__(self, base: Path, out: Path, *, engine: Sequence[str] | None = None,
-                 log: Callable[[str], None] = print) -> None:
+                 log: Callable[[str], None] = print, runs: RunOptions | None = None) -> None:
         self.out = out
+        self.runs = runs or RunOptions()
         self._base = base.resolve()
         self._base_folder = self._base.parent  # the engine resolves the base's imports from there
         self._command = list(engine) if engine is not None else engine_command(
@@ -124,15 +128,14 @@ class CandidateMaker:
         return self._engine.request("apply", operations=list(edit.operations)) if edit.operations else answer
 
     def write(self, candidate: Candidate, path: Path | None = None) -> Path:
-        """``OUT/candidates/<key>.rei`` (or ``path``), its seed and fault in a comment at its top (`rei run
-        --seed`)."""
+        """``OUT/candidates/<key>.rei`` (or ``path``), with the `rei run` line that reproduces its run (seed, fault,
+        controller, humans, SUT: rei.search.reproduce) in a comment at its top."""
         assert candidate.text is not None
         path = path or self.out / "candidates" / f"{candidate.key}.rei"
         path.parent.mkdir(parents=True, exist_ok=True)
-        fault = f" --fault {candidate.edit.fault}" if candidate.edit.fault else ""
-        header = (f"// rei search candidate {candidate.key}: rei run {path.name} --seed {candidate.edit.seed}"
-                  f"{fault}\n")
-        path.write_text(header + relocated_imports(candidate.text, self._base_folder, path.parent), encoding="utf-8")
+        first = header(candidate.key, path, candidate.edit.seed, candidate.edit.fault, self.runs)
+        path.write_text(f"{first}\n" + relocated_imports(candidate.text, self._base_folder, path.parent),
+                        encoding="utf-8")
         return path
 
     def generate(self, candidate: Candidate) -> tuple[Path, str | None]:

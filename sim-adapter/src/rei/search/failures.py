@@ -16,6 +16,7 @@ from typing import Any
 
 from rei.evaluation.outcome import Evidence, Status, Verdict
 from rei.evaluation.verdicts import REQUIREMENTS
+from rei.search.reproduce import reproduce
 
 
 @dataclass(frozen=True, slots=True)
@@ -111,7 +112,8 @@ NO_FAILURE = "no failure found"
 def failure_verdicts(groups: Sequence[DistinctFailure], cases: Mapping[str, str], simulated: int = 0,
                      errors: int = 0) -> list[Verdict]:
     """One failing verdict per distinct failure for ``verdicts.xml`` (rei.evaluation.junit), named by its
-    signature, its evidence pointing at the ``.rei`` that reproduces it (``cases``: signature -> path). With none,
+    signature, its message and evidence ending with the `rei run` line that reproduces it (``cases``: signature ->
+    the saved ``.rei``, whose header has the line: rei.search.reproduce). With none,
     one verdict saying so over the ``simulated`` evaluations: a pass, or an error when some of them (``errors``)
     or all ended in ERROR, as `rei search` exits 2 then (nothing vouched for)."""
     if not groups:
@@ -121,10 +123,11 @@ def failure_verdicts(groups: Sequence[DistinctFailure], cases: Mapping[str, str]
     verdicts = []
     for group in groups:
         f = group.failure
-        case = cases.get(f.signature, "?")
-        verdicts.append(Verdict(f.signature, Status.FAIL, f"{f.message} (reproduce: {case})", (
+        case = cases.get(f.signature)
+        line = "?" if case is None else reproduce(case)
+        verdicts.append(Verdict(f.signature, Status.FAIL, f"{f.message} (reproduce: {line})", (
             Evidence(f"{REQUIREMENTS.get(f.requirement, f.requirement)}; the robot on {f.place}", t=f.t,
                      object=None if f.element == "-" else f.element),
             Evidence(f"found in {len(group.keys)} evaluation(s): {', '.join(group.keys)}"),
-            Evidence(f"reproduce: {case}"))))
+            Evidence(f"reproduce: {line}"))))
     return verdicts

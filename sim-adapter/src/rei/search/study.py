@@ -40,6 +40,7 @@ from rei.search.design import sobol_design, startup_trials
 from rei.search.failures import failures_of
 from rei.search.objectives import ABSENT, better, present, score
 from rei.search.pool import Pool
+from rei.search.reproduce import RunOptions
 from rei.search.space import Space
 from rei.search.spec import SearchSpec
 
@@ -112,7 +113,8 @@ class Search:
         # a ``rooms:`` spec's base case is generated now, into OUT, before the parameters are checked against it
         self.spec = spec = with_base_case(spec, self.out, log)
         assert spec.case is not None
-        self.maker = CandidateMaker(spec.case, self.out, log=log)
+        self.maker = CandidateMaker(spec.case, self.out, log=log,
+                                    runs=RunOptions(spec.controller, spec.humans, spec.sut))
         try:
             self.space = Space(spec.parameters, self.maker.diagram, self.maker.palette, humans=spec.humans)
         except BaseException:  # a parameter the base case does not have: the engine's JVM goes now
