@@ -49,12 +49,14 @@ def run(args: argparse.Namespace) -> int:
     from rei.lifetime import sigterm_unwinds
     from rei.search.run import run_search
     from rei.search.spec import load_search_spec
+    from rei.search.study import check_resume
 
     workers = workers_of(args)
     if args.budget is not None and args.budget < 1:
         raise CommandError(f"--budget must be at least 1, got {args.budget}")
     try:
         spec = load_search_spec(args.spec).with_options(budget=args.budget, sampler=args.sampler)
+        check_resume(spec, args.output.resolve())  # before a Ray cluster is reached or a room generated
     except SpecError as error:
         raise CommandError(str(error)) from None
     stop = threading.Event()

@@ -524,3 +524,75 @@ def _check_signal(name: str, where: str) -> None:
 
 def _article(word: str) -> str:
     return "an" if word[0] in "aeiou" else "a"
+
+
+#: What a resumed search may change: how long it runs, which sampler's study it adds to (the journal holds one per
+#: sampler: a random baseline in the same OUT is one), shrinking and the name. Anything else makes another search,
+#: whose evaluations the journal's could not be compared with.
+_RESUMABLE = ("name", "budget", "sampler", "shrink_budget", "source", "positions", "parameters", "objectives")
+_KEYS = {"shrink_budget": "shrink"}
+
+
+def check_resumable(given: SearchSpec, stored_text: str, stored_file: str) -> None:
+    """SpecError, placed in ``given``'s file at what changed, when ``given`` is not the search whose spec is
+    ``stored_text`` (OUT/spec.yaml, the spec the search in OUT started with): the same spec, reformatted, resumes."""
+    file = str(given.source or "spec")
+    base = given.source.resolve().parent if given.source is not None else Path.cwd()
+    advice = (f"a changed spec is another search: give a new -o OUT, or restore the spec as {stored_file} has it to "
+              f"resume (budget, sampler, shrink and name may change)")
+    try:
+        stored = parse_search_spec(stored_text, base=base, file=stored_file)
+    except SpecError as error:
+        raise SpecError(f"{file}:1:1: the search in this OUT started with a spec that no longer reads here "
+                        f"({error}); {advice}") from None
+    changes = _changes(stored, given, file)
+    if changes:
+        where, what = changes[0]
+        more = f" (and {len(changes) - 1} more change(s))" if len(changes) > 1 else ""
+        raise SpecError(f"{where}: this OUT holds a search started with another spec: {what}{more}; {advice}")
+
+
+def _changes(stored: SearchSpec, given: SearchSpec, file: str) -> list[tuple[str, str]]:
+    """(where in ``given``'s file, what) for each search-relevant difference; reformatting and the parameters'
+    order are none (the study knows parameters by name), the objectives' order is (their values are a list)."""
+    changes = []
+    for f in dataclasses.fields(SearchSpec):
+        if f.name in _RESUMABLE or getattr(stored, f.name) == getattr(given, f.name):
+            continue
+        key = _KEYS.get(f.name, f.name)
+        changes.append((given.positions.get(key, f"{file}:1:1"),
+                        f"{key} is {_shown(getattr(given, f.name))} here, {_shown(getattr(stored, f.name))} there"))
+    was = {p.key: _unplaced(p) for p in stored.parameters}
+    now = {p.key: p for p in given.parameters}
+    for key, p in now.items():
+        if key not in was:
+            changes.append((p.where, f"{key} is searched here, not there"))
+        elif _unplaced(p) != was[key]:
+            changes.append((p.where, f"{key} is {_shown(p.domain)} here, {_shown(was[key].domain)} there"
+                            if p.domain != was[key].domain else f"{key} changed"))
+    where = given.positions.get("parameters", f"{file}:1:1")
+    changes += [(where, f"{key} is searched there, not here") for key in was if key not in now]
+    labels = [(o.label, o.direction) for o in given.objectives]
+    before = [(o.label, o.direction) for o in stored.objectives]
+    if labels != before:
+        def listed(objectives: list[tuple[str, str]]) -> str:
+            return ", ".join(f"{label} ({direction})" for label, direction in objectives)
+        changes.append((given.positions.get("objectives", f"{file}:1:1"),
+                        f"the objectives are {listed(labels)} here, {listed(before)} there"))
+    return changes
+
+
+def _unplaced(parameter: Parameter) -> Parameter:
+    return dataclasses.replace(parameter, where="", name_at="")
+
+
+def _shown(value: Any) -> str:
+    if isinstance(value, Range):
+        return f"[{value.low:g}, {value.high:g}]"
+    if isinstance(value, tuple):
+        return "[" + ", ".join("any" if v is None else _shown(v) for v in value) + "]"
+    if isinstance(value, float):
+        return f"{value:g}"
+    if isinstance(value, str | bool | int | Path) or value is None:
+        return "none" if value is None else str(value).lower() if isinstance(value, bool) else str(value)
+    return "another setting"

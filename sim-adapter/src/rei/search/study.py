@@ -42,7 +42,7 @@ from rei.search.objectives import ABSENT, better, present, score
 from rei.search.pool import Pool
 from rei.search.reproduce import RunOptions
 from rei.search.space import Space
-from rei.search.spec import SearchSpec
+from rei.search.spec import SearchSpec, check_resumable
 
 JOURNAL = "study.journal"
 #: The trials' one constraint: 1 for a candidate that was not valid, 0 for a simulated one.
@@ -86,6 +86,17 @@ def open_study(out: Path, spec: SearchSpec, seed: int | None = None) -> optuna.S
                                sampler=make_sampler(spec.sampler, spec.seed if seed is None else seed, spec.budget))
 
 
+def check_resume(spec: SearchSpec, out: Path) -> None:
+    """SpecError when ``out`` holds a search started with a spec that differs from ``spec`` in what the search
+    does (rei.search.spec.check_resumable): its spec.yaml was overwritten silently, and the old trials lacked the
+    new parameters."""
+    stored = out / "spec.yaml"
+    if spec.source is None or not (out / JOURNAL).is_file() or not stored.is_file():
+        return
+    if spec.source.resolve() != stored.resolve():
+        check_resumable(spec, stored.read_text(encoding="utf-8"), str(stored))
+
+
 @dataclass(slots=True)
 class SearchProgress:
     simulated: int = 0
@@ -107,6 +118,7 @@ class Search:
     def __init__(self, spec: SearchSpec, out: Path, pool: Pool, stop: threading.Event,
                  log: Callable[[str], None] = print) -> None:
         self.spec, self.out, self.pool, self.stop, self.log = spec, out.resolve(), pool, stop, log
+        check_resume(spec, self.out)
         self.out.mkdir(parents=True, exist_ok=True)
         if spec.source is not None and spec.source.resolve() != self.out / "spec.yaml":
             shutil.copyfile(spec.source, self.out / "spec.yaml")
