@@ -5,6 +5,7 @@ new parameters. The same spec reformatted, another budget, sampler, shrink budge
 
 from __future__ import annotations
 
+import dataclasses
 import threading
 from pathlib import Path
 
@@ -116,3 +117,37 @@ def test_rei_search_refuses_an_edited_spec_before_anything_runs(started: Path,
 
 def test_a_new_out_starts_another_search(started: Path) -> None:
     assert run(started, SPEC.replace("seed: 1", "seed: 7"), "edited.yaml", out="new").simulated == 2
+
+
+MAPPINGS = """\
+rooms: {size: small, density: sparse, humans: 1, seed: 0}
+sut: {command: "rei nav-sut"}
+parameters:
+  - {object: bin1, floor: [F_1_0, F_2_0]}
+objectives:
+  - utility
+"""
+
+
+@pytest.mark.parametrize(("change", "expected"), [
+    (("", ""), None),
+    (("rooms: {size: small, density: sparse, humans: 1, seed: 0}",
+      "rooms:\n  seed: 0\n  humans: 1\n  size: small\n  density: sparse"), None),  # the same, written otherwise
+    (("seed: 0}", "seed: 3}"), "s.yaml:1:8: this OUT holds a search started with another spec: rooms is another here"),
+    (('"rei nav-sut"', '"rei nav-sut --fast"'),
+     "s.yaml:2:6: this OUT holds a search started with another spec: sut is another here"),
+    (("[F_1_0, F_2_0]", "any"),
+     "s.yaml:4:27: this OUT holds a search started with another spec: bin1.floor is any here, [F_1_0, F_2_0] there"),
+])
+def test_generated_rooms_and_an_external_sut_are_compared_by_their_settings(
+        tmp_path: Path, change: tuple[str, str], expected: str | None) -> None:
+    from rei.search.spec import check_resumable, parse_search_spec
+
+    given = dataclasses.replace(parse_search_spec(MAPPINGS.replace(*change), base=tmp_path, file="s.yaml"),
+                                source=tmp_path / "s.yaml")
+    if expected is None:
+        check_resumable(given, MAPPINGS, "out/spec.yaml")
+        return
+    with pytest.raises(SpecError) as raised:
+        check_resumable(given, MAPPINGS, "out/spec.yaml")
+    assert str(raised.value) == f"{expected}; {ADVICE.format(out='out')}"

@@ -560,15 +560,16 @@ def _changes(stored: SearchSpec, given: SearchSpec, file: str) -> list[tuple[str
         if f.name in _RESUMABLE or getattr(stored, f.name) == getattr(given, f.name):
             continue
         key = _KEYS.get(f.name, f.name)
+        here, there = _shown(getattr(given, f.name)), _shown(getattr(stored, f.name))
         changes.append((given.positions.get(key, f"{file}:1:1"),
-                        f"{key} is {_shown(getattr(given, f.name))} here, {_shown(getattr(stored, f.name))} there"))
+                        f"{key} is {here} here, {there} there" if here and there else f"{key} is another here"))
     was = {p.key: _unplaced(p) for p in stored.parameters}
     now = {p.key: p for p in given.parameters}
     for key, p in now.items():
         if key not in was:
             changes.append((p.where, f"{key} is searched here, not there"))
         elif _unplaced(p) != was[key]:
-            changes.append((p.where, f"{key} is {_shown(p.domain)} here, {_shown(was[key].domain)} there"
+            changes.append((p.where, f"{key} is {_shown(p.domain) or 'any'} here, {_shown(was[key].domain) or 'any'} there"
                             if p.domain != was[key].domain else f"{key} changed"))
     where = given.positions.get("parameters", f"{file}:1:1")
     changes += [(where, f"{key} is searched there, not here") for key in was if key not in now]
@@ -587,12 +588,16 @@ def _unplaced(parameter: Parameter) -> Parameter:
 
 
 def _shown(value: Any) -> str:
+    """A setting or a parameter's domain as the spec writes it; empty for one not worth showing (a mapping such as
+    ``sut`` or ``rooms``, or no value at all)."""
     if isinstance(value, Range):
         return f"[{value.low:g}, {value.high:g}]"
-    if isinstance(value, tuple):
-        return "[" + ", ".join("any" if v is None else _shown(v) for v in value) + "]"
+    if isinstance(value, tuple):  # choices, floors (None: any), a human's points
+        return "[" + ", ".join(_shown(v) or "any" for v in value) + "]"
+    if isinstance(value, bool):
+        return str(value).lower()
     if isinstance(value, float):
         return f"{value:g}"
-    if isinstance(value, str | bool | int | Path) or value is None:
-        return "none" if value is None else str(value).lower() if isinstance(value, bool) else str(value)
-    return "another setting"
+    if isinstance(value, str | int | Path):
+        return str(value)
+    return ""
