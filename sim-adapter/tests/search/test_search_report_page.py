@@ -68,3 +68,22 @@ def test_the_pareto_front_of_three_objectives_lists_the_non_dominated_evaluation
 
 def test_one_objective_has_no_front(tmp_path: Path) -> None:
     assert 'id="pareto"' not in render(tmp_path, document(["utility"], [[1.0], [2.0]], []))
+
+
+def test_the_baseline_s_figures_and_the_failures_only_one_side_found(tmp_path: Path) -> None:
+    doc = document(["utility"], [[1.0], [2.0]], [failure(tmp_path, 1), failure(tmp_path, 2)])
+    doc["counts"].update(failing=2, first_failure_at=1)
+    theirs = {**failure(tmp_path, 3), "first": "random-0004", "evaluations": ["random-0004", "random-0007"]}
+    both = {**failure(tmp_path, 4), "signature": doc["failures"][1]["signature"]}  # found by both sides
+    doc["baseline"] = {"sampler": "random", "budget": 9, "failures": [both, theirs],
+        "evaluations": [{"key": "random-0000", "status": "COMPLETED", "values": [3.0]}],
+        "counts": {"simulated": 9, "errors": 1, "failing": 2, "distinct_failures": 2, "first_failure_at": None}}
+    page = render(tmp_path, doc)
+    section = page[page.index('id="baseline"'):page.index('id="objective-0"')]
+    rows = [re.findall(r"<td>([^<]*)</td>", row) for row in re.findall(r"<tr><td>.*?</tr>", section)]
+    assert rows == [["budget", "2", "9"], ["simulated evaluations", "2", "9"], ["in ERROR", "0", "1"],
+                    ["failing evaluations", "2", "2"], ["distinct failures", "2", "2"],
+                    ["first failure at evaluation", "1", "-"],
+                    ["the search", "R1/walker/F_1_0", "1", "tpe-0001"],
+                    ["the random baseline", "R3/walker/F_3_0", "2", "random-0004"]]
+    assert "#ff7f0e" in page[page.index('id="objective-0"'):]  # the baseline's dots in the chart

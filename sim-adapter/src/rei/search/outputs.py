@@ -6,8 +6,9 @@ per distinct failure) and ``search.html`` (rei.search.report).
 record per trial in order (key, status: COMPLETED, ERROR, invalid, unplannable or interrupted; the parameter
 values, the run's objective values, whether it only repeated known failures, utility, failures, metrics, seed, fault, candidate and run folder, wall and CPU
 seconds, or why it was not simulated); counts; ``failures``, the distinct failures most severe first with every
-evaluation that found them and their shrunk case; and ``baseline``, the records of a random search in the same
-folder (``--sampler random``) for the report's comparison.
+evaluation that found them and their shrunk case; and ``baseline``, a random search in the same folder
+(``--sampler random``) for the report's comparison: its sampler, budget, counts, distinct failures (not shrunk)
+and evaluations, as the search's own (``baseline_document``), or null.
 """
 
 from __future__ import annotations
@@ -61,8 +62,19 @@ def counts(evaluations: Sequence[Mapping[str, Any]]) -> dict[str, Any]:
             "distinct_failures": len(distinct(simulated)), "first_failure_at": first}
 
 
+def baseline_document(study: optuna.Study, out: Path, budget: int | None) -> dict[str, Any]:
+    """search.json's ``baseline``: a random search's figures, as the search's own but for its failures' shrunk
+    cases (a baseline is not shrunk)."""
+    evaluations = records(study, out)
+    groups = distinct([r for r in evaluations if r["status"] == "COMPLETED"])
+    return {"sampler": study.study_name, "budget": budget, "counts": counts(evaluations),
+            "failures": [_failure(group, evaluations, None) for group in groups], "evaluations": evaluations}
+
+
 def write_outputs(spec: SearchSpec, out: Path, study: optuna.Study, shrunk: Mapping[str, Mapping[str, Any]],
-                  baseline: list[dict[str, Any]] | None = None) -> dict[str, Any]:
+                  baseline: Mapping[str, Any] | None = None, *, verdicts: bool = True) -> dict[str, Any]:
+    """search.json and, with ``verdicts``, verdicts.xml of ``study``; ``baseline``: a random search's
+    (``baseline_document``). search.json's document."""
     evaluations = records(study, out)
     groups = distinct([r for r in evaluations if r["status"] == "COMPLETED"])
     document = {
@@ -75,6 +87,8 @@ def write_outputs(spec: SearchSpec, out: Path, study: optuna.Study, shrunk: Mapp
         "baseline": baseline,
     }
     _write_json(out / "search.json", document)
+    if not verdicts:
+        return document
     cases = {g.failure.signature: (shrunk.get(g.failure.signature) or {}).get("case") or _case_of(g, evaluations)
              for g in groups}
     tally = document["counts"]

@@ -1,9 +1,10 @@
 # SPDX-License-Identifier: EPL-2.0
-"""``OUT/search.html``: one page, no script: each objective over the evaluations (search and, when one ran in
-the same folder, the random baseline) with the best so far, the Pareto front for several objectives, parameter
-importance (optuna.importance's default evaluator, PED-ANOVA), and each distinct failure with a small map of its
-run (the run report's map, rei.report.map_svg) and links to its case, report and shrunk case. A value a run did
-not have (rei.search.objectives.ABSENT) is left out of the charts, the front and the importance.
+"""``OUT/search.html``: one page, no script: the search's figures beside its random baseline's when one ran in
+the same folder, each objective over the evaluations (search and baseline) with the best so far, the Pareto front
+for several objectives, parameter importance (optuna.importance's default evaluator, PED-ANOVA), and each distinct
+failure with a small map of its run (the run report's map, rei.report.map_svg) and links to its case, report and
+shrunk case. A value a run did not have (rei.search.objectives.ABSENT) is left out of the charts, the front and the
+importance.
 """
 
 from __future__ import annotations
@@ -43,14 +44,42 @@ def render(out: Path, document: Mapping[str, Any]) -> str:
              f"{counts['invalid']} invalid and {counts['unplannable']} unplannable candidates not simulated; "
              f"{counts['failing']} failing evaluations, {counts['distinct_failures']} distinct failure(s); first "
              f"failure at evaluation {counts['first_failure_at'] or '-'}.</p>")]
+    baseline = document.get("baseline")
+    if baseline:
+        parts.append(_comparison(document, baseline))
     for i, objective in enumerate(document["objectives"]):
-        parts.append(_objective_section(i, objective, document["evaluations"], document.get("baseline")))
+        parts.append(_objective_section(i, objective, document["evaluations"],
+                                        baseline["evaluations"] if baseline else None))
     if len(document["objectives"]) >= 2:
         parts.append(_pareto(document))
     parts.append(_importance(out, document))
     parts.append(_failures(out, document))
     return ("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
             f"<title>{_e(title)}</title><style>{_CSS}</style></head><body>\n" + "\n".join(parts) + "\n</body></html>\n")
+
+
+def _comparison(document: Mapping[str, Any], baseline: Mapping[str, Any]) -> str:
+    """The search's figures beside its random baseline's, and the failures only one of them found."""
+    sides = (document, baseline)
+    rows = [("budget", [str(d.get("budget") or "-") for d in sides])]
+    for label, key in (("simulated evaluations", "simulated"), ("in ERROR", "errors"), ("failing evaluations", "failing"),
+                       ("distinct failures", "distinct_failures"), ("first failure at evaluation", "first_failure_at")):
+        rows.append((label, [str(d["counts"].get(key) if d["counts"].get(key) is not None else "-") for d in sides]))
+    body = "".join(f"<tr><td>{_e(label)}</td>" + "".join(f"<td>{_e(v)}</td>" for v in values) + "</tr>"
+                   for label, values in rows)
+    found = [{f["signature"] for f in d["failures"]} for d in sides]
+    only = []
+    for name, mine, theirs, side in (("the search", found[0], found[1], document),
+                                     ("the random baseline", found[1], found[0], baseline)):
+        for f in (f for f in side["failures"] if f["signature"] in mine - theirs):
+            only.append(f"<tr><td>{_e(name)}</td><td>{_e(f['signature'])}</td><td>{len(f['evaluations'])}</td>"
+                        f"<td>{_e(f['first'])}</td></tr>")
+    table = ("<table><tr><th>failure found only by</th><th>signature</th><th>evaluations</th><th>first</th></tr>"
+             + "".join(only) + "</table>") if only else "<p class=\"muted\">both found the same failures</p>"
+    return (f"<section id=\"baseline\"><h2>Search and random baseline</h2><table><tr><th></th>"
+            f"<th>search ({_e(document['sampler'])})</th><th>random baseline</th></tr>{body}</table>{table}"
+            "<p class=\"muted\">the random baseline ran in the same folder (<code>--sampler random</code>); its "
+            "figures are search.json's <code>baseline</code>; its failures are not shrunk.</p></section>")
 
 
 def _values(evaluations: Sequence[Mapping[str, Any]] | None, i: int) -> list[float | None]:

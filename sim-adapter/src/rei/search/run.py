@@ -9,14 +9,19 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
+import optuna
+
 from rei.search.failures import Failure, distinct
-from rei.search.outputs import records, write_outputs
+from rei.search.outputs import baseline_document, records, write_outputs
 from rei.search.pool import LocalPool, Pool, RayPool
 from rei.search.shrink import Case, failure_id, shrink
 from rei.search.spec import SearchSpec
-from rei.search.study import Search, open_study
+from rei.search.study import JOURNAL, Search, journal, open_study
 
 SHRUNK = "shrunk.json"
+RANDOM = "random"
+#: The study's user attribute holding the budget of its last invocation (a baseline's run shows the search's).
+BUDGET = "budget"
 
 
 def make_pool(workers: int, ray: str | None, out: Path, stop: threading.Event) -> Pool:
@@ -44,15 +49,21 @@ def run_search(spec: SearchSpec, out: Path, *, workers: int = 1, ray: str | None
     try:
         progress = search.run()
         spec = search.spec  # with its base case (a ``rooms:`` spec's, generated into OUT)
-        shrunk = _load(out / SHRUNK)
-        if shrink_failures and not progress.interrupted and spec.shrink_budget > 0:
-            shrunk = _shrink_all(search, shrunk, log)
-        baseline = None
-        if spec.sampler != "random" and _has_study(out, "random"):
-            baseline = records(open_study(out, spec.with_options(sampler="random")), out)
-        document = write_outputs(spec, out, search.study, shrunk, baseline)
-        _run_reports(document, log)
-        _report(spec, out, document, log)
+        search.study.set_user_attr(BUDGET, spec.budget)
+        # a random search in the folder of another sampler's search is that search's baseline (docs/search.md)
+        searched = _searched(out) if spec.sampler == RANDOM else None
+        if searched is not None:
+            document = _baseline_run(spec, out, search.study, searched, log)
+        else:
+            shrunk = _load(out / SHRUNK)
+            if shrink_failures and not progress.interrupted and spec.shrink_budget > 0:
+                shrunk = _shrink_all(search, shrunk, log)
+            baseline = None
+            if spec.sampler != RANDOM and _has_study(out, RANDOM):
+                baseline = _baseline(open_study(out, spec.with_options(sampler=RANDOM)), out)
+            document = write_outputs(spec, out, search.study, shrunk, baseline)
+            _run_reports(document, log)
+            _report(spec, out, document, log)
     finally:
         # set before closing: the pool waits for its running workers, which stop on it instead of running out their
         # timeout (an exception or Ctrl-C while shrinking or writing the outputs gets here with it unset)
@@ -61,6 +72,39 @@ def run_search(spec: SearchSpec, out: Path, *, workers: int = 1, ray: str | None
         search.pool.close()
     document["interrupted"] = progress.interrupted
     return document
+
+
+def _baseline_run(spec: SearchSpec, out: Path, study: optuna.Study, searched: str,
+                  log: Callable[[str], None]) -> dict[str, Any]:
+    """The outputs of a random baseline beside the ``searched`` sampler's search: search.json and search.html
+    rewritten with the search's own figures (its study, budget and shrunk cases) and this baseline's beside them;
+    verdicts.xml, shrunk.json and shrunk/ stay the search's (a baseline is not shrunk: it is there to compare).
+    The baseline's document (its counts and failures), for `rei search`'s summary and exit code."""
+    baseline = _baseline(study, out)
+    main = spec.with_options(sampler=searched)
+    stored = open_study(out, main)
+    main = main.with_options(budget=int(stored.user_attrs.get(BUDGET) or main.budget))
+    document = write_outputs(main, out, stored, _load(out / SHRUNK), baseline, verdicts=False)
+    _report(main, out, document, log)
+    log(f"random baseline of the {searched} search in {out}: its figures are search.json's baseline and "
+        f"search.html's beside the search's; the search's own outputs are kept")
+    return baseline
+
+
+def _baseline(study: optuna.Study, out: Path) -> dict[str, Any]:
+    return baseline_document(study, out, study.user_attrs.get(BUDGET))
+
+
+def _searched(out: Path) -> str | None:
+    """The sampler of the search in ``out`` a random search is the baseline of: the one search.json shows, else
+    the first other sampler with trials in the journal; None when there is none (the random search is the
+    folder's own search)."""
+    if not (out / JOURNAL).is_file():
+        return None
+    others = [s.study_name for s in optuna.get_all_study_summaries(journal(out), include_best_trial=False)
+              if s.study_name != RANDOM and s.n_trials]
+    shown = _load(out / "search.json").get("sampler")
+    return shown if shown in others else next(iter(others), None)
 
 
 def _shrink_all(search: Search, shrunk: dict[str, Any], log: Callable[[str], None]) -> dict[str, Any]:
@@ -110,10 +154,6 @@ def _report(spec: SearchSpec, out: Path, document: dict[str, Any], log: Callable
 
 
 def _has_study(out: Path, name: str) -> bool:
-    import optuna
-
-    from rei.search.study import JOURNAL, journal
-
     if not (out / JOURNAL).is_file():
         return False
     return any(s.study_name == name for s in optuna.get_all_study_summaries(journal(out), include_best_trial=False))
