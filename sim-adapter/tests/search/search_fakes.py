@@ -14,6 +14,7 @@ from typing import Any
 from rei.campaign.plan import RunTask
 from rei.campaign.supervise import Outcome
 from rei.search.candidates import VALID, Candidate, CandidateMaker
+from rei.search.reproduce import RunOptions
 from rei.search.space import Edit
 
 #: Whether a run of (text, seed, fault) fails, as failed verdicts' evidence objects (empty: it passes).
@@ -28,6 +29,7 @@ class FakeMaker:
     def __init__(self, out: Path, diagram: dict[str, Any], broken: tuple[str, ...] = ()) -> None:
         self.out, self.diagram, self.palette, self.broken = out, diagram, [], broken
         self.made: list[Candidate] = []
+        self.runs = RunOptions()  # read by CandidateMaker.write for each case's `rei run` line (nav, humans)
         self._base_folder = out  # read by CandidateMaker.write (the fake's texts import no catalogue)
 
     def make(self, key: str, edit: Edit) -> Candidate:

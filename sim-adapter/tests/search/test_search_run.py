@@ -61,6 +61,8 @@ def test_sigterm_during_a_search_unwinds(tmp_path: Path, monkeypatch: pytest.Mon
     reached: list[str] = []
 
     class Spec:
+        source = None  # a spec from no file: nothing to compare with a search in OUT (rei.search.study.check_resume)
+
         def with_options(self, **_: Any) -> Spec:
             return self
 

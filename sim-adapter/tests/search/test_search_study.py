@@ -17,6 +17,7 @@ from rei.run.jvm import JvmResult
 from rei.search import candidates, study
 from rei.search.candidates import VALID, Candidate, CandidateMaker
 from rei.search.outputs import records
+from rei.search.reproduce import RunOptions
 from rei.search.space import Edit
 from rei.search.spec import SearchSpec, parse_search_spec
 
@@ -42,7 +43,8 @@ def spec(folder: Path, text: str = SPEC) -> SearchSpec:
 def search(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, pool: FakePool, broken: tuple[str, ...] = (),
            text: str = SPEC) -> study.Search:
     out = tmp_path / "out"
-    monkeypatch.setattr(study, "CandidateMaker", lambda case, folder, log=print: FakeMaker(folder, DIAGRAM, broken))
+    monkeypatch.setattr(study, "CandidateMaker",
+                        lambda case, folder, log=print, **_: FakeMaker(folder, DIAGRAM, broken))
     return study.Search(spec(tmp_path, text), out, pool, threading.Event(), log=lambda _: None)
 
 
@@ -74,7 +76,7 @@ def test_the_real_maker_leaves_no_candidate_file_when_generation_fails(tmp_path:
     monkeypatch.setattr(candidates, "JarServer", no_server)
     monkeypatch.setattr(candidates, "run_jar", lambda *_, **__: JvmResult(1, 0.1, 0.1, "No space left on device"))
     maker = CandidateMaker.__new__(CandidateMaker)  # the engine is not needed to generate
-    maker.out, maker._generator, maker._base_folder = tmp_path, None, tmp_path
+    maker.out, maker._generator, maker._base_folder, maker.runs = tmp_path, None, tmp_path, RunOptions()
     _, problem = maker.generate(Candidate("tpe-0001", Edit((), 0, None), VALID, "testcase T {}\n"))
     assert problem == "tpe-0001.rei could not be generated (exit 1): No space left on device"
     assert not (tmp_path / "candidates" / "tpe-0001.rei").exists()
