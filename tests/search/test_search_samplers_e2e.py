@@ -3,8 +3,9 @@
 generator, simulation, monitor jar and evaluator, on the example's crossing (a person's start time and speed):
 short searches of 4 evaluations. Each runs its budget under its own name and in its own study of the journal, and
 the journal shows the sampler itself chose points: random's are the draws of Optuna's RandomSampler with the
-spec's seed, QMC's (after the first) the Sobol sequence over the ranges, CMA-ES sampled from its distribution (a generation), NSGA-II with
-two objectives put its trials in a generation, and search.html shows the Pareto front of their values."""
+spec's seed, QMC's (after the first) the Sobol sequence over the ranges, CMA-ES sampled from its distribution (a
+generation), NSGA-II with two objectives put its trials in a generation, and search.html shows the Pareto front
+of their values."""
 
 from __future__ import annotations
 

@@ -3,7 +3,7 @@
 
     OUT/spec.yaml               the spec as given (a copy)
     OUT/study.journal           Optuna's journal (one study per sampler): a stopped search resumes from it
-    OUT/candidates/<key>.rei    every valid candidate (its seed and fault in its first line)
+    OUT/candidates/<key>.rei    every valid candidate (its first line the `rei run` line that re-runs it)
     OUT/cases/<key>/            its generated case
     OUT/runs/<key>/             its run (the campaign's run folder: summary.json, events.csv, streams/, ...; the
                                 report.html of the runs that show a distinct failure is written at the end)
