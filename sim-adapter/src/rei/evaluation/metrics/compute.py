@@ -32,7 +32,7 @@ from rei.artifacts import (
 )
 from rei.artifacts.case import case_of_run
 from rei.evaluation.metrics.definitions import NAMES
-from rei.evaluation.metrics.encounter import encounter_margin, footprints_of
+from rei.evaluation.metrics.encounter import Encounter, encounters, footprints_of
 from rei.evaluation.mission_info import MissionInfo, MissionInfoError
 from rei.geometry import footprint_gaps, wrap_angle
 from rei.mission.executor import MISSION_INFO_FILE
@@ -88,6 +88,9 @@ class Measured:
     metrics: dict[str, Any]
     #: What was left out of the measurement (malformed state messages), for the summary's problems.
     notes: tuple[str, ...]
+    #: Each human's encounter: how far off meeting the robot, and the shift of its schedule that meets it (the
+    #: search's refinement, rei.search.refine).
+    encounters: tuple[Encounter, ...] = ()
 
 
 def compute_metrics(run_dir: Path, case_dir: Path | None = None) -> dict[str, Any]:
@@ -137,10 +140,11 @@ def measure(run_dir: Path, case_dir: Path | None = None) -> Measured:
     out["path_length"] = _path_length(s.pose)
     out.update(_clearances("static", static_gaps))
     out.update(_clearances("humans", moving_gaps[:, humans]))
-    out["encounter_margin_humans"] = _encounter(case_dir, moving, humans, s, robot_size, spec)
+    met = _encounters(case_dir, moving, humans, s, robot_size, spec)
+    out["encounter_margin_humans"] = min((e.margin for e in met), default=None)
     out.update(_zones(spec, s, np.hstack((static_gaps, moving_gaps)), (*statics.names, *moving.names)))
     out.update(_motion(s, t1 - t0, out["path_length"]))
-    return Measured({k: None if isinstance(v, float) and not math.isfinite(v) else v for k, v in out.items()}, notes)
+    return Measured({k: None if isinstance(v, float) and not math.isfinite(v) else v for k, v in out.items()}, notes, met)
 
 
 # -- reading ---------------------------------------------------------------------------------------------------
@@ -384,20 +388,20 @@ def _moving_boxes(places: np.ndarray, boxes: np.ndarray) -> np.ndarray:
     return out
 
 
-def _encounter(case_dir: Path, moving: _Obstacles, humans: np.ndarray, s: _States,
-               robot_size: tuple[float, float], spec: MonitorSpec | None) -> float | None:
+def _encounters(case_dir: Path, moving: _Obstacles, humans: np.ndarray, s: _States,
+                robot_size: tuple[float, float], spec: MonitorSpec | None) -> tuple[Encounter, ...]:
     """rei.evaluation.metrics.encounter over the humans the recording published (none with ``--no-humans``)."""
     published = [k for k in np.nonzero(humans)[0] if not np.isnan(s.moving[:, k, 0]).all()]
     if not published:
-        return None
+        return ()
     try:
         animation = read_animation(case_dir / "animation.json")
     except (ArtifactError, OSError):
-        return None
+        return ()
     footprints = footprints_of([moving.names[k] for k in published], moving.boxes[published],
                                moving.circle[published])
-    return encounter_margin(animation, footprints, s.t, s.pose, robot_size,
-                            spec.collision_threshold if spec is not None else 0.0)
+    return tuple(encounters(animation, footprints, s.t, s.pose, robot_size,
+                            spec.collision_threshold if spec is not None else 0.0))
 
 
 def _clearances(which: str, gaps: np.ndarray) -> dict[str, float | None]:

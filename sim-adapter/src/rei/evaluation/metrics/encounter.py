@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from dataclasses import dataclass
 
 import numpy as np
 from scipy.spatial import cKDTree
@@ -27,22 +28,52 @@ from rei.spline import Trajectory
 STEP = 0.05
 
 
+@dataclass(frozen=True, slots=True)
+class Encounter:
+    """The human nearest to meeting the robot: ``margin`` seconds off, and the ``shift`` (s, signed) of its
+    schedule that brings it to the conflict when the robot was there (``margin == abs(shift)``)."""
+
+    human: str
+    margin: float
+    shift: float
+
+
 def encounter_margin(animation: AnimationSpec, footprints: dict[str, tuple[np.ndarray, bool]],
                      t: np.ndarray, pose: np.ndarray, robot_size: tuple[float, float],
                      threshold: float) -> float | None:
     """The least margin over the humans of ``animation`` named in ``footprints`` (their ``x, y, yaw, size_x,
     size_y`` row as in world.json and whether it is a circle), for the robot's samples ``t`` and true ``pose``
     ``(T, 3)``; None when no human's path comes within ``threshold`` of the robot's."""
-    margins = [m for o in animation.objects
-               if o.category == Category.HUMAN and o.name in footprints
-               for m in [_margin(Trajectory([p.t for p in o.points], [(p.x, p.y) for p in o.points], o.loop),
-                                 *footprints[o.name], t, pose, robot_size, threshold)]
-               if m is not None]
-    return min(margins) if margins else None
+    nearest = nearest_encounter(animation, footprints, t, pose, robot_size, threshold)
+    return nearest.margin if nearest is not None else None
 
 
-def _margin(trajectory: Trajectory, box: np.ndarray, circle: bool, t: np.ndarray, pose: np.ndarray,
-            robot_size: tuple[float, float], threshold: float) -> float | None:
+def nearest_encounter(animation: AnimationSpec, footprints: dict[str, tuple[np.ndarray, bool]],
+                      t: np.ndarray, pose: np.ndarray, robot_size: tuple[float, float],
+                      threshold: float) -> Encounter | None:
+    """:func:`encounter_margin`'s human, margin and shift (the first human of the least margin)."""
+    found = encounters(animation, footprints, t, pose, robot_size, threshold)
+    return min(found, key=lambda e: e.margin) if found else None
+
+
+def encounters(animation: AnimationSpec, footprints: dict[str, tuple[np.ndarray, bool]],
+               t: np.ndarray, pose: np.ndarray, robot_size: tuple[float, float],
+               threshold: float) -> list[Encounter]:
+    """Each human's encounter, in ``animation``'s order; a human whose path never comes that close has none."""
+    found = []
+    for o in animation.objects:
+        if o.category != Category.HUMAN or o.name not in footprints:
+            continue
+        trajectory = Trajectory([p.t for p in o.points], [(p.x, p.y) for p in o.points], o.loop)
+        shift = _shift(trajectory, *footprints[o.name], t, pose, robot_size, threshold)
+        if shift is not None:
+            found.append(Encounter(o.name, abs(shift), shift))
+    return found
+
+
+def _shift(trajectory: Trajectory, box: np.ndarray, circle: bool, t: np.ndarray, pose: np.ndarray,
+           robot_size: tuple[float, float], threshold: float) -> float | None:
+    """``t_k - tau`` of the conflicting pair of least ``|t_k - tau|``, None without a conflict."""
     if len(t) == 0:
         return None
     # Later than this the schedule only repeats (a loop) or stands still (once) further from every t_k.
@@ -64,7 +95,8 @@ def _margin(trajectory: Trajectory, box: np.ndarray, circle: bool, t: np.ndarray
     conflict = gaps < threshold
     if not conflict.any():
         return None
-    return float(np.abs(t[k[conflict]] - taus[j[conflict]]).min())
+    shifts = t[k[conflict]] - taus[j[conflict]]
+    return float(shifts[np.argmin(np.abs(shifts))])
 
 
 def footprints_of(names: Sequence[str], boxes: np.ndarray, circle: np.ndarray) -> dict[str, tuple[np.ndarray, bool]]:
