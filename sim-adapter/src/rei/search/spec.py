@@ -30,6 +30,7 @@ Checked completely at the door; every mistake is reported as ``FILE:LINE:COLUMN:
       - {signal: SIG_OBJECT_COLLISION_BEGIN, of: count}  # or of: first (its first time)
     shrink: {budget: 8}         # simulations per distinct failure to shrink it; budget 0 turns it off
     diversity: true             # an evaluation that only repeats failures found before scores as uninteresting
+    refine: true                # follow a near miss's encounter shift (rei.search.refine; with that objective)
 """
 
 from __future__ import annotations
@@ -125,6 +126,7 @@ class SearchSpec:
     objectives: tuple[Objective, ...]
     shrink_budget: int
     diversity: bool = True
+    refine: bool = True
     source: Path | None = None
     rooms: RoomSettings | None = None
     #: FILE:LINE:COLUMN of each top-level key's value, for messages about a setting after parsing
@@ -183,7 +185,7 @@ def parse_search_spec(text: str, *, base: Path, file: str = "spec", default_name
         raise SpecError(f"{file}:1:1: the spec is empty: expected 'case', 'parameters' and 'objectives'")
     top = loc.mapping(root, "the spec")
     known = ("name", "case", "rooms", "controller", "sut", "seed", "budget", "sampler", "timeout", "humans", "parameters",
-             "objectives", "shrink", "diversity")
+             "objectives", "shrink", "diversity", "refine")
     for name, (key, _) in top.items():
         if name not in known:
             raise SpecError(f"{loc.at(key)}: unknown key '{name}'; known: {', '.join(known)}")
@@ -233,7 +235,8 @@ def parse_search_spec(text: str, *, base: Path, file: str = "spec", default_name
         timeout=reader.call("timeout", lambda r: r.number("timeout", 300.0)),
         humans=reader.call("humans", lambda r: r.bool("humans", True)),
         parameters=parameters, objectives=objectives, shrink_budget=shrink_budget,
-        diversity=reader.call("diversity", lambda r: r.bool("diversity", True)), rooms=rooms,
+        diversity=reader.call("diversity", lambda r: r.bool("diversity", True)),
+        refine=reader.call("refine", lambda r: r.bool("refine", True)), rooms=rooms,
         positions={name: loc.at(value) for name, (_, value) in top.items()})
     _check_sampler(spec, spec.positions.get("sampler", file))
     return spec

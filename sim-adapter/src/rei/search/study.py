@@ -40,6 +40,8 @@ from rei.search.design import sobol_design, startup_trials
 from rei.search.failures import failures_of
 from rei.search.objectives import ABSENT, better, present, score
 from rei.search.pool import Pool
+from rei.search.refine import ATTR, DEPTH, encounters, refined
+from rei.search.refine import enabled as refining
 from rei.search.reproduce import RunOptions
 from rei.search.space import Space
 from rei.search.spec import SearchSpec, check_resumable
@@ -142,6 +144,7 @@ class Search:
         # a resumed sampler must not replay the draws of the first invocation (qmc's sequence is indexed instead)
         self.study = started if spec.sampler == "qmc" else open_study(self.out, spec, spec.seed + so_far)
         self.progress = SearchProgress()
+        self._refine = refining(spec)
         self._known: set[str] = set()  # failure signatures found so far
         self._raw: list[list[float | None]] = []  # the simulated evaluations' own objective values (None: absent)
 
@@ -290,6 +293,7 @@ class Search:
                                  "cpu": result.cpu_time, "utility": result.total_utility,
                                  "sim_duration": result.sim_duration}
         values = told = None
+        new = False
         if result.status == "COMPLETED":
             summary = json.loads((Path(task.run_dir) / "summary.json").read_text(encoding="utf-8"))
             values = told = score(self.spec.objectives, summary, Path(task.run_dir))
@@ -303,6 +307,7 @@ class Search:
                 # on to other failures instead of refining this one (search.json keeps the run's own values)
                 told = self._least_interesting()
                 attrs["repeat"] = True
+            new = not signatures <= self._known
             self._known |= signatures
             trial.set_constraint(VALIDITY, 0.0)
             attrs["metrics"] = summary.get("metrics")
@@ -317,6 +322,23 @@ class Search:
         else:
             self.study.tell(trial, told if len(told) > 1 else told[0])
         self.log(self._line(trial.number, result.status, values, attrs))
+        if told is not None and not new and self._refine:
+            self._refined(trial, task)
+
+    def _refined(self, trial: optuna.Trial, task: RunTask) -> None:
+        """Enqueues the evaluation's point with the nearest person's start moved onto the robot (rei.search.refine)
+        when it found nothing new; a refinement is refined again up to DEPTH steps."""
+        depth = int(trial.user_attrs.get(ATTR, 0))
+        if depth >= DEPTH or self.stop.is_set():
+            return
+        met = {signature.split("/")[1] for signature in self._known}
+        step = refined(trial.params, self.space.distributions, encounters(Path(task.run_dir), Path(task.case_dir)),
+                       met)
+        if step is not None:
+            params, encounter = step
+            self.study.enqueue_trial(params, user_attrs={ATTR: depth + 1}, skip_if_exists=False)
+            self.log(f"  refine {self.key(trial.number)}: {encounter.human} {encounter.margin:.2f} s off a meeting, "
+                     f"start moved by {encounter.shift:+.2f} s")
 
     def _least_interesting(self) -> list[float]:
         told = []
