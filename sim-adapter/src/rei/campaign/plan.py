@@ -57,6 +57,10 @@ class RunTask:
     case_dir: str
     run_dir: str
     sut: dict[str, Any] | None = None  # rei.campaign.spec.ExternalSut as a dict; None: the in-process controller
+    # the user's VEPL patterns (a folder of *.vepl, as `rei run --patterns`) besides the defaults, and a utility
+    # YAML file (`rei run --utilities`); absolute paths, None: the defaults only / the declared utilities
+    patterns: str | None = None
+    utilities: str | None = None
 
     def to_dict(self) -> dict[str, Any]:
         return asdict(self)

@@ -63,6 +63,7 @@ def execute(task: RunTask) -> int:
 
 def _replay(task: RunTask, run_dir: Path) -> int:
     from rei.run import MissionRunOptions, run_mission
+    from rei.run.patterns import PatternSelection, record
     from rei.run.reevaluate import RunSettings, reevaluate
 
     timing: dict[str, Any] = {}
@@ -76,9 +77,13 @@ def _replay(task: RunTask, run_dir: Path) -> int:
     # an external SUT that broke the run: what was recorded is still judged, as an ERROR naming it (as `rei run`)
     broken = {} if result.error is None else {"status": "ERROR", "reason": result.error}
     server = os.environ.get(MONITOR_SERVER_ENV)
+    # the run keeps a copy of the user's patterns (OUT/patterns/) as `rei run --patterns` does, so the replay below,
+    # a later `rei evaluate` of the run and the warm JVM (which takes the options per command) all run them
+    patterns = record(PatternSelection(Path(task.patterns) if task.patterns else None), run_dir)
     with _Phase(timing, "evaluation"):  # this process's CPU only: the monitor's replay is in another JVM
         judged = reevaluate(run_dir, Path(task.case_dir), settings=RunSettings(
             humans=task.humans, run_id=task.key, sim_duration=result.sim_time), **broken,
+            patterns=patterns, utilities=Path(task.utilities) if task.utilities else None,
             monitor_server=Path(server) if server else None)
     # served: the replay's CPU was spent in the warm JVM, not in this worker's children (results.make_result)
     timing["monitor"] = {"wall": round(judged.monitor.wall, 3), "cpu": round(judged.monitor.cpu, 3),
@@ -130,6 +135,10 @@ def _pipeline(task: RunTask, run_dir: Path) -> int:
         argv.append("--no-humans")
     if task.fault:
         argv += ["--fault", task.fault]
+    if task.patterns:
+        argv += ["--patterns", task.patterns]
+    if task.utilities:
+        argv += ["--utilities", task.utilities]
     with _Phase(timing, "pipeline"):
         code = main(argv)
     _write_timing(run_dir, timing)
