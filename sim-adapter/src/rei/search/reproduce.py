@@ -3,9 +3,10 @@
 (``// rei search candidate KEY: rei run KEY.rei --seed 5 --controller nav:moving_horizon=0 --no-humans``) and
 the "reproduce:" of ``verdicts.xml``.
 
-Besides the case, its seed and its fault, a run depends on the spec's controller, ``humans`` and external
-``sut:``: each goes on the line as the `rei run` option that selects it (the defaults, ``nav`` with the humans,
-are left out). An external SUT's command runs in the spec's folder (its relative paths are the spec's), so its
+Besides the case, its seed and its fault, a run depends on the spec's controller, ``humans``, external
+``sut:`` and the user's ``patterns:`` and ``utilities:``: each goes on the line as the `rei run` option that
+selects it (the defaults, ``nav`` with the humans and only the default patterns, are left out; the patterns'
+folder and the utility file by their absolute paths). An external SUT's command runs in the spec's folder (its relative paths are the spec's), so its
 line starts with ``cd`` there and names the case by its absolute path. Only the spec's own options go on the line,
 nothing of the run's router or credentials. Each argument is quoted for a POSIX shell; one with a line break in it
 (a YAML block scalar's command) is written ``$'...'``, so the line stays one line of a ``//`` comment.
@@ -28,12 +29,14 @@ _CONTROL = re.compile(r"[\x00-\x1f\x7f]")
 
 @dataclass(frozen=True, slots=True)
 class RunOptions:
-    """What every run of a search uses besides its case, seed and fault (the spec's ``controller``, ``humans``
-    and ``sut``)."""
+    """What every run of a search uses besides its case, seed and fault (the spec's ``controller``, ``humans``,
+    ``sut``, ``patterns`` and ``utilities``)."""
 
     controller: str = "nav"
     humans: bool = True
     sut: ExternalSut | None = None
+    patterns: Path | None = None
+    utilities: Path | None = None
 
     def argv(self) -> list[str]:
         """As `rei run` options (the defaults left out)."""
@@ -41,7 +44,13 @@ class RunOptions:
             argv = self.sut.argv()
         else:
             argv = [] if self.controller == "nav" else ["--controller", self.controller]
-        return argv if self.humans else [*argv, "--no-humans"]
+        if not self.humans:
+            argv.append("--no-humans")
+        # absolute: the line runs in the saved case's folder, not the spec's
+        for option, path in (("--patterns", self.patterns), ("--utilities", self.utilities)):
+            if path is not None:
+                argv += [option, str(path.resolve())]
+        return argv
 
 
 def command(case: Path, seed: int, fault: str | None, options: RunOptions) -> str:

@@ -13,6 +13,8 @@ Checked completely at the door; every mistake is reported as ``FILE:LINE:COLUMN:
     sampler: tpe                # tpe, cmaes, nsga2, qmc or random (--sampler overrides)
     timeout: 120                # wall seconds per run before it is stopped and recorded as ERROR
     humans: true
+    patterns: my-patterns       # optional: a folder of *.vepl every run's monitor runs besides the defaults
+    utilities: utilities.yaml   # optional: utility per signal, as `rei run --patterns DIR --utilities YAML`
     parameters:
       - {object: bin1, floor: any}              # any floor free in the base case, or a list of floors
       - {object: bin1, yaw: [0, 180]}           # degrees
@@ -27,7 +29,7 @@ Checked completely at the door; every mistake is reported as ``FILE:LINE:COLUMN:
       - utility                 # or {utility: minimize}
       - {metric: clearance_humans_min}          # summary.json's metrics, default: towards the worse side
       - {verdict: MISSION_WITH_HUMAN_TRAJECTORY}  # 0 when it fails, 1 when it holds: minimized
-      - {signal: SIG_OBJECT_COLLISION_BEGIN, of: count}  # or of: first (its first time)
+      - {signal: SIG_OBJECT_COLLISION_BEGIN, of: count}  # or of: first (its first time); or a signal 'patterns' declare
     shrink: {budget: 8}         # simulations per distinct failure to shrink it; budget 0 turns it off
     diversity: true             # an evaluation that only repeats failures found before scores as uninteresting
     refine: true                # follow a near miss's encounter shift (rei.search.refine; with that objective)
@@ -37,6 +39,7 @@ from __future__ import annotations
 
 import dataclasses
 import difflib
+import functools
 import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -129,6 +132,9 @@ class SearchSpec:
     refine: bool = True
     source: Path | None = None
     rooms: RoomSettings | None = None
+    #: the user's VEPL patterns (``rei run --patterns``) and utility file (``--utilities``), absolute
+    patterns: Path | None = None
+    utilities: Path | None = None
     #: FILE:LINE:COLUMN of each top-level key's value, for messages about a setting after parsing
     positions: Mapping[str, str] = field(default_factory=dict, compare=False, repr=False)
 
@@ -185,7 +191,7 @@ def parse_search_spec(text: str, *, base: Path, file: str = "spec", default_name
         raise SpecError(f"{file}:1:1: the spec is empty: expected 'case', 'parameters' and 'objectives'")
     top = loc.mapping(root, "the spec")
     known = ("name", "case", "rooms", "controller", "sut", "seed", "budget", "sampler", "timeout", "humans", "parameters",
-             "objectives", "shrink", "diversity", "refine")
+             "objectives", "shrink", "diversity", "refine", "patterns", "utilities")
     for name, (key, _) in top.items():
         if name not in known:
             raise SpecError(f"{loc.at(key)}: unknown key '{name}'; known: {', '.join(known)}")
@@ -226,7 +232,8 @@ def parse_search_spec(text: str, *, base: Path, file: str = "spec", default_name
             shrink_budget = _PositionedReader({"budget": loc.value(shrink["budget"][1])}, shrink, loc).call(
                 "budget", lambda r: r.int("budget", 8, minimum=0))
     parameters = _parameters(top["parameters"][1], loc)
-    objectives = _objectives(top["objectives"][1], loc)
+    patterns, utilities, declared = _patterns(top, base, loc)
+    objectives = _objectives(top["objectives"][1], loc, declared)
     spec = SearchSpec(
         name=reader.call("name", lambda r: r.name("name", default_name)), case=case, controller=controller, sut=sut,
         seed=reader.call("seed", lambda r: r.int("seed", 0, minimum=0)),
@@ -236,7 +243,8 @@ def parse_search_spec(text: str, *, base: Path, file: str = "spec", default_name
         humans=reader.call("humans", lambda r: r.bool("humans", True)),
         parameters=parameters, objectives=objectives, shrink_budget=shrink_budget,
         diversity=reader.call("diversity", lambda r: r.bool("diversity", True)),
-        refine=reader.call("refine", lambda r: r.bool("refine", True)), rooms=rooms,
+        refine=reader.call("refine", lambda r: r.bool("refine", True)), rooms=rooms, patterns=patterns,
+        utilities=utilities,
         positions={name: loc.at(value) for name, (_, value) in top.items()})
     _check_sampler(spec, spec.positions.get("sampler", file))
     return spec
@@ -450,7 +458,58 @@ def _range(value: Any, node: yaml.Node, loc: _Located, integer: bool = False) ->
 _KINDS = ("utility", "time", "metric", "verdict", "signal")
 
 
-def _objectives(node: yaml.Node, loc: _Located) -> tuple[Objective, ...]:
+def _patterns(top: located_yaml.Entries, base: Path, loc: _Located) -> tuple[Path | None, Path | None, frozenset[str]]:
+    """``patterns:`` and ``utilities:`` resolved against ``base`` and checked as `rei run` checks its
+    ``--patterns``/``--utilities`` (the patterns compiled by the monitor jar, the file read against what they
+    declare), a mistake placed at the key's value; with them, the signals the patterns declare."""
+    from rei.evaluation import UtilityError, load_utilities
+    from rei.run.patterns import PatternError
+
+    patterns = utilities = None
+    declared: dict[str, float | None] | None = None
+    if "patterns" in top:
+        node = top["patterns"][1]
+        value = loc.value(node)
+        if not isinstance(value, str) or not value:
+            raise SpecError(f"{loc.at(node)}: 'patterns' names a folder of .vepl files, relative to the spec")
+        patterns = (base / value).resolve()
+        try:
+            declared = dict(_compiled(patterns, _stamp(patterns)))
+        except PatternError as error:
+            raise SpecError(f"{loc.at(node)}: {error}") from None
+    if "utilities" in top:
+        node = top["utilities"][1]
+        value = loc.value(node)
+        if not isinstance(value, str) or not value:
+            raise SpecError(f"{loc.at(node)}: 'utilities' names a YAML file 'SIGNAL: utility', relative to the spec")
+        utilities = (base / value).resolve()
+        try:
+            load_utilities(utilities, declared)  # it may name the signals of the user's patterns
+        except UtilityError as error:
+            raise SpecError(f"{loc.at(node)}: {error}") from None
+    return patterns, utilities, frozenset(declared or ())
+
+
+def _stamp(folder: Path) -> tuple[tuple[str, int, int], ...]:
+    """What the monitor would read of ``folder`` (its *.vepl), by name, size and change time: the cache key of
+    ``_compiled``, so a spec read twice (the resume check parses OUT/spec.yaml too) compiles once."""
+    try:
+        return tuple(sorted((p.name, p.stat().st_size, p.stat().st_mtime_ns) for p in folder.glob("*.vepl")))
+    except OSError:
+        return ()
+
+
+@functools.lru_cache(maxsize=8)
+def _compiled(folder: Path, stamp: tuple[tuple[str, int, int], ...]) -> tuple[tuple[str, float | None], ...]:
+    """The signals ``folder``'s patterns declare, beside the defaults (rei.run.patterns.check: a JVM start and the
+    VEPL compiler); PatternError with the compiler's ``file:line:column: message`` lines."""
+    from rei.run.patterns import PatternSelection, check
+
+    del stamp  # only the cache key
+    return tuple(check(PatternSelection(folder)).items())
+
+
+def _objectives(node: yaml.Node, loc: _Located, declared: frozenset[str] = frozenset()) -> tuple[Objective, ...]:
     if not isinstance(node, yaml.SequenceNode) or not node.value:
         raise SpecError(f"{loc.at(node)}: 'objectives' must be a non-empty list")
     objectives: list[Objective] = []
@@ -496,7 +555,7 @@ def _objectives(node: yaml.Node, loc: _Located) -> tuple[Objective, ...]:
                                 f"{', '.join(REQUIREMENTS)}")
         of = ""
         if kind == "signal":
-            _check_signal(value, loc.at(value_node))
+            _check_signal(value, loc.at(value_node), declared)
             of_node = entry.get("of", (None, None))[1]
             of = "count" if of_node is None else loc.value(of_node)
             if of not in ("count", "first"):
@@ -515,14 +574,17 @@ def _objectives(node: yaml.Node, loc: _Located) -> tuple[Objective, ...]:
     return tuple(objectives)
 
 
-def _check_signal(name: str, where: str) -> None:
-    """A signal of the default patterns (rei.evaluation.signals, checked against cep/patterns and the contract)."""
+def _check_signal(name: str, where: str, declared: frozenset[str] = frozenset()) -> None:
+    """A signal of the default patterns (rei.evaluation.signals, checked against cep/patterns and the contract) or
+    one the spec's own patterns declare (``declared``)."""
     from rei.evaluation.signals import KNOWN_SIGNALS
 
-    if name not in KNOWN_SIGNALS:
-        close = difflib.get_close_matches(name, KNOWN_SIGNALS, n=1)
+    known = sorted(set(KNOWN_SIGNALS) | declared)
+    if name not in known:
+        close = difflib.get_close_matches(name, known, n=1)
         hint = f" (did you mean {close[0]}?)" if close else ""
-        raise SpecError(f"{where}: unknown signal {name!r}{hint}; known: {', '.join(sorted(KNOWN_SIGNALS))}")
+        mine = "" if declared else "; a signal of your own VEPL patterns: give their folder as 'patterns'"
+        raise SpecError(f"{where}: unknown signal {name!r}{hint}; known: {', '.join(known)}{mine}")
 
 
 def _article(word: str) -> str:

@@ -52,6 +52,8 @@ VALIDITY = "valid"
 #: Candidates asked per simulated evaluation at most: a space of mostly invalid points ends the search instead of
 #: spinning.
 MAX_TRIES_PER_EVALUATION = 20
+#: The user attribute of a trial of TPE's initial design: its index in the design.
+DESIGN = "design"
 
 
 def make_sampler(name: str, seed: int, budget: int) -> optuna.samplers.BaseSampler:
@@ -128,7 +130,8 @@ class Search:
         self.spec = spec = with_base_case(spec, self.out, log)
         assert spec.case is not None
         self.maker = CandidateMaker(spec.case, self.out, log=log,
-                                    runs=RunOptions(spec.controller, spec.humans, spec.sut))
+                                    runs=RunOptions(spec.controller, spec.humans, spec.sut, spec.patterns,
+                                                    spec.utilities))
         try:
             self.space = Space(spec.parameters, self.maker.diagram, self.maker.palette, humans=spec.humans)
         except BaseException:  # a parameter the base case does not have: the engine's JVM goes now
@@ -138,11 +141,17 @@ class Search:
             _note_independent(self.space, log)
         started = open_study(self.out, spec)
         so_far = len(started.trials)
-        if spec.sampler == "tpe" and not so_far:  # TPE starts from a Sobol design, not random sampling's draws
-            for params in sobol_design(self.space.distributions, startup_trials(spec.budget), spec.seed):
-                started.enqueue_trial(params, skip_if_exists=False)
         # a resumed sampler must not replay the draws of the first invocation (qmc's sequence is indexed instead)
         self.study = started if spec.sampler == "qmc" else open_study(self.out, spec, spec.seed + so_far)
+        # TPE starts from a Sobol design, not random sampling's draws; its points are enqueued one at a time, when
+        # nothing else waits, so a refinement (rei.search.refine) goes before the rest of the design. Its size is
+        # the first invocation's (a resume with another budget continues the same design); a journal without it
+        # enqueued the whole design at its start.
+        if spec.sampler == "tpe" and not so_far:
+            started.set_user_attr(DESIGN, startup_trials(spec.budget))
+        size = int(started.user_attrs.get(DESIGN, 0))
+        self._design = sobol_design(self.space.distributions, size, spec.seed) if size else []
+        self._designed = sum(DESIGN in t.user_attrs for t in started.trials)
         self.progress = SearchProgress()
         self._refine = refining(spec)
         self._known: set[str] = set()  # failure signatures found so far
@@ -233,6 +242,11 @@ class Search:
 
     def _prepare(self) -> Prepared | None:
         """The next candidate, generated and ready to run; None when it is not valid (told to the study)."""
+        if self._designed < len(self._design) and not self.study.get_trials(deepcopy=False,
+                                                                             states=(TrialState.WAITING,)):
+            self.study.enqueue_trial(self._design[self._designed], user_attrs={DESIGN: self._designed},
+                                     skip_if_exists=False)
+            self._designed += 1
         trial = self.study.ask(self.space.distributions)
         key = self.key(trial.number)
         candidate = self.maker.make(key, self.space.edit(trial.params))
@@ -255,7 +269,9 @@ class Search:
                        seed=candidate.edit.seed, humans=spec.humans, fault=candidate.edit.fault,
                        controller=spec.controller, sut=spec.sut.to_dict() if spec.sut else None, mode="replay",
                        timeout=spec.timeout, report=False, case_dir=str(case_dir),
-                       run_dir=str(run_dir or self.out / "runs" / key))
+                       run_dir=str(run_dir or self.out / "runs" / key),
+                       patterns=str(spec.patterns) if spec.patterns else None,
+                       utilities=str(spec.utilities) if spec.utilities else None)
 
     def _invalid(self, trial: optuna.Trial, status: str, problems: tuple[str, ...]) -> None:
         self.progress.invalid += 1
