@@ -3,7 +3,10 @@
 
 from __future__ import annotations
 
+import itertools
+from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import pytest
 from optuna.distributions import CategoricalDistribution, FloatDistribution
@@ -75,3 +78,90 @@ def test_refine_must_be_a_boolean(tmp_path: Path) -> None:
                          "objectives:\n  - {metric: encounter_margin_humans}\n", encoding="utf-8")
     with pytest.raises(SpecError, match=r"s\.yaml:2:9"):
         load_search_spec(spec_file)
+
+
+REFINE_SPEC = """\
+name: fake
+case: case.rei
+seed: 1
+budget: 12
+sampler: tpe
+parameters:
+  - {human: walker, start: [0, 900]}
+  - {seed: [0, 100]}
+objectives:
+  - {metric: encounter_margin_humans}
+"""
+
+
+def _search(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, meeting_of: Callable[[float], float]) -> Any:
+    """A TPE search on the fake pool whose walker meets the robot when it sets off at ``meeting_of(start)``."""
+    import json
+    import threading
+
+    from search_fakes import FakeMaker, FakePool
+    from test_search_space import DIAGRAM
+
+    from rei.search import study
+
+    (tmp_path / "case.rei").write_text("testcase T {}\n", encoding="utf-8")
+    (tmp_path / "s.yaml").write_text(REFINE_SPEC, encoding="utf-8")
+    monkeypatch.setattr(study, "CandidateMaker", lambda case, folder, log=print, **_: FakeMaker(folder, DIAGRAM))
+    starts: dict[str, float] = {}
+
+    class MeetingPool(FakePool):
+        def submit(self, task):  # type: ignore[no-untyped-def]
+            done = super().submit(task)
+            case = json.loads((Path(task.case_dir) / "case.json").read_text(encoding="utf-8"))
+            start = next(op["points"][0]["seconds"] for op in json.loads(case["text"])
+                         if op.get("op") == "setTrajectory")
+            starts[task.key] = start
+            summary_file = Path(task.run_dir) / "summary.json"
+            summary = json.loads(summary_file.read_text(encoding="utf-8"))
+            summary["metrics"] = {"encounter_margin_humans": abs(start - meeting_of(start))}
+            summary_file.write_text(json.dumps(summary), encoding="utf-8")
+            return done
+
+    def encounters(run_dir: Path, case_dir: Path) -> list[Encounter]:
+        start = starts[run_dir.name]
+        return [Encounter("walker", abs(start - meeting_of(start)), meeting_of(start) - start)]
+
+    monkeypatch.setattr(study, "encounters", encounters)
+    s = study.Search(load_search_spec(tmp_path / "s.yaml"), tmp_path / "out", MeetingPool(lambda *_: []),
+                     threading.Event(), log=lambda _: None)
+    s.run()
+    return s
+
+
+def test_a_refinement_runs_next_before_the_rest_of_the_design(tmp_path: Path,
+                                                               monkeypatch: pytest.MonkeyPatch) -> None:
+    """A refinement is the next point asked after the one running beside it, not the design's next point."""
+    from rei.search.design import sobol_design
+
+    s = _search(tmp_path, monkeypatch, lambda start: 300.0)
+    trials = s.study.trials
+    design = sobol_design(s.space.distributions, 2, 1)
+    # 0 and 1 are the design (1 was asked while 0 ran); 2 refines 0: the walker's start moved onto the meeting
+    assert [t.params for t in trials[:2]] == design
+    assert trials[2].user_attrs.get("refinement") == 1
+    assert trials[2].params["walker.start"] == pytest.approx(300.0, abs=0.01)
+    assert trials[2].params["seed"] == trials[0].params["seed"]
+    assert trials[2].values[0] == pytest.approx(0.0, abs=0.01)
+    asked_design = [t.params for t in trials if "design" in t.user_attrs]
+    assert asked_design == design  # each design point asked once
+
+
+def test_a_refinement_is_refined_again_up_to_its_depth(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A robot that reacts: the meeting moves half as far as the person does, so each step halves the margin."""
+    from rei.search.refine import DEPTH
+
+    s = _search(tmp_path, monkeypatch, lambda start: 300.0 + 0.5 * (start - 300.0))
+    first = s.study.trials[0]
+    chain = [first]
+    for trial in s.study.trials[1:]:
+        if trial.user_attrs.get("refinement") == len(chain) and trial.params["seed"] == first.params["seed"]:
+            chain.append(trial)
+    assert len(chain) == DEPTH + 1
+    margins = [t.values[0] for t in chain]
+    assert all(b == pytest.approx(a / 2, abs=0.01) for a, b in itertools.pairwise(margins))
+    assert max(t.user_attrs.get("refinement", 0) for t in s.study.trials) == DEPTH
