@@ -106,5 +106,7 @@ def plan_campaign(spec: Spec, out: Path) -> Plan:
                         seed=spec.seed + rep, humans=variant.humans, fault=variant.fault,
                         controller=variant.controller, sut=variant.sut.to_dict() if variant.sut else None,
                         mode=spec.mode, timeout=spec.timeout, report=spec.report,
-                        case_dir=str(source.case_dir(out)), run_dir=str(out / "runs" / key)))
+                        case_dir=str(source.case_dir(out)), run_dir=str(out / "runs" / key),
+                        patterns=str(spec.patterns) if spec.patterns else None,
+                        utilities=str(spec.utilities) if spec.utilities else None))
     return Plan(tuple(cases.values()), tuple(runs))

@@ -13,6 +13,8 @@ run 17 of 23 an hour later. Format (docs/campaigns.md)::
     sut: {command: "rei nav-sut", map: true}  # or an external SUT (docs/sut.md): command, clock, deadline,
                                 #   map, join_timeout; a variant's own sut: or controller: wins
     report: false               # write each run's report.html too
+    patterns: my-patterns       # the user's *.vepl every run's monitor runs besides the defaults (docs/vepl.md)
+    utilities: utilities.yaml   # utility per signal; both as `rei run --patterns DIR --utilities YAML`
     variants: [{name: base}]    # default variants: name, humans (true), fault (null), controller, sut
     groups:
       - name: small
@@ -26,6 +28,7 @@ run 17 of 23 an hour later. Format (docs/campaigns.md)::
 from __future__ import annotations
 
 import dataclasses
+import functools
 import re
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -119,6 +122,9 @@ class Spec:
     report: bool
     groups: tuple[Group, ...]
     source: Path | None = None
+    #: the user's VEPL patterns (``rei run --patterns``) and utility file (``--utilities``) of every run, absolute
+    patterns: Path | None = None
+    utilities: Path | None = None
 
 
 def load_spec(path: Path) -> Spec:
@@ -139,7 +145,8 @@ def parse_spec(data: Any, *, base: Path, where: str = "spec", default_name: str 
     """A checked ``Spec`` from parsed YAML; relative case paths are resolved against ``base``. ``node``: the same
     document composed (rei.located_yaml), so that a mistake in a value can be placed at its line and column."""
     top = _Reader(data, where, node)
-    top.only("name", "seed", "repetitions", "timeout", "mode", "controller", "sut", "report", "variants", "groups")
+    top.only("name", "seed", "repetitions", "timeout", "mode", "controller", "sut", "report", "variants", "groups",
+             "patterns", "utilities")
     name = top.str("name", default_name)
     seed = top.int("seed", 0, minimum=0)
     repetitions = top.int("repetitions", 1, minimum=1)
@@ -162,7 +169,64 @@ def parse_spec(data: Any, *, base: Path, where: str = "spec", default_name: str 
     duplicate = next((n for n in names if names.count(n) > 1), None)
     if duplicate:
         raise SpecError(f"{where}: two groups are named {duplicate!r}")
-    return Spec(name, seed, timeout, mode, report, tuple(groups))
+    patterns = _path(top, "patterns", base, "a folder of .vepl files")
+    utilities = _path(top, "utilities", base, "a YAML file 'SIGNAL: utility'")
+    try:
+        check_user_patterns(patterns, utilities)
+    except SpecError as error:
+        key = "patterns" if error.args[1:] == ("patterns",) else "utilities"
+        raise SpecError(f"{top.at(key)}: {error.args[0]}") from None
+    return Spec(name, seed, timeout, mode, report, tuple(groups), patterns=patterns, utilities=utilities)
+
+
+def _path(r: _Reader, key: str, base: Path, what: str) -> Path | None:
+    value = r.get(key)
+    if value is None:
+        return None
+    if not isinstance(value, str) or not value:
+        raise SpecError(f"{r.at(key)}: '{key}' names {what}, relative to the spec file")
+    return (base / value).resolve()
+
+
+def check_user_patterns(patterns: Path | None, utilities: Path | None) -> frozenset[str]:
+    """Check a spec's ``patterns:`` folder and ``utilities:`` file as `rei run` checks ``--patterns`` and
+    ``--utilities`` (the monitor jar compiles the patterns; the file is read against what they declare); returns
+    the signals the patterns declare (empty without them). SpecError with the compiler's ``file:line:column``
+    lines; its second argument names the key at fault (``patterns`` or ``utilities``)."""
+    from rei.evaluation import UtilityError, load_utilities
+    from rei.run.patterns import PatternError
+
+    declared = None
+    if patterns is not None:
+        try:
+            declared = dict(_compiled(patterns, _stamp(patterns)))
+        except PatternError as error:
+            raise SpecError(str(error), "patterns") from None
+    if utilities is not None:
+        try:
+            load_utilities(utilities, declared)  # it may name the signals of the user's patterns
+        except UtilityError as error:
+            raise SpecError(str(error), "utilities") from None
+    return frozenset(declared or ())
+
+
+def _stamp(folder: Path) -> tuple[tuple[str, int, int], ...]:
+    """What the monitor reads of ``folder`` (its *.vepl), by name, size and change time: the cache key of
+    ``_compiled``, so a spec read twice (a search's resume check parses OUT/spec.yaml too) compiles once."""
+    try:
+        return tuple(sorted((p.name, p.stat().st_size, p.stat().st_mtime_ns) for p in folder.glob("*.vepl")))
+    except OSError:
+        return ()
+
+
+@functools.lru_cache(maxsize=8)
+def _compiled(folder: Path, stamp: tuple[tuple[str, int, int], ...]) -> tuple[tuple[str, float | None], ...]:
+    """What ``folder``'s patterns declare beside the defaults' (rei.run.patterns.check: a JVM start and the VEPL
+    compiler, 1-3 s)."""
+    from rei.run.patterns import PatternSelection, check
+
+    del stamp  # only the cache key
+    return tuple(check(PatternSelection(folder)).items())
 
 
 def _group(r: _Reader, base: Path, controller: str, sut: ExternalSut | None, variants: tuple[Variant, ...],

@@ -39,7 +39,6 @@ from __future__ import annotations
 
 import dataclasses
 import difflib
-import functools
 import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -49,7 +48,7 @@ from typing import Any
 import yaml
 
 from rei import located_yaml
-from rei.campaign.spec import ExternalSut, RoomSettings, SpecError, _Reader, _rooms, _sut
+from rei.campaign.spec import ExternalSut, RoomSettings, SpecError, _Reader, _rooms, _sut, check_user_patterns
 from rei.evaluation.metrics import BY_NAME, NAMES, Better
 from rei.search import SAMPLERS
 
@@ -460,53 +459,21 @@ _KINDS = ("utility", "time", "metric", "verdict", "signal")
 
 def _patterns(top: located_yaml.Entries, base: Path, loc: _Located) -> tuple[Path | None, Path | None, frozenset[str]]:
     """``patterns:`` and ``utilities:`` resolved against ``base`` and checked as `rei run` checks its
-    ``--patterns``/``--utilities`` (the patterns compiled by the monitor jar, the file read against what they
-    declare), a mistake placed at the key's value; with them, the signals the patterns declare."""
-    from rei.evaluation import UtilityError, load_utilities
-    from rei.run.patterns import PatternError
-
-    patterns = utilities = None
-    declared: dict[str, float | None] | None = None
-    if "patterns" in top:
-        node = top["patterns"][1]
-        value = loc.value(node)
-        if not isinstance(value, str) or not value:
-            raise SpecError(f"{loc.at(node)}: 'patterns' names a folder of .vepl files, relative to the spec")
-        patterns = (base / value).resolve()
-        try:
-            declared = dict(_compiled(patterns, _stamp(patterns)))
-        except PatternError as error:
-            raise SpecError(f"{loc.at(node)}: {error}") from None
-    if "utilities" in top:
-        node = top["utilities"][1]
-        value = loc.value(node)
-        if not isinstance(value, str) or not value:
-            raise SpecError(f"{loc.at(node)}: 'utilities' names a YAML file 'SIGNAL: utility', relative to the spec")
-        utilities = (base / value).resolve()
-        try:
-            load_utilities(utilities, declared)  # it may name the signals of the user's patterns
-        except UtilityError as error:
-            raise SpecError(f"{loc.at(node)}: {error}") from None
-    return patterns, utilities, frozenset(declared or ())
-
-
-def _stamp(folder: Path) -> tuple[tuple[str, int, int], ...]:
-    """What the monitor would read of ``folder`` (its *.vepl), by name, size and change time: the cache key of
-    ``_compiled``, so a spec read twice (the resume check parses OUT/spec.yaml too) compiles once."""
+    ``--patterns``/``--utilities`` (rei.campaign.spec.check_user_patterns), a mistake placed at the key's value;
+    with them, the signals the patterns declare."""
+    paths: dict[str, Path] = {}
+    for key, what in (("patterns", "a folder of .vepl files"), ("utilities", "a YAML file 'SIGNAL: utility'")):
+        if key in top:
+            value = loc.value(top[key][1])
+            if not isinstance(value, str) or not value:
+                raise SpecError(f"{loc.at(top[key][1])}: '{key}' names {what}, relative to the spec file")
+            paths[key] = (base / value).resolve()
     try:
-        return tuple(sorted((p.name, p.stat().st_size, p.stat().st_mtime_ns) for p in folder.glob("*.vepl")))
-    except OSError:
-        return ()
-
-
-@functools.lru_cache(maxsize=8)
-def _compiled(folder: Path, stamp: tuple[tuple[str, int, int], ...]) -> tuple[tuple[str, float | None], ...]:
-    """The signals ``folder``'s patterns declare, beside the defaults (rei.run.patterns.check: a JVM start and the
-    VEPL compiler); PatternError with the compiler's ``file:line:column: message`` lines."""
-    from rei.run.patterns import PatternSelection, check
-
-    del stamp  # only the cache key
-    return tuple(check(PatternSelection(folder)).items())
+        declared = check_user_patterns(paths.get("patterns"), paths.get("utilities"))
+    except SpecError as error:
+        key = "patterns" if error.args[1:] == ("patterns",) else "utilities"
+        raise SpecError(f"{loc.at(top[key][1])}: {error.args[0]}") from None
+    return paths.get("patterns"), paths.get("utilities"), declared
 
 
 def _objectives(node: yaml.Node, loc: _Located, declared: frozenset[str] = frozenset()) -> tuple[Objective, ...]:
