@@ -1,9 +1,10 @@
 # SPDX-License-Identifier: EPL-2.0
 """A search spec's ``patterns:`` (the user's VEPL patterns, as `rei run --patterns`): every run's monitor runs them,
 so a ``{signal: ...}`` objective may name a signal they declare and reads its count and first time from the runs;
-each saved case's `rei run` line carries ``--patterns``; a resume with other patterns is another search; a folder
-that is missing or does not compile is refused at the spec's key before anything runs. Real room editor engine,
-generator, simulation, monitor jar and evaluator, on the example's crossing with a budget of 1."""
+each saved case's `rei run` line carries ``--patterns``; a resume with other patterns (another folder, or the same
+one edited since) is another search; a folder that is missing or does not compile is refused at the spec's key
+before anything runs. Real room editor engine, generator, simulation, monitor jar and evaluator, on the example's
+crossing with a budget of 1."""
 
 from __future__ import annotations
 
@@ -95,6 +96,13 @@ def test_a_resume_with_other_patterns_is_another_search(searched: tuple[Path, Pa
     assert result.returncode == 2, result.stdout + result.stderr
     assert (f"{folder / 'other.yaml'}:5:11: this OUT holds a search started with another spec: patterns is "
             f"{folder / 'other'} here, {folder / 'mine'} there") in result.stderr, result.stderr
+    # the same folder with a pattern edited since the runs ran it: their copy tells
+    (folder / "mine" / "done.vepl").write_text(USER_PATTERN.replace("utility 5", "utility 6"), encoding="utf-8")
+    result = run_cli("search", folder / "s.yaml", "-o", out, "--workers", "1", timeout=120)
+    assert result.returncode == 2, result.stdout + result.stderr
+    assert (f"{folder / 's.yaml'}:5:11: this OUT holds a search whose runs ran other patterns than "
+            f"{folder / 'mine'} has now ({out / 'runs' / 'random-0000' / 'patterns'} has theirs)") in result.stderr, \
+        result.stderr
 
 
 @pytest.mark.parametrize(("pattern", "objective", "expected"), [

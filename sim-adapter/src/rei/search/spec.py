@@ -584,6 +584,31 @@ def check_resumable(given: SearchSpec, stored_text: str, stored_file: str) -> No
         raise SpecError(f"{where}: this OUT holds a search started with another spec: {what}{more}; {advice}")
 
 
+def check_patterns_kept(given: SearchSpec, runs: Path) -> None:
+    """SpecError, placed at ``given``'s ``patterns:``, when the patterns in that folder are not the ones the search's
+    runs so far ran (each run keeps a copy, ``runs/<key>/patterns/``, rei.run.patterns.record): the folder is the
+    same, its patterns were edited since, so the resumed runs would be judged by other rules."""
+    if given.patterns is None:
+        return
+    from rei.run.patterns import PATTERNS_DIR, SELECTION_FILE
+
+    for selection in sorted(runs.glob(f"*/{SELECTION_FILE}")):
+        kept = selection.parent / PATTERNS_DIR
+        if not kept.is_dir():
+            continue
+        if _vepl(kept) != _vepl(given.patterns):
+            file = str(given.source or "spec")
+            raise SpecError(f"{given.positions.get('patterns', file + ':1:1')}: this OUT holds a search whose runs "
+                            f"ran other patterns than {given.patterns} has now ({kept} has theirs); changed patterns "
+                            f"are another search: give a new -o OUT, or restore the patterns to resume")
+        return  # every run of the search ran the same patterns: one copy tells
+
+
+def _vepl(folder: Path) -> dict[str, bytes]:
+    """What the monitor reads of ``folder``: its ``*.vepl`` files, by name."""
+    return {path.name: path.read_bytes() for path in folder.glob("*.vepl") if path.is_file()}
+
+
 def _changes(stored: SearchSpec, given: SearchSpec, file: str) -> list[tuple[str, str]]:
     """(where in ``given``'s file, what) for each search-relevant difference; reformatting and the parameters'
     order are none (the study knows parameters by name), the objectives' order is (their values are a list)."""

@@ -44,7 +44,7 @@ from rei.search.refine import ATTR, DEPTH, encounters, refined
 from rei.search.refine import enabled as refining
 from rei.search.reproduce import RunOptions
 from rei.search.space import Space
-from rei.search.spec import SearchSpec, check_resumable
+from rei.search.spec import SearchSpec, check_patterns_kept, check_resumable
 
 JOURNAL = "study.journal"
 #: The trials' one constraint: 1 for a candidate that was not valid, 0 for a simulated one.
@@ -99,6 +99,7 @@ def check_resume(spec: SearchSpec, out: Path) -> None:
         return
     if spec.source.resolve() != stored.resolve():
         check_resumable(spec, stored.read_text(encoding="utf-8"), str(stored))
+    check_patterns_kept(spec, out / "runs")
 
 
 @dataclass(slots=True)
