@@ -33,6 +33,7 @@ from typing import Any
 import numpy as np
 import png
 import pytest
+
 from rei.maps import box_of, floor_blocks, load_map, merge_rectangles, obstacle_mask
 from rei.run.jvm import JarServer, run_jar
 

@@ -28,9 +28,9 @@ from rei.sim.lidar import Lidar
 from rei.sim.native_output import quiet_native_output
 from rei.sim.odometry import WheelOdometry
 from rei.sim.robot_model import load_robot, wheel_torque_for
-from rei.spline import Trajectory
 from rei.sim.state import ObjectState, RobotState, SimState
 from rei.sim.world_loader import GRAVITY, load_world
+from rei.spline import Trajectory
 from rei.sut.api import LaserScan, Observation, StaticMap
 
 MAX_ACCELERATION = 2.5
