@@ -6,7 +6,8 @@ For every room (the crossing example; the thesis's simple navigation room with i
 table's floor free; ``doorways``, benchmarks/falsification/doorways.{rei,yaml}: two people crossing a corridor, where
 failures are rare under random sampling, so a guided search can show its gain; ``crossings``,
 benchmarks/falsification/crossings.{rei,yaml}: four people whose long lanes cross a longer corridor, where failures
-are rarer still and come in more kinds), controller (``nav``; the weakened
+are rarer still and come in more kinds; it is searched on the encounter margin, so the TPE searches there also refine
+their near misses, docs/search.md), controller (``nav``; the weakened
 ``nav:moving_horizon=0``: the local planner no longer predicts where the people walk, so it meets a person it would
 have let pass; in the doorways corridor, one floor wide, a smaller planner margin such as ``inflation_margin=0``
 changes nothing) and seed, one search with ``--sampler tpe`` and one with ``--sampler random`` run with the same
