@@ -32,6 +32,8 @@ def records(study: optuna.Study, out: Path) -> list[dict[str, Any]]:
     """One record per trial of ``study``, in order."""
     found = []
     for trial in study.get_trials(deepcopy=False):
+        if trial.state == optuna.trial.TrialState.WAITING:
+            continue  # enqueued, never asked (a refinement after the budget's last run): no evaluation yet
         attrs = trial.user_attrs
         key = attrs.get("key") or f"{study.study_name}-{trial.number:04d}"
         status = attrs.get("status") or "interrupted"  # running when the search stopped (asked again on resume)

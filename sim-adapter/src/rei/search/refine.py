@@ -35,10 +35,11 @@ ATTR = "refinement"
 
 
 def enabled(spec: SearchSpec) -> bool:
-    """Refining follows the encounter margin: on when it is an objective and the sampler learns (not the random
-    or quasi-random baselines, whose draws must stay their own)."""
-    return spec.refine and spec.sampler in ("tpe", "cmaes", "nsga2") and any(
-        o.kind == "metric" and o.key == OBJECTIVE for o in spec.objectives)
+    """Refining follows the encounter margin down: on when it is an objective minimized and the sampler learns from
+    points it did not draw (TPE and NSGA-II; CMA-ES would update its mean and step size from them as if it had
+    drawn them; the random and quasi-random baselines' draws must stay their own)."""
+    return spec.refine and spec.sampler in ("tpe", "nsga2") and any(
+        o.kind == "metric" and o.key == OBJECTIVE and o.direction == "minimize" for o in spec.objectives)
 
 
 def encounters(run_dir: Path, case_dir: Path) -> list[Encounter]:

@@ -152,10 +152,13 @@ class Search:
             started.set_user_attr(DESIGN, startup_trials(spec.budget))
         size = int(started.user_attrs.get(DESIGN, 0))
         self._design = sobol_design(self.space.distributions, size, spec.seed) if size else []
-        self._designed = sum(DESIGN in t.user_attrs for t in started.trials)
+        # the next design index (a point asked again on resume is enqueued with its index once more)
+        self._designed = 1 + max((int(t.user_attrs[DESIGN]) for t in started.trials if DESIGN in t.user_attrs),
+                                 default=-1)
         self.progress = SearchProgress()
         self._refine = refining(spec)
         self._known: set[str] = set()  # failure signatures found so far
+        self._met: set[str] = set()  # the elements (people, objects, walls) of those failures
         self._raw: list[list[float | None]] = []  # the simulated evaluations' own objective values (None: absent)
 
     def key(self, number: int) -> str:
@@ -187,12 +190,15 @@ class Search:
         for trial in self.study.get_trials(deepcopy=False):
             if trial.state == TrialState.RUNNING:  # the last invocation stopped while it ran: ask it again
                 self.study.tell(trial.number, state=TrialState.FAIL)
-                self.study.enqueue_trial(trial.params, skip_if_exists=False)
+                # a refinement keeps its depth and a design point its index
+                kept = {k: v for k, v in trial.user_attrs.items() if k in (ATTR, DESIGN)}
+                self.study.enqueue_trial(trial.params, user_attrs=kept, skip_if_exists=False)
             elif trial.user_attrs.get("simulated"):
                 self.progress.simulated += 1
                 if trial.user_attrs.get("values"):
                     self._raw.append(_own(trial.user_attrs["values"]))
                 self._known |= {f["signature"] for f in trial.user_attrs.get("failures") or []}
+                self._met |= {f["element"] for f in trial.user_attrs.get("failures") or []}
                 self.progress.errors += trial.user_attrs.get("status") == "ERROR"
                 self.progress.failing += bool(trial.user_attrs.get("failures"))
             elif trial.user_attrs.get("status") in ("invalid", "unplannable"):
@@ -326,6 +332,7 @@ class Search:
                 attrs["repeat"] = True
             new = not signatures <= self._known
             self._known |= signatures
+            self._met |= {f.element for f in found}
             trial.set_constraint(VALIDITY, 0.0)
             attrs["metrics"] = summary.get("metrics")
             self.progress.failing += bool(found)
@@ -348,9 +355,8 @@ class Search:
         depth = int(trial.user_attrs.get(ATTR, 0))
         if depth >= DEPTH or self.stop.is_set():
             return
-        met = {signature.split("/")[1] for signature in self._known}
         step = refined(trial.params, self.space.distributions, encounters(Path(task.run_dir), Path(task.case_dir)),
-                       met)
+                       self._met)
         if step is not None:
             params, encounter = step
             self.study.enqueue_trial(params, user_attrs={ATTR: depth + 1}, skip_if_exists=False)
