@@ -14,8 +14,8 @@ parts positive: ``max p/u + q/w`` on ``p^2 + q^2 <= R^2`` is ``R sqrt(1/u^2 + 1/
 
     M = HX/u + HY/w + R sqrt(1/u^2 + 1/w^2)        margin = max(0, |c - tp| - M)
 
-The metric samples that set (the robot's records every DT; the schedule at those times, then every STEP), so it
-can only be as small as this infimum and at most DT + STEP above it.
+The metric samples that set (the robot's records every DT; the schedule at those times, and every STEP before and
+after them), so it can only be as small as this infimum and at most DT + STEP above it.
 """
 
 from __future__ import annotations
@@ -27,7 +27,7 @@ import numpy as np
 import pytest
 
 from rei.artifacts import AnimatedObject, AnimationSpec, Category, ControlPoint
-from rei.evaluation.metrics.encounter import STEP, encounter_margin
+from rei.evaluation.metrics.encounter import STEP, Encounter, encounters
 from rei.spline import Trajectory
 
 ROBOT = (0.281, 0.306)  # the Waffle's footprint
@@ -38,6 +38,18 @@ DT = 0.05  # the robot's sample step (the simulator's 20 Hz state)
 TOL = DT + STEP + 1e-9
 EPS = 1e-9
 HUMAN = (np.array([0.0, 0.0, 0.0, 2 * RADIUS, 2 * RADIUS]), True)  # a footprint row as in world.json
+
+
+def nearest(spec: AnimationSpec, footprints: dict[str, tuple[np.ndarray, bool]], t: np.ndarray, pose: np.ndarray,
+            threshold: float = THRESHOLD) -> Encounter | None:
+    """The encounter of least margin over the humans, as compute.py takes encounter_margin_humans."""
+    return min(encounters(spec, footprints, t, pose, ROBOT, threshold), key=lambda e: e.margin, default=None)
+
+
+def least(spec: AnimationSpec, footprints: dict[str, tuple[np.ndarray, bool]], t: np.ndarray, pose: np.ndarray,
+          threshold: float = THRESHOLD) -> float | None:
+    found = nearest(spec, footprints, t, pose, threshold)
+    return found.margin if found is not None else None
 
 
 def extent(u: float, w: float, threshold: float = THRESHOLD) -> float:
@@ -81,7 +93,7 @@ class Lane:
     def margin(self, spec: AnimationSpec, threshold: float = THRESHOLD,
                names: tuple[str, ...] | None = None) -> float | None:
         names = names if names is not None else tuple(o.name for o in spec.objects)
-        return encounter_margin(spec, dict.fromkeys(names, HUMAN), self.t, self.pose, ROBOT, threshold)
+        return least(spec, dict.fromkeys(names, HUMAN), self.t, self.pose, threshold)
 
 
 @pytest.mark.parametrize("heading", [0.0, 0.7, -2.0])
@@ -140,14 +152,45 @@ def test_a_loop_counts_its_next_period_after_the_run() -> None:
     t = np.arange(0.0, 9.5 + EPS, DT)  # the run ends at 9.5 s: the crossing at 10 s is after it, 1.1 s after tp
     pose = np.column_stack((X + u * (t - tp), np.zeros_like(t), np.zeros_like(t)))
     points = [(float(k), X, y) for k, y in enumerate(LOOP_Y)]
-    looped = encounter_margin(animation(walker("h", points, loop=True)), {"h": HUMAN}, t, pose, ROBOT, THRESHOLD)
+    looped = least(animation(walker("h", points, loop=True)), {"h": HUMAN}, t, pose)
     expected = analytic(10.0 - tp, u, w)
     assert looped is not None and expected - EPS <= looped <= expected + TOL
     # walked once, the same human stands at y = -2 from 7 s: only the crossings at 2 and 6 s are left
-    once = encounter_margin(animation(walker("h", points)), {"h": HUMAN}, t, pose, ROBOT, THRESHOLD)
+    once = least(animation(walker("h", points)), {"h": HUMAN}, t, pose)
     expected_once = analytic(6.0 - tp, u, w)
     assert once is not None and expected_once - EPS <= once <= expected_once + TOL
     assert once - looped > 1.5
+
+
+@pytest.mark.parametrize("loop", [True, False])
+def test_a_schedule_that_crossed_the_lane_before_the_run(loop: bool) -> None:
+    """The same walk three seconds earlier: it crosses the lane upwards at -1 s (a loop at -1 + 8n s), downwards at
+    3 s; the robot, recorded from -0.5 s, passes at 0.2 s. The nearest meeting is the crossing before the run, 1.2 s
+    early: the human had to set off later by 1.2 s less M (0.69 s), not earlier by the 2.8 s to the crossing at 3 s
+    less M (2.30 s). A loop repeats before its first point as after it, and a walk once that began before the
+    run's first sample was walking then too."""
+    spline = Trajectory([k - 3.0 for k in range(8)], [(X, y) for y in LOOP_Y], loop)
+    for tau, y in ((-0.9, 0.2), (-1.2, -0.4), (2.8, 0.4), (3.2, -0.4)):  # the premise: uniform around crossings
+        assert spline.position(tau) == pytest.approx((X, y), abs=1e-12)
+    u, w, tp = 1.0, 2.0, 0.2
+    t = np.arange(-0.5, 2.0 + EPS, DT)
+    pose = np.column_stack((X + u * (t - tp), np.zeros_like(t), np.zeros_like(t)))
+    found = nearest(animation(walker("h", [(k - 3.0, X, y) for k, y in enumerate(LOOP_Y)], loop)), {"h": HUMAN},
+                    t, pose)
+    expected = analytic(-1.0 - tp, u, w)
+    assert expected == pytest.approx(0.69, abs=0.01) and analytic(3.0 - tp, u, w) == pytest.approx(2.30, abs=0.01)
+    assert found is not None and expected - EPS <= found.margin <= expected + TOL, (found, expected)
+    assert found.shift == found.margin  # later: the robot came after the human had crossed
+
+
+def test_a_human_waits_at_the_first_point_before_setting_off() -> None:
+    """A walk once that sets off after the run, from the middle of the robot's lane: during the run the human
+    stood there, so it met the robot. (Earlier schedule times than the run's first sample add nothing to a walk
+    that begins after it: the human stands at the same first point there, further in time from every sample.)"""
+    lane = Lane(0.5, tp=10.0, end=20.0)
+    away = walker("h", [(25.0, *lane.ORIGIN), (30.0, *(lane.ORIGIN + 5 * lane.across))])
+    found = nearest(animation(away), {"h": HUMAN}, lane.t, lane.pose)
+    assert found is not None and found.margin == 0.0 and found.shift == 0.0
 
 
 @pytest.mark.parametrize("arrival", [15.0, 40.0, 3.0])
@@ -158,7 +201,7 @@ def test_a_human_whose_last_point_is_where_the_robot_stopped(arrival: float) -> 
     t = np.arange(0.0, 8.0 + EPS, DT)
     pose = np.column_stack((np.minimum(0.5 * t, 3.0), np.zeros_like(t), np.zeros_like(t)))
     spec = animation(walker("h", [(arrival - 3.0, 3.0, -3.0), (arrival, 3.0, 0.0)]))
-    m = encounter_margin(spec, {"h": HUMAN}, t, pose, ROBOT, THRESHOLD)
+    m = least(spec, {"h": HUMAN}, t, pose)
     reaches = arrival - (HY + RADIUS + THRESHOLD)  # the first time the circle is that close
     expected = max(0.0, reaches - t[-1])
     assert m is not None and expected - EPS <= m <= expected + STEP + EPS, (m, expected)
@@ -178,8 +221,7 @@ def test_nobody_near_the_robots_path_has_no_margin() -> None:
     assert lane.margin(animation(parallel, cart)) is None
     assert lane.margin(animation(parallel, lane.crossing("hidden", lane.tp, 1.0)), names=("side",)) is None
     # no robot samples
-    assert encounter_margin(animation(parallel), {"side": HUMAN}, np.empty(0), np.empty((0, 3)), ROBOT,
-                            THRESHOLD) is None
+    assert least(animation(parallel), {"side": HUMAN}, np.empty(0), np.empty((0, 3))) is None
 
 
 def test_the_least_margin_over_the_humans() -> None:
@@ -194,13 +236,21 @@ def test_the_least_margin_over_the_humans() -> None:
 # -- against a brute-force oracle ---------------------------------------------------------------------------------
 
 
-def oracle(trajectory: Trajectory, t: np.ndarray, pose: np.ndarray, threshold: float) -> float | None:
-    """The least |t_k - tau| by brute force: every robot sample against the schedule every 0.01 s (and at the
-    samples' own times) from 0 to two periods (a loop) or 5 s (once) past the later of the run's and the
-    schedule's ends, with the circle's distance to the rectangle computed here."""
-    horizon = t[-1] + 2 * trajectory.period if trajectory.loop else max(t[-1], trajectory.end) + 5.0
-    taus = np.union1d(np.arange(0.0, horizon, 0.01), t)
+def oracle(trajectory: Trajectory, t: np.ndarray, pose: np.ndarray, threshold: float) -> tuple[float, float] | None:
+    """The least |t_k - tau| by brute force, and its tau: every robot sample against the schedule every 0.01 s from
+    the run's start (so at the metric's times too, which it can only be below) and at the samples' own times, from
+    two periods before the run to two periods after it (a loop), or from 5 s
+    before the earlier of the run's and the schedule's starts to 5 s after the later of their ends (once), with the
+    circle's distance to the rectangle computed here."""
+    if trajectory.loop:
+        low, high = t[0] - 2 * trajectory.period, t[-1] + 2 * trajectory.period
+    else:
+        low, high = min(t[0], trajectory.start) - 5.0, max(t[-1], trajectory.end) + 5.0
+    taus = np.union1d(t[0] + 0.01 * np.arange(math.floor((low - t[0]) / 0.01), math.ceil((high - t[0]) / 0.01)), t)
     places = np.array([trajectory.position(float(tau)) for tau in taus])
+    # a place outside the robot's box of positions widened by 1 m is over 1 m from all of them: no conflict
+    inside = ((places >= pose[:, :2].min(axis=0) - 1.0) & (places <= pose[:, :2].max(axis=0) + 1.0)).all(axis=1)
+    taus, places = taus[inside], places[inside]
     dx = places[None, :, 0] - pose[:, None, 0]
     dy = places[None, :, 1] - pose[:, None, 1]
     cos, sin = np.cos(pose[:, 2])[:, None], np.sin(pose[:, 2])[:, None]
@@ -209,13 +259,16 @@ def oracle(trajectory: Trajectory, t: np.ndarray, pose: np.ndarray, threshold: f
     conflict = distance < RADIUS + threshold
     if not conflict.any():
         return None
-    return float(np.abs(t[:, None] - taus[None, :])[conflict].min())
+    k, j = np.nonzero(conflict)
+    best = np.argmin(np.abs(t[k] - taus[j]))
+    return float(abs(t[k[best]] - taus[j[best]])), float(taus[j[best]])
 
 
 def test_random_walks_against_the_brute_force_oracle() -> None:
-    """Curved robot drives (an arc at a random turn rate) against random Catmull-Rom schedules around them."""
+    """Curved robot drives (an arc at a random turn rate) against random Catmull-Rom schedules around them, which
+    may begin before the run, during it or after it."""
     rng = np.random.default_rng(20261126)
-    seen = {"none": 0, "zero": 0, "positive": 0}
+    seen = {"none": 0, "zero": 0, "positive": 0, "before the run": 0}
     for _ in range(60):
         t = np.arange(0.0, 10.0 + EPS, DT)
         speed, turn = rng.uniform(0.2, 0.6), rng.uniform(-0.3, 0.3)
@@ -224,17 +277,19 @@ def test_random_walks_against_the_brute_force_oracle() -> None:
         xy = np.vstack(([0.0, 0.0], np.cumsum(step, axis=0)[:-1]))
         pose = np.column_stack((xy, yaw))
         n = int(rng.integers(2, 6))
-        times = np.cumsum(rng.uniform(1.0, 6.0, n)) + rng.uniform(-2.0, 8.0)
+        times = np.cumsum(rng.uniform(1.0, 6.0, n)) + rng.uniform(-8.0, 8.0)
         points = xy[rng.integers(0, len(t), n)] + rng.normal(0.0, 1.0, (n, 2))
         loop = bool(rng.integers(0, 2))
         threshold = float(rng.choice([0.01, 0.1]))
         human = walker("h", [(float(s), float(x), float(y)) for s, (x, y) in zip(times, points, strict=True)], loop)
-        m = encounter_margin(animation(human), {"h": HUMAN}, t, pose, ROBOT, threshold)
-        expected = oracle(Trajectory(list(times), [tuple(p) for p in points], loop), t, pose, threshold)
-        if expected is None:
+        m = least(animation(human), {"h": HUMAN}, t, pose, threshold)
+        found = oracle(Trajectory(list(times), [tuple(p) for p in points], loop), t, pose, threshold)
+        if found is None:
             assert m is None
             seen["none"] += 1
             continue
+        expected, tau = found
         assert m is not None and expected - EPS <= m <= expected + TOL, (m, expected)
         seen["zero" if expected == 0 else "positive"] += 1
-    assert min(seen.values()) >= 5, seen  # every kind of outcome is exercised
+        seen["before the run"] += int(tau < t[0] - TOL)
+    assert min(seen.values()) >= 3, seen  # every kind of outcome is exercised

@@ -4,11 +4,11 @@
 A clearance is flat wherever the people are far from the robot while it passes: a person who sets off 30 s too
 late is as far as one who sets off 300 s too late. The margin keeps the slope. It is a post-encroachment time
 (Allen et al. 1978, the traffic-conflict measure): each human's *scheduled* walk (animation.json, the Catmull-Rom
-path the simulator follows, beyond the end of the run too) against the robot's *recorded* path. The pairs (robot
-sample ``k``, schedule time ``tau``) where the human's footprint at its scheduled place would come within the
-monitor's collision threshold of the robot's footprint at sample ``k`` form the conflict; the margin is the least
-``|t_k - tau|`` over them. It is 0 when the human did meet the robot, and it has no value for a human whose path
-never comes that close to where the robot drove.
+path the simulator follows, before the start and beyond the end of the run too) against the robot's *recorded*
+path. The pairs (robot sample ``k``, schedule time ``tau``) where the human's footprint at its scheduled place would
+come within the monitor's collision threshold of the robot's footprint at sample ``k`` form the conflict; the margin
+is the least ``|t_k - tau|`` over them. It is 0 when the human did meet the robot, and it has no value for a human
+whose path never comes that close to where the robot drove.
 """
 
 from __future__ import annotations
@@ -76,10 +76,7 @@ def _shift(trajectory: Trajectory, box: np.ndarray, circle: bool, t: np.ndarray,
     """``t_k - tau`` of the conflicting pair of least ``|t_k - tau|``, None without a conflict."""
     if len(t) == 0:
         return None
-    # Later than this the schedule only repeats (a loop) or stands still (once) further from every t_k.
-    horizon = float(t[-1]) + trajectory.period if trajectory.loop else max(float(t[-1]), trajectory.end)
-    # The run's own sample times first, so a human who met the robot scores exactly 0; then the schedule after it.
-    taus = np.concatenate((t, np.arange(float(t[-1]) + STEP, horizon + STEP, STEP)))
+    taus = _taus(trajectory, t)
     places = np.array([trajectory.position(float(tau)) for tau in taus])
     # Only schedule places within reach of some robot position can conflict: both footprints' circumradii.
     reach = math.hypot(*robot_size) / 2 + math.hypot(box[3], box[4]) / 2 + max(threshold, 0.0)
@@ -97,6 +94,20 @@ def _shift(trajectory: Trajectory, box: np.ndarray, circle: bool, t: np.ndarray,
         return None
     shifts = t[k[conflict]] - taus[j[conflict]]
     return float(shifts[np.argmin(np.abs(shifts))])
+
+
+def _taus(trajectory: Trajectory, t: np.ndarray) -> np.ndarray:
+    """The schedule times that can be nearest to a robot sample: the samples' own (so a meeting scores exactly 0)
+    and STEP apart before and after them. A loop over a period either side: it repeats before its first point too,
+    and any phase recurs within a period of every sample. A walk once from its first point, when that is before the
+    run (earlier the person waits there, further in time from every sample), to its last (later it stays there)."""
+    begin, end = float(t[0]), float(t[-1])
+    if trajectory.loop:
+        low, high = begin - trajectory.period, end + trajectory.period
+    else:
+        low, high = min(begin, trajectory.start), max(end, trajectory.end)
+    before = begin - STEP * np.arange(math.ceil((begin - low) / STEP), 0, -1)
+    return np.concatenate((before, t, np.arange(end + STEP, high + STEP, STEP)))
 
 
 def footprints_of(names: Sequence[str], boxes: np.ndarray, circle: np.ndarray) -> dict[str, tuple[np.ndarray, bool]]:
