@@ -209,6 +209,24 @@ def test_a_human_whose_last_point_is_where_the_robot_stopped(arrival: float) -> 
         assert m == 0.0
 
 
+def test_a_person_standing_for_minutes_beside_a_robot_held_for_minutes() -> None:
+    """A robot held for 300 s (20 Hz) beside a person who waits there 300 s before setting off (and one who arrived
+    there 300 s before the run and stays): 6001 samples against 6001 schedule times within reach, 36 million
+    pairs if each were measured; a standing person is one place over an interval of schedule times. 0.5 m beside
+    the robot's side the circle is 0.097 m off its footprint, no conflict; the first setting off towards the robot
+    at 0.2 m/s from 310 s conflicts once within HY + R of it, (0.5 - HY - R) / 0.2 s later: it had to set off that
+    much earlier than 310 s, 10 s after the run's end."""
+    t = np.arange(0.0, 300.0 + EPS, DT)
+    pose = np.zeros((len(t), 3))
+    beside = (0.0, 0.5)
+    closer = walker("closer", [(310.0, *beside), (312.0, 0.0, 0.1)])
+    stays = walker("stays", [(-300.0, 0.0, 8.0), (-290.0, *beside)])
+    found = encounters(animation(closer, stays), {"closer": HUMAN, "stays": HUMAN}, t, pose, ROBOT, THRESHOLD)
+    expected = 310.0 + (0.5 - (HY + RADIUS + THRESHOLD)) / 0.2 - t[-1]
+    assert [e.human for e in found] == ["closer"]
+    assert found[0].shift == -found[0].margin and expected - EPS <= found[0].margin <= expected + STEP + EPS
+
+
 def test_nobody_near_the_robots_path_has_no_margin() -> None:
     lane = Lane(0.5, tp=10.0, end=20.0)
     # a human walking a parallel lane 1 m to the side: 1 - HY - R = 0.59 m from the footprint at best

@@ -26,6 +26,8 @@ from rei.spline import Trajectory
 
 #: Step (s) at which a schedule is sampled: a person at 1.5 m/s moves 7.5 cm, under a state sample's resolution.
 STEP = 0.05
+#: Robot samples whose candidate pairs are measured at once: bounds the memory when a robot stays near a person.
+_BLOCK = 1024
 
 
 @dataclass(frozen=True, slots=True)
@@ -59,7 +61,9 @@ def nearest_encounter(animation: AnimationSpec, footprints: dict[str, tuple[np.n
 def encounters(animation: AnimationSpec, footprints: dict[str, tuple[np.ndarray, bool]],
                t: np.ndarray, pose: np.ndarray, robot_size: tuple[float, float],
                threshold: float) -> list[Encounter]:
-    """Each human's encounter, in ``animation``'s order; a human whose path never comes that close has none."""
+    """Each human's encounter, in ``animation``'s order, for the robot's samples ``t`` and true ``pose`` ``(T, 3)``:
+    the humans named in ``footprints`` (see :func:`footprints_of`); a human whose path never comes within
+    ``threshold`` of the robot's footprint has none."""
     found = []
     for o in animation.objects:
         if o.category != Category.HUMAN or o.name not in footprints:
@@ -71,44 +75,62 @@ def encounters(animation: AnimationSpec, footprints: dict[str, tuple[np.ndarray,
     return found
 
 
+def footprints_of(names: Sequence[str], boxes: np.ndarray, circle: np.ndarray) -> dict[str, tuple[np.ndarray, bool]]:
+    return {name: (boxes[i], bool(circle[i])) for i, name in enumerate(names)}
+
+
 def _shift(trajectory: Trajectory, box: np.ndarray, circle: bool, t: np.ndarray, pose: np.ndarray,
            robot_size: tuple[float, float], threshold: float) -> float | None:
     """``t_k - tau`` of the conflicting pair of least ``|t_k - tau|``, None without a conflict."""
     if len(t) == 0:
         return None
-    taus = _taus(trajectory, t)
-    places = np.array([trajectory.position(float(tau)) for tau in taus])
+    places, first, last = _schedule(trajectory, t)
+    human = np.array([circle])
+
+    def gaps(k: np.ndarray, j: np.ndarray) -> np.ndarray:
+        obstacles = np.empty((len(k), 1, 5))
+        obstacles[:, 0, :2] = places[j]
+        obstacles[:, 0, 2:] = box[2:]
+        return footprint_gaps(pose[k], robot_size, obstacles, human)[:, 0]
+
+    # tau = t_k first, O(T): a human who met the robot scores 0 without the pairs (a robot held by a person).
+    k = np.arange(len(t))
+    if (gaps(k, np.searchsorted(first, t, side="right") - 1) < threshold).any():
+        return 0.0
     # Only schedule places within reach of some robot position can conflict: both footprints' circumradii.
     reach = math.hypot(*robot_size) / 2 + math.hypot(box[3], box[4]) / 2 + max(threshold, 0.0)
-    near = cKDTree(pose[:, :2]).query_ball_point(places, reach)
-    pairs = [(k, j) for j, ks in enumerate(near) for k in ks]
-    if not pairs:
-        return None
-    k, j = np.array(pairs).T
-    obstacles = np.empty((len(k), 1, 5))
-    obstacles[:, 0, :2] = places[j]
-    obstacles[:, 0, 2:] = box[2:]
-    gaps = footprint_gaps(pose[k], robot_size, obstacles, np.array([circle]))[:, 0]
-    conflict = gaps < threshold
-    if not conflict.any():
-        return None
-    shifts = t[k[conflict]] - taus[j[conflict]]
-    return float(shifts[np.argmin(np.abs(shifts))])
+    schedule = cKDTree(places)
+    best: float | None = None
+    for a in range(0, len(t), _BLOCK):
+        pairs = cKDTree(pose[a:a + _BLOCK, :2]).sparse_distance_matrix(schedule, reach, output_type="ndarray")
+        k, j = pairs["i"] + a, pairs["j"]
+        # a place stands from first[j] to last[j]: the nearest of those times to t_k
+        shifts = t[k] - np.clip(t[k], first[j], last[j])
+        if best is not None:
+            nearer = np.abs(shifts) < abs(best)
+            k, j, shifts = k[nearer], j[nearer], shifts[nearer]
+        conflict = gaps(k, j) < threshold
+        if conflict.any():
+            shifts = shifts[conflict]
+            best = float(shifts[np.argmin(np.abs(shifts))])
+    return best
 
 
-def _taus(trajectory: Trajectory, t: np.ndarray) -> np.ndarray:
-    """The schedule times that can be nearest to a robot sample: the samples' own (so a meeting scores exactly 0)
-    and STEP apart before and after them. A loop over a period either side: it repeats before its first point too,
-    and any phase recurs within a period of every sample. A walk once from its first point, when that is before the
-    run (earlier the person waits there, further in time from every sample), to its last (later it stays there)."""
+def _schedule(trajectory: Trajectory, t: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The human's places ``(P, 2)`` at the schedule times that can be nearest to a robot sample, each with the
+    first and last of those times it stands there (equal consecutive places merged: a person waiting or standing
+    for minutes is one place, not thousands). The times are the samples' own (so a meeting scores exactly 0) and
+    STEP apart before and after them: a loop over a period either side (it repeats before its first point too, and
+    any phase recurs within a period of every sample); a walk once from its first point (if before the run: before
+    that the person waits there, further in time from every sample) to its last (after it the person stays)."""
     begin, end = float(t[0]), float(t[-1])
     if trajectory.loop:
         low, high = begin - trajectory.period, end + trajectory.period
     else:
         low, high = min(begin, trajectory.start), max(end, trajectory.end)
     before = begin - STEP * np.arange(math.ceil((begin - low) / STEP), 0, -1)
-    return np.concatenate((before, t, np.arange(end + STEP, high + STEP, STEP)))
-
-
-def footprints_of(names: Sequence[str], boxes: np.ndarray, circle: np.ndarray) -> dict[str, tuple[np.ndarray, bool]]:
-    return {name: (boxes[i], bool(circle[i])) for i, name in enumerate(names)}
+    taus = np.unique(np.concatenate((before, t, np.arange(end + STEP, high + STEP, STEP))))
+    places = np.array([trajectory.position(float(tau)) for tau in taus])
+    starts = np.flatnonzero(np.concatenate(([True], (places[1:] != places[:-1]).any(axis=1))))
+    ends = np.append(starts[1:], len(taus)) - 1
+    return places[starts], taus[starts], taus[ends]
