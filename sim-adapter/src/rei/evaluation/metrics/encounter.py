@@ -32,30 +32,12 @@ _BLOCK = 1024
 
 @dataclass(frozen=True, slots=True)
 class Encounter:
-    """The human nearest to meeting the robot: ``margin`` seconds off, and the ``shift`` (s, signed) of its
+    """How near a human came to meeting the robot: ``margin`` seconds off, and the ``shift`` (s, signed) of its
     schedule that brings it to the conflict when the robot was there (``margin == abs(shift)``)."""
 
     human: str
     margin: float
     shift: float
-
-
-def encounter_margin(animation: AnimationSpec, footprints: dict[str, tuple[np.ndarray, bool]],
-                     t: np.ndarray, pose: np.ndarray, robot_size: tuple[float, float],
-                     threshold: float) -> float | None:
-    """The least margin over the humans of ``animation`` named in ``footprints`` (their ``x, y, yaw, size_x,
-    size_y`` row as in world.json and whether it is a circle), for the robot's samples ``t`` and true ``pose``
-    ``(T, 3)``; None when no human's path comes within ``threshold`` of the robot's."""
-    nearest = nearest_encounter(animation, footprints, t, pose, robot_size, threshold)
-    return nearest.margin if nearest is not None else None
-
-
-def nearest_encounter(animation: AnimationSpec, footprints: dict[str, tuple[np.ndarray, bool]],
-                      t: np.ndarray, pose: np.ndarray, robot_size: tuple[float, float],
-                      threshold: float) -> Encounter | None:
-    """:func:`encounter_margin`'s human, margin and shift (the first human of the least margin)."""
-    found = encounters(animation, footprints, t, pose, robot_size, threshold)
-    return min(found, key=lambda e: e.margin) if found else None
 
 
 def encounters(animation: AnimationSpec, footprints: dict[str, tuple[np.ndarray, bool]],
@@ -76,6 +58,9 @@ def encounters(animation: AnimationSpec, footprints: dict[str, tuple[np.ndarray,
 
 
 def footprints_of(names: Sequence[str], boxes: np.ndarray, circle: np.ndarray) -> dict[str, tuple[np.ndarray, bool]]:
+    """:func:`encounters`' footprints: each of ``names`` with its row of ``boxes`` (``x, y, yaw, size_x, size_y``
+    as in world.json; only the yaw and the sizes are used, the place is the schedule's) and whether it is a circle
+    (a cylinder, of diameter ``size_x``) rather than a rectangle, as the monitor draws it."""
     return {name: (boxes[i], bool(circle[i])) for i, name in enumerate(names)}
 
 
