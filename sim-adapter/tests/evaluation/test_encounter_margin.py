@@ -21,14 +21,17 @@ after them), so it can only be as small as this infimum and at most DT + STEP ab
 from __future__ import annotations
 
 import math
+import shutil
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 from rei.artifacts import AnimatedObject, AnimationSpec, Category, ControlPoint
+from rei.evaluation.metrics.compute import measure, measure_encounters
 from rei.evaluation.metrics.encounter import STEP, Encounter, encounters
 from rei.spline import Trajectory
+from rei.wamp.recording import RecordingWriter, stream_path
 
 ROBOT = (0.281, 0.306)  # the Waffle's footprint
 HX, HY = ROBOT[0] / 2, ROBOT[1] / 2
@@ -311,3 +314,37 @@ def test_random_walks_against_the_brute_force_oracle() -> None:
         seen["zero" if expected == 0 else "positive"] += 1
         seen["before the run"] += int(tau < t[0] - TOL)
     assert min(seen.values()) >= 3, seen  # every kind of outcome is exercised
+
+
+# -- from a run folder ----------------------------------------------------------------------------------------------
+
+FIXTURE = Path(__file__).resolve().parents[1] / "fixtures" / "room6x4"  # its human h1 loops around (2.5, 2.3)
+
+
+def run_folder(tmp_path: Path, begin: float) -> Path:
+    """The fixture's case and a 14 s recording: the robot stands at (1.5, 2.3) until 2 s, where h1 passes it at
+    the start of its loop, then drives along y = 1, about 0.9 m from anywhere h1 walks; the mission begins at ``begin``."""
+    run = tmp_path / f"run-{begin}"
+    shutil.copytree(FIXTURE, run / "case")
+    with RecordingWriter(stream_path(run, "state")) as writer:
+        for k in range(281):
+            t = round(k * DT, 6)
+            x, y = (1.5, 2.3) if t < 2.0 else (1.0 + 0.25 * (t - 2.0), 1.0)
+            writer.write({"t": t, "robot": {"pose": [x, y, 0.0, 0.0], "twist": [0.25, 0.0, 0.0], "odom": [x, y]},
+                          "objects": [{"name": "h1", "pose": [0.0, 0.0, 0.85, 0.0]}], "contacts": []})
+    with RecordingWriter(stream_path(run, "mission")) as writer:
+        writer.write({"t": begin, "event": "BEGIN"})
+        writer.write({"t": 14.0, "event": "END"})
+    return run
+
+
+def test_a_run_folders_encounters_alone_are_measured_in_the_missions_window(tmp_path: Path) -> None:
+    """measure_encounters (the search's refinement) reads and cuts the run as measure does: the meeting before the
+    mission's BEGIN is out of the window."""
+    whole, cut = run_folder(tmp_path, 0.0), run_folder(tmp_path, 2.0)
+    met = (Encounter("h1", 0.0, 0.0),)
+    assert measure_encounters(whole) == measure(whole).encounters == met
+    assert measure(whole).metrics["encounter_margin_humans"] == 0.0
+    assert measure_encounters(cut) == measure(cut).encounters == ()
+    assert measure(cut).metrics["encounter_margin_humans"] is None
+

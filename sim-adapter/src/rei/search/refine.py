@@ -20,7 +20,7 @@ from typing import Any
 
 from optuna.distributions import BaseDistribution, FloatDistribution
 
-from rei.evaluation.metrics.compute import MetricsError, measure
+from rei.evaluation.metrics.compute import MetricsError, measure_encounters
 from rei.evaluation.metrics.encounter import Encounter
 from rei.search.spec import SearchSpec
 
@@ -43,9 +43,10 @@ def enabled(spec: SearchSpec) -> bool:
 
 
 def encounters(run_dir: Path, case_dir: Path) -> list[Encounter]:
-    """Every human's encounter in a finished run, nearest first; [] when it cannot be measured."""
+    """Every human's encounter in a finished run, nearest first; [] when it cannot be measured. Only the
+    encounters are measured again, on the search loop's thread: not the other metrics the worker measured."""
     try:
-        return sorted(measure(run_dir, case_dir).encounters, key=lambda e: e.margin)
+        return sorted(measure_encounters(run_dir, case_dir), key=lambda e: e.margin)
     except MetricsError:
         return []
 

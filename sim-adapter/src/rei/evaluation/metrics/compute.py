@@ -100,7 +100,58 @@ def compute_metrics(run_dir: Path, case_dir: Path | None = None) -> dict[str, An
 
 
 def measure(run_dir: Path, case_dir: Path | None = None) -> Measured:
-    """:func:`compute_metrics`, with notes on the state messages it had to leave out."""
+    """:func:`compute_metrics`, with notes on what it had to leave out."""
+    run = _read_run(run_dir, case_dir)
+    s, spec, robot_size = run.states, run.spec, run.robot_size
+    statics, static_gaps = _static_gaps(run.statics, s.pose, robot_size,
+                                        spec.close_threshold if spec is not None else 0.0)
+    moving_gaps = _gaps(s.pose, robot_size, _moving_boxes(s.moving, run.moving.boxes), run.moving.circle)
+    out: dict[str, Any] = dict.fromkeys(NAMES)
+    out.update(_goal_metrics(run.run_dir, run.case_dir, run.world, run.missions, s, run.t0, run.t1))
+    out["path_length"] = _path_length(s.pose)
+    out.update(_clearances("static", static_gaps))
+    out.update(_clearances("humans", moving_gaps[:, run.humans]))
+    met = _encounters(run)
+    out["encounter_margin_humans"] = min((e.margin for e in met), default=None)
+    out.update(_zones(spec, s, np.hstack((static_gaps, moving_gaps)), (*statics.names, *run.moving.names)))
+    out.update(_motion(s, run.t1 - run.t0, out["path_length"]))
+    return Measured({k: None if isinstance(v, float) and not math.isfinite(v) else v for k, v in out.items()},
+                    run.notes, met)
+
+
+def measure_encounters(run_dir: Path, case_dir: Path | None = None) -> tuple[Encounter, ...]:
+    """:func:`measure`'s encounters alone (the same streams, case and window), without the other metrics' gaps
+    and planner: what the search's refinement needs after each run. Raises MetricsError as measure does."""
+    return _encounters(_read_run(run_dir, case_dir))
+
+
+# -- reading ---------------------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True, slots=True)
+class _Run:
+    """A run folder read as every metric starts from it: its case, and its states in the mission's window."""
+
+    run_dir: Path
+    case_dir: Path
+    world: WorldSpec
+    spec: MonitorSpec | None  # None without a readable monitor.json
+    statics: _Obstacles
+    moving: _Obstacles
+    humans: np.ndarray  # (M,): which of ``moving`` are humans
+    states: _States  # those from the mission's BEGIN to its END
+    missions: list[dict[str, Any]] | None  # None for a recording without a mission
+    t0: float
+    t1: float
+    notes: tuple[str, ...]
+
+    @property
+    def robot_size(self) -> tuple[float, float]:
+        return self.world.robot.size[0], self.world.robot.size[1]
+
+
+def _read_run(run_dir: Path, case_dir: Path | None) -> _Run:
+    """Raises MetricsError without a case, a readable world.json or a state with a robot pose."""
     run_dir = Path(run_dir)
     case_dir = Path(case_dir) if case_dir is not None else case_of_run(run_dir)
     if case_dir is None:
@@ -128,26 +179,12 @@ def measure(run_dir: Path, case_dir: Path | None = None) -> Measured:
                 states.moving[window], [c for c, w in zip(states.contacts, window, strict=True) if w])
     notes = ((f"{stream_path(run_dir, 'state')}: {states.skipped} malformed state message(s) left out of the "
               f"metrics (the first: {states.first_skipped})"),) if states.skipped else ()
-    robot_size = (world.robot.size[0], world.robot.size[1])
     try:
         spec = read_monitor(case_dir / "monitor.json")
     except (ArtifactError, OSError):
         spec = None
-    statics, static_gaps = _static_gaps(statics, s.pose, robot_size, spec.close_threshold if spec is not None else 0.0)
-    moving_gaps = _gaps(s.pose, robot_size, _moving_boxes(s.moving, moving.boxes), moving.circle)
-    out: dict[str, Any] = dict.fromkeys(NAMES)
-    out.update(_goal_metrics(run_dir, case_dir, world, missions if recorded else None, s, t0, t1))
-    out["path_length"] = _path_length(s.pose)
-    out.update(_clearances("static", static_gaps))
-    out.update(_clearances("humans", moving_gaps[:, humans]))
-    met = _encounters(case_dir, moving, humans, s, robot_size, spec)
-    out["encounter_margin_humans"] = min((e.margin for e in met), default=None)
-    out.update(_zones(spec, s, np.hstack((static_gaps, moving_gaps)), (*statics.names, *moving.names)))
-    out.update(_motion(s, t1 - t0, out["path_length"]))
-    return Measured({k: None if isinstance(v, float) and not math.isfinite(v) else v for k, v in out.items()}, notes, met)
-
-
-# -- reading ---------------------------------------------------------------------------------------------------
+    return _Run(run_dir, case_dir, world, spec, statics, moving, humans, s, missions if recorded else None, t0, t1,
+                notes)
 
 
 def _obstacles(objects: Sequence[Any]) -> _Obstacles:
@@ -388,20 +425,20 @@ def _moving_boxes(places: np.ndarray, boxes: np.ndarray) -> np.ndarray:
     return out
 
 
-def _encounters(case_dir: Path, moving: _Obstacles, humans: np.ndarray, s: _States,
-                robot_size: tuple[float, float], spec: MonitorSpec | None) -> tuple[Encounter, ...]:
+def _encounters(run: _Run) -> tuple[Encounter, ...]:
     """rei.evaluation.metrics.encounter over the humans the recording published (none with ``--no-humans``)."""
-    published = [k for k in np.nonzero(humans)[0] if not np.isnan(s.moving[:, k, 0]).all()]
+    s, moving = run.states, run.moving
+    published = [k for k in np.nonzero(run.humans)[0] if not np.isnan(s.moving[:, k, 0]).all()]
     if not published:
         return ()
     try:
-        animation = read_animation(case_dir / "animation.json")
+        animation = read_animation(run.case_dir / "animation.json")
     except (ArtifactError, OSError):
         return ()
     footprints = footprints_of([moving.names[k] for k in published], moving.boxes[published],
                                moving.circle[published])
-    return tuple(encounters(animation, footprints, s.t, s.pose, robot_size,
-                            spec.collision_threshold if spec is not None else 0.0))
+    threshold = run.spec.collision_threshold if run.spec is not None else 0.0
+    return tuple(encounters(animation, footprints, s.t, s.pose, run.robot_size, threshold))
 
 
 def _clearances(which: str, gaps: np.ndarray) -> dict[str, float | None]:
