@@ -348,3 +348,19 @@ def test_a_run_folders_encounters_alone_are_measured_in_the_missions_window(tmp_
     assert measure_encounters(cut) == measure(cut).encounters == ()
     assert measure(cut).metrics["encounter_margin_humans"] is None
 
+
+@pytest.mark.parametrize("damage", ["missing", "not JSON"])
+def test_an_unreadable_animation_is_a_note_not_a_silent_empty_margin(tmp_path: Path, damage: str) -> None:
+    run = run_folder(tmp_path, 0.0)
+    animation = run / "case" / "animation.json"
+    if damage == "missing":
+        animation.unlink()
+    else:
+        animation.write_text("{", encoding="utf-8")
+    measured = measure(run)
+    assert measured.metrics["encounter_margin_humans"] is None and measured.encounters == ()
+    assert len(measured.notes) == 1 and measured.notes[0].startswith(str(animation))
+    assert "encounter_margin_humans has no value" in measured.notes[0]
+    assert ("missing" if damage == "missing" else "not valid JSON") in measured.notes[0]
+    assert measure_encounters(run) == ()
+

@@ -86,7 +86,8 @@ _Row = tuple[float, tuple[float, float, float], tuple[float, ...], tuple[float, 
 @dataclass(frozen=True, slots=True)
 class Measured:
     metrics: dict[str, Any]
-    #: What was left out of the measurement (malformed state messages), for the summary's problems.
+    #: What was left out of the measurement (malformed state messages, an unreadable animation.json), for the
+    #: summary's problems.
     notes: tuple[str, ...]
     #: Each human's encounter: how far off meeting the robot, and the shift of its schedule that meets it (the
     #: search's refinement, rei.search.refine).
@@ -111,18 +112,18 @@ def measure(run_dir: Path, case_dir: Path | None = None) -> Measured:
     out["path_length"] = _path_length(s.pose)
     out.update(_clearances("static", static_gaps))
     out.update(_clearances("humans", moving_gaps[:, run.humans]))
-    met = _encounters(run)
+    met, unread = _encounters(run)
     out["encounter_margin_humans"] = min((e.margin for e in met), default=None)
     out.update(_zones(spec, s, np.hstack((static_gaps, moving_gaps)), (*statics.names, *run.moving.names)))
     out.update(_motion(s, run.t1 - run.t0, out["path_length"]))
     return Measured({k: None if isinstance(v, float) and not math.isfinite(v) else v for k, v in out.items()},
-                    run.notes, met)
+                    run.notes + unread, met)
 
 
 def measure_encounters(run_dir: Path, case_dir: Path | None = None) -> tuple[Encounter, ...]:
     """:func:`measure`'s encounters alone (the same streams, case and window), without the other metrics' gaps
     and planner: what the search's refinement needs after each run. Raises MetricsError as measure does."""
-    return _encounters(_read_run(run_dir, case_dir))
+    return _encounters(_read_run(run_dir, case_dir))[0]
 
 
 # -- reading ---------------------------------------------------------------------------------------------------
@@ -425,20 +426,23 @@ def _moving_boxes(places: np.ndarray, boxes: np.ndarray) -> np.ndarray:
     return out
 
 
-def _encounters(run: _Run) -> tuple[Encounter, ...]:
-    """rei.evaluation.metrics.encounter over the humans the recording published (none with ``--no-humans``)."""
+def _encounters(run: _Run) -> tuple[tuple[Encounter, ...], tuple[str, ...]]:
+    """rei.evaluation.metrics.encounter over the humans the recording published (none with ``--no-humans``), and
+    a note when animation.json, their schedule, cannot be read."""
     s, moving = run.states, run.moving
     published = [k for k in np.nonzero(run.humans)[0] if not np.isnan(s.moving[:, k, 0]).all()]
     if not published:
-        return ()
+        return (), ()
+    path = run.case_dir / "animation.json"
     try:
-        animation = read_animation(run.case_dir / "animation.json")
-    except (ArtifactError, OSError):
-        return ()
+        animation = read_animation(path)
+    except (ArtifactError, OSError) as error:
+        why = str(error) if isinstance(error, ArtifactError) else f"{path}: {error.strerror or error}"
+        return (), (f"{why}; without the humans' schedules encounter_margin_humans has no value",)
     footprints = footprints_of([moving.names[k] for k in published], moving.boxes[published],
                                moving.circle[published])
     threshold = run.spec.collision_threshold if run.spec is not None else 0.0
-    return tuple(encounters(animation, footprints, s.t, s.pose, run.robot_size, threshold))
+    return tuple(encounters(animation, footprints, s.t, s.pose, run.robot_size, threshold)), ()
 
 
 def _clearances(which: str, gaps: np.ndarray) -> dict[str, float | None]:
