@@ -342,7 +342,7 @@ def test_a_run_folders_encounters_alone_are_measured_in_the_missions_window(tmp_
     """measure_encounters (the search's refinement) reads and cuts the run as measure does: the meeting before the
     mission's BEGIN is out of the window."""
     whole, cut = run_folder(tmp_path, 0.0), run_folder(tmp_path, 2.0)
-    met = (Encounter("h1", 0.0, 0.0),)
+    met = (Encounter("h1", 0.0),)
     assert measure_encounters(whole) == measure(whole).encounters == met
     assert measure(whole).metrics["encounter_margin_humans"] == 0.0
     assert measure_encounters(cut) == measure(cut).encounters == ()

@@ -21,7 +21,7 @@ PARAMS = {"a.start": 100.0, "a.speed": 1.0, "b.start": 50.0, "c.loop": True}
 
 
 def test_the_nearest_person_not_met_yet_is_moved_by_the_shift() -> None:
-    found = [Encounter("b", 3.0, -3.0), Encounter("a", 40.0, 40.0)]
+    found = [Encounter("b", -3.0), Encounter("a", 40.0)]
     params, chosen = refined(PARAMS, DISTRIBUTIONS, found, met=set())
     assert chosen.human == "b" and params == {**PARAMS, "b.start": 47.0}
     params, chosen = refined(PARAMS, DISTRIBUTIONS, found, met={"b"})
@@ -29,24 +29,24 @@ def test_the_nearest_person_not_met_yet_is_moved_by_the_shift() -> None:
 
 
 def test_when_everyone_was_met_the_nearest_moves() -> None:
-    found = [Encounter("a", 40.0, 40.0), Encounter("b", 3.0, -3.0)]
+    found = [Encounter("a", 40.0), Encounter("b", -3.0)]
     _, chosen = refined(PARAMS, DISTRIBUTIONS, found, met={"a", "b"})
     assert chosen.human == "b"
 
 
 def test_a_start_stays_in_its_range_and_a_step_that_cannot_move_is_skipped() -> None:
-    params, _ = refined(PARAMS, DISTRIBUTIONS, [Encounter("b", 80.0, -80.0)], met=set())
+    params, _ = refined(PARAMS, DISTRIBUTIONS, [Encounter("b", -80.0)], met=set())
     assert params["b.start"] == 0.0
     at_edge = {**PARAMS, "b.start": 0.0}
-    assert refined(at_edge, DISTRIBUTIONS, [Encounter("b", 80.0, -80.0)], met=set()) is None
+    assert refined(at_edge, DISTRIBUTIONS, [Encounter("b", -80.0)], met=set()) is None
     # the edge blocks b, so a is moved instead
-    _, chosen = refined(at_edge, DISTRIBUTIONS, [Encounter("b", 80.0, -80.0), Encounter("a", 90.0, 90.0)], set())
+    _, chosen = refined(at_edge, DISTRIBUTIONS, [Encounter("b", -80.0), Encounter("a", 90.0)], set())
     assert chosen.human == "a"
 
 
 def test_people_whose_start_is_not_searched_and_tiny_shifts_are_left_to_the_sampler() -> None:
-    assert refined(PARAMS, DISTRIBUTIONS, [Encounter("c", 5.0, 5.0)], met=set()) is None
-    assert refined(PARAMS, DISTRIBUTIONS, [Encounter("a", LEAST_SHIFT / 2, LEAST_SHIFT / 2)], met=set()) is None
+    assert refined(PARAMS, DISTRIBUTIONS, [Encounter("c", 5.0)], met=set()) is None
+    assert refined(PARAMS, DISTRIBUTIONS, [Encounter("a", LEAST_SHIFT / 2)], met=set()) is None
     assert refined(PARAMS, DISTRIBUTIONS, [], met=set()) is None
 
 
@@ -125,7 +125,7 @@ def _search(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, meeting_of: Callabl
 
     def encounters(run_dir: Path, case_dir: Path) -> list[Encounter]:
         start = starts[run_dir.name]
-        return [Encounter("walker", abs(start - meeting_of(start)), meeting_of(start) - start)]
+        return [Encounter("walker", meeting_of(start) - start)]
 
     monkeypatch.setattr(study, "encounters", encounters)
     s = study.Search(load_search_spec(tmp_path / "s.yaml"), tmp_path / "out", MeetingPool(lambda *_: []),

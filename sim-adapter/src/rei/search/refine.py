@@ -43,10 +43,10 @@ def enabled(spec: SearchSpec) -> bool:
 
 
 def encounters(run_dir: Path, case_dir: Path) -> list[Encounter]:
-    """Every human's encounter in a finished run, nearest first; [] when it cannot be measured. Only the
-    encounters are measured again, on the search loop's thread: not the other metrics the worker measured."""
+    """Every human's encounter in a finished run; [] when it cannot be measured. Only the encounters are measured
+    again, on the search loop's thread: not the other metrics the worker measured."""
     try:
-        return sorted(measure_encounters(run_dir, case_dir), key=lambda e: e.margin)
+        return list(measure_encounters(run_dir, case_dir))
     except MetricsError:
         return []
 

@@ -325,12 +325,12 @@ class Search:
             attrs["values"] = values
             self._raw.append(_own(values))
             signatures = {f.signature for f in found}
-            if self.spec.diversity and signatures and signatures <= self._known:
+            new = not signatures <= self._known
+            if self.spec.diversity and signatures and not new:
                 # only failures found before: told as the least interesting evaluation so far, so the sampler moves
                 # on to other failures instead of refining this one (search.json keeps the run's own values)
                 told = self._least_interesting()
                 attrs["repeat"] = True
-            new = not signatures <= self._known
             self._known |= signatures
             self._met |= {f.element for f in found}
             trial.set_constraint(VALIDITY, 0.0)

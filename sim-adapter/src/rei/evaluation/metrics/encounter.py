@@ -32,12 +32,15 @@ _BLOCK = 1024
 
 @dataclass(frozen=True, slots=True)
 class Encounter:
-    """How near a human came to meeting the robot: ``margin`` seconds off, and the ``shift`` (s, signed) of its
-    schedule that brings it to the conflict when the robot was there (``margin == abs(shift)``)."""
+    """How near a human came to meeting the robot: the ``shift`` (s, signed) of its schedule that brings it to the
+    conflict when the robot was there, and so ``margin`` seconds off."""
 
     human: str
-    margin: float
     shift: float
+
+    @property
+    def margin(self) -> float:
+        return abs(self.shift)
 
 
 def encounters(animation: AnimationSpec, footprints: dict[str, tuple[np.ndarray, bool]],
@@ -53,7 +56,7 @@ def encounters(animation: AnimationSpec, footprints: dict[str, tuple[np.ndarray,
         trajectory = Trajectory([p.t for p in o.points], [(p.x, p.y) for p in o.points], o.loop)
         shift = _shift(trajectory, *footprints[o.name], t, pose, robot_size, threshold)
         if shift is not None:
-            found.append(Encounter(o.name, abs(shift), shift))
+            found.append(Encounter(o.name, shift))
     return found
 
 
