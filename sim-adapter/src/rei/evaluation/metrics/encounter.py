@@ -18,7 +18,6 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.spatial import cKDTree
 
 from rei.artifacts import AnimationSpec, Category
 from rei.geometry import footprint_gaps
@@ -87,11 +86,11 @@ def _shift(trajectory: Trajectory, box: np.ndarray, circle: bool, t: np.ndarray,
         return 0.0
     # Only schedule places within reach of some robot position can conflict: both footprints' circumradii.
     reach = math.hypot(*robot_size) / 2 + math.hypot(box[3], box[4]) / 2 + max(threshold, 0.0)
-    schedule = cKDTree(places)
+    schedule = _Grid(places, reach)
     best: float | None = None
     for a in range(0, len(t), _BLOCK):
-        pairs = cKDTree(pose[a:a + _BLOCK, :2]).sparse_distance_matrix(schedule, reach, output_type="ndarray")
-        k, j = pairs["i"] + a, pairs["j"]
+        k, j = schedule.within(pose[a:a + _BLOCK, :2])
+        k += a
         # a place stands from first[j] to last[j]: the nearest of those times to t_k
         shifts = t[k] - np.clip(t[k], first[j], last[j])
         if best is not None:
@@ -122,3 +121,43 @@ def _schedule(trajectory: Trajectory, t: np.ndarray) -> tuple[np.ndarray, np.nda
     starts = np.flatnonzero(np.concatenate(([True], (places[1:] != places[:-1]).any(axis=1))))
     ends = np.append(starts[1:], len(taus)) - 1
     return places[starts], taus[starts], taus[ends]
+
+
+class _Grid:
+    """The points within ``reach`` of query points, by a uniform grid of cells ``reach`` wide: each query looks in
+    its cell and the eight around it. A few lines of NumPy instead of a k-d tree, so the metrics do not import
+    SciPy's spatial package (half a second on the critical path of every run, issue #37)."""
+
+    __slots__ = ("_cells", "_order", "_points", "_reach")
+
+    def __init__(self, points: np.ndarray, reach: float) -> None:
+        self._points = points
+        self._reach = reach
+        cells = self._cell(points)
+        self._order = np.lexsort((cells[:, 1], cells[:, 0]))
+        self._cells = cells[self._order]
+
+    def _cell(self, xy: np.ndarray) -> np.ndarray:
+        return np.floor(xy / self._reach).astype(np.int64)
+
+    def within(self, queries: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Pairs ``(i, j)``, sorted, of query ``i`` and point ``j`` at most ``reach`` apart."""
+        cells = self._cell(queries)
+        keys = self._cells[:, 0] * (1 << 32) + self._cells[:, 1]  # sorted: rows ordered by (cx, cy)
+        found_i, found_j = [], []
+        for dx in (-1, 0, 1):
+            for dy in (-1, 0, 1):
+                wanted = (cells[:, 0] + dx) * (1 << 32) + (cells[:, 1] + dy)
+                lo = np.searchsorted(keys, wanted, side="left")
+                hi = np.searchsorted(keys, wanted, side="right")
+                counts = hi - lo
+                i = np.repeat(np.arange(len(queries)), counts)
+                # each query's run of sorted rows lo..hi-1, laid end to end
+                offsets = np.arange(counts.sum()) - np.repeat(np.cumsum(counts) - counts, counts)
+                found_i.append(i)
+                found_j.append(self._order[np.repeat(lo, counts) + offsets])
+        i, j = np.concatenate(found_i), np.concatenate(found_j)
+        near = np.hypot(*(queries[i] - self._points[j]).T) <= self._reach
+        i, j = i[near], j[near]
+        order = np.lexsort((j, i))
+        return i[order], j[order]
