@@ -5,12 +5,19 @@ it can say ``FILE:LINE:COLUMN``, as ``rei validate`` reports a test case's.
 PyYAML's ``compose`` keeps each node's start mark; these functions read nodes and raise ``LocatedError`` (the
 position and the message) for the caller to turn into its own error type with its file (rei.search.spec's
 ``SpecError``, rei.compare.thresholds' ``ThresholdsError``, rei.maps.occupancy's ``MapError``).
+
+A file is checked completely, as ``rei validate`` checks a test case: ``Problems`` is the error type of a file's
+mistakes, one or several, each a message ``FILE:LINE:COLUMN: ...`` in the order of their positions; a ``Collector``
+gathers them while the checks go on, so one mistake does not hide the next.
 """
 
 from __future__ import annotations
 
+import contextlib
 import math
-from typing import Any
+import re
+from collections.abc import Iterable, Iterator
+from typing import Any, Self
 
 import yaml
 
@@ -29,6 +36,74 @@ class LocatedError(ValueError):
     def at(self, file: str) -> str:
         """``FILE:LINE:COLUMN: message`` (``FILE: message`` without a position)."""
         return f"{file}: {self.message}" if self.line is None else f"{file}:{self.line}:{self.column}: {self.message}"
+
+
+class Problems(ValueError):
+    """Every mistake found in a file, one message each (``FILE:LINE:COLUMN: message``, or ``FILE: message`` where no
+    position is known), in the order of their positions: ``problems``; ``str()`` gives them one per line. Raised
+    with one message as any error (``Problems(message)``), with several by ``Problems.of(messages)``."""
+
+    def __init__(self, *args: object) -> None:
+        super().__init__(*args)
+        self.problems: tuple[str, ...] = (str(args[0]),) if args else ()
+
+    @classmethod
+    def of(cls, problems: Iterable[str]) -> Self:
+        """The error of ``problems``, in the order of their positions, each once."""
+        ordered = in_order(problems)
+        error = cls("\n".join(ordered))
+        error.problems = tuple(ordered)
+        return error
+
+    def __str__(self) -> str:
+        return "\n".join(self.problems)
+
+
+#: The position a message starts with: ``FILE:LINE:COLUMN`` (the file may hold a colon, not ': ', which ends it).
+_POSITION = re.compile(r"^(?P<file>(?:[^:\n]|:(?! ))*?):(?P<line>\d+):(?P<column>\d+)(?=:|$)")
+
+
+def in_order(problems: Iterable[str]) -> list[str]:
+    """``problems`` each once, ordered by where they are: by file (in the order the files first come), then line
+    and column; those without a position (about a whole file, or read without positions) first, as they came."""
+    unique = list(dict.fromkeys(problems))
+    files: dict[str, int] = {}
+    keys = []
+    for problem in unique:
+        match = _POSITION.match(problem)
+        if match is None:
+            keys.append((-1, 0, 0))
+            continue
+        file = files.setdefault(match["file"], len(files))
+        keys.append((file, int(match["line"]), int(match["column"])))
+    order = sorted(range(len(unique)), key=lambda i: keys[i])
+    return [unique[i] for i in order]
+
+
+class Collector:
+    """The mistakes of one file, gathered while its checks go on: a check runs in ``with collector.check():``, and
+    a ``Problems`` it raises is kept instead of stopping the others; the rest of that block (the checks that
+    depend on the failed one) is skipped. ``raise_if_any`` then raises them all as ``error_type``."""
+
+    def __init__(self) -> None:
+        self.problems: list[str] = []
+
+    @contextlib.contextmanager
+    def check(self) -> Iterator[None]:
+        try:
+            yield
+        except Problems as error:
+            self.problems.extend(error.problems)
+
+    def add(self, problem: str) -> None:
+        self.problems.append(problem)
+
+    def __bool__(self) -> bool:
+        return bool(self.problems)
+
+    def raise_if_any(self, error_type: type[Problems]) -> None:
+        if self.problems:
+            raise error_type.of(self.problems)
 
 
 def compose(text: str, not_yaml: str = "not YAML") -> yaml.Node | None:
@@ -66,15 +141,19 @@ def scalar(node: yaml.Node) -> object:
     return value(node) if isinstance(node, yaml.ScalarNode) else None
 
 
-def mapping(node: yaml.Node, what: str) -> Entries:
-    """A mapping node's entries by key text; not a mapping, or a key given twice, is a ``LocatedError``."""
+def mapping(node: yaml.Node, what: str, twice: list[LocatedError] | None = None) -> Entries:
+    """A mapping node's entries by key text; not a mapping, or a key given twice, is a ``LocatedError`` (with
+    ``twice``, a key given twice is added to it instead and its first entry kept)."""
     if not isinstance(node, yaml.MappingNode):
         raise error(node, f"{what} must be a mapping")
     entries: Entries = {}
     for key, item in node.value:
         name = str(scalar(key))
         if name in entries:
-            raise error(key, f"'{name}' is given twice")
+            if twice is None:
+                raise error(key, f"'{name}' is given twice")
+            twice.append(error(key, f"'{name}' is given twice"))
+            continue
         entries[name] = (key, item)
     return entries
 

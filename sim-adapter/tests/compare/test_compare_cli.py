@@ -82,3 +82,15 @@ def test_compare_stops_on_a_thresholds_key_that_is_no_text(text: str, where: str
                  str(tmp_path / "t.yaml")]) == 2
     assert f"t.yaml:{where}: unknown" in capsys.readouterr().err
     assert not (tmp_path / "cmp").exists()
+
+
+def test_compare_prints_every_mistake_of_the_thresholds_on_its_own_line(tmp_path: Path,
+                                                                         capsys: pytest.CaptureFixture[str]) -> None:
+    a = _side(tmp_path / "a", {"r1": "COMPLETED"})
+    (tmp_path / "t.yaml").write_text("metrics:\n  time: {p: 0}\n  spl: {worse_by: x}\n")
+    assert main(["compare", str(a), str(a), "-o", str(tmp_path / "cmp"), "--thresholds",
+                 str(tmp_path / "t.yaml")]) == 2
+    assert capsys.readouterr().err.splitlines() == [
+        f"rei: error: {tmp_path / 't.yaml'}:2:13: time: 'p' must be a significance level in (0, 1], got 0",
+        f"rei: error: {tmp_path / 't.yaml'}:3:19: spl: 'worse_by' must be a number, got 'x'"]
+    assert not (tmp_path / "cmp").exists()

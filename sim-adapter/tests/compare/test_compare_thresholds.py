@@ -72,3 +72,16 @@ def test_files_and_defaults(tmp_path: Path) -> None:
     assert load_thresholds(path).source == str(path)
     defaults = {t.metric: t for t in default_thresholds().items}
     assert defaults["clearance_static_min"].worse_by == 0.05 and defaults["success"].p == 0.05
+
+
+def test_every_mistake_is_reported_at_once_in_the_order_of_the_file() -> None:
+    # a mistake does not hide the next: another metric's, or another key's of the same metric
+    text = "metrics:\n  sucess: {p: 0.05}\n  time: {worse_by: -1, p: 2}\n  spl: {p: 0.1}\nbaseline: a\n"
+    with pytest.raises(ThresholdsError) as error:
+        parse_thresholds(text, "t.yaml")
+    problems = str(error.value).splitlines()
+    assert len(problems) == 4, problems
+    assert problems[0].startswith("t.yaml:2:3: unknown metric 'sucess'; known: success, time")
+    assert problems[1:] == ["t.yaml:3:20: time: 'worse_by' must be >= 0 (a size, in the metric's unit), got -1",
+                            "t.yaml:3:27: time: 'p' must be a significance level in (0, 1], got 2",
+                            "t.yaml:5:1: unknown key 'baseline'; expected 'metrics'"]

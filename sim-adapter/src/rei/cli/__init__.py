@@ -49,8 +49,8 @@ def _command_module(argv: Sequence[str]) -> str | None:
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of the console script; returns the process exit code.
 
-    User errors (a `CommandError`, a `ToolchainError`) become one `rei: error: ...` line on stderr and a
-    non-zero exit code; anything else is a bug and keeps its traceback.
+    User errors (a `CommandError`, a `ToolchainError`) become a `rei: error: ...` line on stderr (one per problem
+    of the input) and a non-zero exit code; anything else is a bug and keeps its traceback.
     """
     argv = sys.argv[1:] if argv is None else list(argv)
     parser = build_parser(_command_module(argv))
@@ -58,7 +58,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         return int(args.handler(args))
     except CommandError as error:
-        print(f"rei: error: {error}", file=sys.stderr)
+        for problem in error.problems:
+            print(f"rei: error: {problem}", file=sys.stderr)
         return error.exit_code
     except ToolchainError as error:
         print(f"rei: error: {error}", file=sys.stderr)

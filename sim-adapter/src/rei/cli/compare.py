@@ -45,7 +45,7 @@ def load_thresholds_option(path: Path | None) -> Any:
     try:
         return load_thresholds(path)
     except ThresholdsError as error:
-        raise CommandError(str(error)) from None
+        raise CommandError(error.problems) from None
 
 
 def compare_and_report(baseline: Path, candidate: Path, out: Path, thresholds: Any) -> int:

@@ -6,6 +6,8 @@ The codes follow the Java CLI's so a script sees the same meaning whichever side
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 EXIT_OK = 0
 #: The input was read but is wrong (validation or layout errors, a failed check).
 EXIT_INVALID = 1
@@ -18,8 +20,11 @@ EXIT_TOOLCHAIN = 3
 
 
 class CommandError(Exception):
-    """A user error: printed as one line without a traceback, then the process exits with `exit_code`."""
+    """A user error: printed without a traceback, then the process exits with `exit_code`. `message` is one
+    problem, or all the problems of an input (a spec's mistakes, rei.located_yaml.Problems): each is printed as
+    its own `rei: error: ...` line, as `rei validate` prints one line per problem of a test case."""
 
-    def __init__(self, message: str, exit_code: int = EXIT_USAGE) -> None:
-        super().__init__(message)
+    def __init__(self, message: str | Sequence[str], exit_code: int = EXIT_USAGE) -> None:
+        self.problems: tuple[str, ...] = (message,) if isinstance(message, str) else tuple(message)
+        super().__init__("\n".join(self.problems))
         self.exit_code = exit_code

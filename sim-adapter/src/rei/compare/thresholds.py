@@ -12,7 +12,7 @@ Format (docs/metrics.md, "Comparing two versions", its regression verdicts)::
 A metric is regressed when its mean paired difference (candidate - baseline) is worse, in the metric's better
 direction, by more than ``worse_by`` (default 0: any worsening) and, when ``p`` is given, the paired test's p is
 below it. ``better`` is needed only for the metrics that have no direction of their own (the speeds). Every
-mistake is reported with the file, line and column, as ``rei validate`` reports a test case's.
+mistake is reported at once, each with the file, line and column, as ``rei validate`` reports a test case's.
 """
 
 from __future__ import annotations
@@ -28,8 +28,8 @@ from rei.evaluation.metrics import BY_NAME, Better
 KEYS = ("worse_by", "p", "better")
 
 
-class ThresholdsError(ValueError):
-    """A thresholds file that can not be used; the message starts with ``FILE:LINE:COLUMN:``."""
+class ThresholdsError(located_yaml.Problems):
+    """A thresholds file that can not be used: each of its mistakes starts with ``FILE:LINE:COLUMN:``."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -74,66 +74,83 @@ def load_thresholds(path: Path) -> Thresholds:
 
 
 def parse_thresholds(text: str, source: str = "thresholds") -> Thresholds:
+    """The thresholds of ``text``; every mistake in it at once (a ``ThresholdsError``), in the order of the file."""
     try:
         root = located_yaml.compose(text)
     except located_yaml.LocatedError as error:
         raise ThresholdsError(error.at(source)) from None
     if root is None:
         raise ThresholdsError(f"{source}:1:1: empty: expected a mapping with 'metrics'")
-    top = _mapping(root, source, "the file")
+    problems = located_yaml.Collector()
+    top = _mapping(root, source, "the file", problems)
     for key, (key_node, _) in top.items():
         if key != "metrics":
-            raise _error(source, key_node, f"unknown key {key!r}; expected 'metrics'")
-    if "metrics" not in top:
-        raise _error(source, root, "'metrics' is required: a mapping of metric names to thresholds")
-    metrics_node = top["metrics"][1]
-    metrics = _mapping(metrics_node, source, "'metrics'")
-    if not metrics:
-        raise _error(source, metrics_node, "'metrics' is empty: name at least one metric")
+            problems.add(_message(source, key_node, f"unknown key {key!r}; expected 'metrics'"))
     items = []
-    for name, (key_node, node) in metrics.items():
-        if name not in BY_NAME:
-            raise _error(source, key_node, f"unknown metric {name!r}; known: {', '.join(BY_NAME)}")
-        items.append(_threshold(name, node, source))
+    if "metrics" not in top:
+        problems.add(_message(source, root, "'metrics' is required: a mapping of metric names to thresholds"))
+    with problems.check():
+        metrics_node = top["metrics"][1] if "metrics" in top else None
+        metrics = _mapping(metrics_node, source, "'metrics'", problems) if metrics_node is not None else {}
+        if metrics_node is not None and not metrics:
+            raise _error(source, metrics_node, "'metrics' is empty: name at least one metric")
+        for name, (key_node, node) in metrics.items():
+            with problems.check():
+                if name not in BY_NAME:
+                    raise _error(source, key_node, f"unknown metric {name!r}; known: {', '.join(BY_NAME)}")
+                items.append(_threshold(name, node, source))
+    problems.raise_if_any(ThresholdsError)
     return Thresholds(tuple(items), source)
 
 
 def _threshold(name: str, node: yaml.Node, source: str) -> Threshold:
-    entries = _mapping(node, source, f"metric {name!r}")
-    for key, (key_node, _) in entries.items():
-        if key not in KEYS:
-            raise _error(source, key_node, f"{name}: unknown key {key!r}; expected one of {', '.join(KEYS)}")
+    """The threshold of metric ``name``; each of its keys checked (a mistake does not hide another's)."""
+    problems = located_yaml.Collector()
+    entries = _mapping(node, source, f"metric {name!r}", problems)
+    unknown = [key for key in entries if key not in KEYS]
+    for key in unknown:
+        problems.add(_message(source, entries[key][0], f"{name}: unknown key {key!r}; expected one of "
+                                                       f"{', '.join(KEYS)}"))
     fields = {key: value for key, (_, value) in entries.items()}
-    if "worse_by" not in fields and "p" not in fields:
-        raise _error(source, node, f"{name}: give 'worse_by' (a size), 'p' (a significance level) or both")
+    if "worse_by" not in fields and "p" not in fields and not unknown:  # a mistyped key may be the one meant
+        problems.add(_message(source, node, f"{name}: give 'worse_by' (a size), 'p' (a significance level) or both"))
     better = BY_NAME[name].better
-    if "better" in fields:
-        value = _scalar(fields["better"])
-        if value not in ("higher", "lower"):
-            raise _error(source, fields["better"], f"{name}: 'better' must be higher or lower, got {value!r}")
-        better = Better(value)
-    elif better == Better.NEITHER:
-        raise _error(source, node, f"{name} has no better direction of its own: say 'better: higher' or "
-                                   "'better: lower'")
+    with problems.check():
+        if "better" in fields:
+            value = _scalar(fields["better"])
+            if value not in ("higher", "lower"):
+                raise _error(source, fields["better"], f"{name}: 'better' must be higher or lower, got {value!r}")
+            better = Better(value)
+        elif better == Better.NEITHER:
+            raise _error(source, node, f"{name} has no better direction of its own: say 'better: higher' or "
+                                       "'better: lower'")
     worse_by = 0.0
-    if "worse_by" in fields:
-        worse_by = _number(fields["worse_by"], source, f"{name}: 'worse_by'")
-        if worse_by < 0:
-            raise _error(source, fields["worse_by"], f"{name}: 'worse_by' must be >= 0 (a size, in the "
-                         f"metric's unit), got {worse_by:g}")
+    with problems.check():
+        if "worse_by" in fields:
+            worse_by = _number(fields["worse_by"], source, f"{name}: 'worse_by'")
+            if worse_by < 0:
+                raise _error(source, fields["worse_by"], f"{name}: 'worse_by' must be >= 0 (a size, in the "
+                             f"metric's unit), got {worse_by:g}")
     p = None
-    if "p" in fields:
-        p = _number(fields["p"], source, f"{name}: 'p'")
-        if not 0 < p <= 1:
-            raise _error(source, fields["p"], f"{name}: 'p' must be a significance level in (0, 1], got {p:g}")
+    with problems.check():
+        if "p" in fields:
+            p = _number(fields["p"], source, f"{name}: 'p'")
+            if not 0 < p <= 1:
+                raise _error(source, fields["p"], f"{name}: 'p' must be a significance level in (0, 1], got {p:g}")
+    problems.raise_if_any(ThresholdsError)
     return Threshold(name, better, worse_by, p)
 
 
-def _mapping(node: yaml.Node, source: str, what: str) -> located_yaml.Entries:
+def _mapping(node: yaml.Node, source: str, what: str, problems: located_yaml.Collector) -> located_yaml.Entries:
+    """The entries of a mapping; a key given twice is one of ``problems`` (its first entry is read)."""
+    twice: list[located_yaml.LocatedError] = []
     try:
-        return located_yaml.mapping(node, what)
+        entries = located_yaml.mapping(node, what, twice)
     except located_yaml.LocatedError as error:
         raise ThresholdsError(error.at(source)) from None
+    for error in twice:
+        problems.add(error.at(source))
+    return entries
 
 
 def _scalar(node: yaml.Node) -> object:
@@ -147,5 +164,9 @@ def _number(node: yaml.Node, source: str, what: str) -> float:
     return value
 
 
+def _message(source: str, node: yaml.Node, message: str) -> str:
+    return located_yaml.error(node, message).at(source)
+
+
 def _error(source: str, node: yaml.Node, message: str) -> ThresholdsError:
-    return ThresholdsError(located_yaml.error(node, message).at(source))
+    return ThresholdsError(_message(source, node, message))
