@@ -16,11 +16,12 @@ from __future__ import annotations
 import contextlib
 import math
 import re
-from collections.abc import Iterable, Iterator
-from typing import Any, Self
+from collections.abc import Callable, Iterable, Iterator
+from typing import Any, Self, TypeVar
 
 import yaml
 
+T = TypeVar("T")
 #: A mapping's entries by key text: (key node, value node). The key node places a message about the key itself,
 #: whatever YAML made of it (``1:`` is a number, ``[a]:`` no scalar at all).
 Entries = dict[str, tuple[yaml.Node, yaml.Node]]
@@ -95,8 +96,14 @@ class Collector:
         except Problems as error:
             self.problems.extend(error.problems)
 
-    def add(self, problem: str) -> None:
-        self.problems.append(problem)
+    def read(self, read: Callable[[], T], fallback: T) -> T:
+        """``read()``; when it raises a ``Problems`` (kept), ``fallback``, for the checks that go on."""
+        with self.check():
+            return read()
+        return fallback
+
+    def add(self, *problems: str) -> None:
+        self.problems.extend(problems)
 
     def __bool__(self) -> bool:
         return bool(self.problems)

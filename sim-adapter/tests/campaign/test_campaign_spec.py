@@ -158,3 +158,43 @@ def test_good_controller_arguments_pass(tmp_path: Path) -> None:
         "name": "b", "controller": "nav:max_linear=0.2,v_samples=5"}]), base=EXAMPLES)
     assert [v.controller for v in parsed.groups[0].variants] == ["nav:inflation_margin=0",
                                                                  "nav:max_linear=0.2,v_samples=5"]
+
+
+TWO_GROUPS_WRONG = """\
+mode: fast
+groups:
+  - name: g
+    cases: [CASE]
+    repetitions: 0
+  - name: h
+    rooms: {size: tiny}
+    variants: [{name: v, humans: maybe}]
+"""
+
+
+def test_every_mistake_is_reported_at_once_each_at_its_line_and_column(tmp_path: Path) -> None:
+    from rei.campaign import load_spec
+
+    (tmp_path / "c.yaml").write_text(TWO_GROUPS_WRONG.replace("CASE", str(EXAMPLES / "simple_navigation.rei")))
+    with pytest.raises(SpecError) as raised:
+        load_spec(tmp_path / "c.yaml")
+    file = tmp_path / "c.yaml"
+    assert str(raised.value).splitlines() == [
+        f"{file}:1:7: 'mode' must be one of replay, pipeline, got 'fast'",
+        f"{file}:5:18: groups[0]: 'repetitions' must be >= 1, got 0",
+        f"{file}:7:19: groups[1]: rooms: size must be one of small, medium, large, got 'tiny'",
+        f"{file}:8:34: groups[1]: variants[0]: 'humans' must be true or false, got 'maybe'"]
+
+
+def test_the_command_prints_every_mistake_on_its_own_line(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    from rei.cli import main
+
+    spec_file = tmp_path / "c.yaml"
+    spec_file.write_text("timeout: 0\ngroups:\n  - {name: g/x, cases: [nope.rei]}\n")
+    assert main(["campaign", str(spec_file), "-o", str(tmp_path / "out")]) == 2
+    assert capsys.readouterr().err.splitlines() == [
+        f"rei: error: {spec_file}:1:10: 'timeout' must be positive, got 0",
+        f"rei: error: {spec_file}:3:12: groups[0]: 'name' 'g/x': use letters, digits, '_' and '-' (it names folders)",
+        (f"rei: error: {spec_file}:3:25: groups[0]: {tmp_path / 'nope.rei'} is neither a .rei file nor a "
+         "generated case folder")]
+    assert not (tmp_path / "out").exists()

@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: EPL-2.0
 """The campaign spec (``rei campaign SPEC.yaml``): which test cases, in which variants, how often.
 
-Checked completely at the door, with the key path of every mistake, so a typo does not surface as an error in
-run 17 of 23 an hour later. Format (docs/campaigns.md)::
+Checked completely at the door, every mistake at once, each with its line and column and its key path, so a typo
+does not surface as an error in run 17 of 23 an hour later. Format (docs/campaigns.md)::
 
     name: thesis-7.4            # optional, default: the file's stem
     seed: 1                     # run seed = seed + repetition (default 0)
@@ -45,8 +45,9 @@ MODES = ("replay", "pipeline")
 _NAME = re.compile(r"[A-Za-z0-9][A-Za-z0-9_-]*")
 
 
-class SpecError(ValueError):
-    """A campaign spec that can not be run; the message names the file and the key."""
+class SpecError(located_yaml.Problems):
+    """A spec that can not be run: each of its mistakes names the file, the line and column where known, and the
+    key."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -143,39 +144,50 @@ def load_spec(path: Path) -> Spec:
 def parse_spec(data: Any, *, base: Path, where: str = "spec", default_name: str = "campaign",
                node: yaml.Node | None = None) -> Spec:
     """A checked ``Spec`` from parsed YAML; relative case paths are resolved against ``base``. ``node``: the same
-    document composed (rei.located_yaml), so that a mistake in a value can be placed at its line and column."""
+    document composed (rei.located_yaml), so that a mistake can be placed at its line and column. Every mistake
+    is reported at once (a ``SpecError`` of them all, in the order of the file); a check that depends on a failed
+    one is skipped."""
     top = _Reader(data, where, node)
-    top.only("name", "seed", "repetitions", "timeout", "mode", "controller", "sut", "report", "variants", "groups",
-             "patterns", "utilities")
-    name = top.str("name", default_name)
-    seed = top.int("seed", 0, minimum=0)
-    repetitions = top.int("repetitions", 1, minimum=1)
-    timeout = top.number("timeout", 600.0)
-    mode = top.choice("mode", MODES, "replay")
-    controller = top.controller("controller", "nav")
-    report = top.bool("report", False)
+    problems = located_yaml.Collector()
+    with problems.check():
+        top.only("name", "seed", "repetitions", "timeout", "mode", "controller", "sut", "report", "variants",
+                 "groups", "patterns", "utilities")
+    name = problems.read(lambda: top.str("name", default_name), default_name)
+    seed = problems.read(lambda: top.int("seed", 0, minimum=0), 0)
+    repetitions = problems.read(lambda: top.int("repetitions", 1, minimum=1), 1)
+    timeout = problems.read(lambda: top.number("timeout", 600.0), 600.0)
+    mode = problems.read(lambda: top.choice("mode", MODES, "replay"), "replay")
+    controller = problems.read(lambda: top.controller("controller", "nav"), "nav")
+    report = problems.read(lambda: top.bool("report", False), False)
     if top.get("controller") is not None and top.get("sut") is not None:
-        raise SpecError(f"{where}: give either 'controller' (in-process) or 'sut' (external), not both")
-    sut = _sut(top, base)
-    variants = _variants(top, "variants", controller, (Variant("base", controller=controller, sut=sut),), base, sut)
+        problems.add(f"{top.key_at('sut')}: give either 'controller' (in-process) or 'sut' (external), not both")
+    sut = problems.read(lambda: _sut(top, base), None)
+    default = (Variant("base", controller=controller, sut=sut),)
+    variants = problems.read(lambda: _variants(top, "variants", controller, default, base, sut), default)
     groups_raw = top.get("groups")
-    if not isinstance(groups_raw, list) or not groups_raw:
-        raise SpecError(f"{where}: 'groups' must be a non-empty list")
     groups = []
-    for i, raw in enumerate(groups_raw):
-        group = _Reader(raw, f"{where}: groups[{i}]", _item(top.node_of("groups"), i), where)
-        groups.append(_group(group, base, controller, sut, variants, repetitions))
+    if not isinstance(groups_raw, list) or not groups_raw:
+        problems.add(f"{top.at('groups')}: 'groups' must be a non-empty list")
+    else:
+        for i, raw in enumerate(groups_raw):
+            with problems.check():
+                group = _Reader(raw, f"{where}: groups[{i}]", _item(top.node_of("groups"), i), where)
+                groups.append(_group(group, base, controller, sut, variants, repetitions))
     names = [g.name for g in groups]
     duplicate = next((n for n in names if names.count(n) > 1), None)
     if duplicate:
-        raise SpecError(f"{where}: two groups are named {duplicate!r}")
-    patterns = _path(top, "patterns", base, "a folder of .vepl files")
-    utilities = _path(top, "utilities", base, "a YAML file 'SIGNAL: utility'")
-    try:
-        check_user_patterns(patterns, utilities)
-    except SpecError as error:
-        key = "patterns" if error.args[1:] == ("patterns",) else "utilities"
-        raise SpecError(f"{top.at(key)}: {error.args[0]}") from None
+        problems.add(f"{top.at('groups')}: two groups are named {duplicate!r}")
+    paths = located_yaml.Collector()
+    patterns = paths.read(lambda: _path(top, "patterns", base, "a folder of .vepl files"), None)
+    utilities = paths.read(lambda: _path(top, "utilities", base, "a YAML file 'SIGNAL: utility'"), None)
+    if not paths:  # the patterns' check needs both paths
+        try:
+            check_user_patterns(patterns, utilities)
+        except SpecError as error:
+            key = "patterns" if error.args[1:] == ("patterns",) else "utilities"
+            paths.add(f"{top.at(key)}: {error.args[0]}")
+    problems.add(*paths.problems)
+    problems.raise_if_any(SpecError)
     return Spec(name, seed, timeout, mode, report, tuple(groups), patterns=patterns, utilities=utilities)
 
 
@@ -231,56 +243,79 @@ def _compiled(folder: Path, stamp: tuple[tuple[str, int, int], ...]) -> tuple[tu
 
 def _group(r: _Reader, base: Path, controller: str, sut: ExternalSut | None, variants: tuple[Variant, ...],
            repetitions: int) -> Group:
-    r.only("name", "cases", "rooms", "variants", "repetitions")
-    name = r.name("name", None)
+    problems = located_yaml.Collector()
+    with problems.check():
+        r.only("name", "cases", "rooms", "variants", "repetitions")
+    name = problems.read(lambda: r.name("name", None), "")
     cases_raw, rooms_raw = r.get("cases"), r.get("rooms")
-    if (cases_raw is None) == (rooms_raw is None):
-        raise SpecError(f"{r.where}: give exactly one of 'cases' (test case files) and 'rooms' (generator settings)")
     cases: tuple[Path, ...] = ()
     rooms = None
-    if cases_raw is not None:
-        if not isinstance(cases_raw, list) or not cases_raw or not all(isinstance(c, str) for c in cases_raw):
-            raise SpecError(f"{r.where}: 'cases' must be a non-empty list of paths")
-        cases = tuple((base / c).resolve() for c in cases_raw)
-        for case in cases:
-            if not (case.is_file() and case.suffix == ".rei") and not (case / "world.json").is_file():
-                raise SpecError(f"{r.where}: {case} is neither a .rei file nor a generated case folder")
-        stems = [_case_stem(c) for c in cases]
-        if len(set(stems)) != len(stems):
-            raise SpecError(f"{r.where}: two cases have the same name; give each file its own name")
+    if (cases_raw is None) == (rooms_raw is None):
+        problems.add(f"{r.here()}: give exactly one of 'cases' (test case files) and 'rooms' (generator settings)")
+    elif cases_raw is not None:
+        cases = problems.read(lambda: _cases(r, cases_raw, base), ())
     else:
-        rooms = _rooms(_Reader(rooms_raw, f"{r.where}: rooms"), base)
-    return Group(name, cases, rooms, _variants(r, "variants", controller, variants, base, sut),
-                 r.int("repetitions", repetitions, minimum=1))
+        rooms = problems.read(lambda: _rooms(_Reader(rooms_raw, f"{r.where}: rooms", r.node_of("rooms"), r.file),
+                                             base), None)
+    own = problems.read(lambda: _variants(r, "variants", controller, variants, base, sut), variants)
+    repeated = problems.read(lambda: r.int("repetitions", repetitions, minimum=1), repetitions)
+    problems.raise_if_any(SpecError)
+    return Group(name, cases, rooms, own, repeated)
+
+
+def _cases(r: _Reader, raw: Any, base: Path) -> tuple[Path, ...]:
+    """A group's ``cases``: .rei files or generated case folders, relative to ``base``, each a name of its own."""
+    if not isinstance(raw, list) or not raw or not all(isinstance(c, str) for c in raw):
+        raise SpecError(f"{r.at('cases')}: 'cases' must be a non-empty list of paths")
+    cases = tuple((base / c).resolve() for c in raw)
+    problems = located_yaml.Collector()
+    for i, case in enumerate(cases):
+        if not (case.is_file() and case.suffix == ".rei") and not (case / "world.json").is_file():
+            problems.add(f"{r.item_at('cases', i)}: {case} is neither a .rei file nor a generated case folder")
+    stems = [_case_stem(c) for c in cases]
+    if len(set(stems)) != len(stems):
+        problems.add(f"{r.at('cases')}: two cases have the same name; give each file its own name")
+    problems.raise_if_any(SpecError)
+    return cases
 
 
 def _rooms(r: _Reader, base: Path) -> RoomSettings:
+    """A group's ``rooms`` settings, checked by generating their first room; a mistake the generator finds is
+    placed at the setting its message names (else at the mapping)."""
     from rei.maps import MapError
     from rei.rooms import GenerationError
     from rei.rooms.catalogue import room_types
 
-    r.only("size", "map", "floor_size", "unknown_free", "density", "humans", "count", "seed", "catalogue", "robot")
+    problems = located_yaml.Collector()
+    with problems.check():
+        r.only("size", "map", "floor_size", "unknown_free", "density", "humans", "count", "seed", "catalogue",
+               "robot")
     catalogue, robot = r.get("catalogue"), r.get("robot")
     if robot is not None and catalogue is None:
-        raise SpecError(f"{r.where}: 'robot' picks a robot type of 'catalogue': give the catalogue too")
-    if (r.get("size") is None) == (r.get("map") is None):
-        raise SpecError(f"{r.where}: give exactly one of 'size' (a room class) and 'map' (an occupancy map's YAML "
-                        "file to furnish)")
-    if r.get("map") is None and (r.get("floor_size") is not None or r.get("unknown_free") is not None):
-        raise SpecError(f"{r.where}: 'floor_size' and 'unknown_free' describe the floors of 'map': give the map too")
+        problems.add(f"{r.key_at('robot')}: 'robot' picks a robot type of 'catalogue': give the catalogue too")
+    on_map = r.get("map") is not None
+    size, map_file = None, None
+    if (r.get("size") is None) == on_map:  # exactly one of them
+        size = problems.read(lambda: None if on_map else r.str("size", None), None)
+        map_file = problems.read(lambda: (base / r.str("map", None)).resolve() if on_map else None, None)
+    else:
+        problems.add(f"{r.here()}: give exactly one of 'size' (a room class) and 'map' (an occupancy map's YAML "
+                     "file to furnish)")
+    if not on_map and (r.get("floor_size") is not None or r.get("unknown_free") is not None):
+        problems.add(f"{r.here()}: 'floor_size' and 'unknown_free' describe the floors of 'map': give the map too")
+    count = problems.read(lambda: r.int("count", 1, minimum=1), 1)
+    seed = problems.read(lambda: r.int("seed", 0, minimum=0), 0)
+    floor_size = problems.read(lambda: r.number("floor_size", 1.0), 1.0)
+    unknown_free = problems.read(lambda: r.bool("unknown_free", False), False)
+    problems.raise_if_any(SpecError)  # the generator's check needs every setting
     try:
         types = DEFAULT_TYPES if catalogue is None else room_types((base / str(catalogue)).resolve(),
                                                                     None if robot is None else str(robot))
-        on_map = r.get("map") is not None
-        settings = RoomSettings(size=None if on_map else r.str("size", None), density=r.get("density"),
-                                humans=r.get("humans"), count=r.int("count", 1, minimum=1),
-                                seed=r.int("seed", 0, minimum=0), types=types,
-                                map=(base / r.str("map", None)).resolve() if on_map else None,
-                                floor_size=r.number("floor_size", 1.0),
-                                unknown_free=r.bool("unknown_free", False))
+        settings = RoomSettings(size=size, density=r.get("density"), humans=r.get("humans"), count=count, seed=seed,
+                                types=types, map=map_file, floor_size=floor_size, unknown_free=unknown_free)
         settings.generate(1)  # checks them
     except (ValueError, TypeError, GenerationError, MapError) as error:
-        raise SpecError(f"{r.where}: {error}") from None
+        raise SpecError(f"{r.named_in(str(error))}: {error}") from None
     return settings
 
 
@@ -291,50 +326,69 @@ def _sut(r: _Reader, base: Path) -> ExternalSut | None:
 
     if r.get("sut") is None:
         return None
-    s = _Reader(r.get("sut"), f"{r.where}: sut")
-    s.only("command", "clock", "deadline", "map", "join_timeout")
-    sut = ExternalSut(command=s.str("command", None), clock=s.choice("clock", ("lockstep", "realtime"), "lockstep"),
-                      deadline=s.number("deadline", DEFAULT_DEADLINE), map=s.bool("map", False),
-                      join_timeout=s.number("join_timeout", DEFAULT_JOIN_TIMEOUT), cwd=str(base))
+    s = _Reader(r.get("sut"), f"{r.where}: sut", r.node_of("sut"), r.file)
+    problems = located_yaml.Collector()
+    with problems.check():
+        s.only("command", "clock", "deadline", "map", "join_timeout")
+    command = problems.read(lambda: s.str("command", None), "")
+    clock = problems.read(lambda: s.choice("clock", ("lockstep", "realtime"), "lockstep"), "lockstep")
+    deadline = problems.read(lambda: s.number("deadline", DEFAULT_DEADLINE), DEFAULT_DEADLINE)
+    on_map = problems.read(lambda: s.bool("map", False), False)
+    join_timeout = problems.read(lambda: s.number("join_timeout", DEFAULT_JOIN_TIMEOUT), DEFAULT_JOIN_TIMEOUT)
+    problems.raise_if_any(SpecError)
+    sut = ExternalSut(command=command, clock=clock, deadline=deadline, map=on_map, join_timeout=join_timeout,
+                      cwd=str(base))
     try:
         SutOptions(command=sut.command, clock=sut.clock, deadline=sut.deadline)  # type: ignore[arg-type]
         check_command(sut.command, base)
     except (ValueError, SutLaunchError) as error:
-        raise SpecError(f"{s.where}: {error}") from None
+        raise SpecError(f"{s.at('command')}: {error}") from None
     return sut
 
 
 def _variants(r: _Reader, key: str, controller: str, default: tuple[Variant, ...], base: Path,
               sut: ExternalSut | None = None) -> tuple[Variant, ...]:
-    from rei.sim.faults import parse_fault
-
     raw = r.get(key)
     if raw is None:
         return default
     if not isinstance(raw, list) or not raw:
-        raise SpecError(f"{r.where}: '{key}' must be a non-empty list")
+        raise SpecError(f"{r.at(key)}: '{key}' must be a non-empty list")
+    problems = located_yaml.Collector()
     variants = []
     for i, item in enumerate(raw):
-        v = _Reader(item, f"{r.where}: {key}[{i}]", _item(r.node_of(key), i), r.file)
-        v.only("name", "humans", "fault", "controller", "sut")
-        fault = v.get("fault")
-        if fault is not None:
-            if not isinstance(fault, str):
-                raise SpecError(f"{v.where}: 'fault' must be text such as \"laser:1%\"")
-            try:
-                parse_fault(fault)
-            except ValueError as error:
-                raise SpecError(f"{v.where}: fault: {error}") from None
-        spec = v.controller("controller", controller)
-        own_sut = _sut(v, base)
-        if own_sut is not None and v.get("controller") is not None:
-            raise SpecError(f"{v.where}: give either 'controller' (in-process) or 'sut' (external), not both")
-        variant_sut = own_sut if own_sut is not None else (None if v.get("controller") is not None else sut)
-        variants.append(Variant(v.name("name", None), v.bool("humans", True), fault, spec, variant_sut))
+        with problems.check():
+            v = _Reader(item, f"{r.where}: {key}[{i}]", _item(r.node_of(key), i), r.file)
+            variants.append(_variant(v, controller, base, sut))
     names = [x.name for x in variants]
     if len(set(names)) != len(names):
-        raise SpecError(f"{r.where}: two variants have the same name")
+        problems.add(f"{r.at(key)}: two variants have the same name")
+    problems.raise_if_any(SpecError)
     return tuple(variants)
+
+
+def _variant(v: _Reader, controller: str, base: Path, sut: ExternalSut | None) -> Variant:
+    from rei.sim.faults import parse_fault
+
+    problems = located_yaml.Collector()
+    with problems.check():
+        v.only("name", "humans", "fault", "controller", "sut")
+    name = problems.read(lambda: v.name("name", None), "")
+    humans = problems.read(lambda: v.bool("humans", True), True)
+    fault = v.get("fault")
+    if fault is not None and not isinstance(fault, str):
+        problems.add(f"{v.at('fault')}: 'fault' must be text such as \"laser:1%\"")
+    elif fault is not None:
+        try:
+            parse_fault(fault)
+        except ValueError as error:
+            problems.add(f"{v.at('fault')}: fault: {error}")
+    spec = problems.read(lambda: v.controller("controller", controller), controller)
+    own_sut = problems.read(lambda: _sut(v, base), None)
+    if v.get("sut") is not None and v.get("controller") is not None:
+        problems.add(f"{v.key_at('sut')}: give either 'controller' (in-process) or 'sut' (external), not both")
+    problems.raise_if_any(SpecError)
+    variant_sut = own_sut if own_sut is not None else (None if v.get("controller") is not None else sut)
+    return Variant(name, humans, fault, spec, variant_sut)
 
 
 def _case_stem(case: Path) -> str:
@@ -351,30 +405,59 @@ def _item(node: yaml.Node | None, index: int) -> yaml.Node | None:
 
 class _Reader:
     """Typed access to one mapping of the spec, every error prefixed with where it is: its key path after ``file``
-    (the spec file), and the line and column of the value where the mapping's composed ``node`` is known."""
+    (the spec file), and the line and column where the mapping's composed ``node`` is known (of the value a
+    message is about, of an unknown key, or of the mapping itself)."""
 
     def __init__(self, data: Any, where: str, node: yaml.Node | None = None, file: str | None = None) -> None:
+        self.where, self.file = where, where if file is None else file
         if not isinstance(data, Mapping):
-            raise SpecError(f"{where}: expected a mapping, got {type(data).__name__}")
-        self.data, self.where, self.file = data, where, where if file is None else file
+            raise SpecError(f"{self._placed(node)}: expected a mapping, got {type(data).__name__}")
+        self.data = data
         self.node = node if isinstance(node, yaml.MappingNode) else None
 
-    def node_of(self, key: str) -> yaml.Node | None:
-        """The composed value of ``key`` (None without a node)."""
-        for key_node, value_node in self.node.value if self.node is not None else ():
-            if isinstance(key_node, yaml.ScalarNode) and key_node.value == key:
-                found: yaml.Node = value_node
-                return found
-        return None
-
-    def at(self, key: str) -> str:
-        """Where the value of ``key`` is: ``FILE:LINE:COLUMN: key path`` (without a node: the key path)."""
-        node = self.node_of(key)
+    def _placed(self, node: yaml.Node | None) -> str:
+        """``FILE:LINE:COLUMN: key path`` of ``node`` (without a node: the key path after the file)."""
         if node is None:
             return self.where
         line, column = located_yaml.position(node)
         path = self.where[len(self.file):].lstrip(": ") if self.where.startswith(self.file) else self.where
         return f"{self.file}:{line}:{column}" + (f": {path}" if path else "")
+
+    def _entry(self, key: str) -> tuple[yaml.Node, yaml.Node] | None:
+        for key_node, value_node in self.node.value if self.node is not None else ():
+            if isinstance(key_node, yaml.ScalarNode) and key_node.value == key:
+                return key_node, value_node
+        return None
+
+    def node_of(self, key: str) -> yaml.Node | None:
+        """The composed value of ``key`` (None without a node)."""
+        entry = self._entry(key)
+        return None if entry is None else entry[1]
+
+    def here(self) -> str:
+        """Where the mapping is (for a mistake of the mapping as a whole, such as a key it lacks)."""
+        return self._placed(self.node)
+
+    def at(self, key: str) -> str:
+        """Where the value of ``key`` is (the mapping, when it does not have the key)."""
+        node = self.node_of(key)
+        return self._placed(node) if node is not None else self.here()
+
+    def key_at(self, key: str) -> str:
+        """Where ``key`` itself is written (the mapping, when it does not have the key)."""
+        entry = self._entry(key)
+        return self._placed(entry[0]) if entry is not None else self.here()
+
+    def item_at(self, key: str, index: int) -> str:
+        """Where item ``index`` of the list at ``key`` is (the list, without it)."""
+        item = _item(self.node_of(key), index)
+        return self._placed(item) if item is not None else self.at(key)
+
+    def named_in(self, message: str) -> str:
+        """Where the value of the key that ``message`` names first is (the mapping, when it names none)."""
+        named = [(match.start(), str(key)) for key in self.data
+                 if (match := re.search(rf"\b{re.escape(str(key))}\b", message))]
+        return self.at(min(named)[1]) if named else self.here()
 
     def controller(self, key: str, default: str) -> str:
         """An in-process controller (``nav``, ``nav:max_linear=0.2``, ...) checked as `--controller` is: the run
@@ -388,9 +471,11 @@ class _Reader:
         return value
 
     def only(self, *keys: str) -> None:
-        unknown = sorted(set(map(str, self.data)) - set(keys))
+        """Each key the mapping has that is not one of ``keys`` is a mistake, at the key."""
+        unknown = [key for key in map(str, self.data) if key not in keys]
         if unknown:
-            raise SpecError(f"{self.where}: unknown key {unknown[0]!r}; known: {', '.join(keys)}")
+            raise SpecError.of(f"{self.key_at(key)}: unknown key {key!r}; known: {', '.join(keys)}"
+                               for key in unknown)
 
     def get(self, key: str) -> Any:
         return self.data.get(key)
@@ -398,9 +483,9 @@ class _Reader:
     def _typed(self, key: str, default: Any, kinds: tuple[type, ...], what: str) -> Any:
         value = self.data.get(key, default)
         if value is None and default is None:
-            raise SpecError(f"{self.where}: '{key}' is required")
+            raise SpecError(f"{self.here()}: '{key}' is required")
         if isinstance(value, bool) and bool not in kinds or not isinstance(value, kinds):
-            raise SpecError(f"{self.where}: '{key}' must be {what}, got {value!r}")
+            raise SpecError(f"{self.at(key)}: '{key}' must be {what}, got {value!r}")
         return value
 
     def str(self, key: str, default: str | None) -> str:
@@ -409,7 +494,7 @@ class _Reader:
     def name(self, key: str, default: str | None) -> str:
         value = self.str(key, default)
         if not _NAME.fullmatch(value):
-            raise SpecError(f"{self.where}: '{key}' {value!r}: use letters, digits, '_' and '-' (it names folders)")
+            raise SpecError(f"{self.at(key)}: '{key}' {value!r}: use letters, digits, '_' and '-' (it names folders)")
         return value
 
     def bool(self, key: str, default: bool) -> bool:
@@ -418,17 +503,17 @@ class _Reader:
     def int(self, key: str, default: int, minimum: int) -> int:
         value = self._typed(key, default, (int,), "an integer")
         if value < minimum:
-            raise SpecError(f"{self.where}: '{key}' must be >= {minimum}, got {value}")
+            raise SpecError(f"{self.at(key)}: '{key}' must be >= {minimum}, got {value}")
         return value
 
     def number(self, key: str, default: float) -> float:
         value = self._typed(key, default, (int, float), "a number")
         if not value > 0:
-            raise SpecError(f"{self.where}: '{key}' must be positive, got {value}")
+            raise SpecError(f"{self.at(key)}: '{key}' must be positive, got {value}")
         return float(value)
 
     def choice(self, key: str, choices: tuple[str, ...], default: str) -> str:
         value = self.str(key, default)
         if value not in choices:
-            raise SpecError(f"{self.where}: '{key}' must be one of {', '.join(choices)}, got {value!r}")
+            raise SpecError(f"{self.at(key)}: '{key}' must be one of {', '.join(choices)}, got {value!r}")
         return value

@@ -64,7 +64,7 @@ def _run(args: argparse.Namespace) -> int:
     try:
         spec = load_spec(args.spec)
     except SpecError as error:
-        raise CommandError(str(error)) from None
+        raise CommandError(error.problems) from None
     if args.controller:
         spec = _with_controller(spec, args.controller)
     thresholds = None
@@ -110,7 +110,7 @@ def _run(args: argparse.Namespace) -> int:
                                   generator=service.cli if service is not None else None,
                                   helpers=(service.pid,) if service is not None else ())
     except SpecError as error:
-        raise CommandError(str(error)) from None
+        raise CommandError(error.problems) from None
     finally:
         backend.close()
     usage = result.metrics.get("campaign", {})
