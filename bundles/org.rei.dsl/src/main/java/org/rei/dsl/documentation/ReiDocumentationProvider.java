@@ -12,11 +12,14 @@ import org.eclipse.xtext.documentation.IEObjectDocumentationProvider;
 import org.rei.catalogue.Lidar;
 import org.rei.catalogue.ObjectType;
 import org.rei.catalogue.RobotType;
+import org.rei.context.Behaviour;
 import org.rei.context.ControlPoint;
 import org.rei.context.Environment;
 import org.rei.context.Floor;
 import org.rei.context.Human;
 import org.rei.context.MonitorSpec;
+import org.rei.context.Route;
+import org.rei.context.RouteStop;
 import org.rei.context.SimulationObject;
 import org.rei.context.StaticObject;
 import org.rei.context.Trajectory;
@@ -27,7 +30,8 @@ import org.rei.dsl.derived.RoomDesugaring;
 /**
  * What an editor's hover shows (Markdown; the language server sends it as the hover's contents): where a floor
  * is, what an object type measures and weighs, what a robot type can do, what the monitor's thresholds mean, when
- * a human passes where. Derived from the model and the catalogue, never stored text.
+ * a human passes where (or, on a route, where it goes, how fast and how it behaves towards the robot). Derived
+ * from the model and the catalogue, never stored text.
  */
 public class ReiDocumentationProvider implements IEObjectDocumentationProvider {
 
@@ -112,7 +116,32 @@ public class ReiDocumentationProvider implements IEObjectDocumentationProvider {
 				}
 			}
 		}
+		Route r = h.getOwnedRoute();
+		if (r != null) {
+			b.append(", walking a route at ").append(num(r.getSpeed())).append(" m/s")
+					.append(r.getStart() > 0 ? " from " + num(r.getStart()) + " s" : "")
+					.append(r.isLoop() ? " in a loop" : ", then staying at the last stop").append("; ")
+					.append(behaviour(r.getBehaviour())).append(':');
+			for (RouteStop stop : r.getOwnedStops()) {
+				if (stop.getFloor() != null && !stop.getFloor().eIsProxy()) {
+					b.append("\n- ").append(stop.getFloor().getName())
+							.append(stop.getWait() > 0 ? ", waits " + num(stop.getWait()) + " s" : "").append(": ")
+							.append(floorLine(stop.getFloor()));
+				}
+			}
+		}
 		return b.append(type(h.getType())).toString();
+	}
+
+	/** What a behaviour does, as docs/language.md says it. */
+	private static String behaviour(Behaviour behaviour) {
+		return switch (behaviour) {
+		case AVOIDS -> "avoids: steps around the robot and other people";
+		case IGNORES -> "ignores: avoids other people but not the robot";
+		case CURIOUS -> "curious: comes to the robot, stands in front of it for a while, then goes on";
+		case SCARED -> "scared: keeps a wide berth around the robot";
+		case BLOCKS -> "blocks: steps into the robot's way";
+		};
 	}
 
 	private static String monitor(MonitorSpec m) {

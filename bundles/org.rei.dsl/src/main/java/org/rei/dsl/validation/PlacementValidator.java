@@ -59,7 +59,9 @@ public class PlacementValidator extends ReiCheckBase {
 		}
 		PhysicalObject first = occupants.putIfAbsent(floor, object);
 		if (first != null) {
-			EReference feature = object instanceof DynamicObject ? ContextPackage.Literals.DYNAMIC_OBJECT__OWNED_TRAJECTORY
+			EReference feature = object instanceof Human human && human.getOwnedRoute() != null
+					? ContextPackage.Literals.HUMAN__OWNED_ROUTE
+					: object instanceof DynamicObject ? ContextPackage.Literals.DYNAMIC_OBJECT__OWNED_TRAJECTORY
 					: ContextPackage.Literals.PHYSICAL_OBJECT__FLOOR;
 			error("Floor " + floor.getName() + " is already taken by '" + first.getName()
 					+ "': expected a free floor, one object per floor centre", object, feature,

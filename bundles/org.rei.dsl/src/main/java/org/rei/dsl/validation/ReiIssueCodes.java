@@ -21,6 +21,8 @@ public interface ReiIssueCodes {
 	String TRAJECTORY_TOO_SHORT = PREFIX + "trajectoryTooShort";
 	String TRAJECTORY_TIME_ORDER = PREFIX + "trajectoryTimeOrder";
 	String NEGATIVE_TIME = PREFIX + "negativeTime";
+	String STOP_OCCUPIED = PREFIX + "stopOccupied";
+	String STOP_UNREACHABLE = PREFIX + "stopUnreachable";
 	String MISSING_MISSION = PREFIX + "missingMission";
 	String TOO_FEW_GOALS = PREFIX + "tooFewGoals";
 	String GOAL_UNREACHABLE = PREFIX + "goalUnreachable";

@@ -1,0 +1,119 @@
+/*
+ * Copyright (c) 2026 the REI authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rei.dsl.validation;
+
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+
+import org.eclipse.xtext.validation.Check;
+import org.rei.context.ContextPackage;
+import org.rei.context.Environment;
+import org.rei.context.Floor;
+import org.rei.context.Human;
+import org.rei.context.PhysicalObject;
+import org.rei.context.Route;
+import org.rei.context.RouteStop;
+import org.rei.context.StaticObject;
+
+/**
+ * Routes of people who see the robot: a walking speed a person can walk, no time before the run, stops a person
+ * can stand on and walk between. Where the person stands at the start (the first stop) is judged with every other
+ * object's start by {@link PlacementValidator#checkOneObjectPerFloor}.
+ */
+public class RouteValidator extends ReiCheckBase {
+
+	/** The fastest a route may ask for, in m/s: a run, beyond any walk the pedestrian model is made for. */
+	static final double MAX_SPEED = 3.0;
+
+	@Check
+	public void checkSpeed(Route route) {
+		if (!(route.getSpeed() > 0 && route.getSpeed() <= MAX_SPEED)) {
+			error("A walking speed is above 0 and at most " + num(MAX_SPEED) + " m/s (people walk at about 1.2-1.4): "
+					+ "got " + num(route.getSpeed()), route, ContextPackage.Literals.ROUTE__SPEED,
+					ReiIssueCodes.OUT_OF_RANGE);
+		}
+	}
+
+	@Check
+	public void checkStart(Route route) {
+		if (route.getStart() < 0) {
+			error("A person sets off at 0s or later", route, ContextPackage.Literals.ROUTE__START,
+					ReiIssueCodes.NEGATIVE_TIME);
+		}
+	}
+
+	@Check
+	public void checkWait(RouteStop stop) {
+		if (stop.getWait() < 0) {
+			error("A wait is 0s or longer", stop, ContextPackage.Literals.ROUTE_STOP__WAIT,
+					ReiIssueCodes.NEGATIVE_TIME);
+		}
+	}
+
+	/**
+	 * No stop on furniture, as no goal is (MissionValidator): a person cannot stand at a table's centre. The first
+	 * stop is the person's start, which the one-object-per-floor rule judges against furniture, the robot and the
+	 * other starts.
+	 */
+	@Check
+	public void checkStopsFree(Human human) {
+		Route route = human.getOwnedRoute();
+		if (route == null || route.getOwnedStops().size() < 2 || !(human.eContainer() instanceof Environment env)) {
+			return;
+		}
+		Map<Floor, PhysicalObject> furniture = new HashMap<>();
+		for (PhysicalObject object : env.getOwnedObjects()) {
+			if (object instanceof StaticObject && object.getFloor() != null) {
+				furniture.putIfAbsent(object.getFloor(), object);
+			}
+		}
+		List<RouteStop> stops = route.getOwnedStops();
+		for (RouteStop stop : stops.subList(1, stops.size())) {
+			Floor floor = stop.getFloor();
+			if (floor != null && !floor.eIsProxy() && furniture.containsKey(floor)) {
+				error("Stop " + floor.getName() + " is occupied by '" + furniture.get(floor).getName()
+						+ "': expected a free floor", stop, ContextPackage.Literals.ROUTE_STOP__FLOOR,
+						ReiIssueCodes.STOP_OCCUPIED);
+			}
+		}
+	}
+
+	/**
+	 * Each stop can be reached from the one before through neighbouring floors, as a goal from the robot's floor
+	 * (MissionValidator): the pedestrian model finds the way in between, but there must be one. One search per
+	 * connected part of the room the route enters, not one per stop.
+	 */
+	@Check
+	public void checkStopsConnected(Human human) {
+		Route route = human.getOwnedRoute();
+		if (route == null || !(human.eContainer() instanceof Environment env)) {
+			return;
+		}
+		Floor previous = null;
+		Set<Floor> reachable = null;
+		for (RouteStop stop : route.getOwnedStops()) {
+			Floor floor = stop.getFloor();
+			if (floor == null || floor.eIsProxy()) {
+				continue;
+			}
+			if (reachable != null && !reachable.contains(floor)) {
+				error("Stop " + floor.getName() + " cannot be reached from the stop before it, " + previous.getName()
+						+ ", through neighbouring floors", stop, ContextPackage.Literals.ROUTE_STOP__FLOOR,
+						ReiIssueCodes.STOP_UNREACHABLE);
+				reachable = null;
+			}
+			if (reachable == null) {
+				reachable = MissionValidator.reachableFrom(floor, env);
+			}
+			previous = floor;
+		}
+	}
+
+	private static String num(double v) {
+		return v == Math.rint(v) && Math.abs(v) < 1e15 ? String.valueOf((long) v) : String.valueOf(v);
+	}
+}
