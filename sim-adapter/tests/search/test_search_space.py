@@ -121,3 +121,17 @@ def test_extra_furniture_adds_the_first_count_pieces() -> None:
     with pytest.raises(SpecError, match="'Human' is not a furniture type of the base case's catalogues"):
         Space([Parameter("furniture", "", "count", (("Human",), Range(0, 1, True), None), "s.yaml:2:3")], DIAGRAM,
               palette)
+
+
+def test_every_parameter_the_base_case_lacks_is_reported_at_once() -> None:
+    # an unknown human's parameters are not checked further (its floors, its points): its name is reported once
+    parameters = [Parameter("human", "ghost", "start", Range(0, 1), "s.yaml:4:30", name_at="s.yaml:4:13"),
+                  Parameter("human", "ghost", "points", (("F_9_9",), None), "s.yaml:4:50", name_at="s.yaml:4:13"),
+                  Parameter("object", "bin1", "floor", ("F_9_9",), "s.yaml:5:27", name_at="s.yaml:5:14"),
+                  Parameter("object", "bin2", "yaw", Range(0, 90), "s.yaml:6:25", name_at="s.yaml:6:14")]
+    with pytest.raises(SpecError) as raised:
+        Space(parameters, DIAGRAM)
+    assert str(raised.value).splitlines() == [
+        "s.yaml:4:13: the base case has no human or moving object named 'ghost'; it has walker",
+        "s.yaml:5:27: the base case's room has no floor 'F_9_9'",
+        "s.yaml:6:14: the base case has no object named 'bin2'; it has bin1"]

@@ -47,6 +47,7 @@ def run(args: argparse.Namespace) -> int:
     from rei.campaign.spec import SpecError
     from rei.edit import EngineError
     from rei.lifetime import sigterm_unwinds
+    from rei.search.base import with_base_case_problems
     from rei.search.run import run_search
     from rei.search.spec import load_search_spec
     from rei.search.study import check_resume
@@ -55,10 +56,14 @@ def run(args: argparse.Namespace) -> int:
     if args.budget is not None and args.budget < 1:
         raise CommandError(f"--budget must be at least 1, got {args.budget}")
     try:
-        spec = load_search_spec(args.spec).with_options(budget=args.budget, sampler=args.sampler)
+        spec = load_search_spec(args.spec)
+    except SpecError as error:  # with what its base case finds: every mistake at once
+        raise CommandError(with_base_case_problems(error).problems) from None
+    try:
+        spec = spec.with_options(budget=args.budget, sampler=args.sampler)
         check_resume(spec, args.output.resolve())  # before a Ray cluster is reached or a room generated
     except SpecError as error:
-        raise CommandError(str(error)) from None
+        raise CommandError(error.problems) from None
     stop = threading.Event()
     try:
         # SIGTERM unwinds (SystemExit) wherever it lands: the search then stops as on Ctrl-C, and during shrinking
@@ -66,7 +71,9 @@ def run(args: argparse.Namespace) -> int:
         with sigterm_unwinds():
             result = run_search(spec, args.output, workers=workers, ray=args.ray, stop=stop,
                                 shrink_failures=not args.no_shrink)
-    except (SpecError, RayUnavailableError) as error:
+    except SpecError as error:
+        raise CommandError(error.problems) from None
+    except RayUnavailableError as error:
         raise CommandError(str(error)) from None
     except EngineError as error:
         # the engine broke, not the candidate: no candidate is told invalid for it, and the one it was making is
@@ -80,7 +87,8 @@ def run(args: argparse.Namespace) -> int:
           f"{counts['distinct_failures']} distinct failure(s)")
     for failure in result["failures"]:
         shrunk = failure.get("shrunk") or {}
-        print(f"  {failure['signature']}: {len(failure['evaluations'])} evaluation(s), worst utility "
+        print(f"  {failure['signature']} ({', '.join(failure['requirements'])}): {len(failure['evaluations'])} "
+              f"evaluation(s), worst utility "
               f"{failure['worst_utility']:g}; case {shrunk.get('case') or failure['case']}")
     print(f"report:  {args.output / 'search.html'}")
     if result.get("interrupted"):  # the exit status the stop calls for: 130 after Ctrl-C, 143 after SIGTERM

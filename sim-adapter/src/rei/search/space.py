@@ -16,8 +16,9 @@ from typing import Any
 
 from optuna.distributions import BaseDistribution, CategoricalDistribution, FloatDistribution, IntDistribution
 
+from rei import located_yaml
 from rei.campaign.spec import SpecError
-from rei.search.spec import Parameter, Range
+from rei.search.spec import UNREAD, Parameter, Range
 
 Values = Mapping[str, Any]
 #: The names of extra pieces of furniture: ``search_extra_0``, ...
@@ -38,7 +39,8 @@ class Space:
 
     def __init__(self, parameters: Sequence[Parameter], diagram: Mapping[str, Any],
                  palette: Sequence[Mapping[str, Any]] = (), *, humans: bool = True) -> None:
-        """``humans``: whether the runs have the humans (a spec's ``humans: false`` leaves them out)."""
+        """``humans``: whether the runs have the humans (a spec's ``humans: false`` leaves them out). Every
+        parameter the base case does not have is a problem of one ``SpecError``."""
         self.parameters = tuple(parameters)
         self._with_humans = humans
         self._diagram = diagram
@@ -53,8 +55,14 @@ class Space:
         self._base: dict[str, Any] = {}
         self._furniture_types = [t["name"] for t in palette if t.get("category") == "object"]
         self._extras = 0  # the most extra pieces of furniture a point may have
+        # every parameter the base case does not have is reported at once, each at its name or value (a parameter
+        # whose element is missing is not checked further)
+        problems = located_yaml.Collector()
+        self._walks_refused: set[str] = set()
         for p in self.parameters:
-            self._add(p, objects, robot, taken)
+            with problems.check():
+                self._add(p, objects, robot, taken)
+        problems.raise_if_any(SpecError)
 
     # -- the spec against the base case -------------------------------------------------------------------------
 
@@ -70,12 +78,18 @@ class Space:
         if p.target == "human" and p.name not in self._humans:
             raise SpecError(f"{at}: the base case has no human or moving object named {p.name!r}; it has "
                             f"{', '.join(self._humans) or 'none'}")
-        if p.target == "human" and not self._with_humans and self._humans[p.name].get("kind") == "human":
-            # the runs leave the humans out (a moving object stays): searching one's walk would change nothing
-            raise SpecError(f"{at}: {p.name} is a human and the spec runs without humans (humans: false): its "
-                            f"{p.prop} would change nothing; remove its parameters or set humans: true")
         if p.target == "goal" and int(p.name) >= len(self._goals):
             raise SpecError(f"{at}: the mission has {len(self._goals)} goal(s): index {p.name} is not one")
+        if p.domain is UNREAD:  # its values did not read (the spec's own mistake): only its element is checked
+            return
+        if p.target == "human" and not self._with_humans and self._humans[p.name].get("kind") == "human":
+            # the runs leave the humans out (a moving object stays): searching one's walk would change nothing (said
+            # once per human, of its first parameter)
+            if p.name in self._walks_refused:
+                return
+            self._walks_refused.add(p.name)
+            raise SpecError(f"{at}: {p.name} is a human and the spec runs without humans (humans: false): its "
+                            f"{p.prop} would change nothing; remove its parameters or set humans: true")
         if p.target == "furniture":
             self._add_furniture(p, taken)
             return

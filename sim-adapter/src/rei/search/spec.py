@@ -1,8 +1,10 @@
 # SPDX-License-Identifier: EPL-2.0
 """The search spec (``rei search SPEC.yaml``): a base case, the SUT, what may change, what counts as worse.
 
-Checked completely at the door; every mistake is reported as ``FILE:LINE:COLUMN: message`` at the YAML value
-(or key) it is about, as ``rei validate`` reports a test case's. Format (docs/search.md)::
+Checked completely at the door; every mistake is reported at once, each as ``FILE:LINE:COLUMN: message`` at the
+YAML value (or key) it is about and in the order of the file, as ``rei validate`` reports a test case's (the names
+of elements the base case does not have with them: rei.search.base.with_base_case_problems). Format
+(docs/search.md)::
 
     name: crossing              # optional, default: the file's stem
     case: crossing.rei          # the base case, relative to the spec file, or instead:
@@ -142,7 +144,8 @@ class SearchSpec:
         spec's own values are."""
         spec = dataclasses.replace(self, **{k: v for k, v in changes.items() if v is not None})
         if changes.get("sampler") is not None:
-            _check_sampler(spec, self.positions.get("objectives", str(self.source or "spec")), "--sampler ")
+            _check_sampler(spec.sampler, spec.objectives, self.positions.get("objectives", str(self.source or "spec")),
+                           "--sampler ")
         return spec
 
 
@@ -163,11 +166,46 @@ class _Located:
         except located_yaml.LocatedError as error:
             raise SpecError(error.at(self.file)) from None
 
-    def mapping(self, node: yaml.Node, what: str) -> located_yaml.Entries:
+    def mapping(self, node: yaml.Node, what: str,
+                problems: located_yaml.Collector | None = None) -> located_yaml.Entries:
+        """A mapping's entries; with ``problems``, a key given twice is one of them (its first entry is read)."""
+        twice: list[located_yaml.LocatedError] | None = None if problems is None else []
         try:
-            return located_yaml.mapping(node, what)
+            entries = located_yaml.mapping(node, what, twice)
         except located_yaml.LocatedError as error:
             raise SpecError(error.at(self.file)) from None
+        if problems is not None:
+            problems.add(*(error.at(self.file) for error in twice or ()))
+        return entries
+
+
+#: The domain of a parameter whose values did not read: the spec has that mistake already; its element is still
+#: checked against the base case (rei.search.space), with the spec's other mistakes.
+class _Unread:
+    def __repr__(self) -> str:
+        return "UNREAD"
+
+
+UNREAD: Any = _Unread()
+
+
+@dataclass(frozen=True, slots=True)
+class Unchecked:
+    """What of a spec with mistakes can still be checked against its base case, so that a name the base case does
+    not have is reported with the spec's own mistakes: the base case (``case``, or the ``rooms`` that generate it),
+    whether the runs have humans, and the parameters (those whose values did not read with domain ``UNREAD``)."""
+
+    case: Path | None
+    rooms: RoomSettings | None
+    humans: bool
+    parameters: tuple[Parameter, ...]
+
+
+class SearchSpecError(SpecError):
+    """The mistakes of a search spec, every one, in the order of the file; ``unchecked``: what of the spec can
+    still be checked against its base case (rei.search.base.with_base_case_problems), None when nothing can."""
+
+    unchecked: Unchecked | None = None
 
 
 def load_search_spec(path: Path) -> SearchSpec:
@@ -179,102 +217,134 @@ def load_search_spec(path: Path) -> SearchSpec:
     return dataclasses.replace(spec, source=path)
 
 
+_KNOWN = ("name", "case", "rooms", "controller", "sut", "seed", "budget", "sampler", "timeout", "humans", "parameters",
+          "objectives", "shrink", "diversity", "refine", "patterns", "utilities")
+
+
 def parse_search_spec(text: str, *, base: Path, file: str = "spec", default_name: str = "search") -> SearchSpec:
-    """A checked ``SearchSpec`` from YAML text; the case path is resolved against ``base``."""
+    """A checked ``SearchSpec`` from YAML text; the case path is resolved against ``base``. Every mistake is
+    reported at once, a ``SearchSpecError`` of them all in the order of the file; a check that depends on one that
+    failed (a fault's values on the fault, a signal on the patterns that declare it) is skipped."""
     loc = _Located(file)
     try:
         root = located_yaml.compose(text)
     except located_yaml.LocatedError as error:
-        raise SpecError(error.at(file)) from None
+        raise SearchSpecError(error.at(file)) from None
     if root is None:
-        raise SpecError(f"{file}:1:1: the spec is empty: expected 'case', 'parameters' and 'objectives'")
-    top = loc.mapping(root, "the spec")
-    known = ("name", "case", "rooms", "controller", "sut", "seed", "budget", "sampler", "timeout", "humans", "parameters",
-             "objectives", "shrink", "diversity", "refine", "patterns", "utilities")
+        raise SearchSpecError(f"{file}:1:1: the spec is empty: expected 'case', 'parameters' and 'objectives'")
+    problems = located_yaml.Collector()
+    try:
+        top = loc.mapping(root, "the spec", problems)
+    except SpecError as error:
+        raise SearchSpecError(*error.args) from None
     for name, (key, _) in top.items():
-        if name not in known:
-            raise SpecError(f"{loc.at(key)}: unknown key '{name}'; known: {', '.join(known)}")
-    plain = {name: loc.value(value) for name, (_, value) in top.items()
-             if name not in ("parameters", "objectives", "sut")}
+        if name not in _KNOWN:
+            problems.add(f"{loc.at(key)}: unknown key '{name}'; known: {', '.join(_KNOWN)}")
+    plain = {}
+    for name, (_, value) in top.items():
+        if name not in ("parameters", "objectives", "sut"):
+            with problems.check():
+                plain[name] = loc.value(value)
     reader = _PositionedReader(plain, top, loc)
     for required in ("parameters", "objectives"):
         if required not in top:
-            raise SpecError(f"{loc.at(root)}: '{required}' is required")
+            problems.add(f"{loc.at(root)}: '{required}' is required")
+    case, rooms = None, None
     if ("case" in top) == ("rooms" in top):
         where = loc.at(top["rooms"][0]) if "rooms" in top else loc.at(root)
-        raise SpecError(f"{where}: give either 'case' (a .rei file) or 'rooms' (generated-room settings as in "
-                        f"campaign specs){', not both' if 'rooms' in top else ''}")
-    case, rooms = None, None
-    if "case" in top:
-        case_node = top["case"][1]
-        case = (base / str(loc.value(case_node))).resolve()
-        if case.suffix != ".rei" or not case.is_file():
-            raise SpecError(f"{loc.at(case_node)}: the base case {case} is not a .rei file")
+        problems.add(f"{where}: give either 'case' (a .rei file) or 'rooms' (generated-room settings as in "
+                     f"campaign specs){', not both' if 'rooms' in top else ''}")
+    elif "case" in top:
+        case = problems.read(lambda: _case(top["case"][1], base, loc), None)
     else:
-        rooms = _room_settings(top["rooms"][1], base, loc)
+        rooms = problems.read(lambda: _room_settings(top["rooms"][1], base, loc), None)
     if "controller" in top and "sut" in top:
-        raise SpecError(f"{loc.at(top['sut'][0])}: give either 'controller' (in-process) or 'sut' (external), "
-                        "not both")
-    controller = reader.call("controller", lambda r: r.str("controller", "nav"))
-    _check_controller(controller, loc.at(top["controller"][1]) if "controller" in top else file)
+        problems.add(f"{loc.at(top['sut'][0])}: give either 'controller' (in-process) or 'sut' (external), not both")
+    controller = problems.read(lambda: reader.call("controller", lambda r: r.str("controller", "nav")), "nav")
+    with problems.check():
+        _check_controller(controller, loc.at(top["controller"][1]) if "controller" in top else file)
     sut = None
     if "sut" in top:
         sut_node = top["sut"][1]
-        sut = _at(loc.at(sut_node), lambda: _sut(_Reader({"sut": loc.value(sut_node)}, ""), base))
-    shrink_budget = 8
-    if "shrink" in top:
-        shrink = loc.mapping(top["shrink"][1], "'shrink'")
-        for name, (key, _) in shrink.items():
-            if name != "budget":
-                raise SpecError(f"{loc.at(key)}: unknown key '{name}'; known: budget")
-        if "budget" in shrink:
-            shrink_budget = _PositionedReader({"budget": loc.value(shrink["budget"][1])}, shrink, loc).call(
-                "budget", lambda r: r.int("budget", 8, minimum=0))
-    parameters = _parameters(top["parameters"][1], loc)
-    patterns, utilities, declared = _patterns(top, base, loc)
-    objectives = _objectives(top["objectives"][1], loc, declared)
-    spec = SearchSpec(
-        name=reader.call("name", lambda r: r.name("name", default_name)), case=case, controller=controller, sut=sut,
-        seed=reader.call("seed", lambda r: r.int("seed", 0, minimum=0)),
-        budget=reader.call("budget", lambda r: r.int("budget", 20, minimum=1)),
-        sampler=reader.call("sampler", lambda r: r.choice("sampler", SAMPLERS, "tpe")),
-        timeout=reader.call("timeout", lambda r: r.number("timeout", 300.0)),
-        humans=reader.call("humans", lambda r: r.bool("humans", True)),
-        parameters=parameters, objectives=objectives, shrink_budget=shrink_budget,
-        diversity=reader.call("diversity", lambda r: r.bool("diversity", True)),
-        refine=reader.call("refine", lambda r: r.bool("refine", True)), rooms=rooms, patterns=patterns,
-        utilities=utilities,
-        positions={name: loc.at(value) for name, (_, value) in top.items()})
-    _check_sampler(spec, spec.positions.get("sampler", file))
-    return spec
+        sut = problems.read(lambda: _at(loc.at(sut_node), lambda: _sut(_Reader({"sut": loc.value(sut_node)}, ""),
+                                                                         base)), None)
+    shrink_budget = problems.read(lambda: _shrink_budget(top, loc, problems), 8)
+    # with those whose values did not read (UNREAD), when the spec has that mistake: their elements are still
+    # checked against the base case
+    every_parameter = _parameters(top["parameters"][1], loc, problems) if "parameters" in top else ()
+    patterns, utilities, declared = problems.read(lambda: _patterns(top, base, loc), (None, None, None))
+    objectives: tuple[Objective, ...] = ()
+    read_objectives = located_yaml.Collector()
+    if "objectives" in top:
+        objectives = _objectives(top["objectives"][1], loc, declared, read_objectives)
+        problems.add(*read_objectives.problems)
+    name = problems.read(lambda: reader.call("name", lambda r: r.name("name", default_name)), default_name)
+    seed = problems.read(lambda: reader.call("seed", lambda r: r.int("seed", 0, minimum=0)), 0)
+    budget = problems.read(lambda: reader.call("budget", lambda r: r.int("budget", 20, minimum=1)), 20)
+    sampler = problems.read(lambda: reader.call("sampler", lambda r: r.choice("sampler", SAMPLERS, "tpe")), None)
+    timeout = problems.read(lambda: reader.call("timeout", lambda r: r.number("timeout", 300.0)), 300.0)
+    humans = problems.read(lambda: reader.call("humans", lambda r: r.bool("humans", True)), True)
+    diversity = problems.read(lambda: reader.call("diversity", lambda r: r.bool("diversity", True)), True)
+    refine = problems.read(lambda: reader.call("refine", lambda r: r.bool("refine", True)), True)
+    positions = {name: loc.at(value) for name, (_, value) in top.items()}
+    if sampler is not None and "objectives" in top and not read_objectives:  # it counts the objectives
+        with problems.check():
+            _check_sampler(sampler, objectives, positions.get("sampler", file))
+    if problems:
+        error = SearchSpecError.of(problems.problems)
+        if case is not None or rooms is not None:
+            error.unchecked = Unchecked(case, rooms, humans, every_parameter)
+        raise error
+    parameters = every_parameter
+    assert all(p.domain is not UNREAD for p in parameters)
+    return SearchSpec(
+        name=name, case=case, controller=controller, sut=sut, seed=seed, budget=budget, sampler=sampler,
+        timeout=timeout, humans=humans, parameters=parameters, objectives=objectives, shrink_budget=shrink_budget,
+        diversity=diversity, refine=refine, rooms=rooms, patterns=patterns, utilities=utilities, positions=positions)
 
 
-def _check_sampler(spec: SearchSpec, where: str, given: str = "") -> None:
+def _case(node: yaml.Node, base: Path, loc: _Located) -> Path:
+    case = (base / str(loc.value(node))).resolve()
+    if case.suffix != ".rei" or not case.is_file():
+        raise SpecError(f"{loc.at(node)}: the base case {case} is not a .rei file")
+    return case
+
+
+def _shrink_budget(top: located_yaml.Entries, loc: _Located, problems: located_yaml.Collector) -> int:
+    if "shrink" not in top:
+        return 8
+    shrink = loc.mapping(top["shrink"][1], "'shrink'", problems)
+    for name, (key, _) in shrink.items():
+        if name != "budget":
+            problems.add(f"{loc.at(key)}: unknown key '{name}'; known: budget")
+    if "budget" not in shrink:
+        return 8
+    budget: int = _PositionedReader({"budget": loc.value(shrink["budget"][1])}, shrink, loc).call(
+        "budget", lambda r: r.int("budget", 8, minimum=0))
+    return budget
+
+
+def _check_sampler(sampler: str, objectives: tuple[Objective, ...], where: str, given: str = "") -> None:
     """A sampler that searches one objective is refused for several (``given``: how it was chosen, when on the
     command line)."""
-    if spec.sampler in SINGLE_OBJECTIVE and len(spec.objectives) > 1:
-        raise SpecError(f"{where}: {given}{spec.sampler} searches a single objective, the spec gives "
-                        f"{len(spec.objectives)} ({', '.join(o.label for o in spec.objectives)}): use nsga2 (or tpe) "
+    if sampler in SINGLE_OBJECTIVE and len(objectives) > 1:
+        raise SpecError(f"{where}: {given}{sampler} searches a single objective, the spec gives "
+                        f"{len(objectives)} ({', '.join(o.label for o in objectives)}): use nsga2 (or tpe) "
                         f"for several, or keep one objective")
 
 
 def _room_settings(node: yaml.Node, base: Path, loc: _Located) -> RoomSettings:
     """``rooms:`` read and checked by the campaign spec's reader (the same keys but ``count``: a search starts
-    from one room), a mistake placed at the setting its message names (else at the mapping)."""
+    from one room), each mistake placed at the setting it is about (rei.campaign.spec)."""
     entries = loc.mapping(node, "'rooms'")
+    problems = located_yaml.Collector()
     if "count" in entries:
-        raise SpecError(f"{loc.at(entries['count'][0])}: a search starts from one generated room: leave out "
-                        "'count' (another room of these settings: change 'seed')")
-    try:
-        return _rooms(_Reader(loc.value(node), ""), base)
-    except SpecError as error:
-        message = str(error).lstrip(": ")  # the reader's empty positions (twice when _rooms wraps its own)
-        named = [(match.start(), name) for name in entries
-                 if (match := re.search(rf"\b{re.escape(name)}\b", message))]
-        where = loc.at(entries[min(named)[1]][1]) if named else loc.at(node)
-        if named and message.startswith("unknown key"):
-            where = loc.at(entries[min(named)[1]][0])
-        raise SpecError(f"{where}: {message}") from None
+        problems.add(f"{loc.at(entries['count'][0])}: a search starts from one generated room: leave out "
+                     "'count' (another room of these settings: change 'seed')")
+    settings = problems.read(lambda: _rooms(_Reader(loc.value(node), loc.file, node, loc.file), base), None)
+    problems.raise_if_any(SpecError)
+    assert settings is not None
+    return settings
 
 
 class _PositionedReader:
@@ -293,11 +363,12 @@ _OWN_PREFIX = re.compile(r"^:\s*(sut:\s*)?")
 
 
 def _at(where: str, read: Any) -> Any:
-    """``read()``, a SpecError from it placed at ``where`` (the campaign reader's own prefix dropped)."""
+    """``read()``, each problem of a SpecError from it placed at ``where`` (the campaign reader's own prefix
+    dropped)."""
     try:
         return read()
     except SpecError as error:
-        raise SpecError(f"{where}: {_OWN_PREFIX.sub('', str(error))}") from None
+        raise SpecError.of(f"{where}: {_OWN_PREFIX.sub('', problem)}" for problem in error.problems) from None
 
 
 def _check_controller(controller: str, where: str) -> None:
@@ -312,90 +383,120 @@ _PROPS = {"object": ("floor", "yaw"), "robot": ("floor",), "human": ("points", "
           "goal": ("floor",), "seed": (), "fault": ("rate", "gain", "width"), "furniture": ("count", "floor")}
 
 
-def _parameters(node: yaml.Node, loc: _Located) -> tuple[Parameter, ...]:
+def _parameters(node: yaml.Node, loc: _Located, problems: located_yaml.Collector) -> tuple[Parameter, ...]:
+    """The parameters, each mistake one of ``problems``; a parameter of an element whose values did not read is
+    one with the domain ``UNREAD`` (its element can still be checked against the base case)."""
     if not isinstance(node, yaml.SequenceNode) or not node.value:
-        raise SpecError(f"{loc.at(node)}: 'parameters' must be a non-empty list")
+        problems.add(f"{loc.at(node)}: 'parameters' must be a non-empty list")
+        return ()
     parameters: list[Parameter] = []
     for item in node.value:
-        entry = loc.mapping(item, "a parameter")
-        targets = [name for name in entry if name in _PROPS]
-        if len(targets) != 1:
-            raise SpecError(f"{loc.at(item)}: a parameter names exactly one of {', '.join(_PROPS)}, "
-                            f"got {', '.join(targets) or 'none'}")
-        target = targets[0]
-        key_node, name_node = entry[target]
-        name_value = loc.value(name_node)
-        props = [name for name in entry if name != target]
-        for prop in props:
-            if prop not in _PROPS[target]:
-                raise SpecError(f"{loc.at(entry[prop][0])}: '{prop}' is not a property of {_article(target)} {target}; "
-                                f"expected {', '.join(_PROPS[target]) or 'no other key'}")
-        if target == "furniture":
-            parameters.append(_furniture(name_value, name_node, entry, item, loc))
-            continue
-        if target == "seed":
-            parameters.append(Parameter("seed", "", "value", _range(name_value, name_node, loc, integer=True),
-                                        loc.at(item)))
-            continue
-        if target == "fault":
-            from rei.sim.faults import parse_fault
-
-            if not isinstance(name_value, str):
-                raise SpecError(f"{loc.at(name_node)}: 'fault' is the fault the values change, such as \"laser:1%\"")
-            base_fault = _at(loc.at(name_node), lambda text=name_value: _fault_checked(parse_fault, text))
-            if base_fault is None:
-                raise SpecError(f"{loc.at(name_node)}: 'fault' is the fault the values change, such as \"laser:1%\", "
-                                f"got {name_value!r} (no fault)")
-            if not props:
-                raise SpecError(f"{loc.at(item)}: give at least one of rate, gain, width")
-            for prop in props:
-                value_node = entry[prop][1]
-                domain = _range(loc.value(value_node), value_node, loc, integer=prop == "width")
-                _check_fault_range(base_fault, prop, domain, loc.at(value_node))
-                parameters.append(Parameter("fault", "", prop, domain, loc.at(value_node), base=name_value))
-            continue
-        if target == "goal":
-            if isinstance(name_value, bool) or not isinstance(name_value, int) or name_value < 0:
-                raise SpecError(f"{loc.at(name_node)}: 'goal' is the goal's index in the mission (0 is the first), "
-                                f"got {name_value!r}")
-        elif not isinstance(name_value, str) or not name_value:
-            raise SpecError(f"{loc.at(name_node)}: '{target}' must name an element of the base case")
-        if not props:
-            raise SpecError(f"{loc.at(key_node)}: give what to change of {name_value}: "
-                            f"{', '.join(_PROPS[target])}")
-        for prop in props:
-            value_node = entry[prop][1]
-            parameters.append(Parameter(target, str(name_value), prop, _domain(prop, value_node, loc),
-                                        loc.at(value_node), name_at=loc.at(name_node)))
-    keys = [p.key for p in parameters]
-    for i, parameter in enumerate(parameters):
+        with problems.check():
+            parameters += _parameter(item, loc, problems)
+    keys = [p.key for p in parameters if p.domain is not UNREAD]
+    for i, parameter in enumerate(p for p in parameters if p.domain is not UNREAD):
         if parameter.key in keys[:i]:
-            raise SpecError(f"{parameter.where}: {parameter.key} is searched twice")
+            problems.add(f"{parameter.where}: {parameter.key} is searched twice")
     return tuple(parameters)
+
+
+def _parameter(item: yaml.Node, loc: _Located, problems: located_yaml.Collector) -> list[Parameter]:
+    """The parameters of one item of ``parameters`` (one per property it searches)."""
+    entry = loc.mapping(item, "a parameter", problems)
+    targets = [name for name in entry if name in _PROPS]
+    if len(targets) != 1:
+        raise SpecError(f"{loc.at(item)}: a parameter names exactly one of {', '.join(_PROPS)}, "
+                        f"got {', '.join(targets) or 'none'}")
+    target = targets[0]
+    key_node, name_node = entry[target]
+    name_value = loc.value(name_node)
+    props = [name for name in entry if name != target]
+    for prop in props:
+        if prop not in _PROPS[target]:
+            problems.add(f"{loc.at(entry[prop][0])}: '{prop}' is not a property of {_article(target)} {target}; "
+                         f"expected {', '.join(_PROPS[target]) or 'no other key'}")
+    known = [prop for prop in props if prop in _PROPS[target]]
+    if target == "furniture":
+        return [_furniture(name_value, name_node, entry, item, loc)]
+    if target == "seed":
+        return [Parameter("seed", "", "value", _range(name_value, name_node, loc, integer=True), loc.at(item))]
+    if target == "fault":
+        return _fault(name_value, name_node, known, entry, item, loc, problems, any_key=bool(props))
+    named = True
+    if target == "goal":
+        if isinstance(name_value, bool) or not isinstance(name_value, int) or name_value < 0:
+            problems.add(f"{loc.at(name_node)}: 'goal' is the goal's index in the mission (0 is the first), "
+                         f"got {name_value!r}")
+            named = False
+    elif not isinstance(name_value, str) or not name_value:
+        problems.add(f"{loc.at(name_node)}: '{target}' must name an element of the base case")
+        named = False
+    if not props:
+        problems.add(f"{loc.at(key_node)}: give what to change of {name_value}: {', '.join(_PROPS[target])}")
+    parameters = []
+    for prop in props:
+        value_node = entry[prop][1] if prop in known else entry[prop][0]
+        domain = problems.read(lambda prop=prop: _domain(prop, entry[prop][1], loc), UNREAD) if prop in known \
+            else UNREAD
+        if named:
+            parameters.append(Parameter(target, str(name_value), prop, domain, loc.at(value_node),
+                                        name_at=loc.at(name_node)))
+    return parameters
 
 
 def _furniture(types: Any, node: yaml.Node, entry: dict[str, tuple[yaml.Node, yaml.Node]], item: yaml.Node,
                loc: _Located) -> Parameter:
     """``{furniture: [Chair, Box], count: [0, 3], floor: any}``: up to ``count`` extra pieces of the listed
     catalogue types (checked against the base case's catalogues later), each on a floor of ``floor``."""
+    problems = located_yaml.Collector()
     if not isinstance(types, list) or not types or not all(isinstance(t, str) and t for t in types):
-        raise SpecError(f"{loc.at(node)}: 'furniture' lists the catalogue types to add, such as [Chair, Box]")
+        problems.add(f"{loc.at(node)}: 'furniture' lists the catalogue types to add, such as [Chair, Box]")
+    count = None
     if "count" not in entry:
-        raise SpecError(f"{loc.at(item)}: give 'count': how many pieces at least and at most, such as [0, 3]")
-    count_node = entry["count"][1]
-    count = _range(loc.value(count_node), count_node, loc, integer=True)
-    if count.low < 0 or count.high > 10:
-        raise SpecError(f"{loc.at(count_node)}: 'count' is between 0 and 10 pieces, got [{count.low:g}, {count.high:g}]")
-    floors = None if "floor" not in entry else _floors(loc.value(entry["floor"][1]), entry["floor"][1], loc)
+        problems.add(f"{loc.at(item)}: give 'count': how many pieces at least and at most, such as [0, 3]")
+    else:
+        count_node = entry["count"][1]
+        count = problems.read(lambda: _range(loc.value(count_node), count_node, loc, integer=True), None)
+        if count is not None and (count.low < 0 or count.high > 10):
+            problems.add(f"{loc.at(count_node)}: 'count' is between 0 and 10 pieces, got [{count.low:g}, "
+                         f"{count.high:g}]")
+    floors = None
+    if "floor" in entry:
+        floors = problems.read(lambda: _floors(loc.value(entry["floor"][1]), entry["floor"][1], loc), None)
+    problems.raise_if_any(SpecError)
     return Parameter("furniture", "", "count", (tuple(dict.fromkeys(types)), count, floors), loc.at(item),
                      name_at=loc.at(node))
 
 
-def _fault_checked(parse: Any, text: str) -> Any:
-    try:
-        return parse(text)
-    except ValueError as error:
-        raise SpecError(f": {error}") from None
+def _fault(name_value: Any, name_node: yaml.Node, props: list[str], entry: dict[str, tuple[yaml.Node, yaml.Node]],
+           item: yaml.Node, loc: _Located, problems: located_yaml.Collector, any_key: bool) -> list[Parameter]:
+    """``{fault: "laser:1%", rate: [0.0, 0.05]}``: the fault's values searched around the preset. A value's
+    range is checked against the fault only when the fault reads."""
+    from rei.sim.faults import parse_fault
+
+    base_fault = None
+    if not isinstance(name_value, str):
+        problems.add(f"{loc.at(name_node)}: 'fault' is the fault the values change, such as \"laser:1%\"")
+    else:
+        try:
+            base_fault = parse_fault(name_value)
+        except ValueError as error:
+            problems.add(f"{loc.at(name_node)}: {error}")
+        else:
+            if base_fault is None:
+                problems.add(f"{loc.at(name_node)}: 'fault' is the fault the values change, such as \"laser:1%\", "
+                             f"got {name_value!r} (no fault)")
+    if not any_key:
+        problems.add(f"{loc.at(item)}: give at least one of rate, gain, width")
+    parameters = []
+    for prop in props:
+        with problems.check():
+            value_node = entry[prop][1]
+            domain = _range(loc.value(value_node), value_node, loc, integer=prop == "width")
+            if base_fault is not None:
+                _check_fault_range(base_fault, prop, domain, loc.at(value_node))
+                parameters.append(Parameter("fault", "", prop, domain, loc.at(value_node), base=name_value))
+    return parameters
 
 
 def _check_fault_range(fault: Any, prop: str, domain: Range, where: str) -> None:
@@ -417,7 +518,11 @@ def _domain(prop: str, node: yaml.Node, loc: _Located) -> Any:
         if not isinstance(node, yaml.SequenceNode) or len(node.value) < 2:
             raise SpecError(f"{loc.at(node)}: 'points' lists each control point's floors (or 'any'), "
                             "at least two points")
-        return tuple(_floors(loc.value(point), point, loc) for point in node.value)
+        problems = located_yaml.Collector()
+        points = tuple(problems.read(lambda point=point: _floors(loc.value(point), point, loc), None)
+                       for point in node.value)
+        problems.raise_if_any(SpecError)
+        return points
     if prop == "loop":
         if not isinstance(value, list) or not value or not all(isinstance(v, bool) for v in value):
             raise SpecError(f"{loc.at(node)}: 'loop' lists the choices, such as [true, false]")
@@ -457,17 +562,21 @@ def _range(value: Any, node: yaml.Node, loc: _Located, integer: bool = False) ->
 _KINDS = ("utility", "time", "metric", "verdict", "signal")
 
 
-def _patterns(top: located_yaml.Entries, base: Path, loc: _Located) -> tuple[Path | None, Path | None, frozenset[str]]:
+def _patterns(top: located_yaml.Entries, base: Path,
+              loc: _Located) -> tuple[Path | None, Path | None, frozenset[str] | None]:
     """``patterns:`` and ``utilities:`` resolved against ``base`` and checked as `rei run` checks its
     ``--patterns``/``--utilities`` (rei.campaign.spec.check_user_patterns), a mistake placed at the key's value;
     with them, the signals the patterns declare."""
     paths: dict[str, Path] = {}
+    problems = located_yaml.Collector()
     for key, what in (("patterns", "a folder of .vepl files"), ("utilities", "a YAML file 'SIGNAL: utility'")):
         if key in top:
-            value = loc.value(top[key][1])
-            if not isinstance(value, str) or not value:
-                raise SpecError(f"{loc.at(top[key][1])}: '{key}' names {what}, relative to the spec file")
-            paths[key] = (base / value).resolve()
+            with problems.check():
+                value = loc.value(top[key][1])
+                if not isinstance(value, str) or not value:
+                    raise SpecError(f"{loc.at(top[key][1])}: '{key}' names {what}, relative to the spec file")
+                paths[key] = (base / value).resolve()
+    problems.raise_if_any(SpecError)  # the check needs both
     try:
         declared = check_user_patterns(paths.get("patterns"), paths.get("utilities"))
     except SpecError as error:
@@ -476,69 +585,82 @@ def _patterns(top: located_yaml.Entries, base: Path, loc: _Located) -> tuple[Pat
     return paths.get("patterns"), paths.get("utilities"), declared
 
 
-def _objectives(node: yaml.Node, loc: _Located, declared: frozenset[str] = frozenset()) -> tuple[Objective, ...]:
+def _objectives(node: yaml.Node, loc: _Located, declared: frozenset[str] | None,
+                problems: located_yaml.Collector) -> tuple[Objective, ...]:
+    """The objectives, each mistake one of ``problems``. ``declared``: the signals the spec's patterns declare
+    (None when the patterns did not read: a signal is then not checked)."""
     if not isinstance(node, yaml.SequenceNode) or not node.value:
-        raise SpecError(f"{loc.at(node)}: 'objectives' must be a non-empty list")
+        problems.add(f"{loc.at(node)}: 'objectives' must be a non-empty list")
+        return ()
     objectives: list[Objective] = []
     for item in node.value:
-        if isinstance(item, yaml.ScalarNode):
-            name = loc.value(item)
-            if name not in ("utility", "time"):
-                raise SpecError(f"{loc.at(item)}: unknown objective {name!r}: expected utility, time, or a mapping "
-                                "{metric: KEY}, {verdict: REQUIREMENT}, {signal: NAME}")
-            objectives.append(Objective(name, name, _WORSE[name]))
-            continue
-        entry = loc.mapping(item, "an objective")
-        kinds = [k for k in entry if k in _KINDS]
-        if len(kinds) != 1:
-            raise SpecError(f"{loc.at(item)}: an objective names exactly one of {', '.join(_KINDS)}")
-        kind = kinds[0]
-        # utility and time carry their direction as their value; only a signal has 'of'
-        known = (kind,) if kind in ("utility", "time") else (kind, "direction", "of") if kind == "signal" \
-            else (kind, "direction")
-        for extra, (key, _) in entry.items():
-            if extra == "direction" and extra not in known:
-                raise SpecError(f"{loc.at(key)}: '{kind}' takes its direction as its value: "
-                                f"{{{kind}: minimize}} or {{{kind}: maximize}}")
-            if extra not in known:
-                raise SpecError(f"{loc.at(key)}: unknown key '{extra}'; known: {', '.join(known)}")
-        value_node = entry[kind][1]
-        value = loc.value(value_node)
-        direction_node = entry.get("direction", (None, None))[1]
-        if kind in ("utility", "time"):
-            if value not in DIRECTIONS:
-                raise SpecError(f"{loc.at(value_node)}: expected minimize or maximize, got {value!r}")
-            objectives.append(Objective(kind, kind, value))
-            continue
-        if not isinstance(value, str) or not value:
-            raise SpecError(f"{loc.at(value_node)}: '{kind}' names a {'metric key' if kind == 'metric' else kind}")
-        if kind == "metric" and value not in NAMES:
-            raise SpecError(f"{loc.at(value_node)}: unknown metric {value!r}; known: {', '.join(NAMES)}")
-        if kind == "verdict":
-            from rei.evaluation.verdicts import REQUIREMENTS
-
-            if value != "any" and value not in REQUIREMENTS:
-                raise SpecError(f"{loc.at(value_node)}: unknown requirement {value!r}; known: any, "
-                                f"{', '.join(REQUIREMENTS)}")
-        of = ""
-        if kind == "signal":
-            _check_signal(value, loc.at(value_node), declared)
-            of_node = entry.get("of", (None, None))[1]
-            of = "count" if of_node is None else loc.value(of_node)
-            if of not in ("count", "first"):
-                raise SpecError(f"{loc.at(of_node)}: 'of' is count or first, got {of!r}")
-        if kind == "metric":  # worse for the robot: away from the metric's better side
-            default = "minimize" if BY_NAME[value].better == Better.HIGHER else "maximize"
-        else:
-            default = _WORSE.get(kind) or ("maximize" if of == "count" else "minimize")
-        direction = default if direction_node is None else loc.value(direction_node)
-        if direction not in DIRECTIONS:
-            raise SpecError(f"{loc.at(direction_node)}: expected minimize or maximize, got {direction!r}")
-        objectives.append(Objective(kind, value, direction, of))
+        with problems.check():
+            objectives.append(_objective(item, loc, declared))
     labels = [o.label for o in objectives]
     if len(set(labels)) != len(labels):
-        raise SpecError(f"{loc.at(node)}: an objective is given twice")
+        problems.add(f"{loc.at(node)}: an objective is given twice")
     return tuple(objectives)
+
+
+def _objective(item: yaml.Node, loc: _Located, declared: frozenset[str] | None) -> Objective:
+    if isinstance(item, yaml.ScalarNode):
+        name = loc.value(item)
+        if name not in ("utility", "time"):
+            raise SpecError(f"{loc.at(item)}: unknown objective {name!r}: expected utility, time, or a mapping "
+                            "{metric: KEY}, {verdict: REQUIREMENT}, {signal: NAME}")
+        return Objective(name, name, _WORSE[name])
+    problems = located_yaml.Collector()
+    entry = loc.mapping(item, "an objective", problems)
+    kinds = [k for k in entry if k in _KINDS]
+    if len(kinds) != 1:
+        raise SpecError(f"{loc.at(item)}: an objective names exactly one of {', '.join(_KINDS)}")
+    kind = kinds[0]
+    # utility and time carry their direction as their value; only a signal has 'of'
+    known = (kind,) if kind in ("utility", "time") else (kind, "direction", "of") if kind == "signal" \
+        else (kind, "direction")
+    for extra, (key, _) in entry.items():
+        if extra == "direction" and extra not in known:
+            problems.add(f"{loc.at(key)}: '{kind}' takes its direction as its value: "
+                         f"{{{kind}: minimize}} or {{{kind}: maximize}}")
+        elif extra not in known:
+            problems.add(f"{loc.at(key)}: unknown key '{extra}'; known: {', '.join(known)}")
+    value_node = entry[kind][1]
+    value = loc.value(value_node)
+    direction_node = entry.get("direction", (None, None))[1]
+    if kind in ("utility", "time"):
+        if value not in DIRECTIONS:
+            problems.add(f"{loc.at(value_node)}: expected minimize or maximize, got {value!r}")
+        problems.raise_if_any(SpecError)
+        return Objective(kind, kind, value)
+    if not isinstance(value, str) or not value:
+        problems.add(f"{loc.at(value_node)}: '{kind}' names a {'metric key' if kind == 'metric' else kind}")
+    elif kind == "metric" and value not in NAMES:
+        problems.add(f"{loc.at(value_node)}: unknown metric {value!r}; known: {', '.join(NAMES)}")
+    elif kind == "verdict":
+        from rei.evaluation.verdicts import REQUIREMENTS
+
+        if value != "any" and value not in REQUIREMENTS:
+            problems.add(f"{loc.at(value_node)}: unknown requirement {value!r}; known: any, {', '.join(REQUIREMENTS)}")
+    elif kind == "signal" and declared is not None:
+        with problems.check():
+            _check_signal(value, loc.at(value_node), declared)
+    of = ""
+    if kind == "signal":
+        of_node = entry.get("of", (None, None))[1]
+        of = "count" if of_node is None else problems.read(lambda: loc.value(of_node), "count")
+        if of not in ("count", "first"):
+            problems.add(f"{loc.at(of_node)}: 'of' is count or first, got {of!r}")
+    direction = None
+    if direction_node is not None:
+        direction = problems.read(lambda: loc.value(direction_node), None)
+        if direction not in DIRECTIONS:
+            problems.add(f"{loc.at(direction_node)}: expected minimize or maximize, got {direction!r}")
+    problems.raise_if_any(SpecError)
+    if direction is None and kind == "metric":  # worse for the robot: away from the metric's better side
+        direction = "minimize" if BY_NAME[value].better == Better.HIGHER else "maximize"
+    elif direction is None:
+        direction = _WORSE.get(kind) or ("maximize" if of == "count" else "minimize")
+    return Objective(kind, value, direction, of)
 
 
 def _check_signal(name: str, where: str, declared: frozenset[str] = frozenset()) -> None:
