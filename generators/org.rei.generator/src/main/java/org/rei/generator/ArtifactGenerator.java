@@ -125,6 +125,7 @@ public final class ArtifactGenerator {
 				Variable.createReadOnlyVariable("floors", model.floors()),
 				Variable.createReadOnlyVariable("robot", model.robot()),
 				Variable.createReadOnlyVariable("animated", model.animated()),
+				Variable.createReadOnlyVariable("people", model.people()),
 				Variable.createReadOnlyVariable("types", model.types()),
 				Variable.createReadOnlyVariable("monitor", monitor) };
 	}

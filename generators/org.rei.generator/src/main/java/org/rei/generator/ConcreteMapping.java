@@ -28,6 +28,7 @@ import org.rei.context.Mission;
 import org.rei.context.NavigationTask;
 import org.rei.context.PhysicalObject;
 import org.rei.context.Robot;
+import org.rei.context.RouteStop;
 import org.rei.context.StaticObject;
 import org.rei.context.Task;
 import org.rei.context.TestCase;
@@ -51,7 +52,7 @@ final class ConcreteMapping {
 
 	/** Result of one mapping; the EGL templates read these. */
 	record Result(ConcreteEnvironment environment, MissionDescription mission, List<ConcreteObject> bodies,
-			List<ConcreteObject> floors, ConcreteObject robot, List<DynamicObject> animated,
+			List<ConcreteObject> floors, ConcreteObject robot, List<DynamicObject> animated, List<Human> people,
 			Map<PhysicalObject, ConcreteObject> concrete, List<ObjectType> types) {
 	}
 
@@ -86,6 +87,7 @@ final class ConcreteMapping {
 		List<ConcreteObject> bodies = new ArrayList<>();
 		List<ConcreteObject> floors = new ArrayList<>();
 		List<DynamicObject> animated = new ArrayList<>();
+		List<Human> people = new ArrayList<>();
 		Map<PhysicalObject, ConcreteObject> concrete = new HashMap<>();
 		Map<String, ObjectType> types = new LinkedHashMap<>();
 
@@ -116,7 +118,11 @@ final class ConcreteMapping {
 			ConcreteObject body = physical(object, layout, types);
 			bodies.add(body);
 			concrete.put(object, body);
-			if (object instanceof DynamicObject dynamic) {
+			if (object instanceof Human human && human.getOwnedRoute() != null) {
+				// a person who sees the robot: a body like any human, moved by the pedestrian model, not on rails
+				checkRoute(human, layout);
+				people.add(human);
+			} else if (object instanceof DynamicObject dynamic) {
 				checkTrajectory(dynamic, layout);
 				animated.add(dynamic);
 			}
@@ -130,7 +136,8 @@ final class ConcreteMapping {
 		MissionDescription mission = mission(testCase, env, robot, layout);
 		contain(world, "world.runtime");
 		contain(mission, "mission.mission");
-		return new Result(world, mission, bodies, floors, robot, animated, concrete, List.copyOf(types.values()));
+		return new Result(world, mission, bodies, floors, robot, animated, people, concrete,
+				List.copyOf(types.values()));
 	}
 
 	/**
@@ -232,6 +239,14 @@ final class ConcreteMapping {
 				throw new GenerationException("control point times of " + object.getName() + " must strictly increase");
 			}
 			previous = point.getTime();
+		}
+	}
+
+	private static void checkRoute(Human human, FloorLayout layout) throws GenerationException {
+		for (RouteStop stop : human.getOwnedRoute().getOwnedStops()) {
+			if (stop.getFloor() == null || layout.cellOf(stop.getFloor()).isEmpty()) {
+				throw new GenerationException("a stop of " + human.getName() + "'s route is not on a floor of the room");
+			}
 		}
 	}
 

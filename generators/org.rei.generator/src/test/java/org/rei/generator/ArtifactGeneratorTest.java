@@ -6,6 +6,7 @@ package org.rei.generator;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -214,6 +215,71 @@ class ArtifactGeneratorTest {
 		assertEquals(2.5, points.get(2).get("x").asDouble());
 		assertEquals(0.5, points.get(2).get("y").asDouble());
 		assertEquals("F_2_0", points.get(2).get("floor").asText());
+		assertFalse(animation.has("people"), "no people, no member: cases without them keep their bytes");
+		assertTrue(Files.readString(out.resolve("animation.json")).endsWith("}]}\n  ]\n}\n"));
+	}
+
+	/** docs/artifacts.md: people who see the robot are listed in "people", never among the objects on rails. */
+	@Test
+	void peopleOnARouteAreListedApartFromTheObjectsOnRails() throws Exception {
+		generator.generate(TestCases.withPeople(), out);
+		JsonNode animation = json("animation.json");
+
+		assertEquals(List.of("h1"), names(animation.get("objects")));
+		String text = Files.readString(out.resolve("animation.json"));
+		String people = text.substring(text.indexOf("  \"people\""));
+		assertEquals("""
+				  "people": [
+				    {"name": "ann", "behaviour": "avoids", "speed": 1.2, "start": 0.0, "loop": false,
+				     "route": [{"floor": "F_2_1", "x": 2.5, "y": 1.5, "wait": 0.0}, {"floor": "F_1_1", "x": 1.5, "y": 1.5, "wait": 3.0}, {"floor": "F_2_0", "x": 2.5, "y": 0.5, "wait": 0.0}]},
+				    {"name": "bob", "behaviour": "curious", "speed": 0.8, "start": 5.5, "loop": true,
+				     "route": [{"floor": "F_1_1", "x": 1.5, "y": 1.5, "wait": 0.0}]}
+				  ]
+				}
+				""", people);
+		assertEquals(2, animation.get("people").size(), "valid JSON");
+	}
+
+	/** A person on a route is a human body as one on rails is, standing on its first stop. */
+	@Test
+	void peopleOnARouteAreHumanBodiesOnTheirFirstStop() throws Exception {
+		generator.generate(TestCases.withPeople(), out);
+		JsonNode objects = json("world.json").get("objects");
+
+		JsonNode ann = named(objects, "ann");
+		assertEquals("HUMAN", ann.get("category").asText());
+		assertEquals("Human", ann.get("type").asText());
+		assertEquals("F_2_1", ann.get("floor").asText());
+		assertArrayEquals(new double[] { 2.5, 1.5, 0.85, 0.0 }, doubles(ann.get("pose")));
+		assertEquals(named(objects, "h1").get("size"), ann.get("size"));
+		assertEquals(named(objects, "h1").get("mass"), ann.get("mass"));
+		assertEquals("F_1_1", named(objects, "bob").get("floor").asText());
+		NodeList models = xml("world.sdf").getElementsByTagName("model");
+		List<String> sdf = new ArrayList<>();
+		for (int i = 0; i < models.getLength(); i++) {
+			sdf.add(((Element) models.item(i)).getAttribute("name"));
+		}
+		assertEquals(names(objects), sdf);
+		assertEquals(List.of("Floor", "Wall", "Table", "Human", "Waffle"), names(json("monitor.json").get("catalogue")));
+	}
+
+	@Test
+	void aStopOffTheRoomIsAnError() {
+		TestCase testCase = TestCases.withPeople();
+		Floor elsewhere = ContextFactory.eINSTANCE.createFloor();
+		elsewhere.setName("F_9_9");
+		((org.rei.context.Human) testCase.getOwnedEnvironment().getOwnedObjects().get(2)).getOwnedRoute()
+				.getOwnedStops().get(1).setFloor(elsewhere);
+
+		GenerationException e = assertThrows(GenerationException.class, () -> generator.generate(testCase, out));
+
+		assertTrue(e.getMessage().contains("a stop of ann's route"), e.getMessage());
+	}
+
+	private static List<String> names(JsonNode array) {
+		List<String> names = new ArrayList<>();
+		array.forEach(node -> names.add(node.get("name").asText()));
+		return names;
 	}
 
 	@Test

@@ -7,6 +7,7 @@ package org.rei.generator;
 import org.eclipse.emf.ecore.resource.impl.ResourceSetImpl;
 import org.rei.catalogue.Catalogue;
 import org.rei.catalogue.util.Catalogues;
+import org.rei.context.Behaviour;
 import org.rei.context.ContextFactory;
 import org.rei.context.ControlPoint;
 import org.rei.context.Environment;
@@ -15,6 +16,8 @@ import org.rei.context.Human;
 import org.rei.context.Mission;
 import org.rei.context.NavigationTask;
 import org.rei.context.Robot;
+import org.rei.context.Route;
+import org.rei.context.RouteStop;
 import org.rei.context.StaticObject;
 import org.rei.context.TestCase;
 import org.rei.context.Trajectory;
@@ -110,6 +113,50 @@ final class TestCases {
 		mission.getOwnedTasks().add(back);
 		testCase.setOwnedMission(mission);
 		return testCase;
+	}
+
+	/**
+	 * {@link #small()} with two people who see the robot after its human on rails: ann walks F_2_1, F_1_1 (where she
+	 * waits 3 s), F_2_0 with every default; bob, curious, stands on F_1_1 from 5.5 s at 0.8 m/s, looping.
+	 */
+	static TestCase withPeople() {
+		TestCase testCase = small();
+		Environment env = testCase.getOwnedEnvironment();
+		Floor[][] g = new Floor[3][2];
+		for (var block : env.getOwnedBlocks()) {
+			if (block instanceof Floor floor) {
+				String[] xy = floor.getName().split("_");
+				g[Integer.parseInt(xy[1])][Integer.parseInt(xy[2])] = floor;
+			}
+		}
+		Human ann = F.createHuman();
+		ann.setName("ann");
+		Route walk = F.createRoute();
+		walk.getOwnedStops().add(stop(g[2][1], 0));
+		walk.getOwnedStops().add(stop(g[1][1], 3));
+		walk.getOwnedStops().add(stop(g[2][0], 0));
+		ann.setOwnedRoute(walk);
+		env.getOwnedObjects().add(ann);
+
+		Human bob = F.createHuman();
+		bob.setName("bob");
+		bob.setType(Catalogues.find(CATALOGUE, "Human").orElseThrow());
+		Route stand = F.createRoute();
+		stand.getOwnedStops().add(stop(g[1][1], 0));
+		stand.setSpeed(0.8);
+		stand.setStart(5.5);
+		stand.setLoop(true);
+		stand.setBehaviour(Behaviour.CURIOUS);
+		bob.setOwnedRoute(stand);
+		env.getOwnedObjects().add(bob);
+		return testCase;
+	}
+
+	private static RouteStop stop(Floor floor, double wait) {
+		RouteStop stop = F.createRouteStop();
+		stop.setFloor(floor);
+		stop.setWait(wait);
+		return stop;
 	}
 
 	/** columns x rows floors walled around with the robot in the corner and one goal in the far corner. */
