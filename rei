@@ -9,7 +9,8 @@
 #   2. builds the Java parts (`mvn install -DskipTests`) when a jar is missing or a source file under the Java
 #      module folders is newer than the last build;
 #   3. creates .venv and installs sim-adapter[dev] when .venv is missing or sim-adapter/pyproject.toml changed;
-#   4. runs scripts/setup-router.sh (WAMP router in .venv-router) when it exists.
+#   4. runs scripts/setup-router.sh (WAMP router in .venv-router) when it exists;
+#   5. runs scripts/setup-people.sh (JuPedSim for the reactive people, in .venv-people) when it exists.
 #
 # Sourcing this file (as ./run-tests does) only defines the functions; `rei_bootstrap --no-java-build` skips
 # step 2 for callers that run the full Maven build themselves.
@@ -155,6 +156,17 @@ rei_setup_router() {
     fi
 }
 
+rei_setup_people() {
+    local script="$REI_ROOT/scripts/setup-people.sh" log
+    [ -f "$script" ] || return 0
+    if [ -x "$REI_ROOT/.venv-people/bin/python" ]; then
+        log="$(bash "$script" 2>&1)" || { echo "$log" >&2; rei_die "scripts/setup-people.sh failed"; }
+    else
+        rei_say "installing JuPedSim (reactive people) into .venv-people..."
+        bash "$script" || rei_die "scripts/setup-people.sh failed"
+    fi
+}
+
 # rei_bootstrap [--no-java-build]
 rei_bootstrap() {
     rei_check_java
@@ -163,6 +175,7 @@ rei_bootstrap() {
     fi
     rei_setup_venv
     rei_setup_router
+    rei_setup_people
 }
 
 if [ "${BASH_SOURCE[0]}" = "$0" ]; then

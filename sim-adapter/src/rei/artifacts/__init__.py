@@ -1,7 +1,15 @@
 # SPDX-License-Identifier: EPL-2.0
 """Typed, validated readers for the files ``rei generate`` writes (see docs/artifacts.md)."""
 
-from rei.artifacts.animation import AnimatedObject, AnimationSpec, ControlPoint, read_animation
+from rei.artifacts.animation import (
+    AnimatedObject,
+    AnimationSpec,
+    Behaviour,
+    ControlPoint,
+    PersonSpec,
+    RouteStop,
+    read_animation,
+)
 from rei.artifacts.case import Case, check_sdf_matches_world, read_case
 from rei.artifacts.errors import ArtifactError
 from rei.artifacts.mission import GoalSpec, MissionSpec, read_mission
@@ -25,6 +33,7 @@ __all__ = [
     "AnimatedObject",
     "AnimationSpec",
     "ArtifactError",
+    "Behaviour",
     "Case",
     "CatalogueEntry",
     "Category",
@@ -37,7 +46,9 @@ __all__ = [
     "MissionSpec",
     "MonitorSpec",
     "ObjectSpec",
+    "PersonSpec",
     "RobotSpec",
+    "RouteStop",
     "SdfModel",
     "SdfWorld",
     "Shape",

@@ -1,8 +1,10 @@
 # SPDX-License-Identifier: EPL-2.0
-"""Reader for ``animation.json`` (``rei-animation/1``): timed Catmull-Rom control points per moving object."""
+"""Reader for ``animation.json`` (``rei-animation/1``): timed Catmull-Rom control points per moving object on
+rails (``objects``), and the routes of the people who see the robot (``people``, docs/people.md)."""
 
 from __future__ import annotations
 
+import enum
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -30,10 +32,42 @@ class AnimatedObject:
     points: tuple[ControlPoint, ...]
 
 
+class Behaviour(enum.StrEnum):
+    """How a reactive person treats the robot (docs/people.md)."""
+
+    AVOIDS = "avoids"
+    IGNORES = "ignores"
+    CURIOUS = "curious"
+    SCARED = "scared"
+    BLOCKS = "blocks"
+
+
+@dataclass(frozen=True, slots=True)
+class RouteStop:
+    floor: str
+    x: float
+    y: float
+    wait: float
+
+
+@dataclass(frozen=True, slots=True)
+class PersonSpec:
+    """A reactive person: walks ``route`` from its first stop at ``speed`` from ``start`` on, round again when
+    ``loop``; a pedestrian-dynamics model finds the way between stops and keeps the person clear of others."""
+
+    name: str
+    behaviour: Behaviour
+    speed: float
+    start: float
+    loop: bool
+    route: tuple[RouteStop, ...]
+
+
 @dataclass(frozen=True, slots=True)
 class AnimationSpec:
     path: Path
     objects: tuple[AnimatedObject, ...]
+    people: tuple[PersonSpec, ...] = ()
 
 
 def read_animation(path: Path | str) -> AnimationSpec:
@@ -41,12 +75,37 @@ def read_animation(path: Path | str) -> AnimationSpec:
     path = Path(path)
     root = load_json(path, ANIMATION_FORMAT)
     objects = tuple(_animated(o) for o in root.items("objects"))
+    people = tuple(_person(p) for p in root.items("people")) if root.has("people") else ()
     seen: set[str] = set()
-    for obj in objects:
-        if obj.name in seen:
-            raise root.error(f"object {obj.name!r} is animated twice", "objects")
-        seen.add(obj.name)
-    return AnimationSpec(path=path, objects=objects)
+    for name, key in [*((o.name, "objects") for o in objects), *((p.name, "people") for p in people)]:
+        if name in seen:
+            raise root.error(f"object {name!r} is animated twice", key)
+        seen.add(name)
+    return AnimationSpec(path=path, objects=objects, people=people)
+
+
+def _person(p: Fields) -> PersonSpec:
+    text = p.text("behaviour")
+    try:
+        behaviour = Behaviour(text)
+    except ValueError:
+        known = ", ".join(b.value for b in Behaviour)
+        raise p.error(f"unknown behaviour {text!r}, expected one of {known}", "behaviour") from None
+    speed = p.number("speed")
+    if not 0 < speed <= 3.0:
+        raise p.error(f"must be > 0 and <= 3 m/s, got {speed}", "speed")
+    start = p.number("start")
+    if start < 0:
+        raise p.error(f"must be >= 0 s, got {start}", "start")
+    route = tuple(RouteStop(floor=s.text("floor"), x=s.number("x"), y=s.number("y"), wait=s.number("wait"))
+                  for s in p.items("route"))
+    if not route:
+        raise p.error("needs at least one stop", "route")
+    for i, stop in enumerate(route):
+        if stop.wait < 0:
+            raise p.error(f"must be >= 0 s, got {stop.wait}", f"route[{i}].wait")
+    return PersonSpec(name=p.text("name"), behaviour=behaviour, speed=speed, start=start, loop=p.flag("loop"),
+                      route=route)
 
 
 def _animated(o: Fields) -> AnimatedObject:

@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: EPL-2.0
-"""Moves humans and dynamic objects along their Catmull-Rom trajectories (thesis 4.2.2, 6.2.2).
+"""Moves humans and dynamic objects along their Catmull-Rom trajectories (thesis 4.2.2, 6.2.2), and reactive
+people to where the crowd model puts them.
 
 At each update, at time ``t`` with the next update due at ``t + T``, a body is given the velocity that brings it
 from where it really is to ``r(t + T)`` (the thesis's ``v = (r(t1) - r(t0)) / dt`` with the measured position as
@@ -23,11 +24,11 @@ import enum
 import math
 from collections.abc import Iterable
 from dataclasses import dataclass
+from typing import Protocol
 
 import pybullet as p
 
 from rei.geometry import yaw_of_quaternion
-from rei.spline import Trajectory
 
 MAX_SPEED = 3.0
 _TILT = 1e-3
@@ -38,12 +39,19 @@ class DriveMode(enum.StrEnum):
     FORCE = "force"
 
 
+class Path(Protocol):
+    """Where a body should be at a time: a trajectory on rails (rei.spline) or a reactive person's place in the
+    crowd model (rei.sim.people)."""
+
+    def position(self, t: float) -> tuple[float, float]: ...
+
+
 @dataclass(slots=True)
 class AnimatedBody:
     name: str
     body: int
     mass: float
-    trajectory: Trajectory
+    trajectory: Path
     height: float = 0.0
     """z of the body's centre when standing; set by :meth:`Animator.place`."""
 

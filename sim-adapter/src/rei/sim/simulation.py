@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: EPL-2.0
-"""One headless pybullet run of a generated test case: world, robot, lidar, odometry, animator, faults.
+"""One headless pybullet run of a generated test case: world, robot, lidar, odometry, animator, faults, and the
+crowd model that moves the reactive people (rei.sim.people).
 
 Time is counted in physics steps (``t = steps / physics_rate``), never read from a clock, and every random draw
 comes from generators seeded from ``seed``: the same case, seed, options and command sequence give the same
@@ -27,6 +28,7 @@ from rei.sim.faults import LaserFault, LaserFaultInjector, parse_fault
 from rei.sim.lidar import Lidar
 from rei.sim.native_output import quiet_native_output
 from rei.sim.odometry import WheelOdometry
+from rei.sim.people import Crowd, CrowdPath, Mover, RobotView, footprint_radius
 from rei.sim.robot_model import load_robot, wheel_torque_for
 from rei.sim.state import ObjectState, RobotState, SimState
 from rei.sim.world_loader import GRAVITY, load_world
@@ -92,6 +94,7 @@ class Simulation:
         with quiet_native_output():
             self._client = p.connect(p.DIRECT)
         self._closed = False
+        self._crowd: Crowd | None = None
         try:
             self._build(np.random.SeedSequence(seed), humans, odom_noise, mode)
         except BaseException:
@@ -162,6 +165,20 @@ class Simulation:
             for a in self.case.animation.objects
             if a.name not in removed
         ]
+        people = [person for person in self.case.animation.people if person.name not in removed]
+        if people:
+            # the people see the robot and the bodies on rails; a third seed, so the others' draws stay as they were
+            (crowd_seed,) = seeds.spawn(1)
+            rails = [world.object(a.name) for a in animated]
+            self._rails = [b.body for b in animated]
+            self._crowd = Crowd(world, people, [
+                Mover(robot_spec.pose[0], robot_spec.pose[1], footprint_radius(robot_spec.shape, robot_spec.size),
+                      robot=True),
+                *(Mover(o.pose[0], o.pose[1], footprint_radius(o.shape, o.size), robot=False) for o in rails)],
+                seed=int(crowd_seed.generate_state(1)[0]))
+            animated += [AnimatedBody(name=person.name, body=self.world.body_of[person.name],
+                                      mass=world.object(person.name).mass, trajectory=CrowdPath(self._crowd, i))
+                         for i, person in enumerate(people)]
         self._animator = Animator(client, animated, mode, self.dt, floors, GRAVITY)
         self._animator.place(0.0)
         # Bodies loaded but never stepped keep stale broadphase bounds: rays would miss them in the first scan.
@@ -202,7 +219,18 @@ class Simulation:
             self._next_animation = max(
                 n + 1, math.ceil(self._animations * self.physics_rate / self.animator_rate - 1e-9)
             )
-            self._animator.update(self.t, self._next_animation * self.dt)
+            t_next = self._next_animation * self.dt
+            if self._crowd is not None:
+                robot = self._robot_view()
+                self._crowd.advance_to(t_next, robot, [(robot.x, robot.y),
+                                                       *(self._pose(b)[:2] for b in self._rails)])
+            self._animator.update(self.t, t_next)
+
+    def _robot_view(self) -> RobotView:
+        x, y, _, yaw = self._pose(self._robot.body)
+        vx, vy, _ = self._twist(self._robot.body)
+        spec = self.case.world.robot
+        return RobotView(x, y, yaw, vx, vy, spec.size[0] / 2, footprint_radius(spec.shape, spec.size))
 
     def _take_scan(self) -> None:
         ranges = self._lidar.scan()
@@ -280,9 +308,16 @@ class Simulation:
         return self._client
 
     # --- lifetime ---------------------------------------------------------------------------------------------
+    @property
+    def crowd(self) -> Crowd | None:
+        """The crowd model of the reactive people, None without any (for tests and tools)."""
+        return self._crowd
+
     def close(self) -> None:
         if not self._closed:
             self._closed = True
+            if self._crowd is not None:
+                self._crowd.close()
             p.disconnect(self._client)
 
     def __enter__(self) -> Self:

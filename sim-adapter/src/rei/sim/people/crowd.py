@@ -1,0 +1,120 @@
+# SPDX-License-Identifier: EPL-2.0
+"""The reactive people of a run: the people server's model stepped in lockstep with the physics.
+
+The crowd steps every :data:`DT` seconds of simulated time (JuPedSim's models are made for 10-50 ms). Before each
+step it tells the model where the robot and the bodies on rails are (their true poses: the people see where the
+robot really is, not where the model last let it be) and where each person wants to go (``walkers``). The animator
+then moves each person's body in the physics towards the model's position, interpolated between the two latest
+crowd steps, as it moves a body on rails towards its trajectory: the body is still a solid the robot can touch and
+the lidar sees.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from rei.artifacts.animation import Behaviour, PersonSpec
+from rei.artifacts.world import Shape, WorldSpec
+from rei.sim.people.server import INIT_TIMEOUT, PROTOCOL, PeopleServer
+from rei.sim.people.walkers import Point, RobotView, Walker
+
+#: Crowd step (s).
+DT = 0.05
+
+
+@dataclass(frozen=True, slots=True)
+class Mover:
+    """A body the people see but the crowd does not move: the robot, or a body on rails."""
+
+    x: float
+    y: float
+    radius: float
+    robot: bool
+
+
+def footprint_radius(shape: Shape, size: Sequence[float]) -> float:
+    """The radius of the disc the model gives a body: a cylinder's own, a box's circumradius."""
+    return size[0] / 2 if shape is Shape.CYLINDER else math.hypot(size[0], size[1]) / 2
+
+
+class Crowd:
+    """The people of ``people`` (their bodies are ``world``'s HUMAN objects of the same names)."""
+
+    def __init__(self, world: WorldSpec, people: Sequence[PersonSpec], movers: Sequence[Mover], *, seed: int,
+                 server: PeopleServer | None = None) -> None:
+        self._server = server or PeopleServer()
+        try:
+            self._start(world, people, movers, seed)
+        except BaseException:
+            self._server.close(kill=True)
+            raise
+
+    def _start(self, world: WorldSpec, people: Sequence[PersonSpec], movers: Sequence[Mover], seed: int) -> None:
+        bodies = {o.name: o for o in world.objects}
+        radii = [footprint_radius(bodies[p.name].shape, bodies[p.name].size) for p in people]
+        floors = [[f.center[0] - world.floor_size / 2, f.center[1] - world.floor_size / 2,
+                   f.center[0] + world.floor_size / 2, f.center[1] + world.floor_size / 2] for f in world.floors]
+        obstacles = [[o.pose[0], o.pose[1], o.pose[3], o.size[0], o.size[1], o.shape is Shape.CYLINDER]
+                     for o in world.objects if o.category.value in ("WALL", "STATIC")]
+        reply = self._server.request({
+            "op": "init", "protocol": PROTOCOL, "dt": DT, "seed": seed, "floors": floors, "obstacles": obstacles,
+            "movers": [[m.x, m.y, m.radius, m.robot] for m in movers],
+            "people": [{"name": p.name, "x": p.route[0].x, "y": p.route[0].y, "radius": r, "speed": p.speed,
+                        "sees_robot": p.behaviour is not Behaviour.IGNORES,
+                        "stops": [[s.x, s.y] for s in p.route], "loop": p.loop}
+                       for p, r in zip(people, radii, strict=True)],
+        }, timeout=INIT_TIMEOUT)
+        self.walkers = [Walker(p, r, [[(q[0], q[1]) for q in leg] for leg in legs], self._route)
+                        for p, r, legs in zip(people, radii, reply["legs"], strict=True)]
+        start = [(p.route[0].x, p.route[0].y) for p in people]
+        self._before = start
+        self._now = start
+        self.t = 0.0
+        self._steps = 0
+        self.robot_lag = 0.0  # the farthest the people's robot was from the true robot at a step (m)
+        self._seen_robot: Point | None = None
+
+    def _route(self, a: Point, b: Point) -> list[Point]:
+        reply = self._server.request({"op": "route", "from": list(a), "to": list(b)})
+        return [(q[0], q[1]) for q in reply["waypoints"]]
+
+    def advance_to(self, t: float, robot: RobotView, movers: Sequence[Point]) -> None:
+        """Step until the crowd's time is at least ``t``; ``movers`` in the order given at the start, the robot
+        first."""
+        while self.t < t - 1e-9:
+            if self._seen_robot is not None:  # where the people saw the robot after the last step, and it is now
+                self.robot_lag = max(self.robot_lag, math.dist(self._seen_robot, movers[0]))
+            targets = []
+            for walker, at in zip(self.walkers, self._now, strict=True):
+                speed, points = walker.target(self.t, at, robot)
+                targets.append([speed, *(list(q) for q in points)])
+            reply = self._server.request({"op": "step", "movers": [list(m) for m in movers], "targets": targets})
+            self._before = self._now
+            self._now = [(q[0], q[1]) for q in reply["positions"]]
+            self._steps += 1
+            self.t = self._steps * DT
+            self._seen_robot = (reply["seen"][0][0], reply["seen"][0][1])
+
+    def position(self, index: int, t: float) -> Point:
+        """Person ``index``'s place in the model at ``t``, between the two latest steps (the latest after)."""
+        (x0, y0), (x1, y1) = self._before[index], self._now[index]
+        a = 1.0 if self._steps == 0 else min(1.0, max(0.0, (t - (self.t - DT)) / DT))
+        return (x0 + a * (x1 - x0), y0 + a * (y1 - y0))
+
+    def close(self) -> None:
+        self._server.close()
+
+
+class CrowdPath:
+    """A person's path for the animator: ``position(t)`` as a trajectory on rails gives it."""
+
+    __slots__ = ("_crowd", "_index")
+
+    def __init__(self, crowd: Crowd, index: int) -> None:
+        self._crowd = crowd
+        self._index = index
+
+    def position(self, t: float) -> Point:
+        return self._crowd.position(self._index, t)

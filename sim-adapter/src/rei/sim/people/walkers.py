@@ -1,0 +1,208 @@
+# SPDX-License-Identifier: EPL-2.0
+"""Where each reactive person wants to go next: its route, its waits, and its behaviour towards the robot.
+
+A walker decides a *target* and a desired speed every crowd step; the pedestrian-dynamics model (the people
+server) decides how the person moves towards it without touching anyone. The route's legs come from the model's
+routing engine, so a walker only ever heads for the next waypoint of a way that is known to be walkable; after a
+detour (a curious look, a scared retreat, a stand in the robot's way) it asks for a new way to its next stop.
+
+A person who sees the robot plans around it as around any obstacle on its way: when the straight line to its next
+target passes the robot closer than :data:`CLEARANCE` (both footprints' radii apart), it heads first for a point
+beside the robot, on the side it is already on (the right when straight ahead), or on the other side where it
+does not fit between the robot and a wall or a piece of furniture, then on. The model alone would not
+do it: a collision-free speed model stops a person in front of a standing obstacle, it does not walk around it.
+
+The behaviours (docs/people.md), each reacting to a robot whose centre comes within :data:`NOTICE`:
+``avoids`` walks its route around the robot; ``ignores`` does not see the robot at all (the model lets it walk
+into it); ``curious`` walks to a spot just in front of the robot and stands there for :data:`LINGER` seconds,
+once; ``scared`` passes the robot :data:`SCARED_CLEARANCE` wide and backs away from a robot nearer than
+:data:`SCARED_DISTANCE`; ``blocks`` keeps stepping into
+the robot's way for :data:`BLOCK_TIME` seconds, once.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+
+from rei.artifacts.animation import Behaviour, PersonSpec
+
+Point = tuple[float, float]
+
+#: A robot whose centre is this close (m) catches the eye of a curious, scared or blocking person.
+NOTICE = 4.0
+#: A waypoint on the way is passed within this distance (m) of the person's centre...
+ARRIVE = 0.3
+#: ...and a stop reached within this one.
+ARRIVE_STOP = 0.15
+#: Gap (m) a curious person leaves between the robot's front and itself.
+CURIOUS_GAP = 0.3
+#: How long (s) a curious person stands in front of the robot once there.
+LINGER = 8.0
+#: Room (m) a person leaves between its footprint and the robot's when it walks around it...
+CLEARANCE = 0.3
+#: ...and a scared person.
+SCARED_CLEARANCE = 1.2
+#: A scared person backs away while the robot's centre is nearer than this (m)...
+SCARED_DISTANCE = 1.5
+#: ...heading for a point this far (m) further from the robot, a fifth faster than it walks.
+SCARED_STEP = 1.5
+#: A blocking person heads for a point this far (m) in front of the robot's front...
+BLOCK_AHEAD = 0.6
+#: ...for this long (s), once.
+BLOCK_TIME = 10.0
+
+
+@dataclass(frozen=True, slots=True)
+class RobotView:
+    """What a person sees of the robot: its centre, heading and velocity, how far its front is from its centre
+    (half its length) and the radius of the disc around its footprint."""
+
+    x: float
+    y: float
+    yaw: float
+    vx: float
+    vy: float
+    front: float
+    radius: float
+
+    def ahead(self, distance: float) -> Point:
+        """The point ``distance`` in front of the robot's centre along its heading."""
+        return (self.x + distance * math.cos(self.yaw), self.y + distance * math.sin(self.yaw))
+
+
+Router = Callable[[Point, Point], list[Point]]
+
+
+class Walker:
+    """One person's intentions; :meth:`target` is asked once per crowd step."""
+
+    def __init__(self, spec: PersonSpec, radius: float, legs: Sequence[Sequence[Point]], route: Router) -> None:
+        self.spec = spec
+        self.radius = radius
+        self._legs = [list(leg) for leg in legs]
+        self._route = route
+        self._leg = 0
+        self._waypoint = 1  # legs start at their stop: the first point to walk to is the next
+        self._wait_until: float | None = None
+        self._started = False
+        self._done = not self._legs
+        self._engaged: float | None = None  # when a curious or blocking person turned to the robot
+        self._linger_until: float | None = None
+        self._spent = False  # curious and blocking people react once
+        self._rejoin = False  # back from a detour: ask for a new way to the next stop
+
+    @property
+    def engaged(self) -> bool:
+        return self._engaged is not None
+
+    def target(self, t: float, at: Point, robot: RobotView) -> tuple[float, list[Point]]:
+        """``(speed, points)``: how fast the person at ``at`` would like to walk at time ``t``, and where: the first
+        of ``points`` where it fits (a way round the robot has two sides)."""
+        speed = self.spec.speed
+        if t < self.spec.start:
+            return (0.0, [at])
+        if not self._started:
+            self._started = True
+            self._wait_until = t + self.spec.route[0].wait
+        reaction = self._react(t, at, robot)
+        if reaction is not None:
+            self._rejoin = True
+            return (reaction[2], self._around(at, reaction[:2], robot))
+        if self._wait_until is not None and t < self._wait_until:
+            return (0.0, [at])  # a model's walker keeps its heading at its target: standing is a speed of 0
+        if self._done:
+            return (0.0, [at])
+        if self._rejoin:
+            self._rejoin = False
+            leg = self._legs[self._leg]
+            stop = leg[-1]
+            self._legs[self._leg] = [at, *self._route(at, stop)[1:]] if math.dist(at, stop) > ARRIVE else [at, stop]
+            self._waypoint = 1
+        point = self._next(t, at)
+        standing = self._done or (self._wait_until is not None and t < self._wait_until)
+        return (0.0 if standing else speed, self._around(at, point, robot))
+
+    def _around(self, at: Point, target: Point, robot: RobotView) -> list[Point]:
+        """``[target]``, or the points beside the robot, the preferred side first, when the way there passes it too
+        close (module docstring)."""
+        behaviour = self.spec.behaviour
+        if behaviour is Behaviour.IGNORES or math.dist(at, (robot.x, robot.y)) >= NOTICE:
+            return [target]
+        wide = SCARED_CLEARANCE if behaviour is Behaviour.SCARED else CLEARANCE
+        dx, dy = target[0] - at[0], target[1] - at[1]
+        length = math.hypot(dx, dy)
+        if length < 1e-9:
+            return [target]
+        ux, uy = dx / length, dy / length
+        rx, ry = robot.x - at[0], robot.y - at[1]
+        along = rx * ux + ry * uy
+        across = rx * uy - ry * ux  # > 0: the robot is right of the way
+        # a target beside the robot (a curious look) must stay reachable: the disc to pass ends short of it
+        clear = min(robot.radius + self.radius + wide, math.dist(target, (robot.x, robot.y)) - 0.05)
+        if along <= 0 or along >= length or abs(across) >= clear:
+            return [target]
+        # pass on the side of the way the robot is not on; straight ahead, keep right
+        side = 1.0 if across > 1e-6 else -1.0
+        return [(robot.x - uy * s * (clear + 0.1), robot.y + ux * s * (clear + 0.1)) for s in (side, -side)]
+
+    def _next(self, t: float, at: Point) -> Point:
+        """The waypoint to head for, moving on past those reached."""
+        for _ in range(sum(len(leg) for leg in self._legs) + 1):  # a loop of stops all within ARRIVE ends here
+            leg = self._legs[self._leg]
+            point = leg[min(self._waypoint, len(leg) - 1)]
+            if math.dist(at, point) >= (ARRIVE if self._waypoint < len(leg) - 1 else ARRIVE_STOP):
+                return point
+            if self._waypoint < len(leg) - 1:
+                self._waypoint += 1
+                continue
+            # the leg's last point is its stop: wait there, then take the next leg
+            stops = self.spec.route
+            arrived = (self._leg + 1) % len(stops)
+            self._wait_until = t + stops[arrived].wait
+            self._leg += 1
+            self._waypoint = 1
+            if self._leg == len(self._legs):
+                if not self.spec.loop:
+                    self._done = True
+                    self._leg -= 1
+                    return point
+                self._leg = 0
+            if t < self._wait_until:
+                return point
+        return point
+
+    def _react(self, t: float, at: Point, robot: RobotView) -> tuple[float, float, float] | None:
+        behaviour = self.spec.behaviour
+        near = math.dist(at, (robot.x, robot.y))
+        if behaviour is Behaviour.SCARED:
+            if near >= SCARED_DISTANCE:
+                return None
+            away = (at[0] - robot.x, at[1] - robot.y)
+            norm = math.hypot(*away) or 1.0
+            return (at[0] + SCARED_STEP * away[0] / norm, at[1] + SCARED_STEP * away[1] / norm,
+                    min(self.spec.speed * 1.2, 3.0))
+        if behaviour not in (Behaviour.CURIOUS, Behaviour.BLOCKS) or self._spent:
+            return None
+        if self._engaged is None:
+            if near >= NOTICE:
+                return None
+            self._engaged = t
+        elif near >= 2 * NOTICE:  # the robot drove off: give up
+            return self._release()
+        if behaviour is Behaviour.CURIOUS:
+            spot = robot.ahead(robot.front + CURIOUS_GAP + self.radius)
+            if self._linger_until is None and math.dist(at, spot) < ARRIVE + 0.2:
+                self._linger_until = t + LINGER
+            if self._linger_until is not None and t >= self._linger_until:
+                return self._release()
+            return (*spot, self.spec.speed)
+        if t - self._engaged >= BLOCK_TIME:
+            return self._release()
+        return (*robot.ahead(robot.front + BLOCK_AHEAD + self.radius), self.spec.speed)
+
+    def _release(self) -> None:
+        """The curious look or the stand in the way is over, for good."""
+        self._spent = True
+        self._engaged = None
