@@ -1,0 +1,116 @@
+# SPDX-License-Identifier: EPL-2.0
+"""People who see the robot, end to end below the router: a routed person of the language, generated, moved by
+the people server's JuPedSim model in lockstep with real pybullet (docs/people.md)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from pathlib import Path
+
+import pytest
+
+from rei.geometry import Twist2D
+from rei.run import MissionRunOptions, run_mission
+from rei.sim.simulation import Simulation
+from rei.sim.state import SimState
+
+STILL = Twist2D(0.0, 0.0)
+
+
+def case(run_cli, write_rei: Callable[[str, str], Path], tmp_path: Path, people: str, robot: str = "F_2_2",
+         size: str = "6 x 4", name: str = "people") -> Path:
+    source = write_rei(f"{name}.rei", f"""
+testcase People {{
+  room Lab size {size} {{
+    {people}
+    robot tb3 : Waffle on {robot}
+  }}
+  mission Go {{ goto F_3_0 goto F_5_0 }}
+  monitor {{ close 0.25 collision 0.01 }}
+}}
+""")
+    out = tmp_path / f"{name}-case"
+    result = run_cli("generate", source, "-o", out)
+    assert result.returncode == 0, result.stderr
+    return out
+
+
+def still_robot(folder: Path, seconds: float, seed: int = 1) -> list[SimState]:
+    """Every state sample (20 Hz) of a run whose robot stands still."""
+    states = []
+    with Simulation(folder, seed=seed) as sim:
+        for k in range(round(seconds * sim.physics_rate)):
+            sim.step(STILL)
+            if k % 12 == 0:
+                states.append(sim.state())
+    return states
+
+
+def place(state: SimState, name: str) -> tuple[float, float]:
+    return next(o.pose[:2] for o in state.objects if o.name == name)
+
+
+def test_a_person_who_sees_the_robot_walks_around_it_to_its_stop(run_cli, write_rei, tmp_path: Path) -> None:
+    folder = case(run_cli, write_rei, tmp_path, "human ann route [F_0_2, F_5_2] speed 1.0 avoids")
+    states = still_robot(folder, 12.0)
+    robot = states[0].robot.pose[:2]
+    assert robot == pytest.approx((2.5, 2.5), abs=0.01)
+    assert not any(s.contacts for s in states)
+    closest = min(math.dist(place(s, "ann"), robot) for s in states)
+    assert closest > 0.21 + 0.25  # the footprints' discs never touched
+    assert math.dist(place(states[-1], "ann"), (5.5, 2.5)) < 0.2
+
+
+def test_a_person_who_ignores_the_robot_walks_into_it(run_cli, write_rei, tmp_path: Path) -> None:
+    folder = case(run_cli, write_rei, tmp_path, "human ann route [F_0_2, F_5_2] speed 1.0 ignores")
+    states = still_robot(folder, 8.0)
+    touched = [s for s in states if ("tb3", "ann") in s.contacts]
+    assert touched, "the person walked through where the robot stands without touching it"
+    assert touched[0].t < 2.5  # at about 2 m from its start at 1 m/s, straight on
+
+
+def test_a_curious_person_ends_in_front_of_the_robot(run_cli, write_rei, tmp_path: Path) -> None:
+    folder = case(run_cli, write_rei, tmp_path, "human cid route [F_0_2, F_5_2] speed 1.0 curious")
+    states = still_robot(folder, 6.0)
+    x, y = place(states[-1], "cid")
+    rx, ry, _, yaw = states[-1].robot.pose
+    ahead = (x - rx) * math.cos(yaw) + (y - ry) * math.sin(yaw)
+    assert 0 < ahead and math.dist((x, y), (rx, ry)) < 1.0  # within 1 m, in front
+    assert not any(s.contacts for s in states)
+
+
+def test_people_crossing_in_a_corridor_keep_apart(run_cli, write_rei, tmp_path: Path) -> None:
+    walkers = "\n    ".join(
+        [f"human l{i} route [F_0_{i}, F_9_{i}] speed 1.2 avoids" for i in range(3)]
+        + [f"human r{i} route [F_9_{i + 1}, F_0_{i + 1}] speed 1.2 avoids" for i in range(3)])
+    folder = case(run_cli, write_rei, tmp_path, walkers, robot="F_5_4", size="10 x 5")
+    states = still_robot(folder, 14.0)
+    names = [o.name for o in states[0].objects]
+    closest = min(math.dist(place(s, a), place(s, b)) for s in states for i, a in enumerate(names)
+                  for b in names[i + 1:])
+    assert closest > 2 * 0.25 - 0.02  # the bodies' discs (0.25 m) at most grazed
+    for name in names:  # everyone got across
+        end = place(states[-1], name)
+        assert (end[0] > 8.5) if name.startswith("l") else (end[0] < 1.5), (name, end)
+
+
+def test_the_people_see_where_the_robot_really_is(run_cli, write_rei, tmp_path: Path) -> None:
+    folder = case(run_cli, write_rei, tmp_path, "human ann route [F_5_2, F_0_2] speed 1.0 avoids", robot="F_0_0")
+    with Simulation(folder, seed=3) as sim:
+        for _ in range(round(8.0 * sim.physics_rate)):
+            sim.step(Twist2D(0.3, 0.1))
+        assert sim.crowd is not None
+        assert sim.crowd.robot_lag < 0.05
+
+
+def test_same_case_and_seed_record_the_same_streams(run_cli, write_rei, tmp_path: Path) -> None:
+    folder = case(run_cli, write_rei, tmp_path,
+                  "human ann route [F_0_2, F_5_2 wait 2s] speed 1.0 loop avoids\n"
+                  "    human bob route [F_5_3, F_0_3] speed 0.8 ignores", robot="F_0_0")
+    streams = []
+    for attempt in ("a", "b"):
+        out = tmp_path / attempt
+        run_mission(folder, out, MissionRunOptions(seed=5), run_id=attempt)
+        streams.append([(out / "streams" / name).read_bytes() for name in ("state.msgpack", "mission.msgpack")])
+    assert streams[0] == streams[1]
