@@ -44,6 +44,7 @@ from typing import Any, BinaryIO
 
 import jupedsim as jps
 import msgpack
+import numpy as np
 import shapely
 from shapely.geometry import Point, Polygon, box
 from shapely.ops import nearest_points
@@ -80,18 +81,33 @@ class _Side:
         self.sim = jps.Simulation(model=jps.AnticipationVelocityModel(rng_seed=seed), geometry=area, dt=dt)
         self.stage = self.sim.add_direct_steering_stage()
         self.journey = self.sim.add_journey(jps.JourneyDescription([self.stage]))
+        self._steered: dict[int, tuple[float, float, float]] = {}
+        self.positions: dict[int, tuple[float, float]] = {}
 
     def add(self, x: float, y: float, radius: float, speed: float) -> int:
-        return self.sim.add_agent(jps.AnticipationVelocityModelAgentParameters(
+        agent = self.sim.add_agent(jps.AnticipationVelocityModelAgentParameters(
             journey_id=self.journey, stage_id=self.stage, position=(x, y), radius=radius, desired_speed=speed))
+        self.positions[agent] = (x, y)
+        return agent
 
     def steer(self, agent: int, target: tuple[float, float], speed: float) -> None:
+        """Set an agent's target and desired speed, only what changed (JuPedSim's agent access costs)."""
+        last = self._steered.get(agent)
+        if last is not None and last[:2] == target and last[2] == speed:
+            return
         a = self.sim.agent(agent)
-        a.target = target
-        a.model.desired_speed = speed
+        if last is None or last[:2] != target:
+            a.target = target
+        if last is None or last[2] != speed:
+            a.model.desired_speed = speed
+        self._steered[agent] = (target[0], target[1], speed)
+
+    def iterate(self) -> None:
+        self.sim.iterate()
+        self.positions = {a.id: tuple(a.position) for a in self.sim.agents()}  # type: ignore[misc]
 
     def position(self, agent: int) -> tuple[float, float]:
-        return tuple(self.sim.agent(agent).position)  # type: ignore[return-value]
+        return self.positions[agent]
 
 
 class Server:
@@ -182,6 +198,15 @@ class Server:
                     return point
         return points[0]
 
+    def _inside_targets(self, points: list[list[float]]) -> list[tuple[float, float]]:
+        """:meth:`_inside_target` of every point, tested at once (a point at a time costs more than the model)."""
+        if not points:
+            return []
+        xy = np.asarray(points, dtype=float)
+        inside = shapely.contains_xy(self._inside, xy[:, 0], xy[:, 1])
+        return [(float(x), float(y)) if ok else self._inside_target(x, y)
+                for (x, y), ok in zip(xy.tolist(), inside.tolist(), strict=True)]
+
     def _inside_target(self, x: float, y: float) -> tuple[float, float]:
         if shapely.contains_xy(self._inside, x, y):
             return (x, y)
@@ -192,14 +217,17 @@ class Server:
         for agents, (x, y) in zip(self.mover_agents, request["movers"], strict=True):
             for side, agent in agents:
                 self._follow(side, agent, (x, y))
-        for (side, agent), radius, (speed, *points) in zip(self.walkers, self.radii, request["targets"], strict=True):
-            side.steer(agent, self._inside_target(*self._first_fitting(points, radius)), speed)
+        chosen = [self._first_fitting(points, radius)
+                  for radius, (_, *points) in zip(self.radii, request["targets"], strict=True)]
+        for (side, agent), target, (speed, *_) in zip(self.walkers, self._inside_targets(chosen),
+                                                      request["targets"], strict=True):
+            side.steer(agent, target, speed)
         for puppet, (side, agent) in zip(self.puppets, self.walkers, strict=True):
             if puppet is not None:
                 self._follow(*puppet, side.position(agent))
-        self.seeing.sim.iterate()
+        self.seeing.iterate()
         if self.blind is not None:
-            self.blind.sim.iterate()
+            self.blind.iterate()
         return {"positions": [list(side.position(agent)) for side, agent in self.walkers],
                 "seen": [list(agents[0][0].position(agents[0][1])) for agents in self.mover_agents]}
 

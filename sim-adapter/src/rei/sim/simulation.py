@@ -28,6 +28,7 @@ from rei.sim.faults import LaserFault, LaserFaultInjector, parse_fault
 from rei.sim.lidar import Lidar
 from rei.sim.native_output import quiet_native_output
 from rei.sim.odometry import WheelOdometry
+from rei.sim.people import DT as CROWD_DT
 from rei.sim.people import Crowd, CrowdPath, Mover, RobotView, footprint_radius
 from rei.sim.robot_model import load_robot, wheel_torque_for
 from rei.sim.state import ObjectState, RobotState, SimState
@@ -86,6 +87,8 @@ class Simulation:
         self._steps = 0
         self._next_animation = 0
         self._animations = 0
+        self._next_crowd = 0
+        self._crowd_steps = 0
         self._next_scan = 0
         self._scans = 0
         self._scan: LaserScan | None = None
@@ -176,9 +179,12 @@ class Simulation:
                       robot=True),
                 *(Mover(o.pose[0], o.pose[1], footprint_radius(o.shape, o.size), robot=False) for o in rails)],
                 seed=int(crowd_seed.generate_state(1)[0]))
-            animated += [AnimatedBody(name=person.name, body=self.world.body_of[person.name],
-                                      mass=world.object(person.name).mass, trajectory=CrowdPath(self._crowd, i))
-                         for i, person in enumerate(people)]
+            # the people's bodies are steered once per crowd step, towards the model's next place
+            self._people = Animator(client, [
+                AnimatedBody(name=person.name, body=self.world.body_of[person.name],
+                             mass=world.object(person.name).mass, trajectory=CrowdPath(self._crowd, i))
+                for i, person in enumerate(people)], mode, self.dt, floors, GRAVITY)
+            self._people.place(0.0)
         self._animator = Animator(client, animated, mode, self.dt, floors, GRAVITY)
         self._animator.place(0.0)
         # Bodies loaded but never stepped keep stale broadphase bounds: rays would miss them in the first scan.
@@ -219,12 +225,14 @@ class Simulation:
             self._next_animation = max(
                 n + 1, math.ceil(self._animations * self.physics_rate / self.animator_rate - 1e-9)
             )
-            t_next = self._next_animation * self.dt
-            if self._crowd is not None:
-                robot = self._robot_view()
-                self._crowd.advance_to(t_next, robot, [(robot.x, robot.y),
-                                                       *(self._pose(b)[:2] for b in self._rails)])
-            self._animator.update(self.t, t_next)
+            self._animator.update(self.t, self._next_animation * self.dt)
+        if self._crowd is not None and n >= self._next_crowd:
+            self._crowd_steps += 1
+            self._next_crowd = max(n + 1, math.ceil(self._crowd_steps * self.physics_rate * CROWD_DT - 1e-9))
+            t_next = self._next_crowd * self.dt
+            robot = self._robot_view()
+            self._crowd.advance_to(t_next, robot, [(robot.x, robot.y), *(self._pose(b)[:2] for b in self._rails)])
+            self._people.update(self.t, t_next)
 
     def _robot_view(self) -> RobotView:
         x, y, _, yaw = self._pose(self._robot.body)
