@@ -38,6 +38,7 @@ import org.rei.context.NamedElement;
 import org.rei.context.NavigationTask;
 import org.rei.context.PhysicalObject;
 import org.rei.context.Robot;
+import org.rei.context.RouteStop;
 import org.rei.context.SimulationObject;
 import org.rei.context.StaticObject;
 import org.rei.context.Task;
@@ -279,7 +280,12 @@ final class ModelEditor {
 
 	/** Changes the control points in place, so that a changed time or floor alone replaces just that token. */
 	private void setTrajectory(SetTrajectory set) {
-		if (!(object(set.name()) instanceof DynamicObject mover)) {
+		PhysicalObject object = object(set.name());
+		if (object instanceof Human person && person.getOwnedRoute() != null) {
+			throw new EditRefusedException("'" + set.name() + "' walks a route, not a trajectory: change its route "
+					+ "in the text");
+		}
+		if (!(object instanceof DynamicObject mover)) {
 			throw new EditRefusedException("'" + set.name() + "' stands on a floor and has no trajectory: move it "
 					+ "instead");
 		}
@@ -348,6 +354,10 @@ final class ModelEditor {
 	/** Furniture and the robot: what stands on a floor. */
 	private PhysicalObject placed(String name, String what) {
 		PhysicalObject object = object(name);
+		if (object instanceof Human person && person.getOwnedRoute() != null) {
+			throw new EditRefusedException("'" + name + "' walks a route and cannot be " + what + " as a whole: "
+					+ "change its route in the text instead");
+		}
 		if (object instanceof DynamicObject) {
 			throw new EditRefusedException("'" + name + "' follows a trajectory and cannot be " + what
 					+ " as a whole: change its trajectory instead");
@@ -441,7 +451,7 @@ final class ModelEditor {
 		}
 	}
 
-	/** What refers to a floor other than its neighbours: objects on it, control points, goals. */
+	/** What refers to a floor other than its neighbours: objects on it, control points, route stops, goals. */
 	private List<String> usersOf(Floor floor) {
 		List<String> users = new ArrayList<>();
 		for (EObject element : (Iterable<EObject>) () -> EcoreUtil.getAllContents(testCase, false)) {
@@ -449,6 +459,8 @@ final class ModelEditor {
 				users.add(describe(object));
 			} else if (element instanceof ControlPoint point && point.getFloor() == floor) {
 				users.add("the trajectory of '" + ((NamedElement) point.eContainer().eContainer()).getName() + "'");
+			} else if (element instanceof RouteStop stop && stop.getFloor() == floor) {
+				users.add("the route of '" + ((NamedElement) stop.eContainer().eContainer()).getName() + "'");
 			} else if (element instanceof NavigationTask task && task.getGoal() == floor) {
 				users.add("goal " + ((Mission) task.eContainer()).getOwnedTasks().indexOf(task));
 			}

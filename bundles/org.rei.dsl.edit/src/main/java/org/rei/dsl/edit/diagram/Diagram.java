@@ -51,11 +51,29 @@ public record Diagram(String testCase, Room room, List<Item> objects, Item robot
 	public record Item(String name, String kind, String floor, double yaw, Double x, Double y, Footprint footprint) {
 	}
 
-	/** A human or a moving object and its control points. */
-	public record Mover(String name, String kind, Footprint footprint, List<Waypoint> points, boolean loop) {
+	/**
+	 * A human or a moving object and its control points; or a person who walks a route and sees the robot: no
+	 * control points, its {@code route} instead (null for everything on rails).
+	 *
+	 * @param loop whether the trajectory, or the route, starts over after its last point or stop
+	 */
+	public record Mover(String name, String kind, Footprint footprint, List<Waypoint> points, boolean loop,
+			Route route) {
 	}
 
 	public record Waypoint(String floor, double seconds, Double x, Double y) {
+	}
+
+	/**
+	 * The way of a person who sees the robot: its stops in order (it stands on the first at the start of the run),
+	 * walking speed in m/s, the time it sets off, and its behaviour towards the robot as the text writes it
+	 * ({@code avoids}, {@code ignores}, {@code curious}, {@code scared}, {@code blocks}).
+	 */
+	public record Route(List<Stop> stops, double speed, double start, String behaviour) {
+	}
+
+	/** A stop of a route: a floor, the seconds the person waits there, and the floor's centre. */
+	public record Stop(String floor, double waitSeconds, Double x, Double y) {
 	}
 
 	/** @param timeout the goal's own timeout, null when the mission's task timeout applies */

@@ -6,6 +6,7 @@ package org.rei.dsl.edit.diagram;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 
 import org.eclipse.emf.ecore.resource.ResourceSet;
 import org.rei.catalogue.Catalogue;
@@ -24,6 +25,8 @@ import org.rei.context.MonitorSpec;
 import org.rei.context.NavigationTask;
 import org.rei.context.PhysicalObject;
 import org.rei.context.Robot;
+import org.rei.context.Route;
+import org.rei.context.RouteStop;
 import org.rei.context.Task;
 import org.rei.context.TestCase;
 import org.rei.context.layout.Cell;
@@ -123,8 +126,24 @@ public final class DiagramBuilder {
 			}
 		}
 		boolean human = mover instanceof Human;
+		Diagram.Route route = null;
+		if (mover instanceof Human person && person.getOwnedRoute() != null) {
+			loop = person.getOwnedRoute().isLoop();
+			route = route(person.getOwnedRoute(), layout);
+		}
 		return new Diagram.Mover(mover.getName(), human ? "human" : "dynamic",
-				footprint(mover.getType(), defaults, human ? "Human" : null), points, loop);
+				footprint(mover.getType(), defaults, human ? "Human" : null), points, loop, route);
+	}
+
+	private static Diagram.Route route(Route route, FloorLayout layout) {
+		List<Diagram.Stop> stops = new ArrayList<>();
+		for (RouteStop stop : route.getOwnedStops()) {
+			double[] centre = centre(stop.getFloor(), layout);
+			stops.add(new Diagram.Stop(name(stop.getFloor()), stop.getWait(), centre == null ? null : centre[0],
+					centre == null ? null : centre[1]));
+		}
+		return new Diagram.Route(stops, route.getSpeed(), route.getStart(),
+				route.getBehaviour().getName().toLowerCase(Locale.ROOT));
 	}
 
 	private static Diagram.Mission mission(TestCase testCase, FloorLayout layout) {
