@@ -363,6 +363,41 @@ def test_hover_tells_where_a_floor_is_what_a_type_measures_and_what_the_threshol
     assert language_server.stop() == 0
 
 
+def test_a_person_on_a_route_is_hovered_outlined_and_checked(
+    language_server: LspClient, tmp_path: Path, repo_root: Path
+) -> None:
+    """A human who walks a route (docs/language.md, people who see the robot): its hover says where it goes and
+    how it behaves, the outline lists it as it lists a human on rails, and its file is clean."""
+    text = (repo_root / "examples" / "people" / "reactive_crossing.rei").read_text(encoding="utf-8")
+    path = tmp_path / "reactive_crossing.rei"
+    path.write_text(text, encoding="utf-8")
+    uri = path.as_uri()
+    language_server.request("initialize", {"processId": None, "rootUri": tmp_path.as_uri(), "capabilities": {}},
+                            timeout=START_TIMEOUT_S)
+    language_server.notify("initialized", {})
+    language_server.notify("textDocument/didOpen",
+                           {"textDocument": {"uri": uri, "languageId": "rei", "version": 1, "text": text}})
+    published = language_server.wait_for(
+        lambda m: m.get("method") == "textDocument/publishDiagnostics" and m["params"]["uri"] == uri,
+        START_TIMEOUT_S, f"diagnostics for {path.name}")
+    assert published["params"]["diagnostics"] == []
+    line = next(i for i, s in enumerate(text.splitlines()) if "human ann" in s)
+    result = language_server.request("textDocument/hover", {
+        "textDocument": {"uri": uri},
+        "position": {"line": line, "character": text.splitlines()[line].index("ann") + 1}}, timeout=START_TIMEOUT_S)
+    hover = result["contents"]["value"] if isinstance(result["contents"], dict) else str(result["contents"])
+    assert hover.startswith("**Human ann**, walking a route at 1.1 m/s in a loop; avoids:"), hover
+    assert "- F_3_0, waits 2 s: x 3..4 m, y 0..1 m, centre (3.50, 0.50)" in hover, hover
+    symbols = language_server.request("textDocument/documentSymbol", {"textDocument": {"uri": uri}},
+                                      timeout=START_TIMEOUT_S)
+
+    def names(items: list[Message]) -> list[str]:
+        return [n for s in items for n in [s["name"].rsplit(".", 1)[-1], *names(s.get("children") or [])]]
+
+    assert {"ann", "bob", "tb3", "table1"} <= set(names(symbols)), names(symbols)
+    assert language_server.stop() == 0
+
+
 VEPL_TEXT = """\
 queryEvent closeFound as robotClose found
 queryEvent thesisFar() as findFarObject found
