@@ -33,6 +33,14 @@ from rei.artifacts import (
 from rei.artifacts.case import case_of_run
 from rei.evaluation.metrics.definitions import NAMES
 from rei.evaluation.metrics.encounter import Encounter, encounters, footprints_of
+from rei.evaluation.metrics.social import (
+    PersonCollision,
+    contact_times,
+    path_irregularity,
+    person_collisions,
+    velocities,
+    zone_times,
+)
 from rei.evaluation.mission_info import MissionInfo, MissionInfoError
 from rei.geometry import footprint_gaps, wrap_angle
 from rei.mission.executor import MISSION_INFO_FILE
@@ -74,13 +82,16 @@ class _States:
     twist: np.ndarray  # (T, 3) vx, vy (world), wz
     odom: np.ndarray  # (T, 2), NaN where not published
     moving: np.ndarray  # (T, M, 3) x, y, yaw of world.json's moving objects, NaN where not published
+    moving_twist: np.ndarray  # (T, M, 2) their vx, vy (world frame), NaN where not published
     contacts: list[frozenset[str]]
     skipped: int = 0  # malformed state messages left out
     first_skipped: str = ""  # why the first of them was
 
 
-#: One state message's sample: t, true (x, y, yaw), twist, odometry (x, y), moving objects' places, contacts.
-_Row = tuple[float, tuple[float, float, float], tuple[float, ...], tuple[float, ...], np.ndarray, frozenset[str]]
+#: One state message's sample: t, true (x, y, yaw), twist, odometry (x, y), moving objects' places and their
+#: velocities, contacts.
+_Row = tuple[float, tuple[float, float, float], tuple[float, ...], tuple[float, ...], np.ndarray, np.ndarray,
+             frozenset[str]]
 
 
 @dataclass(frozen=True, slots=True)
@@ -92,6 +103,9 @@ class Measured:
     #: Each human's encounter: how far off meeting the robot, and the shift of its schedule that meets it (the
     #: search's refinement, rei.search.refine).
     encounters: tuple[Encounter, ...] = ()
+    #: The collisions with people, each with the robot's approach speed at its first sample (the requirement
+    #: NO_ROBOT_AT_FAULT_COLLISION judges them); None when not measured (no person published, no monitor.json).
+    person_collisions: tuple[PersonCollision, ...] | None = None
 
 
 def compute_metrics(run_dir: Path, case_dir: Path | None = None) -> dict[str, Any]:
@@ -114,10 +128,12 @@ def measure(run_dir: Path, case_dir: Path | None = None) -> Measured:
     out.update(_clearances("humans", moving_gaps[:, run.humans]))
     met, unread = _encounters(run)
     out["encounter_margin_humans"] = min((e.margin for e in met), default=None)
-    out.update(_zones(spec, s, np.hstack((static_gaps, moving_gaps)), (*statics.names, *run.moving.names)))
+    zones = _zone_matrices(spec, s, np.hstack((static_gaps, moving_gaps)), (*statics.names, *run.moving.names))
+    out.update(_zones(s, zones))
+    collided = _people(run, moving_gaps, zones[0][:, len(statics.names):] if zones is not None else None, out)
     out.update(_motion(s, run.t1 - run.t0, out["path_length"]))
     return Measured({k: None if isinstance(v, float) and not math.isfinite(v) else v for k, v in out.items()},
-                    run.notes + unread, met)
+                    run.notes + unread, met, collided)
 
 
 def measure_encounters(run_dir: Path, case_dir: Path | None = None) -> tuple[Encounter, ...]:
@@ -177,7 +193,8 @@ def _read_run(run_dir: Path, case_dir: Path | None) -> _Run:
     if window.sum() < 1:
         window = np.ones(len(states.t), dtype=bool)
     s = _States(states.t[window], states.pose[window], states.twist[window], states.odom[window],
-                states.moving[window], [c for c, w in zip(states.contacts, window, strict=True) if w])
+                states.moving[window], states.moving_twist[window],
+                [c for c, w in zip(states.contacts, window, strict=True) if w])
     notes = ((f"{stream_path(run_dir, 'state')}: {states.skipped} malformed state message(s) left out of the "
               f"metrics (the first: {states.first_skipped})"),) if states.skipped else ()
     try:
@@ -226,9 +243,10 @@ def _read_states(run_dir: Path, robot: str, moving: Sequence[str]) -> _States:
             rows.append(row)
     if not rows:
         raise MetricsError(f"{path}: no state with a robot pose")
-    t, pose, twist, odom, places, contacts = zip(*rows, strict=True)
+    t, pose, twist, odom, places, moved, contacts = zip(*rows, strict=True)
     return _States(np.array(t), np.array(pose), np.array(twist), np.array(odom),
-                   np.array(places).reshape(len(t), len(moving), 3), list(contacts), skipped, first)
+                   np.array(places).reshape(len(t), len(moving), 3), np.array(moved).reshape(len(t), len(moving), 2),
+                   list(contacts), skipped, first)
 
 
 def _state_row(state: Any, robot: str, column: Mapping[str, int]) -> _Row | None:
@@ -241,6 +259,7 @@ def _state_row(state: Any, robot: str, column: Mapping[str, int]) -> _Row | None
     v = _floats(r.get("twist"), 3)
     o = _floats(r.get("odom"), 2)
     row = np.full((len(column), 3), math.nan)
+    moved = np.full((len(column), 2), math.nan)
     for body in state.get("objects") or ():
         # type() first: an ABC's isinstance costs 20 times more, and older recordings' full frames list every wall
         if type(body) is not dict and not isinstance(body, Mapping):
@@ -249,6 +268,9 @@ def _state_row(state: Any, robot: str, column: Mapping[str, int]) -> _Row | None
         q = _floats(body.get("pose"), 4) if k is not None else None
         if k is not None and q is not None:
             row[k] = (q[0], q[1], q[3])
+            w = _floats(body.get("twist"), 2)
+            if w is not None:
+                moved[k] = w
     touched = set()
     for pair in state.get("contacts") or ():
         if not isinstance(pair, list | tuple) or len(pair) != 2 or not all(isinstance(n, str) for n in pair):
@@ -257,7 +279,7 @@ def _state_row(state: Any, robot: str, column: Mapping[str, int]) -> _Row | None
         if robot in (a, b):
             touched.add(b if a == robot else a)
     return (float(state["t"]), (p[0], p[1], p[3]), v if v is not None else (math.nan,) * 3,
-            o if o is not None else (math.nan, math.nan), row, frozenset(touched))
+            o if o is not None else (math.nan, math.nan), row, moved, frozenset(touched))
 
 
 def _number(value: Any) -> bool:
@@ -456,12 +478,13 @@ def _clearances(which: str, gaps: np.ndarray) -> dict[str, float | None]:
     return {f"clearance_{which}_min": float(least.min()), f"clearance_{which}_mean_min": float(least.mean())}
 
 
-def _zones(spec: MonitorSpec | None, s: _States, gaps: np.ndarray, names: Sequence[str]) -> dict[str, Value]:
-    """The monitor's zones (queries/geometry.drl): COLLISION with an object when the simulator reports contact
-    or the gap is below the collision threshold, CLOSE when it is below the close threshold; the robot is in
-    COLLISION when it collides with anything, else CLOSE when it is close to anything."""
+def _zone_matrices(spec: MonitorSpec | None, s: _States, gaps: np.ndarray, names: Sequence[str],
+                   ) -> tuple[np.ndarray, np.ndarray] | None:
+    """The monitor's zones per sample and object (queries/geometry.drl), ``(collides, close)``: COLLISION with an
+    object when the simulator reports contact or the gap is below the collision threshold, CLOSE when it is
+    below the close threshold; None without a monitor.json (no thresholds)."""
     if spec is None:
-        return {"close_time": None, "collision_time": None, "collision_episodes": None, "collision_objects": None}
+        return None
     column = {name: k for k, name in enumerate(names)}
     contact = np.zeros(gaps.shape, dtype=bool)
     for row, touched in enumerate(s.contacts):
@@ -471,12 +494,49 @@ def _zones(spec: MonitorSpec | None, s: _States, gaps: np.ndarray, names: Sequen
     with np.errstate(invalid="ignore"):
         collides = contact | (gaps < spec.collision_threshold)
         close = ~contact & (gaps >= spec.collision_threshold) & (gaps < spec.close_threshold)
+    return collides, close
+
+
+def _zones(s: _States, zones: tuple[np.ndarray, np.ndarray] | None) -> dict[str, Value]:
+    """The robot is in COLLISION when it collides with anything, else CLOSE when it is close to anything."""
+    if zones is None:
+        return {"close_time": None, "collision_time": None, "collision_episodes": None, "collision_objects": None}
+    collides, close = zones
     in_collision = collides.any(axis=1)
     in_close = close.any(axis=1) & ~in_collision
     hold = np.append(np.diff(s.t), 0.0)  # a sample stands until the next one
     starts = collides & ~np.vstack((np.zeros((1, collides.shape[1]), dtype=bool), collides[:-1]))
     return {"close_time": float(hold[in_close].sum()), "collision_time": float(hold[in_collision].sum()),
             "collision_episodes": int(starts.sum()), "collision_objects": int(collides.any(axis=0).sum())}
+
+
+def _people(run: _Run, moving_gaps: np.ndarray, moving_collides: np.ndarray | None,
+            out: dict[str, Any]) -> tuple[PersonCollision, ...] | None:
+    """The social metrics (rei.evaluation.metrics.social) into ``out``, over the humans the recording published
+    (none: every one None); returns the collisions with them (None without a monitor.json's thresholds)."""
+    s, humans = run.states, np.nonzero(run.humans)[0]
+    humans = humans[~np.isnan(s.moving[:, humans, 0]).all(axis=0)] if len(humans) else humans
+    if not len(humans):
+        out.update(zone_times(s.t, np.empty((len(s.t), 0)), 0.0))
+        return None
+    out.update(zone_times(s.t, moving_gaps[:, humans], run.t1 - run.t0))
+    robot = velocities(s.t, s.pose[:, :2], s.twist[:, :2])
+    xy = s.moving[:, humans, :2]
+    times, count = [], len(s.t)
+    for column, k in enumerate(humans):
+        person = velocities(s.t, xy[:, column], s.moving_twist[:, k])
+        other = np.hstack((s.moving[:, k], np.broadcast_to(run.moving.boxes[k, 3:], (count, 2))))
+        times.append(contact_times(s.pose, robot, run.robot_size, other, person, run.moving.circle[k]))
+    ttc = np.concatenate(times)
+    out["ttc_humans_min"] = float(np.nanmin(ttc)) if np.isfinite(ttc).any() else None
+    out["path_irregularity_humans"] = path_irregularity(s.t, xy)
+    if moving_collides is None:
+        return None
+    names = [run.moving.names[k] for k in humans]
+    collided = person_collisions(s.t, s.pose[:, :2], robot, xy, names, moving_collides[:, humans])
+    out["collisions_robot_at_fault"] = sum(c.robot_at_fault for c in collided)
+    out["collisions_person_at_fault"] = sum(c.person_at_fault for c in collided)
+    return collided
 
 
 def _motion(s: _States, duration: float, path_length: float) -> dict[str, Value]:

@@ -1,0 +1,206 @@
+# SPDX-License-Identifier: EPL-2.0
+"""Social navigation metrics: how the robot treats the people around it (docs/metrics.md, "People").
+
+Where they come from: the proxemic zones are Hall's (1966), counted as HuNavSim's evaluator (Perez-Higueras et al.
+2023) counts its intimate, personal and social space intrusions: the share of the time the robot spends in the
+nearest person's space; the time to collision is the traffic-conflict measure (Hayward 1972) for the robot and
+each person; collisions split by who was at fault are SEAN 2.0's (Tsoi et al. 2022) "robot on person" and
+"person on robot" collisions, as HuNavSim also reports them; path irregularity is Guzzi et al.'s (2013). Every
+distance is the footprint gap of rei.geometry.footprint_gaps, the monitor's geometry, so a zone, a time to
+collision and the monitor's COLLISION agree on what touching is.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+#: Hall's proxemic distances (m), the outer edges of the intimate, personal and social spaces (Hall 1966).
+ZONES: tuple[tuple[str, float], ...] = (("intimate", 0.45), ("personal", 1.2), ("social", 3.6))
+#: How far ahead (s) the time to collision looks: a meeting predicted later is no collision course.
+TTC_HORIZON = 10.0
+#: The robot is at fault in a collision with a person when it moves towards the person's centre faster than
+#: this (m/s) at the collision's first sample or the one before: slower, it stood (a pushed robot jitters by
+#: millimetres) or backed away, and the person walked into it.
+AT_FAULT_SPEED = 0.05
+#: Below this speed (m/s) a person stands: the direction of a step that short is noise, not a heading.
+WALKING = 0.1
+_PARALLEL = 1e-12  # a relative velocity component below this (m/s) moves along a slab: never enters or leaves it
+
+
+@dataclass(frozen=True, slots=True)
+class PersonCollision:
+    """A collision with a person (an episode of the monitor's COLLISION with a HUMAN object) beginning at sample
+    time ``t``: ``approach`` is the robot's velocity towards the person's centre (m/s; < 0 moving away, NaN when
+    the robot's velocity is not known), the larger of the first sample's and the one before's."""
+
+    person: str
+    t: float
+    approach: float
+
+    @property
+    def robot_at_fault(self) -> bool:
+        return self.approach > AT_FAULT_SPEED
+
+    @property
+    def person_at_fault(self) -> bool:
+        return self.approach <= AT_FAULT_SPEED  # False for NaN: unknown is neither
+
+
+def zone_times(t: np.ndarray, gaps: np.ndarray, duration: float) -> dict[str, float | None]:
+    """Seconds (``<zone>_time``) and share of ``duration`` (``<zone>_share``) the robot spent in the nearest
+    person's intimate, personal or social space, Hall's bands: ``g < 0.45``, ``0.45 <= g < 1.2``,
+    ``1.2 <= g < 3.6`` for the least footprint gap ``g`` of sample ``k`` to a person (``gaps``: ``(T, H)``, NaN
+    where a person is not published), each sample standing until the next. All None without a person."""
+    names = [f"{zone}_{what}" for zone, _ in ZONES for what in ("time", "share")]
+    seen = ~np.isnan(gaps)
+    if not gaps.size or not seen.any():
+        return dict.fromkeys(names)
+    nearest = np.where(seen, gaps, np.inf).min(axis=1)
+    hold = np.append(np.diff(t), 0.0)
+    out: dict[str, float | None] = {}
+    low = -np.inf
+    for zone, high in ZONES:
+        time = float(hold[(nearest >= low) & (nearest < high)].sum())
+        out[f"{zone}_time"] = time
+        out[f"{zone}_share"] = time / duration if duration > 0 else None
+        low = high
+    return out
+
+
+def velocities(t: np.ndarray, xy: np.ndarray, twist: np.ndarray) -> np.ndarray:
+    """``(T, 2)`` planar velocities: the recorded twist ``(T, 2)`` where it is known, else the positions'
+    finite difference (NaN where the positions are not known either)."""
+    out = np.array(twist[:, :2], dtype=float)
+    unknown = ~np.isfinite(out).all(axis=1)
+    if unknown.any() and len(t) >= 2:
+        with np.errstate(invalid="ignore", divide="ignore"):
+            estimate = np.gradient(xy, t, axis=0)
+        out[unknown] = estimate[unknown]
+    return out
+
+
+def contact_times(pose: np.ndarray, velocity: np.ndarray, robot_size: tuple[float, float], other: np.ndarray,
+                  other_velocity: np.ndarray, circle: np.ndarray, horizon: float = TTC_HORIZON) -> np.ndarray:
+    """Time to collision ``(N,)``: how long until the robot's footprint (``pose`` ``(N, 3)``, ``robot_size``) and
+    another's (``other`` ``(N, 5)`` of ``x, y, yaw, size_x, size_y``, a circle of diameter ``size_x`` where
+    ``circle``) touch (their footprint gap reaches 0) when both keep their velocities (``(N, 2)``, world frame)
+    and headings; 0 where they touch or overlap now, inf where they do not meet within ``horizon`` seconds, NaN
+    where a place or velocity is not known.
+
+    Exact for the footprints of rei.geometry.footprint_gaps: the other's centre, seen from the robot moving with
+    the relative velocity, enters the Minkowski sum of the robot's rectangle and the other's shape: for a circle
+    of radius ``r`` the rectangle rounded by ``r`` (two rectangles widened by ``r`` and a disc at each corner), for
+    a rectangle the polygon bounded by the four slabs across both rectangles' axes.
+    """
+    pose, other = np.asarray(pose, dtype=float), np.asarray(other, dtype=float)
+    circle = np.broadcast_to(np.asarray(circle, dtype=bool), (len(pose),))
+    a, b = robot_size[0] / 2, robot_size[1] / 2
+    cos, sin = np.cos(pose[:, 2]), np.sin(pose[:, 2])
+    dx, dy = other[:, 0] - pose[:, 0], other[:, 1] - pose[:, 1]
+    wx, wy = other_velocity[:, 0] - velocity[:, 0], other_velocity[:, 1] - velocity[:, 1]
+    c = np.stack((cos * dx + sin * dy, -sin * dx + cos * dy), axis=1)  # in the robot's frame
+    w = np.stack((cos * wx + sin * wy, -sin * wx + cos * wy), axis=1)
+    ha, hb = other[:, 3] / 2, other[:, 4] / 2
+    # a circle: the rectangle widened along x, along y, and the four corner discs
+    x_axis, y_axis = np.array([1.0, 0.0]), np.array([0.0, 1.0])
+    rounded = np.minimum(_entry(c, w, ((x_axis, a + ha), (y_axis, np.full(len(c), b)))),
+                         _entry(c, w, ((x_axis, np.full(len(c), a)), (y_axis, b + ha))))
+    for sx, sy in ((1, 1), (-1, 1), (-1, -1), (1, -1)):
+        rounded = np.minimum(rounded, _disc_entry(c - np.array([sx * a, sy * b]), w, ha))
+    # a rectangle: the Minkowski sum's edges lie across the two rectangles' four axes
+    yaw = other[:, 2] - pose[:, 2]
+    u = np.stack((np.cos(yaw), np.sin(yaw)), axis=1)
+    v = np.stack((-np.sin(yaw), np.cos(yaw)), axis=1)
+    slabs = []
+    for n in (np.broadcast_to(x_axis, u.shape), np.broadcast_to(y_axis, u.shape), u, v):
+        reach = a * np.abs(n[:, 0]) + b * np.abs(n[:, 1]) + ha * np.abs((n * u).sum(1)) + hb * np.abs((n * v).sum(1))
+        slabs.append((n, reach))
+    box = _entry(c, w, slabs)
+    found = np.where(circle, rounded, box)
+    found[found > horizon] = np.inf
+    unknown = ~(np.isfinite(c).all(axis=1) & np.isfinite(w).all(axis=1) & np.isfinite(other[:, 3:5]).all(axis=1))
+    found[unknown] = np.nan
+    return found
+
+
+def _entry(c: np.ndarray, w: np.ndarray, slabs: Sequence[tuple[np.ndarray, np.ndarray]]) -> np.ndarray:
+    """When the points ``c + w τ`` (τ >= 0) first lie in every slab ``|n · p| <= reach`` (0 inside now, inf
+    never): the slab method of ray casting."""
+    enter = np.zeros(len(c))
+    leave = np.full(len(c), np.inf)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        for n, reach in slabs:
+            s = (c * n).sum(axis=1) if n.ndim == 2 else c @ n
+            d = (w * n).sum(axis=1) if n.ndim == 2 else w @ n
+            along = np.abs(d) < _PARALLEL
+            t1, t2 = (-reach - s) / d, (reach - s) / d
+            first, last = np.minimum(t1, t2), np.maximum(t1, t2)
+            outside = np.abs(s) > reach
+            first = np.where(along, np.where(outside, np.inf, -np.inf), first)
+            last = np.where(along, np.where(outside, -np.inf, np.inf), last)
+            enter, leave = np.maximum(enter, first), np.minimum(leave, last)
+    return np.where(enter <= leave, enter, np.inf)
+
+
+def _disc_entry(c: np.ndarray, w: np.ndarray, r: np.ndarray) -> np.ndarray:
+    """When the points ``c + w τ`` (τ >= 0) first come within ``r`` of the origin (0 within now, inf never)."""
+    a = (w * w).sum(axis=1)
+    b = 2 * (c * w).sum(axis=1)
+    k = (c * c).sum(axis=1) - r * r
+    with np.errstate(invalid="ignore", divide="ignore"):
+        root = np.sqrt(b * b - 4 * a * k)
+        tau = (-b - root) / (2 * a)
+    hits = (a > 0) & (b * b - 4 * a * k >= 0) & (tau >= 0)
+    return np.where(k <= 0, 0.0, np.where(hits, tau, np.inf))
+
+
+def person_collisions(t: np.ndarray, robot_xy: np.ndarray, robot_velocity: np.ndarray, people_xy: np.ndarray,
+                      names: Sequence[str], collides: np.ndarray) -> tuple[PersonCollision, ...]:
+    """The collisions with people: each run of samples in which ``collides`` (``(T, H)``: the monitor's COLLISION
+    with person ``h``) holds, judged at its first sample by the robot's velocity component along the direction
+    from its centre to the person's (``people_xy`` ``(T, H, 2)``); in time order.
+
+    The larger of that component at the first sample and at the sample before it: a contact the simulator reports
+    happened at some physics step since the sample before, and by the first sample the impact may already have
+    stopped the robot (a robot driving into a standing person at 0.26 m/s is down to 0.03 m/s there)."""
+    before = np.vstack((np.zeros((1, collides.shape[1]), dtype=bool), collides[:-1]))
+    found = []
+    for k, h in zip(*np.nonzero(collides & ~before), strict=True):
+        speeds = [_approach(robot_xy[j], robot_velocity[j], people_xy[j, h]) for j in (k - 1, k) if j >= 0]
+        known = [v for v in speeds if not math.isnan(v)]
+        found.append(PersonCollision(names[h], float(t[k]), max(known) if known else math.nan))
+    return tuple(sorted(found, key=lambda c: (c.t, c.person)))
+
+
+def _approach(robot: np.ndarray, velocity: np.ndarray, person: np.ndarray) -> float:
+    """The robot's velocity towards the person's centre (m/s); centres that coincide give no direction: then any
+    motion of the robot is into the person."""
+    towards = person - robot
+    distance = math.hypot(*towards)
+    return float(velocity @ towards / distance) if distance > 1e-9 else float(np.hypot(*velocity))
+
+
+def path_irregularity(t: np.ndarray, people_xy: np.ndarray) -> float | None:
+    """Mean over the people who walked of their total heading change per metre walked (rad/m; Guzzi et al.
+    2013's path irregularity, without subtracting the turning their goals need: REI's people walk a scheduled
+    path whose own turns are in it). ``people_xy``: ``(T, H, 2)``, NaN where a person is not published. A step
+    (two consecutive published samples) slower than WALKING is standing: it has no heading and is not walked;
+    the heading change is taken between consecutive walking steps, so a turn made while standing counts."""
+    values = []
+    for h in range(people_xy.shape[1]):
+        xy = people_xy[:, h]
+        both = np.isfinite(xy).all(axis=1)
+        pair = both[:-1] & both[1:]
+        step = np.diff(xy, axis=0)[pair]
+        length = np.hypot(step[:, 0], step[:, 1])
+        walking = length >= WALKING * np.diff(t)[pair]
+        if not walking.any():
+            continue
+        heading = np.arctan2(step[walking, 1], step[walking, 0])
+        turned = float(np.abs((np.diff(heading) + math.pi) % (2 * math.pi) - math.pi).sum())  # wrap_angle's
+        values.append(turned / float(length[walking].sum()))
+    return float(np.mean(values)) if values else None
