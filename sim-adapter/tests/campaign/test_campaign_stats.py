@@ -88,3 +88,26 @@ def test_metrics_per_room_total_and_variant_over_completed_runs() -> None:
     assert runs[0]["clearance_static_min"] == "0.2" and runs[0]["success"] == "True"
     html = render(Path("."), "c", results, {}, 5)
     assert "id='metrics-g'" in html and "clearance_static_min [m]" in html
+
+
+SOCIAL = ["intimate_time", "intimate_share", "personal_time", "personal_share", "social_time", "social_share",
+          "ttc_humans_min", "collisions_robot_at_fault", "collisions_person_at_fault", "path_irregularity_humans"]
+
+
+def test_runs_csv_and_the_metrics_table_carry_the_social_metrics() -> None:
+    """The social metrics (docs/metrics.md "People") are columns of runs.csv after collision_objects, and rows of
+    metrics.csv like any other: a run without people has none of them to average."""
+    results = [run("A", "base", 0, intimate_time=1.5, ttc_humans_min=2.25, collisions_robot_at_fault=1),
+               run("A", "base", 1, intimate_time=0.5, ttc_humans_min=None, collisions_robot_at_fault=0),
+               run("B", "base", 0)]  # no people: every social metric None
+    header = runs_csv(results).splitlines()[0].split(",")
+    start = header.index("collision_objects") + 1
+    assert header[start:start + len(SOCIAL)] == SOCIAL
+    runs = list(csv.DictReader(io.StringIO(runs_csv(results))))
+    assert [(r["intimate_time"], r["ttc_humans_min"], r["collisions_robot_at_fault"]) for r in runs] == [
+        ("1.5", "2.25", "1"), ("0.5", "", "0"), ("", "", "")]
+    rows = {(r.room, r.metric): r for r in metric_rows(results) if r.variant == "*"}
+    assert (rows[("A", "intimate_time")].n, rows[("A", "intimate_time")].mean) == (2, 1.0)
+    assert (rows[("A", "ttc_humans_min")].n, rows[("A", "collisions_robot_at_fault")].mean) == (1, 0.5)
+    assert rows[("B", "intimate_time")].n == 0
+    assert "collisions_robot_at_fault" in render(Path("."), "c", results, {}, 5)

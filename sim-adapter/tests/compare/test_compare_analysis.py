@@ -97,3 +97,23 @@ def test_one_pair_compares_without_an_interval(tmp_path: Path) -> None:
     data = json.loads(files["json"].read_text())
     assert data["pairs"] == [["g__r1__base__r0", "g__r1__base__r0"]] and data["metrics"]["time"]["ci_low"] is None
     assert "regression(s): clearance_static_min" in files["html"].read_text()
+
+
+def test_the_social_metrics_are_compared_in_their_better_direction(tmp_path: Path) -> None:
+    """A candidate that drives into people more often and nearer to a collision course: more at-fault collisions
+    (lower is better) and a shorter time to collision (higher is better) are both worse; the time in the social
+    zone has no direction of its own and is reported only."""
+    cases = [(f"room{i}", 0) for i in range(4)]
+    base = campaign(tmp_path / "a", {k: {"collisions_robot_at_fault": 0, "ttc_humans_min": 3.0,
+                                         "social_time": 10.0} for k in cases})
+    cand = campaign(tmp_path / "b", {k: {"collisions_robot_at_fault": 1, "ttc_humans_min": 1.0 + 0.1 * n,
+                                         "social_time": 12.0} for n, k in enumerate(cases)})
+    thresholds = parse_thresholds("metrics:\n  collisions_robot_at_fault: {worse_by: 0.5}\n"
+                                  "  ttc_humans_min: {worse_by: 1}\n")
+    c = compare(base, cand, thresholds)
+    by = {m.metric.name: m for m in c.metrics}
+    assert by["collisions_robot_at_fault"].paired.mean == 1.0 and by["collisions_robot_at_fault"].regressed
+    assert by["ttc_humans_min"].paired.mean == pytest.approx(-1.85) and by["ttc_humans_min"].regressed
+    assert by["social_time"].status is None and by["social_time"].paired.mean == 2.0
+    assert by["path_irregularity_humans"].status is None  # no pair has it
+    assert c.exit_code == 1
