@@ -74,9 +74,10 @@ def test_summary_json_has_totals_counts_tasks_and_verdicts(tmp_path: Path) -> No
     assert verdicts["MISSION_SEQUENCE"]["evidence"][0] == {
         "text": "task 0: TASK_FAIL at t=10.000 (planner failure: aborted)", "t": 10.0,
         "signal": "SIG_MISSION_TASK_FAIL", "object": "task_0", "task": 0}
-    assert data["verdict_counts"] == {"pass": 5, "fail": 0, "error": 0, "not-applicable": 1}
+    # NO_ROBOT_AT_FAULT_COLLISION passes too: no collision with the walker (nothing to judge in the state)
+    assert data["verdict_counts"] == {"pass": 6, "fail": 0, "error": 0, "not-applicable": 1}
     assert data["files"] == {"events": "events.csv", "verdicts": "verdicts.xml"}
-    assert ET.parse(tmp_path / "verdicts.xml").getroot().get("tests") == "6"
+    assert ET.parse(tmp_path / "verdicts.xml").getroot().get("tests") == "7"
 
 
 def test_finish_is_final_and_idempotent(tmp_path: Path) -> None:

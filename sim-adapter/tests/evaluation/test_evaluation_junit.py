@@ -19,7 +19,9 @@ def test_verdicts_xml_structure_counts_and_evidence(tmp_path: Path) -> None:
     replay(trace.messages, evaluator, run_id="run-1", sim_duration=20.0)
     root = ET.parse(tmp_path / "verdicts.xml").getroot()
     assert root.tag == "testsuite" and root.get("name") == "Case.M"
-    assert [root.get(k) for k in ("tests", "failures", "errors", "skipped")] == ["6", "2", "1", "1"]
+    # errors: MISSION_SEQUENCE (the mission stream's gap) and NO_ROBOT_AT_FAULT_COLLISION (no recorded state here
+    # to tell who was at fault in the collision with the walker)
+    assert [root.get(k) for k in ("tests", "failures", "errors", "skipped")] == ["7", "2", "2", "1"]
     properties = {p.get("name"): p.get("value") for p in root.iter("property")}
     assert properties["run_id"] == "run-1" and properties["total_utility"] == str(int(evaluator.total))
     cases = {c.get("name"): c for c in root.findall("testcase")}
@@ -32,6 +34,9 @@ def test_verdicts_xml_structure_counts_and_evidence(tmp_path: Path) -> None:
     assert line in (simple.text or "")
     human = cases["MISSION_WITH_HUMAN_TRAJECTORY"].find("failure")
     assert human is not None and "walker" in (human.text or "")
+    fault = cases["NO_ROBOT_AT_FAULT_COLLISION"].find("error")
+    assert fault is not None and "t=12.500 SIG_GEOM_CLOSE_TRANSIT_COLLISION walker task=1" in (fault.text or "")
+    assert "cannot tell who was at fault" in (fault.text or "")
     sequence = cases["MISSION_SEQUENCE"].find("error")
     assert sequence is not None and "t=16.000 SIG_MONITOR_DATA_GAP mission" in (sequence.text or "")
     skipped = cases["MISSION_SEQUENCE_CYCLE"].find("skipped")

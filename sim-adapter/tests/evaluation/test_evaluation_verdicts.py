@@ -4,7 +4,10 @@ evidence names the times, signals, objects and tasks that decided it."""
 
 from __future__ import annotations
 
+import math
+
 from rei.evaluation import Status, VerdictSettings
+from rei.evaluation.metrics.social import AT_FAULT_SPEED, PersonCollision
 from rei.evaluation.outcome import Evidence
 from rei.evaluation.verdicts import REQUIREMENTS
 
@@ -18,6 +21,7 @@ def test_nominal_trace_passes_every_applicable_requirement_in_table_order() -> N
         "GEOM_CLOSE_LASER_CORRECT": Status.PASS, "GEOM_COLLISION_LASER_CORRECT": Status.PASS,
         "MISSION_SIMPLE": Status.PASS, "MISSION_SEQUENCE": Status.PASS,
         "MISSION_SEQUENCE_CYCLE": Status.NOT_APPLICABLE, "MISSION_WITH_HUMAN_TRAJECTORY": Status.PASS,
+        "NO_ROBOT_AT_FAULT_COLLISION": Status.PASS,
     }
 
 
@@ -157,6 +161,7 @@ def test_data_gap_errs_every_verdict_that_reads_the_lost_stream() -> None:
         "GEOM_CLOSE_LASER_CORRECT": Status.ERROR, "GEOM_COLLISION_LASER_CORRECT": Status.ERROR,
         "MISSION_SIMPLE": Status.ERROR, "MISSION_SEQUENCE": Status.PASS,
         "MISSION_SEQUENCE_CYCLE": Status.NOT_APPLICABLE, "MISSION_WITH_HUMAN_TRAJECTORY": Status.ERROR,
+        "NO_ROBOT_AT_FAULT_COLLISION": Status.ERROR,  # its collisions come from the signals, which may miss one
     }
     mission_gap = judge_trace(nominal().at(8.0, "MONITOR_DATA_GAP", "mission", 1.0).messages)
     assert mission_gap["MISSION_SEQUENCE"].status == Status.ERROR
@@ -167,7 +172,7 @@ def test_run_without_mission_end_is_never_a_pass() -> None:
     cut = TraceBuilder().begin().geom(5.0, "FAR_TRANSIT_CLOSE").laser(5.1, "FAR_TRANSIT_CLOSE")
     verdicts = judge_trace(cut.messages, end_time=30.0)
     for name in ("GEOM_CLOSE_LASER_CORRECT", "GEOM_COLLISION_LASER_CORRECT", "MISSION_SIMPLE",
-                 "MISSION_SEQUENCE", "MISSION_WITH_HUMAN_TRAJECTORY"):
+                 "MISSION_SEQUENCE", "MISSION_WITH_HUMAN_TRAJECTORY", "NO_ROBOT_AT_FAULT_COLLISION"):
         assert verdicts[name].status == Status.ERROR, name
         assert "without SIG_MISSION_END" in verdicts[name].message
         assert verdicts[name].evidence[0].t == 30.0
@@ -327,6 +332,87 @@ def test_human_requirement_needs_humans_and_n_collision() -> None:
     assert left_out["MISSION_WITH_HUMAN_TRAJECTORY"].status == Status.NOT_APPLICABLE
     unknown = judge_trace(nominal().messages, monitor={"requirements": {}})["MISSION_WITH_HUMAN_TRAJECTORY"]
     assert unknown.status == Status.ERROR and "maxHumanCollisions" in unknown.message
+
+
+# -- NO_ROBOT_AT_FAULT_COLLISION ------------------------------------------------------------------------------
+
+def _bump(b: TraceBuilder, t: float, person: str = "walker") -> TraceBuilder:
+    """A per-object collision with ``person`` at ``t`` (cep/patterns/contacts.vepl), over before the end."""
+    return b.at(t, "OBJECT_COLLISION_BEGIN", person).at(t + 0.5, "OBJECT_COLLISION_END", person)
+
+
+def test_a_collision_with_the_robot_at_fault_fails_naming_the_person_time_and_approach_speed() -> None:
+    b = _bump(TraceBuilder().begin(), 6.0).task(10.0, 0).end(20.0)
+    verdict = judge_trace(b.messages, person_collisions=(PersonCollision("walker", 6.0, 0.26),))[
+        "NO_ROBOT_AT_FAULT_COLLISION"]
+    assert verdict.status == Status.FAIL, verdict
+    assert verdict.message == ("1 collision(s) with people with the robot at fault, first with walker at t=6.000 "
+                               "(0.26 m/s towards them)")
+    (evidence,) = verdict.evidence
+    # the signal's coordinates: the search folds this failure into the collision's event (rei.search.failures)
+    assert (evidence.t, evidence.signal, evidence.object, evidence.task) == (
+        6.0, "SIG_OBJECT_COLLISION_BEGIN", "walker", 0)
+    assert evidence.text == ("robot at fault: it drove into walker at 0.26 m/s towards their centre (more than "
+                             "0.05 m/s) at t=6.000 during task 0")
+
+
+def test_a_person_walking_into_a_robot_that_stands_or_backs_away_passes() -> None:
+    b = _bump(_bump(TraceBuilder().begin(), 6.0), 8.0).task(10.0, 0).end(20.0)
+    measured = (PersonCollision("walker", 6.0, 0.0), PersonCollision("walker", 8.0, AT_FAULT_SPEED))
+    verdict = judge_trace(b.messages, person_collisions=measured)["NO_ROBOT_AT_FAULT_COLLISION"]
+    assert verdict.status == Status.PASS, verdict
+    assert verdict.message == "2 collision(s) with people (walker), none with the robot at fault"
+    assert [(e.t, e.object) for e in verdict.evidence] == [(6.0, "walker"), (8.0, "walker")]
+    assert verdict.evidence[1].text.startswith("person at fault: walker walked into the robot at t=8.000")
+    assert "+0.05 m/s" in verdict.evidence[1].text  # AT_FAULT_SPEED itself is not yet the robot's fault
+
+
+def test_the_signalled_collision_is_judged_by_the_recorded_one_of_the_same_person_and_sample() -> None:
+    b = _bump(TraceBuilder().begin(), 6.0).task(10.0, 0).end(20.0)
+    # the monitor's clock rounds to the millisecond: the recorded sample 0.4 ms off is the same collision
+    near = judge_trace(b.messages, person_collisions=(PersonCollision("walker", 6.0004, 0.2),))
+    assert near["NO_ROBOT_AT_FAULT_COLLISION"].status == Status.FAIL
+    for measured in ((PersonCollision("walker", 6.05, 0.2),),  # a sample later: another collision
+                     (PersonCollision("other", 6.0, 0.2),),  # someone else
+                     (),  # the state shows none
+                     None):  # the state was not measured
+        verdict = judge_trace(b.messages, person_collisions=measured)["NO_ROBOT_AT_FAULT_COLLISION"]
+        assert verdict.status == Status.ERROR, (measured, verdict)
+        assert verdict.evidence[0].text.startswith("collision with walker at t=6.000 during task 0: cannot tell "
+                                                   "who was at fault")
+    unknown_speed = judge_trace(b.messages, person_collisions=(PersonCollision("walker", 6.0, math.nan),))
+    assert "velocity was not recorded" in unknown_speed["NO_ROBOT_AT_FAULT_COLLISION"].evidence[0].text
+
+
+def test_a_robot_at_fault_stands_against_missing_data_and_no_collision_passes_without_a_state() -> None:
+    b = _bump(_bump(TraceBuilder().begin(), 6.0), 8.0).at(9.0, "MONITOR_DATA_GAP", "state", 2.0)
+    messages = b.task(10.0, 0).end(20.0).messages
+    seen = judge_trace(messages, person_collisions=(PersonCollision("walker", 8.0, 0.2),))
+    assert seen["NO_ROBOT_AT_FAULT_COLLISION"].status == Status.FAIL  # the 6.0 one unjudged, the 8.0 one stands
+    nothing = judge_trace(nominal().messages)["NO_ROBOT_AT_FAULT_COLLISION"]  # collisions with the table only
+    assert nothing.status == Status.PASS and nothing.message == "no collision with people (walker)"
+
+
+def test_a_person_bumping_a_robot_that_touches_a_wall_is_judged_and_tables_are_not_people() -> None:
+    b = TraceBuilder().begin()
+    b.geom(5.0, "FAR_TRANSIT_CLOSE", "W_0_0_bottom").geom(5.5, "CLOSE_TRANSIT_COLLISION", "W_0_0_bottom")
+    b.at(5.5, "OBJECT_COLLISION_BEGIN", "W_0_0_bottom")
+    _bump(b, 6.0)
+    b.at(8.0, "OBJECT_COLLISION_END", "W_0_0_bottom").geom(8.0, "COLLISION_TRANSIT_CLOSE", "W_0_0_bottom")
+    b.geom(9.0, "CLOSE_TRANSIT_FAR", "W_0_0_bottom")
+    verdict = judge_trace(b.task(10.0, 0).end(20.0).messages, person_collisions=(
+        PersonCollision("walker", 6.0, -0.1),))["NO_ROBOT_AT_FAULT_COLLISION"]
+    assert verdict.status == Status.PASS and [e.object for e in verdict.evidence] == ["walker"]
+    table = judge_trace(nominal(collision_with="table1").messages, person_collisions=(
+        PersonCollision("walker", 1.0, 0.3),))["NO_ROBOT_AT_FAULT_COLLISION"]
+    assert table.status == Status.PASS  # no collision with a person signalled: nothing to judge
+
+
+def test_robot_at_fault_needs_humans() -> None:
+    no_humans = judge_trace(nominal().messages, world={"objects": [{"name": "table1", "category": "STATIC"}]})
+    assert no_humans["NO_ROBOT_AT_FAULT_COLLISION"].status == Status.NOT_APPLICABLE
+    left_out = judge_trace(nominal().messages, settings=VerdictSettings(humans=False))
+    assert left_out["NO_ROBOT_AT_FAULT_COLLISION"].status == Status.NOT_APPLICABLE
 
 
 # -- stream integrity ----------------------------------------------------------------------------------------

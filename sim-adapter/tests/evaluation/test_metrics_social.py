@@ -17,6 +17,7 @@ from typing import Any
 import numpy as np
 import pytest
 
+from rei.evaluation import Evaluator, Status, replay
 from rei.evaluation.metrics import NAMES, compute_metrics, measure
 from rei.evaluation.metrics.social import AT_FAULT_SPEED, TTC_HORIZON, ZONES, contact_times
 from rei.geometry import footprint_gaps
@@ -214,6 +215,37 @@ def test_a_person_walking_into_a_stopped_robot_is_at_fault(tmp_path: Path) -> No
         assert collision.approach == pytest.approx(vx) and collision.person_at_fault, name
         assert (measured.metrics["collisions_robot_at_fault"],
                 measured.metrics["collisions_person_at_fault"]) == (0, 1), name
+
+
+def test_the_requirement_judges_the_monitors_collision_by_the_recorded_state(tmp_path: Path) -> None:
+    """End to end through the evaluator: the recorded drive into the person, and the monitor's per-object signal
+    at its first sample, fail NO_ROBOT_AT_FAULT_COLLISION with the person, time and approach speed; the person
+    walking into the stopped robot passes it. The same collision fails MISSION_WITH_HUMAN_TRAJECTORY either way."""
+    world = json.loads((FIXTURE / "world.json").read_text())
+    monitor = json.loads((FIXTURE / "monitor.json").read_text())
+    drives = {"robot": [_state(k, 1.0 + 0.01 * k, 1.0, 0.2, [_person(1.8, 1.0)]) for k in range(46)],
+              "person": [_state(k, 1.0, 1.0, 0.0, [_person(2.0 - 0.015 * k, 1.0, vx=-0.3)]) for k in range(46)]}
+    statuses = {}
+    for name, states in drives.items():
+        run = _run(tmp_path / name, states)
+        first = measure(run).person_collisions[0].t
+        signals = [("SIG_MISSION_BEGIN", 0.0, "mission"), ("SIG_OBJECT_COLLISION_BEGIN", round(first, 3), "h1"),
+                   ("SIG_MISSION_END", 2.25, "mission")]
+        messages = [{"seq": i, "t": t, "signal": signal, "subject": "tb3", "object": obj, "distance": 0.0}
+                    for i, (signal, t, obj) in enumerate(signals)]
+        summary = replay(messages, Evaluator(run, monitor_config=monitor, world=world), run_id=name,
+                         sim_duration=2.25)
+        verdict = summary.verdict("NO_ROBOT_AT_FAULT_COLLISION")
+        statuses[name] = (verdict.status, summary.verdict("MISSION_WITH_HUMAN_TRAJECTORY").status)
+        if name == "robot":
+            assert verdict.message == ("1 collision(s) with people with the robot at fault, first with h1 at "
+                                       "t=2.000 (0.20 m/s towards them)")
+            assert (verdict.evidence[0].t, verdict.evidence[0].object) == (2.0, "h1")
+            assert summary.metrics["collisions_robot_at_fault"] == 1
+        else:
+            assert verdict.evidence[0].text.startswith("person at fault: h1 walked into the robot")
+            assert summary.metrics["collisions_person_at_fault"] == 1
+    assert statuses == {"robot": (Status.FAIL, Status.FAIL), "person": (Status.PASS, Status.FAIL)}
 
 
 # -- path irregularity ---------------------------------------------------------------------------------------

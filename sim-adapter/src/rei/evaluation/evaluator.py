@@ -29,7 +29,7 @@ from typing import Any
 from rei.evaluation.context import CaseContext, VerdictSettings
 from rei.evaluation.junit import write_junit
 from rei.evaluation.log import EventLog, format_number
-from rei.evaluation.metrics import LIST_KEYS, NAMES, MetricsError, measure
+from rei.evaluation.metrics import LIST_KEYS, NAMES, Measured, MetricsError, measure
 from rei.evaluation.mission_info import MissionInfo, MissionInfoError
 from rei.evaluation.outcome import Evidence
 from rei.evaluation.signals import (
@@ -254,12 +254,16 @@ class Evaluator:
             problems = list(self._stream_problems)
             if self._problem_count > len(problems):
                 problems.append(Evidence(f"{self._problem_count - len(problems)} more stream problem(s)"))
+            # the metrics first: a requirement on collisions with people reads the recorded state they measure
+            measured, metrics_error = _measure(self.out_dir)
             trace = Trace(signals, max(duration or 0.0, last), status == "COMPLETED", reason,
                           dict(self._task_reasons), dict(self._task_goals), tuple(problems),
-                          mission_recorded=self.settings.mission, transitions=self.transitions)
+                          mission_recorded=self.settings.mission, transitions=self.transitions,
+                          person_collisions=measured.person_collisions if measured is not None else None)
             context = CaseContext.from_configs(self._mission, self.monitor_config, self.world, self.settings)
             verdicts = judge(trace, context)
-            metrics, metrics_error, metrics_notes = _metrics(self.out_dir)
+            metrics = measured.metrics if measured is not None else dict.fromkeys((*NAMES, *LIST_KEYS))
+            metrics_notes = tuple(Evidence(note) for note in measured.notes) if measured is not None else ()
             testcase = (self._mission.testcase if self._mission and self._mission.testcase
                         else _text((self.monitor_config or {}).get("testcase")))
             mission = self._mission.name if self._mission else None
@@ -342,14 +346,13 @@ def _text(value: Any) -> str | None:
     return value if isinstance(value, str) else None
 
 
-def _metrics(out_dir: Path) -> tuple[dict[str, Any], str | None, tuple[Evidence, ...]]:
-    """The run's navigation metrics from what it recorded and notes on what they left out, or all None and why
+def _measure(out_dir: Path) -> tuple[Measured | None, str | None]:
+    """The run's navigation metrics from what it recorded (with notes on what they left out), or None and why
     (a run that broke before it recorded anything, an evaluator fed by hand). Any failure of the metrics is
     caught: it must not cost the run its summary and verdicts."""
     try:
-        measured = measure(out_dir)
+        return measure(out_dir), None
     except (MetricsError, OSError) as error:
-        return dict.fromkeys((*NAMES, *LIST_KEYS)), str(error), ()
+        return None, str(error)
     except Exception as error:  # noqa: BLE001 - a bug in the metrics: the summary says so, the run is still judged
-        return dict.fromkeys((*NAMES, *LIST_KEYS)), f"metrics failed: {type(error).__name__}: {error}", ()
-    return measured.metrics, None, tuple(Evidence(note) for note in measured.notes)
+        return None, f"metrics failed: {type(error).__name__}: {error}"

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 from rei.evaluation.outcome import Evidence
 from rei.evaluation.signals import (
@@ -19,6 +20,9 @@ from rei.evaluation.signals import (
     Transition,
 )
 
+if TYPE_CHECKING:
+    from rei.evaluation.metrics.social import PersonCollision
+
 
 @dataclass(frozen=True, slots=True)
 class Trace:
@@ -29,6 +33,8 @@ class Trace:
     ``task_reasons``: TASK_FAIL reasons by task index, from the mission topic (signals carry none).
     ``task_goals``: goal positions ``(x, y)`` by task index, from the mission topic's TASK_START events.
     ``stream_problems``: losses in the signal stream itself (seq gaps, malformed messages), as evidence.
+    ``person_collisions``: the collisions with people measured in the recorded state, with the robot's approach
+    speed at each one's first sample (rei.evaluation.metrics); None when the state was not measured.
     """
 
     signals: tuple[Signal, ...]
@@ -42,6 +48,7 @@ class Trace:
     mission_recorded: bool = True
     #: The zone change each signal stands for, as its pattern declares it (rei.evaluation.utilities).
     transitions: Mapping[str, Transition] = field(default_factory=lambda: DEFAULT_TRANSITIONS)
+    person_collisions: tuple[PersonCollision, ...] | None = None
 
     @property
     def began(self) -> bool:

@@ -14,6 +14,9 @@ The precise semantics are in docs/evaluation.md; in short:
   success" (the robot's feedback was wrong, thesis 5.2.1) fails it.
 - MISSION_SEQUENCE_CYCLE: as MISSION_SIMPLE, applicable only to back-and-forth missions (g1, g2)*.
 - MISSION_WITH_HUMAN_TRAJECTORY: collisions with HUMAN objects < N_COLLISION; applicable with humans only.
+- NO_ROBOT_AT_FAULT_COLLISION (REI's own, after Table 4): in no collision with a person was the robot at fault,
+  moving towards the person's centre faster than AT_FAULT_SPEED at the collision's first recorded state sample or
+  the one before (rei.evaluation.metrics.social); applicable with humans only.
 
 Integrity: a lost or malformed signal, an inconsistent transition, or SIG_MONITOR_DATA_GAP of a stream the
 requirement depends on makes it ``error``, and so does a run that did not end with SIG_MISSION_END (or ended
@@ -29,6 +32,7 @@ from dataclasses import dataclass
 
 from rei.evaluation.context import CaseContext
 from rei.evaluation.episodes import Episode, Timeline, build_timeline
+from rei.evaluation.metrics.social import AT_FAULT_SPEED, PersonCollision
 from rei.evaluation.outcome import Evidence, Status, Verdict
 from rei.evaluation.signals import (
     SIG_MISSION_TASK_FAIL,
@@ -47,8 +51,10 @@ MISSION_SIMPLE = "MISSION_SIMPLE"
 MISSION_SEQUENCE = "MISSION_SEQUENCE"
 MISSION_SEQUENCE_CYCLE = "MISSION_SEQUENCE_CYCLE"
 MISSION_WITH_HUMAN_TRAJECTORY = "MISSION_WITH_HUMAN_TRAJECTORY"
+NO_ROBOT_AT_FAULT_COLLISION = "NO_ROBOT_AT_FAULT_COLLISION"
 
-#: Table 4, in the thesis's order, with its short descriptions (the JUnit test cases' documentation).
+#: Table 4, in the thesis's order, then REI's own, with their short descriptions (the JUnit test cases'
+#: documentation).
 REQUIREMENTS: dict[str, str] = {
     GEOM_CLOSE_LASER_CORRECT: "The robot correctly measures the close event",
     GEOM_COLLISION_LASER_CORRECT: "The robot correctly measures the collision event",
@@ -56,12 +62,17 @@ REQUIREMENTS: dict[str, str] = {
     MISSION_SEQUENCE: "The robot feeds back information about all goals",
     MISSION_SEQUENCE_CYCLE: "The robot never collides in a mission where it moves back and forth",
     MISSION_WITH_HUMAN_TRAJECTORY: "The robot avoids collision with a human following a trajectory",
+    NO_ROBOT_AT_FAULT_COLLISION: "The robot never drives into a person",
 }
 
 #: TASK_FAIL reasons (rei.mission.executor) that mean the robot's feedback was missing or wrong.
 _NO_FEEDBACK_REASONS = ("timeout", "false success", "no result")  # the last: a bag's goal (rei.bags.mission)
 #: Distance within which two goals are the same place when their tolerance is unknown (mission.xml default).
 _DEFAULT_GOAL_TOLERANCE = 0.25
+#: How far (s) a collision signal's time may be from the first recorded state sample of the same collision: the
+#: monitor's signal carries the time of the state message that made it (to its clock's millisecond), so half a
+#: sample at the default 20 Hz is generous.
+_SAME_SAMPLE = 0.025
 
 
 def judge(trace: Trace, context: CaseContext) -> tuple[Verdict, ...]:
@@ -75,6 +86,7 @@ def judge(trace: Trace, context: CaseContext) -> tuple[Verdict, ...]:
         _mission_sequence(trace, timeline, context),
         _mission_cycle(trace, timeline, context, collisions),
         _human_trajectory(trace, timeline, context, collisions),
+        _robot_at_fault(trace, timeline, context, collisions),
     )
 
 
@@ -185,10 +197,16 @@ class _Collision:
     signal: Signal
     task: int | None
 
+    @property
+    def during(self) -> str:
+        return f"during task {self.task}" if self.task is not None else "outside any task"
+
     def evidence(self, what: str = "collision") -> Evidence:
-        during = f"during task {self.task}" if self.task is not None else "outside any task"
-        return Evidence(f"{what} with {self.signal.object} at t={self.signal.t:.3f} {during}", self.signal.t,
-                        self.signal.signal, self.signal.object, self.task)
+        return self.fact(f"{what} with {self.signal.object} at t={self.signal.t:.3f} {self.during}")
+
+    def fact(self, text: str) -> Evidence:
+        """``text`` as evidence at this collision's time, signal, object and task."""
+        return Evidence(text, self.signal.t, self.signal.signal, self.signal.object, self.task)
 
 
 def _collisions(signals: tuple[Signal, ...], transitions: Mapping[str, Transition], *,
@@ -266,8 +284,7 @@ def _human_trajectory(trace: Trace, timeline: Timeline, context: CaseContext,
     n = context.n_collision
     if n is None:
         return Verdict(requirement, Status.ERROR, f"cannot judge: {context.n_collision_problem}")
-    per_object = _object_collisions(trace.signals, trace.transitions)
-    hits = [c for c in (per_object if per_object is not None else collisions) if c.signal.object in context.humans]
+    hits = _human_collisions(trace, context, collisions)
     humans = ", ".join(sorted(context.humans))
     return _decide(
         requirement, violations=[c.evidence("human collision") for c in hits] if len(hits) >= n else [],
@@ -276,6 +293,64 @@ def _human_trajectory(trace: Trace, timeline: Timeline, context: CaseContext,
         pass_message=f"{len(hits)} collision(s) with humans ({humans}), fewer than N_COLLISION = {n}",
         pass_evidence=[c.evidence("human collision") for c in hits]
         or [Evidence(f"no collision with {humans}; N_COLLISION = {n}")])
+
+
+def _human_collisions(trace: Trace, context: CaseContext, collisions: list[_Collision]) -> list[_Collision]:
+    """The collisions with humans: per object (a human who bumps a robot already touching a wall counts), or the
+    robot-level ones when the run's rules publish no per-object signal."""
+    per_object = _object_collisions(trace.signals, trace.transitions)
+    return [c for c in (per_object if per_object is not None else collisions) if c.signal.object in context.humans]
+
+
+def _robot_at_fault(trace: Trace, timeline: Timeline, context: CaseContext,
+                    collisions: list[_Collision]) -> Verdict:
+    """The collisions with humans the signals show (as MISSION_WITH_HUMAN_TRAJECTORY counts them), each judged by
+    the recorded state at its first sample and the one before: the robot is at fault when it moved towards the
+    person's centre faster than AT_FAULT_SPEED, else the person walked into a robot that stood or moved away."""
+    requirement = NO_ROBOT_AT_FAULT_COLLISION
+    if not context.humans:
+        return Verdict(requirement, Status.NOT_APPLICABLE, "no human in the simulation")
+    at_fault: list[tuple[_Collision, PersonCollision]] = []
+    judged: list[Evidence] = []
+    unjudged: list[Evidence] = []
+    for hit in _human_collisions(trace, context, collisions):
+        person, t = hit.signal.object, hit.signal.t
+        measured = _measured(hit, trace.person_collisions)
+        if measured is None or math.isnan(measured.approach):
+            why = ("the recorded state was not measured (summary.json's metrics_error says why)"
+                   if trace.person_collisions is None else
+                   "no collision with them begins in the recorded state then" if measured is None else
+                   "the robot's velocity was not recorded then")
+            unjudged.append(hit.fact(f"collision with {person} at t={t:.3f} {hit.during}: cannot tell who was at "
+                                     f"fault, {why}"))
+        elif measured.robot_at_fault:
+            at_fault.append((hit, measured))
+        else:
+            judged.append(hit.fact(f"person at fault: {person} walked into the robot at t={t:.3f} {hit.during}; "
+                                   f"the robot moved towards them at {measured.approach:+.2f} m/s (stood or moved "
+                                   f"away: at most {AT_FAULT_SPEED:g} m/s)"))
+    violations = [hit.fact(f"robot at fault: it drove into {hit.signal.object} at {m.approach:.2f} m/s towards "
+                           f"their centre (more than {AT_FAULT_SPEED:g} m/s) at t={hit.signal.t:.3f} {hit.during}")
+                  for hit, m in at_fault]
+    humans = ", ".join(sorted(context.humans))
+    count = len(judged) + len(at_fault) + len(unjudged)
+    first = at_fault[0] if at_fault else None
+    return _decide(
+        requirement, violations=violations, trace=trace, violations_stand=True,
+        problems=[*_problems(trace, timeline, ("state",), (Source.GEOM,)), *unjudged],
+        fail_message=f"{len(at_fault)} collision(s) with people with the robot at fault, first with "
+                     f"{first[0].signal.object} at t={first[0].signal.t:.3f} ({first[1].approach:.2f} m/s "
+                     f"towards them)" if first else "",
+        pass_message=(f"{count} collision(s) with people ({humans}), none with the robot at fault" if count
+                      else f"no collision with people ({humans})"),
+        pass_evidence=judged or [Evidence(f"no collision with {humans}")])
+
+
+def _measured(hit: _Collision, measured: tuple[PersonCollision, ...] | None) -> PersonCollision | None:
+    """The collision the recorded state shows for the signalled one: the same person, beginning within
+    _SAME_SAMPLE seconds of the signal (the nearest)."""
+    near = [m for m in measured or () if m.person == hit.signal.object and abs(m.t - hit.signal.t) <= _SAME_SAMPLE]
+    return min(near, key=lambda m: abs(m.t - hit.signal.t), default=None)
 
 
 def _legs(trace: Trace) -> str:
