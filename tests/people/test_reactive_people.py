@@ -4,6 +4,7 @@ the people server's JuPedSim model in lockstep with real pybullet (docs/people.m
 
 from __future__ import annotations
 
+import json
 import math
 from collections.abc import Callable
 from pathlib import Path
@@ -114,3 +115,46 @@ def test_same_case_and_seed_record_the_same_streams(run_cli, write_rei, tmp_path
         run_mission(folder, out, MissionRunOptions(seed=5), run_id=attempt)
         streams.append([(out / "streams" / name).read_bytes() for name in ("state.msgpack", "mission.msgpack")])
     assert streams[0] == streams[1]
+
+
+def run_scripted(run_cli, write_rei, tmp_path: Path, people: str, script: str, name: str) -> dict:
+    """`rei run` (router, monitor, evaluator) with the robot on F_2_2 driven by ``script``; summary.json."""
+    source = write_rei(f"{name}.rei", f"""
+testcase Fault {{
+  room Lab size 6 x 4 {{
+    {people}
+    robot tb3 : Waffle on F_2_2
+  }}
+  mission Hold {{ goto F_2_2 within 12s goto F_2_2 within 1s }}
+  monitor {{ close 0.25 collision 0.01 maxHumanCollisions 1 }}
+}}
+""")
+    timeline = tmp_path / f"{name}.script"
+    timeline.write_text(script, encoding="utf-8")
+    out = tmp_path / name
+    result = run_cli("run", source, "-o", out, "--controller", f"script:{timeline}", timeout=240)
+    assert result.returncode in (0, 1), result.stdout + result.stderr
+    return json.loads((out / "summary.json").read_text(encoding="utf-8"))
+
+
+def verdict(summary: dict, requirement: str) -> str:
+    return next(v["status"] for v in summary["verdicts"] if v["requirement"] == requirement)
+
+
+def test_who_was_at_fault(run_cli, write_rei, tmp_path: Path) -> None:
+    # a person who ignores the standing robot walks into it: the person's fault
+    walked_in = run_scripted(run_cli, write_rei, tmp_path, "human ann route [F_0_2, F_5_2] speed 1.0 ignores",
+                             "12.0 0.0 0.0\n", "walked-in")
+    assert walked_in["metrics"]["collisions_person_at_fault"] >= 1
+    assert walked_in["metrics"]["collisions_robot_at_fault"] == 0
+    assert verdict(walked_in, "NO_ROBOT_AT_FAULT_COLLISION") == "pass"
+    # the same person who sees it walks around it: no collision at all
+    around = run_scripted(run_cli, write_rei, tmp_path, "human ann route [F_0_2, F_5_2] speed 1.0 avoids",
+                          "12.0 0.0 0.0\n", "around")
+    assert around["metrics"]["collisions_person_at_fault"] == 0
+    assert around["metrics"]["collisions_robot_at_fault"] == 0
+    # the robot driven into a person who stands (and does not see it coming): the robot's fault
+    rammed = run_scripted(run_cli, write_rei, tmp_path, "human bob route [F_4_2] ignores",
+                          "12.0 0.3 0.0\n", "rammed")
+    assert rammed["metrics"]["collisions_robot_at_fault"] >= 1
+    assert verdict(rammed, "NO_ROBOT_AT_FAULT_COLLISION") == "fail"
