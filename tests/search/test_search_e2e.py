@@ -10,6 +10,7 @@ from __future__ import annotations
 import json
 import re
 import shutil
+import xml.etree.ElementTree as ET
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -58,20 +59,29 @@ def test_the_search_finds_the_collision_in_the_corridor(searched: Searched) -> N
     document = searched.document
     assert document["counts"]["simulated"] == 8 and document["counts"]["errors"] == 0
     signatures = [f["signature"] for f in document["failures"]]
-    crossing = [s for s in signatures if s.startswith(f"{REQUIREMENT}/walker/")]
+    crossing = [f for f in document["failures"] if f["signature"].startswith("COLLISION/walker/")]
     assert crossing, signatures
+    # one collision with the person is one failure, listing both requirements it violates (issue #37: it was two)
+    assert not [s for s in signatures if s.startswith((f"{REQUIREMENT}/", "MISSION_SIMPLE/"))], signatures
+    assert all({"MISSION_SIMPLE", REQUIREMENT} <= set(f["requirements"]) for f in crossing), crossing
+    assert document["counts"]["distinct_failures"] == len(signatures) == len(set(signatures))
+
     def collides(record: dict[str, Any]) -> bool:
-        return any(f["requirement"] == REQUIREMENT for f in record["failures"])
+        return any(REQUIREMENT in f["requirements"] for f in record["failures"])
 
     # the objective has a slope: every run that hit the person came closer to them than any run that did not
     hits = [r["values"][0] for r in simulated(document) if collides(r)]
     misses = [r["values"][0] for r in simulated(document) if not collides(r)]
     assert hits and misses and max(hits) < min(misses), (hits, misses)
     assert re.search(r"\[\d/8\] tpe-\d{4}: metric:clearance_humans_min -?[0-9.e-]+; .*failing \d", searched.second.stdout)
-    xml = (searched.out / "verdicts.xml").read_text(encoding="utf-8")
-    assert f'name="{crossing[0]}"' in xml and "reproduce: " in xml
+    cases = ET.parse(searched.out / "verdicts.xml").getroot().findall("testcase")
+    assert [c.get("name") for c in cases] == signatures  # one test case per event
+    [case] = [c for c in cases if c.get("name") == crossing[0]["signature"]]
+    message = case.find("failure").get("message")  # type: ignore[union-attr]
+    assert f"fails {', '.join(crossing[0]['requirements'])} (reproduce: " in message, message
     html = (searched.out / "search.html").read_text(encoding="utf-8")
-    assert 'id="objective-0"' in html and 'id="failure-1-map"' in html and crossing[0] in html
+    assert 'id="objective-0"' in html and 'id="failure-1-map"' in html and crossing[0]["signature"] in html
+    assert f"fails {', '.join(crossing[0]['requirements'])}" in html
 
 
 def test_a_stopped_search_resumes_without_running_an_evaluation_again(searched: Searched) -> None:
@@ -102,7 +112,7 @@ def test_candidates_that_are_not_valid_never_reach_the_simulator(searched: Searc
 
 def test_the_saved_case_and_seed_rerun_to_the_same_failure_byte_for_byte(searched: Searched, run_cli: Any,
                                                                          tmp_path: Path) -> None:
-    failure = next(f for f in searched.document["failures"] if f["requirement"] == REQUIREMENT)
+    failure = next(f for f in searched.document["failures"] if REQUIREMENT in f["requirements"])
     case = Path(failure["case"])
     header = case.read_text(encoding="utf-8").splitlines()[0]
     assert header == f"// rei search candidate {failure['first']}: rei run {case.name} --seed {failure['seed']}"
@@ -117,7 +127,7 @@ def test_the_saved_case_and_seed_rerun_to_the_same_failure_byte_for_byte(searche
 
 
 def test_shrinking_keeps_the_failure_and_removes_the_bin(searched: Searched) -> None:
-    failure = next(f for f in searched.document["failures"] if f["requirement"] == REQUIREMENT)
+    failure = next(f for f in searched.document["failures"] if REQUIREMENT in f["requirements"])
     shrunk = failure["shrunk"]
     assert shrunk is not None and shrunk["removed"] == ["bin1"], shrunk
     text = Path(shrunk["case"]).read_text(encoding="utf-8")

@@ -97,7 +97,8 @@ def test_verdicts_reproduce_a_failure_with_its_cases_own_line(tmp_path: Path) ->
     case.parent.mkdir(parents=True)
     case.write_text(header("tpe-0002", case, 11, None, RunOptions(controller=CONTROLLER, humans=False)) +
                     "\ntestcase T {}\n", encoding="utf-8")
-    failure = Failure("MISSION_SIMPLE", "-", "F_1_1", 3.0, "the mission failed")
+    failure = Failure("COLLISION", "-", "F_1_1", 3.0, ("MISSION_SIMPLE",), "collision at t=3.000",
+                      "MISSION_SIMPLE: the mission failed")
     [verdict] = failure_verdicts([DistinctFailure(failure, ["tpe-0002"], 10.0, "tpe-0002")],
                                  {failure.signature: str(case)}, simulated=1)
     line = verdict.evidence[-1].text.removeprefix("reproduce: ")

@@ -17,8 +17,9 @@ from rei.search.candidates import VALID, Candidate, CandidateMaker
 from rei.search.reproduce import RunOptions
 from rei.search.space import Edit
 
-#: Whether a run of (text, seed, fault) fails, as failed verdicts' evidence objects (empty: it passes).
-Rule = Callable[[str, int, "str | None"], list[str]]
+#: Whether a run of (text, seed, fault) fails, as failed verdicts: an evidence object (a verdict R1 naming it, no
+#: event), or a verdict as summary.json has it (empty: it passes).
+Rule = Callable[[str, int, "str | None"], list["str | dict[str, Any]"]]
 
 
 class FakeMaker:
@@ -52,7 +53,8 @@ class FakeMaker:
 
 
 class FakePool:
-    """Runs at once in the caller's thread: summary.json with one failed verdict per object ``rule`` names."""
+    """Runs at once in the caller's thread: summary.json with one failed verdict per object ``rule`` names (or the
+    verdicts it gives)."""
 
     name = "fake"
     workers = 1
@@ -67,7 +69,9 @@ class FakePool:
         objects = self.rule(case["text"], case["seed"], case["fault"])
         run_dir = Path(task.run_dir)
         run_dir.mkdir(parents=True, exist_ok=True)
-        verdicts = [{"requirement": "R1", "status": "fail", "message": "hit", "evidence": [{"object": o}]}
+        (run_dir / "task.json").write_text(json.dumps(task.to_dict()), encoding="utf-8")  # as the supervisor does
+        verdicts = [o if isinstance(o, dict) else
+                    {"requirement": "R1", "status": "fail", "message": "hit", "evidence": [{"object": o}]}
                     for o in objects]
         summary = {"status": "COMPLETED", "total_utility": -10.0 if objects else 10.0, "verdicts": verdicts,
                    "sim_duration": 1.0, "metrics": {}}

@@ -21,7 +21,11 @@ def failure(out: Path, n: int) -> dict[str, Any]:
     run.mkdir(parents=True)
     shutil.copytree(ROOM, case)
     (run / "task.json").write_text(json.dumps({"case_dir": str(case)}), encoding="utf-8")
-    return {"signature": f"R{n}/walker/F_{n}_0", "message": "hit", "worst_utility": -10.0,
+    return {"signature": f"COLLISION/walker/F_{n}_0", "kind": "COLLISION", "element": "walker", "place": f"F_{n}_0",
+            "requirements": ["MISSION_SIMPLE", "MISSION_WITH_HUMAN_TRAJECTORY"],
+            "what": f"collision with walker at t={n}.000 during task 0",
+            "message": "MISSION_SIMPLE: 1 collision(s); MISSION_WITH_HUMAN_TRAJECTORY: 1 collision(s) with humans",
+            "worst_utility": -10.0,
             "evaluations": [f"tpe-{n:04d}"], "first": f"tpe-{n:04d}", "seed": 0, "run": str(run),
             "report": str(run / "report.html"), "case": str(out / "candidates" / f"tpe-{n:04d}.rei"), "shrunk": None}
 
@@ -42,6 +46,14 @@ def test_each_failure_s_map_has_ids_of_its_own(tmp_path: Path) -> None:
         assert f'<svg id="failure-{n}-map"' in page
         assert f'id="failure-{n}-map-robot-path"' in page and f'id="failure-{n}-map-world"' in page
     assert 'id="map"' not in page
+
+
+def test_each_failure_is_an_event_with_every_requirement_it_violated(tmp_path: Path) -> None:
+    page = render(tmp_path, document(["utility"], [], [failure(tmp_path, 1)]))
+    section = page[page.index('id="failures"'):]
+    assert "<h3>COLLISION/walker/F_1_0</h3>" in section
+    assert ('<p class="requirements">fails MISSION_SIMPLE, MISSION_WITH_HUMAN_TRAJECTORY: collision with walker at '
+            "t=1.000 during task 0</p>") in section
 
 
 def front_of(page: str) -> list[list[str]]:
@@ -84,6 +96,8 @@ def test_the_baseline_s_figures_and_the_failures_only_one_side_found(tmp_path: P
     assert rows == [["budget", "2", "9"], ["simulated evaluations", "2", "9"], ["in ERROR", "0", "1"],
                     ["failing evaluations", "2", "2"], ["distinct failures", "2", "2"],
                     ["first failure at evaluation", "1", "-"],
-                    ["the search", "R1/walker/F_1_0", "1", "tpe-0001"],
-                    ["the random baseline", "R3/walker/F_3_0", "2", "random-0004"]]
+                    ["the search", "COLLISION/walker/F_1_0", "MISSION_SIMPLE, MISSION_WITH_HUMAN_TRAJECTORY", "1",
+                     "tpe-0001"],
+                    ["the random baseline", "COLLISION/walker/F_3_0", "MISSION_SIMPLE, MISSION_WITH_HUMAN_TRAJECTORY",
+                     "2", "random-0004"]]
     assert "#ff7f0e" in page[page.index('id="objective-0"'):]  # the baseline's dots in the chart

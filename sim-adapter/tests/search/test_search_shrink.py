@@ -14,7 +14,7 @@ from rei.search.shrink import shrink
 from rei.search.space import Space
 from rei.search.spec import Parameter, Range
 
-FAILURE = Failure("R1", "walker", "-", None, "hit")
+FAILURE = Failure("R1", "walker", "-", None, ("R1",), "hit", "R1: hit")  # no event evidence: its own kind
 
 
 def space() -> Space:
@@ -44,7 +44,7 @@ def test_a_case_already_simulated_with_another_seed_is_simulated_again(tmp_path:
     pool = FakePool(lambda text, seed, fault: ["walker"] if seed == 7 else [])
     maker = FakeMaker(tmp_path, DIAGRAM)
     values = {"bin1.floor": "F_2_0", "seed": 7, "fault.rate": None}
-    seen: dict[Any, tuple[list[str], str]] = {}
+    seen: dict[Any, tuple[list[Failure], str]] = {}
     shrink(FAILURE, {**values, "seed": 0}, space(), maker, pool, task_of, tmp_path, "f1", 10, log=lambda _: None,
            seen=seen)
     before = len(pool.ran)
@@ -60,3 +60,23 @@ def test_nothing_kept_leaves_the_failures_own_run(tmp_path: Path) -> None:
                     FakeMaker(tmp_path, DIAGRAM), pool, task_of, tmp_path, "f1", 10, log=lambda _: None,
                     run="original-run")
     assert (result.kept, result.removed, result.run) == (0, [], "original-run")
+
+
+def collided(*requirements: str) -> list[str | dict[str, Any]]:
+    """One collision with the walker, failing ``requirements``: the verdicts as summary.json has them."""
+    return [{"requirement": r, "status": "fail", "message": "hit", "evidence": [
+        {"text": "collision with walker", "t": 2.0, "signal": "SIG_OBJECT_COLLISION_BEGIN", "object": "walker"}]}
+        for r in requirements]
+
+
+def test_a_step_still_fails_the_same_way_only_with_every_requirement_the_event_violated(tmp_path: Path) -> None:
+    # the collision fails both requirements with seed 7; with seed 0 it is still a collision with the walker, but
+    # one that fails MISSION_SIMPLE alone: not the failure being shrunk, so the seed stays
+    both = ("MISSION_SIMPLE", "MISSION_WITH_HUMAN_TRAJECTORY")
+    pool = FakePool(lambda text, seed, fault: collided(*both) if seed == 7 else collided("MISSION_SIMPLE"))
+    event = Failure("COLLISION", "walker", "-", 2.0, both, "collision with walker", "hit")
+    result = shrink(event, {"bin1.floor": "F_2_0", "seed": 7, "fault.rate": None}, space(),
+                    FakeMaker(tmp_path, DIAGRAM), pool, task_of, tmp_path, "f1", 10, log=lambda _: None,
+                    run="original-run")
+    assert [t.seed for t in pool.ran] == [7, 0]  # the bin removed, then the seed moved back
+    assert result.removed == ["bin1"] and result.values["seed"] == 7 and result.kept == 1

@@ -4,6 +4,7 @@ each kind of candidate."""
 
 from __future__ import annotations
 
+import shutil
 import threading
 from pathlib import Path
 from typing import Any
@@ -16,6 +17,7 @@ from test_search_space import DIAGRAM
 from rei.run.jvm import JvmResult
 from rei.search import candidates, study
 from rei.search.candidates import VALID, Candidate, CandidateMaker
+from rei.search.failures import OldRecordError, distinct
 from rei.search.outputs import records
 from rei.search.reproduce import RunOptions
 from rei.search.space import Edit
@@ -146,6 +148,99 @@ def test_a_resumed_search_rebuilds_the_archive_from_the_journal(tmp_path: Path,
     later = [t for t in resumed.study.trials[before:] if t.user_attrs.get("failures")]
     # the first of them too: its failure is known from the first invocation's runs, not from this one's
     assert later and all(t.user_attrs["repeat"] for t in later)
+
+
+def collided(*requirements: str) -> list[str | dict[str, Any]]:
+    """One collision with the walker failing ``requirements``, as summary.json's verdicts have it."""
+    return [{"requirement": r, "status": "fail", "message": "hit", "evidence": [
+        {"text": "collision with walker", "t": 2.0, "signal": "SIG_OBJECT_COLLISION_BEGIN", "object": "walker"}]}
+        for r in requirements]
+
+
+BOTH = ("MISSION_SIMPLE", "MISSION_WITH_HUMAN_TRAJECTORY")
+
+
+def test_the_same_collision_failing_one_more_requirement_is_nothing_new(tmp_path: Path,
+                                                                        monkeypatch: pytest.MonkeyPatch) -> None:
+    # the first collision fails MISSION_SIMPLE alone, the later ones both requirements: the same event, so every
+    # later one only repeats it (by requirement, the second requirement was new once)
+    failing = []
+
+    def rule(text: str, seed: int, fault: str | None) -> list[str | dict[str, Any]]:
+        if seed % 2:
+            return []
+        failing.append(seed)
+        return collided("MISSION_SIMPLE") if len(failing) == 1 else collided(*BOTH)
+
+    s = search(tmp_path, monkeypatch, FakePool(rule), text=SPEC.replace("budget: 3", "budget: 12"))
+    s.run()
+    hits = [t for t in s.study.trials if t.user_attrs.get("failures")]
+    assert len(hits) >= 2 and s._known == {"COLLISION/walker/-"}
+    assert not hits[0].user_attrs.get("repeat") and all(t.user_attrs["repeat"] for t in hits[1:])
+    [failure] = records(s.study, s.out)[hits[0].number]["failures"]
+    assert failure["requirements"] == ["MISSION_SIMPLE"]
+    [group] = distinct([r for r in records(s.study, s.out) if r["status"] == "COMPLETED"])
+    assert group.requirements == BOTH and len(group.keys) == len(hits)
+
+
+class PerRequirement:
+    """A failure as an earlier rei search recorded it in the journal: one per failed requirement."""
+
+    def __init__(self, requirement: str, element: str) -> None:
+        self.requirement, self.element = requirement, element
+        self.signature = f"{requirement}/{element}/-"
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"requirement": self.requirement, "element": self.element, "place": "-", "t": 2.0,
+                "message": "hit", "signature": self.signature}
+
+
+def per_requirement(summary: dict[str, Any], *_: Any) -> list[PerRequirement]:
+    return [PerRequirement(v["requirement"], v["evidence"][0]["object"]) for v in summary["verdicts"]]
+
+
+def test_a_journal_recorded_per_requirement_resumes_counting_events(tmp_path: Path,
+                                                                    monkeypatch: pytest.MonkeyPatch) -> None:
+    def rule(text: str, seed: int, fault: str | None) -> list[str | dict[str, Any]]:
+        return collided(*BOTH) if seed % 2 == 0 else []
+
+    text = SPEC.replace("budget: 3", "budget: 6")
+    with monkeypatch.context() as earlier:
+        earlier.setattr(study, "failures_of", per_requirement)
+        earlier.setattr(study.Search, "_line", lambda *_: "")  # its progress line read its own records
+        first = search(tmp_path, earlier, FakePool(rule), text=text)
+        first.run()
+    recorded = {f["signature"] for t in first.study.trials for f in t.user_attrs.get("failures") or []}
+    assert recorded == {"MISSION_SIMPLE/walker/-", "MISSION_WITH_HUMAN_TRAJECTORY/walker/-"}  # two of one event
+    before = len(first.study.trials)
+    resumed = search(tmp_path, monkeypatch, FakePool(rule), text=text.replace("budget: 6", "budget: 12"))
+    resumed.run()
+    assert resumed._known == {"COLLISION/walker/-"}  # found again from the earlier runs' folders
+    later = [t for t in resumed.study.trials[before:] if t.user_attrs.get("failures")]
+    assert later and all(t.user_attrs["repeat"] for t in later)
+    evaluations = [r for r in records(resumed.study, resumed.out) if r["status"] == "COMPLETED"]
+    [group] = distinct(evaluations)  # the earlier evaluations and the new ones: one distinct failure
+    assert group.failure.signature == "COLLISION/walker/-" and group.requirements == BOTH
+    assert len(group.keys) == sum(bool(r["failures"]) for r in evaluations) > len(later)
+
+
+def test_a_journal_recorded_per_requirement_without_its_runs_is_refused(tmp_path: Path,
+                                                                        monkeypatch: pytest.MonkeyPatch) -> None:
+    def rule(text: str, seed: int, fault: str | None) -> list[str | dict[str, Any]]:
+        return collided(*BOTH) if seed % 2 == 0 else []
+
+    text = SPEC.replace("budget: 3", "budget: 6")
+    with monkeypatch.context() as earlier:
+        earlier.setattr(study, "failures_of", per_requirement)
+        earlier.setattr(study.Search, "_line", lambda *_: "")  # its progress line read its own records
+        first = search(tmp_path, earlier, FakePool(rule), text=text)
+        first.run()
+    failing = next(t.user_attrs["key"] for t in first.study.trials if t.user_attrs.get("failures"))
+    shutil.rmtree(tmp_path / "out" / "runs" / failing)
+    resumed = search(tmp_path, monkeypatch, FakePool(rule), text=text.replace("budget: 6", "budget: 12"))
+    with pytest.raises(OldRecordError, match=rf"runs/{failing}: this evaluation was recorded by an earlier rei "
+                                             r"search, one failure per requirement"):
+        resumed.run()
 
 
 TPE_SPEC = SPEC.replace("sampler: random", "sampler: tpe").replace("budget: 3", "budget: 40")

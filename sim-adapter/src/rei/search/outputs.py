@@ -2,13 +2,14 @@
 """What a search leaves besides its runs: ``search.json`` (every figure), ``verdicts.xml`` (JUnit, one test case
 per distinct failure) and ``search.html`` (rei.search.report).
 
-``search.json`` (format ``rei-search/1``): the spec's name, sampler, budget and objectives; ``evaluations``, one
+``search.json`` (format ``rei-search/2``): the spec's name, sampler, budget and objectives; ``evaluations``, one
 record per trial in order (key, status: COMPLETED, ERROR, invalid, unplannable or interrupted; the parameter
-values, the run's objective values, whether it only repeated known failures, utility, failures, metrics, seed, fault, candidate and run folder, wall and CPU
-seconds, or why it was not simulated); counts; ``failures``, the distinct failures most severe first with every
-evaluation that found them and their shrunk case; and ``baseline``, a random search in the same folder
-(``--sampler random``) for the report's comparison: its sampler, budget, counts, distinct failures (not shrunk)
-and evaluations, as the search's own (``baseline_document``), or null.
+values, the run's objective values, whether it only repeated known failures, utility, failures (events, each with
+the requirements it violates: rei.search.failures), metrics, seed, fault, candidate and run folder, wall and CPU
+seconds, or why it was not simulated); counts; ``failures``, the distinct failures (events) most severe first with
+every requirement they violated, every evaluation that found them and their shrunk case; and ``baseline``, a random
+search in the same folder (``--sampler random``) for the report's comparison: its sampler, budget, counts, distinct
+failures (not shrunk) and evaluations, as the search's own (``baseline_document``), or null.
 """
 
 from __future__ import annotations
@@ -22,10 +23,11 @@ from typing import Any
 import optuna
 
 from rei.evaluation.junit import write_junit
-from rei.search.failures import DistinctFailure, distinct, failure_verdicts
+from rei.search.failures import DistinctFailure, distinct, events_of, failure_verdicts
 from rei.search.spec import SearchSpec
 
-FORMAT = "rei-search/1"
+#: 2: a failure is an event (kind, element, place, with the requirements it violates); 1 had one per requirement
+FORMAT = "rei-search/2"
 
 
 def records(study: optuna.Study, out: Path) -> list[dict[str, Any]]:
@@ -42,7 +44,8 @@ def records(study: optuna.Study, out: Path) -> list[dict[str, Any]]:
             record.update({
                 "values": attrs.get("values"), "repeat": bool(attrs.get("repeat")),
                 "utility": attrs.get("utility"), "sim_duration": attrs.get("sim_duration"),
-                "failures": attrs.get("failures") or [], "metrics": attrs.get("metrics"),
+                "failures": events_of(attrs.get("failures") or [], out / "runs" / key),
+                "metrics": attrs.get("metrics"),
                 "error": attrs.get("error"), "seed": attrs.get("seed"), "fault": attrs.get("fault"),
                 "case": attrs.get("case"), "run": str(out / "runs" / key),
                 "report": str(out / "runs" / key / "report.html"),
@@ -108,10 +111,11 @@ def _case_of(group: DistinctFailure, evaluations: Sequence[Mapping[str, Any]]) -
 def _failure(group: DistinctFailure, evaluations: Sequence[Mapping[str, Any]],
              shrunk: Mapping[str, Any] | None) -> dict[str, Any]:
     first = next(r for r in evaluations if r["key"] == group.first)
-    return {**group.failure.to_dict(), "severity": group.severity, "worst_utility": group.worst_utility,
-            "evaluations": list(group.keys), "first": group.first, "case": first.get("case"), "seed": first.get("seed"),
-            "fault": first.get("fault"), "run": first.get("run"), "report": first.get("report"),
-            "shrunk": dict(shrunk) if shrunk else None}
+    # the event as its first evaluation had it, with every requirement it violated in any of its evaluations
+    return {**group.failure.to_dict(), "requirements": list(group.requirements), "severity": group.severity,
+            "worst_utility": group.worst_utility, "evaluations": list(group.keys), "first": group.first,
+            "case": first.get("case"), "seed": first.get("seed"), "fault": first.get("fault"), "run": first.get("run"),
+            "report": first.get("report"), "shrunk": dict(shrunk) if shrunk else None}
 
 
 def _write_json(path: Path, document: Mapping[str, Any]) -> None:

@@ -2,8 +2,8 @@
 """``OUT/search.html``: one page, no script: the search's figures beside its random baseline's when one ran in
 the same folder, each objective over the evaluations (search and baseline) with the best so far, the Pareto front
 for several objectives, parameter importance (optuna.importance's default evaluator, PED-ANOVA), and each distinct
-failure with a small map of its run (the run report's map, rei.report.map_svg) and links to its case, report and
-shrunk case. A value a run did not have (rei.search.objectives.ABSENT) is left out of the charts, the front and the
+failure (an event, with every requirement it violated: rei.search.failures) with a small map of its run (the run
+report's map, rei.report.map_svg) and links to its case, report and shrunk case. A value a run did not have (rei.search.objectives.ABSENT) is left out of the charts, the front and the
 importance.
 """
 
@@ -72,9 +72,11 @@ def _comparison(document: Mapping[str, Any], baseline: Mapping[str, Any]) -> str
     for name, mine, theirs, side in (("the search", found[0], found[1], document),
                                      ("the random baseline", found[1], found[0], baseline)):
         for f in (f for f in side["failures"] if f["signature"] in mine - theirs):
-            only.append(f"<tr><td>{_e(name)}</td><td>{_e(f['signature'])}</td><td>{len(f['evaluations'])}</td>"
+            only.append(f"<tr><td>{_e(name)}</td><td>{_e(f['signature'])}</td>"
+                        f"<td>{_e(', '.join(f.get('requirements') or []))}</td><td>{len(f['evaluations'])}</td>"
                         f"<td>{_e(f['first'])}</td></tr>")
-    table = ("<table><tr><th>failure found only by</th><th>signature</th><th>evaluations</th><th>first</th></tr>"
+    table = ("<table><tr><th>failure found only by</th><th>signature</th><th>requirements</th><th>evaluations</th>"
+             "<th>first</th></tr>"
              + "".join(only) + "</table>") if only else "<p class=\"muted\">both found the same failures</p>"
     return (f"<section id=\"baseline\"><h2>Search and random baseline</h2><table><tr><th></th>"
             f"<th>search ({_e(document['sampler'])})</th><th>random baseline</th></tr>{body}</table>{table}"
@@ -199,8 +201,10 @@ def _failures(out: Path, document: Mapping[str, Any]) -> str:
         if shrunk.get("case"):
             links.append(f"<a href=\"{_rel(out, shrunk['case'])}\">shrunk case</a> (removed "
                          f"{_e(', '.join(shrunk.get('removed') or []) or 'nothing')})")
-        parts.append(f"<div class=\"failure\"><h3>{_e(failure['signature'])}</h3><p>{_e(failure['message'])}; "
-                     f"worst utility {failure['worst_utility']:g}; found in {len(failure['evaluations'])} "
+        requirements = ", ".join(failure.get("requirements") or [])
+        parts.append(f"<div class=\"failure\"><h3>{_e(failure['signature'])}</h3>"
+                     f"<p class=\"requirements\">fails {_e(requirements)}: {_e(failure.get('what') or '')}</p>"
+                     f"<p>{_e(failure['message'])}; worst utility {failure['worst_utility']:g}; found in {len(failure['evaluations'])} "
                      f"evaluation(s), first {_e(failure['first'])} (seed {failure.get('seed')}). "
                      + " · ".join(links) + "</p>" + _map(Path(failure["run"]), f"failure-{n}") + "</div>")
     parts.append("</section>")

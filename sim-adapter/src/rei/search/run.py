@@ -110,8 +110,17 @@ def _searched(out: Path) -> str | None:
 def _shrink_all(search: Search, shrunk: dict[str, Any], log: Callable[[str], None]) -> dict[str, Any]:
     evaluations = records(search.study, search.out)
     completed = [r for r in evaluations if r["status"] == "COMPLETED"]
-    seen: dict[Case, tuple[list[str], str]] = {}  # cases simulated while shrinking, shared between failures
-    for group in distinct(completed):  # named by signature, not rank: a resumed search may rank a new one higher
+    seen: dict[Case, tuple[list[Failure], str]] = {}  # cases simulated while shrinking, shared between failures
+    groups = distinct(completed)
+    # entries of signatures no evaluation has (a journal of an earlier rei, whose failures were per requirement, was
+    # shrunk by those): dropped, its events are shrunk by their own
+    stale = set(shrunk) - {group.failure.signature for group in groups}
+    if stale:
+        log(f"shrunk.json: {len(stale)} entry(ies) of failures no evaluation shows now (an earlier rei search's, "
+            f"one per requirement) dropped: {', '.join(sorted(stale))}")
+        shrunk = {key: value for key, value in shrunk.items() if key not in stale}
+        _write_shrunk(search.out, shrunk)
+    for group in groups:  # named by signature, not rank: a resumed search may rank a new one higher
         signature = group.failure.signature
         if signature in shrunk:
             continue
@@ -122,10 +131,14 @@ def _shrink_all(search: Search, shrunk: dict[str, Any], log: Callable[[str], Non
                         lambda key, cand, case_dir, run_dir: search.task(key, cand, case_dir, run_dir), search.out,
                         failure_id(signature), search.spec.shrink_budget, log, seen, first["run"])
         shrunk[signature] = result.to_dict()
-        (search.out / SHRUNK).write_text(json.dumps(shrunk, indent=2, default=str) + "\n", encoding="utf-8")
+        _write_shrunk(search.out, shrunk)
         log(f"  shrunk: {result.kept} reduction(s) kept in {result.steps} simulation(s), removed "
             f"{', '.join(result.removed) or 'nothing'}: {result.case}")
     return shrunk
+
+
+def _write_shrunk(out: Path, shrunk: dict[str, Any]) -> None:
+    (out / SHRUNK).write_text(json.dumps(shrunk, indent=2, default=str) + "\n", encoding="utf-8")
 
 
 def _run_reports(document: dict[str, Any], log: Callable[[str], None]) -> None:

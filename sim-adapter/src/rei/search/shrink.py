@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: EPL-2.0
 """Shrinking a failure, as property-based testing shrinks a counterexample: greedily, one step at a time, keeping
-each step that still fails the same way (same requirement, same element, same place).
+each step that still fails the same way: the same event (kind, element, place: rei.search.failures), violating at
+least the requirements it did.
 
 Steps, in order: remove each object and human the failure does not name, then the extra pieces of furniture
 (the last first), then move each parameter back to the base case's value. Each step is one candidate (validated and checked like any other) and, when valid, one
@@ -35,7 +36,7 @@ Case = tuple[str | None, int, str | None]
 def failure_id(signature: str) -> str:
     """A distinct failure's name in file names, the same in every invocation: its signature's parts joined by ``-``
     (other characters than letters, digits, ``_`` and ``.`` as ``_``) and 6 hex digits of the signature's hash, which
-    keep apart two signatures that read alike (``MISSION_SIMPLE/walker/F_2_1``: ``MISSION_SIMPLE-walker-F_2_1-65a958``)."""
+    keep apart two signatures that read alike (``COLLISION/walker/F_2_1``: ``COLLISION-walker-F_2_1-4a4421``)."""
     readable = "-".join(re.sub(r"[^A-Za-z0-9_.]", "_", part) for part in signature.split("/"))
     return f"{readable[:80]}-{hashlib.sha256(signature.encode('utf-8')).hexdigest()[:6]}"
 
@@ -60,11 +61,11 @@ class Shrunk:
 
 def shrink(failure: Failure, values: Mapping[str, Any], space: Space, maker: CandidateMaker, pool: Pool,
            task_of: Callable[[str, Candidate, Path, Path], Any], out: Path, failure_name: str, budget: int,
-           log: Callable[[str], None] = print, seen: dict[Case, tuple[list[str], str]] | None = None,
+           log: Callable[[str], None] = print, seen: dict[Case, tuple[list[Failure], str]] | None = None,
            run: str | None = None) -> Shrunk:
     """The smallest case found within ``budget`` simulations that still fails as ``failure`` does; ``run``: the
     run that showed the failure (the shrunk case's run while no reduction is kept). ``seen``: the failures
-    (signatures, run folder) of cases simulated while shrinking other failures, by case (``case_of``); a case is
+    (events, run folder) of cases simulated while shrinking other failures, by case (``case_of``); a case is
     not simulated twice. ``failure_name``: the failure's name in file names (``failure_id``)."""
     seen = {} if seen is None else seen
     base = space.base_values()
@@ -85,8 +86,8 @@ def shrink(failure: Failure, values: Mapping[str, Any], space: Space, maker: Can
         if case == current_case:
             return True, current_run, case
         if case in seen:
-            signatures, known_run = seen[case]
-            same = failure.signature in signatures
+            events, known_run = seen[case]
+            same = any(event.shows(failure) for event in events)
             return same, known_run if same else None, case
         steps += 1
         case_dir, problem = maker.generate(candidate)
@@ -101,8 +102,8 @@ def shrink(failure: Failure, values: Mapping[str, Any], space: Space, maker: Can
             return False, None, None
         summary = json.loads((run_dir / "summary.json").read_text(encoding="utf-8"))
         found = failures_of(summary, run_dir, case_dir, space.floor_at)
-        seen[case] = ([f.signature for f in found], str(run_dir))
-        same = any(f.signature == failure.signature for f in found)
+        seen[case] = (found, str(run_dir))
+        same = any(event.shows(failure) for event in found)
         log(f"  shrink {failure.signature} step {steps}: {'still fails' if same else 'passes or fails otherwise'}")
         return same, str(run_dir) if same else None, case
 

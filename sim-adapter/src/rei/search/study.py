@@ -37,7 +37,7 @@ from rei.campaign.supervise import Outcome
 from rei.search.base import with_base_case
 from rei.search.candidates import VALID, Candidate, CandidateMaker
 from rei.search.design import sobol_design, startup_trials
-from rei.search.failures import failures_of
+from rei.search.failures import events_of, failures_of
 from rei.search.objectives import ABSENT, better, present, score
 from rei.search.pool import Pool
 from rei.search.refine import ATTR, DEPTH, encounters, refined
@@ -157,7 +157,7 @@ class Search:
                                  default=-1)
         self.progress = SearchProgress()
         self._refine = refining(spec)
-        self._known: set[str] = set()  # failure signatures found so far
+        self._known: set[str] = set()  # the signatures of the events found so far (rei.search.failures)
         self._met: set[str] = set()  # the elements (people, objects, walls) of those failures
         self._raw: list[list[float | None]] = []  # the simulated evaluations' own objective values (None: absent)
 
@@ -197,10 +197,13 @@ class Search:
                 self.progress.simulated += 1
                 if trial.user_attrs.get("values"):
                     self._raw.append(_own(trial.user_attrs["values"]))
-                self._known |= {f["signature"] for f in trial.user_attrs.get("failures") or []}
-                self._met |= {f["element"] for f in trial.user_attrs.get("failures") or []}
+                # events, also of an evaluation recorded per requirement by an earlier rei (found again from its run)
+                found = events_of(trial.user_attrs.get("failures") or [],
+                                  self.out / "runs" / str(trial.user_attrs.get("key") or self.key(trial.number)))
+                self._known |= {f["signature"] for f in found}
+                self._met |= {f["element"] for f in found}
                 self.progress.errors += trial.user_attrs.get("status") == "ERROR"
-                self.progress.failing += bool(trial.user_attrs.get("failures"))
+                self.progress.failing += bool(found)
             elif trial.user_attrs.get("status") in ("invalid", "unplannable"):
                 self.progress.invalid += 1
         done = self.progress.simulated
@@ -376,7 +379,8 @@ class Search:
         if status != "COMPLETED":
             how = f"ERROR {attrs.get('error')}"
         else:
-            failed = ", ".join(f["signature"] for f in attrs.get("failures") or []) or "no failure"
+            failed = ", ".join(f"{f['signature']} ({', '.join(f['requirements'])})"
+                               for f in attrs.get("failures") or []) or "no failure"
             how = f"{_figures(self.spec, values)}; {failed}"
         best = self.best_text()
         return (f"[{p.simulated}/{self.spec.budget}] {self.key(number)}: {how} | failing {p.failing}, "
