@@ -11,7 +11,8 @@ their near misses, docs/search.md), controller (``nav``; the weakened
 ``nav:moving_horizon=0``: the local planner no longer predicts where the people walk, so it meets a person it would
 have let pass; in the doorways corridor, one floor wide, a smaller planner margin such as ``inflation_margin=0``
 changes nothing) and seed, one search with ``--sampler tpe`` and one with ``--sampler random`` run with the same
-budget (``--no-shrink``: shrinking is not part of the comparison). Printed per pair: distinct failures found and
+budget (``--no-shrink``: shrinking is not part of the comparison). Printed per pair: distinct failures found (events:
+what happened, with whom, where, however many requirements each violates; search.json's ``distinct_failures``) and
 simulated evaluations up to the first failure (a search that found none counts its budget plus one); then for each
 room and controller the median over the seeds of both sides, and RATIO lines of search to random over the sums of
 these medians, with both sides.
@@ -26,7 +27,8 @@ and after each search and at the end.
 ``--reuse random`` reads the random searches already finished in the ``--keep`` folder at the same budget instead of
 running them again: the random sampler's candidates depend only on its seed, and every run is deterministic, so a
 re-run gives the same evaluations; only its wall time would differ, and reused searches are left out of the
-throughput figure.
+throughput figure. A search.json of an earlier format (``rei-search/1`` counted a failure per requirement) is written
+again first, by `rei search` on the same folder with nothing left to run, so reused searches count events too.
 
 Goals (issue 30): at a budget of 200, at least 3x the distinct failures of random sampling, the first failure in
 at most a third of random's evaluations, and at least 0.9x the campaign's throughput.
@@ -51,6 +53,9 @@ from pathlib import Path
 from typing import Any
 
 import yaml
+from rei.search.outputs import (
+    FORMAT,  # search.json's format: rei-search/2 counts events as distinct failures
+)
 
 REPO = Path(__file__).resolve().parents[1]
 DISTINCT_GOAL = 3.0
@@ -123,7 +128,7 @@ def main() -> int:
                     line = [f"{room:18} {variant:9} seed {seed}:"]
                     for sampler in args.samplers:
                         target = folder / f"{spec.stem}-{sampler}"
-                        figures = _reused(target, args.budget) if sampler in args.reuse else None
+                        figures = _reused(spec, target, sampler, args.budget) if sampler in args.reuse else None
                         if figures is None:
                             figures = _search(spec, target, sampler, args.budget, args.workers)
                             fresh.append((controller, figures))
@@ -171,24 +176,41 @@ def _search(spec: Path, target: Path, sampler: str, budget: int, workers: int) -
     shutil.rmtree(target, ignore_errors=True)  # a search left there would resume, and its wall time would mean nothing
     load = _load()
     started = time.perf_counter()
-    subprocess.run([sys.executable, "-m", "rei.cli", "search", str(spec), "-o", str(target), "--sampler", sampler,
-                    "--budget", str(budget), "--workers", str(workers), "--no-shrink"],
-                   check=False, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=_env())
+    _rei_search(spec, target, sampler, budget, workers)
     wall = time.perf_counter() - started
     (target / BENCH).write_text(json.dumps({"budget": budget, "wall": wall, "workers": workers, "load_before": load,
                                             "load_after": _load()}) + "\n", encoding="utf-8")
     return _figures(target, wall)
 
 
-def _reused(target: Path, budget: int) -> dict[str, Any] | None:
-    """A search finished in an earlier invocation at this budget, or None."""
+def _rei_search(spec: Path, target: Path, sampler: str, budget: int, workers: int) -> None:
+    subprocess.run([sys.executable, "-m", "rei.cli", "search", str(spec), "-o", str(target), "--sampler", sampler,
+                    "--budget", str(budget), "--workers", str(workers), "--no-shrink"],
+                   check=False, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=_env())
+
+
+def _reused(spec: Path, target: Path, sampler: str, budget: int) -> dict[str, Any] | None:
+    """A search finished in an earlier invocation at this budget, or None. Its search.json is written again when an
+    earlier rei wrote it (another format: its distinct failures were per requirement, not events)."""
     try:
         bench = json.loads((target / BENCH).read_text(encoding="utf-8"))
     except (OSError, ValueError):
         return None
     if bench.get("budget") != budget:
         return None
+    if _format(target) != FORMAT:
+        _rei_search(spec, target, sampler, budget, 1)  # nothing left to run: it only writes its outputs
+        if _format(target) != FORMAT:
+            sys.exit(f"{target}: search.json could not be written again in format {FORMAT} (rei search "
+                     f"{spec} -o {target} --sampler {sampler} --budget {budget} says why)")
     return {**_figures(target, float(bench["wall"])), "reused": True}
+
+
+def _format(target: Path) -> str | None:
+    try:
+        return json.loads((target / "search.json").read_text(encoding="utf-8")).get("format")
+    except (OSError, ValueError):
+        return None
 
 
 def _figures(target: Path, wall: float) -> dict[str, Any]:
