@@ -158,3 +158,23 @@ def test_who_was_at_fault(run_cli, write_rei, tmp_path: Path) -> None:
                           "12.0 0.3 0.0\n", "rammed")
     assert rammed["metrics"]["collisions_robot_at_fault"] >= 1
     assert verdict(rammed, "NO_ROBOT_AT_FAULT_COLLISION") == "fail"
+
+
+def test_what_the_robot_cost_the_people(run_cli, write_rei, tmp_path: Path) -> None:
+    from rei.sim.people.cost import people_cost
+
+    def cost(robot: str, name: str) -> dict:
+        folder = case(run_cli, write_rei, tmp_path, "human ann route [F_0_2, F_5_2] speed 1.0", robot=robot,
+                      name=name)
+        with Simulation(folder, seed=1) as sim:
+            for _ in range(round(9.0 * sim.physics_rate)):
+                sim.step(STILL)
+            assert sim.crowd is not None
+            return people_cost(sim.crowd, sim.t)["ann"]
+
+    away = cost("F_2_0", "away")  # not in her way: she walks as she would without it
+    assert (away["delay"], away["detour"], away["censored"]) == (0.0, 0.0, False)
+    assert away["arrivals"] == away["arrivals_without_robot"] and len(away["arrivals"]) == 1
+    blocking = cost("F_2_2", "blocking")  # standing on her straight line: she walks round it
+    assert blocking["detour"] > 0.1 and blocking["delay"] > 0.1 and not blocking["censored"]
+    assert blocking["walked"] == pytest.approx(blocking["walked_without_robot"] + blocking["detour"], abs=0.01)

@@ -61,6 +61,8 @@ class PersonSpec:
     start: float
     loop: bool
     route: tuple[RouteStop, ...]
+    speed_to: float | None = None  # the desired speed is drawn from [speed, speed_to] with the run's seed
+    group: str | None = None  # walks with the people of the same group; the first of them listed leads
 
 
 @dataclass(frozen=True, slots=True)
@@ -94,6 +96,9 @@ def _person(p: Fields) -> PersonSpec:
     speed = p.number("speed")
     if not 0 < speed <= 3.0:
         raise p.error(f"must be > 0 and <= 3 m/s, got {speed}", "speed")
+    speed_to = p.number("speedTo") if p.has("speedTo") else None
+    if speed_to is not None and not speed <= speed_to <= 3.0:
+        raise p.error(f"must be at least speed ({speed}) and at most 3 m/s, got {speed_to}", "speedTo")
     start = p.number("start")
     if start < 0:
         raise p.error(f"must be >= 0 s, got {start}", "start")
@@ -105,7 +110,7 @@ def _person(p: Fields) -> PersonSpec:
         if stop.wait < 0:
             raise p.error(f"must be >= 0 s, got {stop.wait}", f"route[{i}].wait")
     return PersonSpec(name=p.text("name"), behaviour=behaviour, speed=speed, start=start, loop=p.flag("loop"),
-                      route=route)
+                      route=route, speed_to=speed_to, group=p.optional_text("group"))
 
 
 def _animated(o: Fields) -> AnimatedObject:

@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING, Any
 from rei.artifacts import read_case
 from rei.geometry import Twist2D
 from rei.mission import MissionEvent, MissionExecutor, TaskResult, mission_info
+from rei.sim.people.cost import people_cost
 from rei.sim.simulation import Simulation
 from rei.sut.api import Controller
 from rei.sut.external.controller import SutError
@@ -74,6 +75,7 @@ class MissionRunResult:
     cut_off: bool
     error: str | None = None  # what ended the run early (an external SUT that broke it)
     sut: dict[str, Any] | None = None  # an external SUT's counts (rei.sut.external.SutStats)
+    people: dict[str, dict[str, Any]] | None = None  # what the robot cost each person (rei.sim.people.cost)
 
     @property
     def succeeded(self) -> bool:
@@ -152,6 +154,7 @@ def run_mission(
         except SutError as broken:
             error = str(broken)
         wall_time = time.perf_counter() - wall_start
+        people = None if sim.crowd is None else people_cost(sim.crowd, sim.t)
         stack.close()  # stops the SUT first: its exit code belongs in the summary
         done = executor is not None and executor.done
         result = MissionRunResult(
@@ -159,7 +162,7 @@ def run_mission(
             tasks=tuple(executor.results) if executor is not None else (), goals=len(case.mission.goals),
             state_messages=collector.seq, mission_messages=missions.seq, cut_off=error is None and not done,
             error=error,
-            sut=None if external is None else external.stats.to_json())
+            sut=None if external is None else external.stats.to_json(), people=people)
     _write_summary(out_dir, case_dir, options, result)
     return result
 
@@ -195,6 +198,7 @@ def _write_summary(out_dir: Path, case_dir: Path, options: MissionRunOptions, re
         "succeeded": result.succeeded,
         **({"error": result.error} if result.error is not None else {}),
         **({"sut": result.sut} if result.sut is not None else {}),
+        **({"people": result.people} if result.people is not None else {}),
         "tasks": [asdict(task) for task in result.tasks],
         "messages": {"state": result.state_messages, "mission": result.mission_messages},
     }

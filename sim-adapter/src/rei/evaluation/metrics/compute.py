@@ -132,6 +132,7 @@ def measure(run_dir: Path, case_dir: Path | None = None) -> Measured:
     out.update(_zones(s, zones))
     collided = _people(run, moving_gaps, zones[0][:, len(statics.names):] if zones is not None else None, out)
     out.update(_motion(s, run.t1 - run.t0, out["path_length"]))
+    out.update(_cost_to_people(run.run_dir))
     return Measured({k: None if isinstance(v, float) and not math.isfinite(v) else v for k, v in out.items()},
                     run.notes + unread, met, collided)
 
@@ -140,6 +141,20 @@ def measure_encounters(run_dir: Path, case_dir: Path | None = None) -> tuple[Enc
     """:func:`measure`'s encounters alone (the same streams, case and window), without the other metrics' gaps
     and planner: what the search's refinement needs after each run. Raises MetricsError as measure does."""
     return _encounters(_read_run(run_dir, case_dir))[0]
+
+
+def _cost_to_people(run_dir: Path) -> dict[str, float | None]:
+    """What the robot cost the people who see it: sim.json's ``people`` (rei.sim.people.cost), the mean and largest
+    delay over the people that have one and the mean detour; None without such people."""
+    try:
+        people = json.loads((run_dir / "sim.json").read_text(encoding="utf-8")).get("people") or {}
+    except (OSError, ValueError, AttributeError):
+        people = {}
+    delays = [float(p["delay"]) for p in people.values() if isinstance(p, dict) and p.get("delay") is not None]
+    detours = [float(p["detour"]) for p in people.values() if isinstance(p, dict) and p.get("detour") is not None]
+    return {"people_delay_mean": float(np.mean(delays)) if delays else None,
+            "people_delay_max": max(delays) if delays else None,
+            "people_detour_mean": float(np.mean(detours)) if detours else None}
 
 
 # -- reading ---------------------------------------------------------------------------------------------------

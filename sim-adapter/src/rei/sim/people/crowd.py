@@ -13,12 +13,14 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+
+import numpy as np
 
 from rei.artifacts.animation import Behaviour, PersonSpec
 from rei.artifacts.world import Shape, WorldSpec
 from rei.sim.people.server import INIT_TIMEOUT, PROTOCOL, PeopleServer
-from rei.sim.people.walkers import Point, RobotView, Walker
+from rei.sim.people.walkers import Follower, Point, RobotView, Walker
 
 #: Crowd step (s).
 DT = 0.05
@@ -32,6 +34,15 @@ class Mover:
     y: float
     radius: float
     robot: bool
+
+
+@dataclass(slots=True)
+class Walked:
+    """What a person did in a run: when it reached each stop, and how far it had walked by then and in all."""
+
+    arrivals: list[float] = field(default_factory=list)
+    walked_at: list[float] = field(default_factory=list)
+    walked: float = 0.0
 
 
 def footprint_radius(shape: Shape, size: Sequence[float]) -> float:
@@ -52,29 +63,28 @@ class Crowd:
             raise
 
     def _start(self, world: WorldSpec, people: Sequence[PersonSpec], movers: Sequence[Mover], seed: int) -> None:
+        self._world, self._people, self._movers, self._seed = world, list(people), list(movers), seed
         bodies = {o.name: o for o in world.objects}
         radii = [footprint_radius(bodies[p.name].shape, bodies[p.name].size) for p in people]
-        floors = [[f.center[0] - world.floor_size / 2, f.center[1] - world.floor_size / 2,
-                   f.center[0] + world.floor_size / 2, f.center[1] + world.floor_size / 2] for f in world.floors]
-        obstacles = [[o.pose[0], o.pose[1], o.pose[3], o.size[0], o.size[1], o.shape is Shape.CYLINDER]
-                     for o in world.objects if o.category.value in ("WALL", "STATIC")]
-        reply = self._server.request({
-            "op": "init", "protocol": PROTOCOL, "dt": DT, "seed": seed, "floors": floors, "obstacles": obstacles,
-            "movers": [[m.x, m.y, m.radius, m.robot] for m in movers],
-            "people": [{"name": p.name, "x": p.route[0].x, "y": p.route[0].y, "radius": r, "speed": p.speed,
-                        "sees_robot": p.behaviour is not Behaviour.IGNORES,
-                        "stops": [[s.x, s.y] for s in p.route], "loop": p.loop}
-                       for p, r in zip(people, radii, strict=True)],
-        }, timeout=INIT_TIMEOUT)
-        self.walkers = [Walker(p, r, [[(q[0], q[1]) for q in leg] for leg in legs], self._route)
-                        for p, r, legs in zip(people, radii, reply["legs"], strict=True)]
+        # a person of a speed range gets its speed from the run's seed, in the order people are listed
+        draw = np.random.default_rng(seed)
+        speeds = [p.speed if p.speed_to is None else float(draw.uniform(p.speed, p.speed_to)) for p in people]
+        reply = self._server.request(_init(world, people, radii, speeds, movers, seed), timeout=INIT_TIMEOUT)
+        self.walkers = _walkers(people, radii, speeds, reply["legs"], self._route, self._heading)
         start = [(p.route[0].x, p.route[0].y) for p in people]
         self._before = start
         self._now = start
+        self._headings = [0.0] * len(people)
         self.t = 0.0
         self._steps = 0
         self.robot_lag = 0.0  # the farthest the people's robot was from the true robot at a step (m)
         self._seen_robot: Point | None = None
+        self.walked = [Walked() for _ in people]
+        self._rails: list[list[Point]] = []  # the bodies on rails at each step, for the run without the robot
+
+    def _heading(self, index: int) -> tuple[Point, float]:
+        """A person's place now and its heading (the way it last moved)."""
+        return self._now[index], self._headings[index]
 
     def _route(self, a: Point, b: Point) -> list[Point]:
         reply = self._server.request({"op": "route", "from": list(a), "to": list(b)})
@@ -86,16 +96,43 @@ class Crowd:
         while self.t < t - 1e-9:
             if self._seen_robot is not None:  # where the people saw the robot after the last step, and it is now
                 self.robot_lag = max(self.robot_lag, math.dist(self._seen_robot, movers[0]))
-            targets = []
-            for walker, at in zip(self.walkers, self._now, strict=True):
-                speed, points = walker.target(self.t, at, robot)
-                targets.append([speed, *(list(q) for q in points)])
-            reply = self._server.request({"op": "step", "movers": [list(m) for m in movers], "targets": targets})
-            self._before = self._now
-            self._now = [(q[0], q[1]) for q in reply["positions"]]
-            self._steps += 1
-            self.t = self._steps * DT
+            self._rails.append([tuple(m) for m in movers[1:]])  # type: ignore[misc]
+            reply = self._step(robot, movers)
             self._seen_robot = (reply["seen"][0][0], reply["seen"][0][1])
+
+    def _step(self, robot: RobotView, movers: Sequence[Point]) -> dict:
+        targets = []
+        for walker, at in zip(self.walkers, self._now, strict=True):
+            speed, points = walker.target(self.t, at, robot)
+            targets.append([speed, *(list(q) for q in points)])
+        reply = self._server.request({"op": "step", "movers": [list(m) for m in movers], "targets": targets})
+        self._before = self._now
+        self._now = [(q[0], q[1]) for q in reply["positions"]]
+        self._steps += 1
+        self.t = self._steps * DT
+        for i, (walker, (x0, y0), (x1, y1)) in enumerate(zip(self.walkers, self._before, self._now, strict=True)):
+            step = math.hypot(x1 - x0, y1 - y0)
+            if step > 0.01 * DT:  # standing jitter is not a heading
+                self._headings[i] = math.atan2(y1 - y0, x1 - x0)
+            walked = self.walked[i]
+            walked.walked += step
+            while len(walked.walked_at) < len(walker.arrivals):
+                walked.arrivals.append(walker.arrivals[len(walked.walked_at)])
+                walked.walked_at.append(walked.walked)
+        return reply
+
+    def without_robot(self) -> list[Walked]:
+        """The same people, seed and bodies on rails for as long as this crowd has run, without the robot: the model
+        alone, no physics (docs/people.md, what the robot cost the people)."""
+        rails = [m for m in self._movers if not m.robot]
+        alone = Crowd(self._world, [_seeing(p) for p in self._people], rails, seed=self._seed)
+        try:
+            nowhere = RobotView(math.inf, math.inf, 0.0, 0.0, 0.0, 0.0, 0.0)
+            for movers in self._rails:
+                alone._step(nowhere, movers)
+            return alone.walked
+        finally:
+            alone.close()
 
     def position(self, index: int, t: float) -> Point:
         """Person ``index``'s place in the model at ``t``, between the two latest steps (the latest after)."""
@@ -105,6 +142,52 @@ class Crowd:
 
     def close(self) -> None:
         self._server.close()
+
+
+def _seeing(person: PersonSpec) -> PersonSpec:
+    """``person`` as one who sees others but, there being no robot, reacts to nothing else."""
+    return PersonSpec(person.name, Behaviour.AVOIDS, person.speed, person.start, person.loop, person.route,
+                      person.speed_to, person.group)
+
+
+def _init(world: WorldSpec, people: Sequence[PersonSpec], radii: Sequence[float], speeds: Sequence[float],
+          movers: Sequence[Mover], seed: int) -> dict:
+    floors = [[f.center[0] - world.floor_size / 2, f.center[1] - world.floor_size / 2,
+               f.center[0] + world.floor_size / 2, f.center[1] + world.floor_size / 2] for f in world.floors]
+    obstacles = [[o.pose[0], o.pose[1], o.pose[3], o.size[0], o.size[1], o.shape is Shape.CYLINDER]
+                 for o in world.objects if o.category.value in ("WALL", "STATIC")]
+    return {"op": "init", "protocol": PROTOCOL, "dt": DT, "seed": seed, "floors": floors, "obstacles": obstacles,
+            "movers": [[m.x, m.y, m.radius, m.robot] for m in movers],
+            "people": [{"name": p.name, "x": p.route[0].x, "y": p.route[0].y, "radius": r, "speed": v,
+                        "sees_robot": p.behaviour is not Behaviour.IGNORES,
+                        "stops": [[s.x, s.y] for s in p.route] if _leads(p, people) else [[p.route[0].x,
+                                                                                           p.route[0].y]],
+                        "loop": p.loop}
+                       for p, r, v in zip(people, radii, speeds, strict=True)]}
+
+
+def _leads(person: PersonSpec, people: Sequence[PersonSpec]) -> bool:
+    """Walks its own route: not in a group, or its group's first listed member."""
+    return person.group is None or next(p for p in people if p.group == person.group) is person
+
+
+def _walkers(people: Sequence[PersonSpec], radii: Sequence[float], speeds: Sequence[float],
+             legs: Sequence[Sequence[Sequence[Sequence[float]]]], route, heading) -> list[Walker]:
+    walkers: list[Walker] = []
+    leaders: dict[str, tuple[int, Walker]] = {}
+    members: dict[str, int] = {}
+    for i, (p, r, v, person_legs) in enumerate(zip(people, radii, speeds, legs, strict=True)):
+        if p.group is not None and p.group in leaders:
+            index, leader = leaders[p.group]
+            members[p.group] += 1
+            walkers.append(Follower(p, r, members[p.group], leader, lambda index=index: heading(index), v))
+            continue
+        walker = Walker(p, r, [[(q[0], q[1]) for q in leg] for leg in person_legs], route, v)
+        if p.group is not None:
+            leaders[p.group] = (i, walker)
+            members[p.group] = 0
+        walkers.append(walker)
+    return walkers
 
 
 class CrowdPath:

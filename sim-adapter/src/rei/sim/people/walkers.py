@@ -76,11 +76,15 @@ Router = Callable[[Point, Point], list[Point]]
 
 
 class Walker:
-    """One person's intentions; :meth:`target` is asked once per crowd step."""
+    """One person's intentions; :meth:`target` is asked once per crowd step. ``speed``: its desired speed (the
+    spec's, or drawn from its range); ``arrivals`` the times it reached a stop."""
 
-    def __init__(self, spec: PersonSpec, radius: float, legs: Sequence[Sequence[Point]], route: Router) -> None:
+    def __init__(self, spec: PersonSpec, radius: float, legs: Sequence[Sequence[Point]], route: Router,
+                 speed: float | None = None) -> None:
         self.spec = spec
         self.radius = radius
+        self.speed = spec.speed if speed is None else speed
+        self.arrivals: list[float] = []
         self._legs = [list(leg) for leg in legs]
         self._route = route
         self._leg = 0
@@ -100,7 +104,7 @@ class Walker:
     def target(self, t: float, at: Point, robot: RobotView) -> tuple[float, list[Point]]:
         """``(speed, points)``: how fast the person at ``at`` would like to walk at time ``t``, and where: the first
         of ``points`` where it fits (a way round the robot has two sides)."""
-        speed = self.spec.speed
+        speed = self.speed
         if t < self.spec.start:
             return (0.0, [at])
         if not self._started:
@@ -158,6 +162,7 @@ class Walker:
                 self._waypoint += 1
                 continue
             # the leg's last point is its stop: wait there, then take the next leg
+            self.arrivals.append(t)
             stops = self.spec.route
             arrived = (self._leg + 1) % len(stops)
             self._wait_until = t + stops[arrived].wait
@@ -182,7 +187,7 @@ class Walker:
             away = (at[0] - robot.x, at[1] - robot.y)
             norm = math.hypot(*away) or 1.0
             return (at[0] + SCARED_STEP * away[0] / norm, at[1] + SCARED_STEP * away[1] / norm,
-                    min(self.spec.speed * 1.2, 3.0))
+                    min(self.speed * 1.2, 3.0))
         if behaviour not in (Behaviour.CURIOUS, Behaviour.BLOCKS) or self._spent:
             return None
         if self._engaged is None:
@@ -197,12 +202,42 @@ class Walker:
                 self._linger_until = t + LINGER
             if self._linger_until is not None and t >= self._linger_until:
                 return self._release()
-            return (*spot, self.spec.speed)
+            return (*spot, self.speed)
         if t - self._engaged >= BLOCK_TIME:
             return self._release()
-        return (*robot.ahead(robot.front + BLOCK_AHEAD + self.radius), self.spec.speed)
+        return (*robot.ahead(robot.front + BLOCK_AHEAD + self.radius), self.speed)
 
     def _release(self) -> None:
         """The curious look or the stand in the way is over, for good."""
         self._spent = True
         self._engaged = None
+
+
+class Follower(Walker):
+    """A member of a group who is not its leader: it keeps its place beside or behind the leader (``leader``: the
+    leader's place now and its heading), around the robot as the leader goes; it reaches the leader's stops when
+    the leader does."""
+
+    def __init__(self, spec: PersonSpec, radius: float, slot: int, leader: Walker,
+                 place: Callable[[], tuple[Point, float]], speed: float | None = None) -> None:
+        super().__init__(spec, radius, [], lambda a, b: [a, b], speed)
+        self._leader = leader
+        self._place = place
+        self.arrivals = leader.arrivals  # the group arrives together
+        spacing = 2 * radius + 0.1
+        row, side = (slot - 1) // 2, 1.0 if slot % 2 else -1.0
+        # the first two abreast of the leader, the others in pairs behind
+        self._offset = (0.0, side * spacing) if row == 0 else (-spacing * row, side * spacing / 2)
+
+    def target(self, t: float, at: Point, robot: RobotView) -> tuple[float, list[Point]]:
+        if t < self.spec.start:
+            return (0.0, [at])
+        (lx, ly), heading = self._place()
+        c, s = math.cos(heading), math.sin(heading)
+        lon, lat = self._offset
+        slot = (lx + c * lon - s * lat, ly + s * lon + c * lat)
+        far = math.dist(at, slot)
+        # catch up when behind, stand when the leader stands and the place is taken
+        speed = 0.0 if far < ARRIVE_STOP else min(3.0, max(self._leader.speed, self.speed) * (1.3 if far > 0.5
+                                                                                             else 1.0))
+        return (speed, self._around(at, slot, robot))
