@@ -104,21 +104,63 @@ public final class MapBlocks {
 		return ((long) start << 32) | end;
 	}
 
-	/** Which {@code floorSize} blocks of the map are free (every cell they overlap is free). */
+	/**
+	 * The most blocks of {@code floorSize} (free or not, columns x rows) a map may be cut into: 4,000,000, 16 times
+	 * the floors a room from a map may have, e.g. an 8,000 x 8,000 cell map (400 x 400 m at 0.05 m) in 0.2 m
+	 * blocks. A floor size far below the map's resolution would otherwise ask for more blocks than memory holds
+	 * (0.0000001 m over 10 x 6 m: 6 * 10^15). The Python side's {@code rei.maps.MAX_BLOCKS} is the same number:
+	 * both are copies of {@code maps.max_blocks} in contract/vocabulary.json.
+	 */
+	public static final long MAX_BLOCKS = 4_000_000L;
+
+	/**
+	 * The blocks of {@code floorSize} metres the map is cut into, {@code {columns, rows}} (only blocks wholly inside
+	 * the map), as whole numbers in doubles: they never overflow, however small the floor size (infinite at worst).
+	 */
+	public static double[] blockGrid(OccupancyMap map, double floorSize) {
+		return new double[] { Math.floor(map.width() * map.resolution() / floorSize + EPS),
+				Math.floor(map.height() * map.resolution() / floorSize + EPS) };
+	}
+
+	/** Whether {@code grid} ({@link #blockGrid}) has more than {@link #MAX_BLOCKS} blocks. */
+	public static boolean tooManyBlocks(double[] grid) {
+		return grid[0] * grid[1] > MAX_BLOCKS; // doubles: 10^8 x 10^8 is 10^16, not a wrapped int
+	}
+
+	/** A count of {@link #blockGrid}: its digits, or {@code 1e+300} when beyond any integer type. */
+	public static String count(double value) {
+		return value < 1e15 ? String.valueOf((long) value) : MapReader.g(value);
+	}
+
+	/**
+	 * Which {@code floorSize} blocks of the map are free (every cell they overlap is free).
+	 *
+	 * @throws IllegalArgumentException for a floor size that is not above 0, or that cuts the map into more than
+	 *             {@link #MAX_BLOCKS} blocks (checked before anything is allocated)
+	 */
 	public static FloorBlocks floorBlocks(OccupancyMap map, double floorSize, boolean unknownFree) {
 		if (!(floorSize > 0)) {
 			throw new IllegalArgumentException("floor size " + floorSize + ": expected metres above 0");
+		}
+		double[] grid = blockGrid(map, floorSize);
+		if (tooManyBlocks(grid)) {
+			throw new IllegalArgumentException("floor size " + MapReader.g(floorSize) + " m cuts the map's "
+					+ map.width() + " x " + map.height() + " cells of " + MapReader.g(map.resolution()) + " m into "
+					+ count(grid[0]) + " x " + count(grid[1]) + " blocks: at most " + MAX_BLOCKS
+					+ " (free or not); use a larger floor size");
 		}
 		int w = map.width();
 		int h = map.height();
 		boolean[] blocked = obstacleMask(map, unknownFree);
 		double res = map.resolution();
-		int nx = (int) Math.floor(w * res / floorSize + EPS);
-		int ny = (int) Math.floor(h * res / floorSize + EPS);
-		// summed-area table of the blocked cells: any block's count in four lookups
-		long[] table = new long[(h + 1) * (w + 1)];
+		// no row of blocks, no block: a long thin map's columns alone may not be counted out
+		int nx = grid[1] == 0 ? 0 : (int) grid[0];
+		int ny = grid[0] == 0 ? 0 : (int) grid[1];
+		// summed-area table of the blocked cells: any block's count in four lookups (ints: a map has at most
+		// OccupancyMap.MAX_CELLS cells, far below 2^31)
+		int[] table = new int[(h + 1) * (w + 1)];
 		for (int row = 0; row < h; row++) {
-			long sum = 0;
+			int sum = 0;
 			for (int col = 0; col < w; col++) {
 				sum += blocked[row * w + col] ? 1 : 0;
 				table[(row + 1) * (w + 1) + col + 1] = table[row * (w + 1) + col + 1] + sum;
@@ -137,9 +179,8 @@ public final class MapBlocks {
 		for (int y = 0; y < ny; y++) {
 			rowCells[y] = y1[y] - y0[y];
 			for (int x = 0; x < nx; x++) {
-				long count = table[y1[y] * (w + 1) + x1[x]] - table[y0[y] * (w + 1) + x1[x]]
+				obstacles[y * nx + x] = table[y1[y] * (w + 1) + x1[x]] - table[y0[y] * (w + 1) + x1[x]]
 						- table[y1[y] * (w + 1) + x0[x]] + table[y0[y] * (w + 1) + x0[x]];
-				obstacles[y * nx + x] = (int) count;
 			}
 		}
 		return new FloorBlocks(floorSize, nx, ny, obstacles, columnCells, rowCells);

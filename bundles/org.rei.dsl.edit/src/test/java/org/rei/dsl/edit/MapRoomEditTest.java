@@ -121,6 +121,25 @@ class MapRoomEditTest {
 	}
 
 	@Test
+	void aFloorSizeTypedOnTheWayToAnotherIsAnIssueOnTheNumberNotAFailure(@TempDir Path folder) throws IOException {
+		RoomDocument document = RoomDocument.open(write(folder));
+		// the text saved by a text editor while its user types 0.0000001 on the way to 0.05
+		EditResult typing = document.reset(TEXT.replace("floorSize 0.2", "floorSize 0.0000001"));
+		List<ValidationIssue> errors = typing.issues().stream().filter(ValidationIssue::isError).toList();
+		assertEquals(1, errors.size(), () -> "one error, on the floor size: " + errors);
+		ValidationIssue error = errors.get(0);
+		assertEquals(List.of(3, 55, "org.rei.dsl.roomTooLarge"), List.of(error.line(), error.column(), error.code()));
+		assertTrue(error.message().startsWith("floorSize 0.0000001 m cuts the map small.yaml (12 x 8 cells of 0.1 m) "
+				+ "into 12000000 x 8000000 blocks"), error.message());
+		assertEquals(List.of(), document.diagram().room().floors(), "no floors, and a diagram all the same");
+		assertEquals(List.of(), document.reset(TEXT.replace("floorSize 0.2", "floorSize 0.05")).issues().stream()
+				.filter(ValidationIssue::isError).map(ValidationIssue::code).filter(c -> c.endsWith("roomTooLarge"))
+				.toList());
+		assertEquals(List.of(), document.reset(TEXT).issues());
+		assertEquals(7, document.diagram().room().floors().size());
+	}
+
+	@Test
 	void aMapRoomRefusesWalls(@TempDir Path folder) throws IOException {
 		RoomDocument document = RoomDocument.open(write(folder));
 		EditRefusedException refused = assertThrows(EditRefusedException.class,

@@ -21,6 +21,7 @@ import org.rei.context.Wall;
 import org.rei.context.layout.FloorLayout;
 import org.rei.context.layout.MapFiles;
 import org.rei.maps.FloorBlocks;
+import org.rei.maps.MapBlocks;
 import org.rei.maps.MapCache;
 import org.rei.maps.MapException;
 import org.rei.maps.OccupancyMap;
@@ -70,8 +71,8 @@ public final class RoomDesugaring {
 	}
 
 	/**
-	 * The free blocks of the room's map; none when the map cannot be read, the floor size is not positive or there
-	 * are more than {@link #MAX_MAP_FLOORS} (the validator reports each).
+	 * The free blocks of the room's map; none when the map cannot be read, the floor size is not positive or cuts
+	 * the map into too many blocks, or there are more than {@link #MAX_MAP_FLOORS} (the validator reports each).
 	 */
 	private static List<BuildingBlock> blocksOf(OccupancyLayout layout) {
 		Optional<FloorBlocks> found = freeBlocks(layout);
@@ -111,13 +112,21 @@ public final class RoomDesugaring {
 		return MapCache.get(yaml);
 	}
 
-	/** The floor blocks of an occupancy room, empty when its map cannot be read or its floor size is not positive. */
+	/**
+	 * The floor blocks of an occupancy room, empty when its map cannot be read, its floor size is not positive or
+	 * cuts the map into more than {@link MapBlocks#MAX_BLOCKS} blocks (counted before anything is allocated; the
+	 * validator reports each).
+	 */
 	public static Optional<FloorBlocks> freeBlocks(OccupancyLayout layout) {
 		if (!(layout.eContainer() instanceof Environment environment) || !(environment.getFloorSize() > 0)) {
 			return Optional.empty();
 		}
 		try {
-			return Optional.of(mapOf(layout).floorBlocks(environment.getFloorSize(), layout.isUnknownFree()));
+			OccupancyMap map = mapOf(layout);
+			if (MapBlocks.tooManyBlocks(MapBlocks.blockGrid(map, environment.getFloorSize()))) {
+				return Optional.empty();
+			}
+			return Optional.of(map.floorBlocks(environment.getFloorSize(), layout.isUnknownFree()));
 		} catch (MapException e) {
 			return Optional.empty();
 		}

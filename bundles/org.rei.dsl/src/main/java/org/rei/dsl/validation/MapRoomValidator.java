@@ -10,13 +10,15 @@ import org.rei.context.Environment;
 import org.rei.context.OccupancyLayout;
 import org.rei.dsl.derived.RoomDesugaring;
 import org.rei.maps.FloorBlocks;
+import org.rei.maps.MapBlocks;
 import org.rei.maps.MapException;
 import org.rei.maps.OccupancyMap;
 
 /**
  * A room from an occupancy map: the map must be readable (every problem at the YAML line and column of the field,
- * or the image's property, on the map's string in the test case), and its free blocks must be floors enough and
- * not too many. References to blocks that are not free are reported by
+ * or the image's property, on the map's string in the test case), its floor size must not cut it into more blocks
+ * than {@link MapBlocks#MAX_BLOCKS} (on the floor size), and its free blocks must be floors enough and not too many.
+ * References to blocks that are not free are reported by
  * {@link org.rei.dsl.scoping.ReiLinkingDiagnosticMessageProvider}.
  */
 public class MapRoomValidator extends ReiCheckBase {
@@ -34,8 +36,18 @@ public class MapRoomValidator extends ReiCheckBase {
 		if (!(layout.eContainer() instanceof Environment environment) || !(environment.getFloorSize() > 0)) {
 			return; // RoomValidator reports the floor size
 		}
-		FloorBlocks blocks = map.floorBlocks(environment.getFloorSize(), layout.isUnknownFree());
 		String size = RoomDesugaring.metres(environment.getFloorSize());
+		double[] grid = MapBlocks.blockGrid(map, environment.getFloorSize());
+		if (MapBlocks.tooManyBlocks(grid)) {
+			// counted in doubles before any block is made: 0.0000001 m over 10 x 6 m is 6 * 10^15 blocks
+			error("floorSize " + size + " m cuts the map " + layout.getMap() + " (" + map.width() + " x "
+					+ map.height() + " cells of " + RoomDesugaring.metres(map.resolution()) + " m) into "
+					+ MapBlocks.count(grid[0]) + " x " + MapBlocks.count(grid[1]) + " blocks: a room's map may be cut"
+					+ " into at most " + MapBlocks.MAX_BLOCKS + " blocks (free or not); use a larger floorSize",
+					environment, ContextPackage.Literals.ENVIRONMENT__FLOOR_SIZE, ReiIssueCodes.ROOM_TOO_LARGE);
+			return;
+		}
+		FloorBlocks blocks = map.floorBlocks(environment.getFloorSize(), layout.isUnknownFree());
 		if (blocks.freeCount() > RoomDesugaring.MAX_MAP_FLOORS) {
 			error("The map " + layout.getMap() + " has " + blocks.freeCount() + " free blocks of " + size
 					+ " m: a room may have at most " + RoomDesugaring.MAX_MAP_FLOORS
