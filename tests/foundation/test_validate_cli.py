@@ -70,6 +70,28 @@ def test_valid_and_broken_files_together_exit_1_naming_only_the_broken_one(
     assert diagnostics(result.stderr, bad) and not diagnostics(result.stderr, good)
 
 
+def test_a_map_room_with_a_tiny_floor_size_is_a_located_error_and_the_other_files_are_reported(
+    run_cli: Callable[..., Any], write_rei: Callable[..., Path], repo_root: Path, tmp_path: Path
+) -> None:
+    """Issue #37: examples/maps/two_rooms.rei with `floorSize 0.0000001` (10 x 6 m in 6 * 10^15 blocks) made
+    `rei validate` die of a NegativeArraySizeException, unpositioned, and report none of the other files."""
+    for name in ("two_rooms.yaml", "two_rooms.pgm"):
+        (tmp_path / name).write_bytes((repo_root / "examples" / "maps" / name).read_bytes())
+    example = (repo_root / "examples" / "maps" / "two_rooms.rei").read_text(encoding="utf-8")
+    tiny = write_rei("tiny.rei", example.replace("floorSize 0.5", "floorSize 0.0000001"))
+    bad, good = write_rei("bad.rei", UNKNOWN_FLOOR), write_rei("good.rei", VALID)
+    result = run_cli("validate", tiny, bad, good)
+    assert result.returncode == 1, result.stderr
+    line = example.splitlines().index('  room Office occupancy "two_rooms.yaml" floorSize 0.5 {') + 1
+    column = len('  room Office occupancy "two_rooms.yaml" floorSize ') + 1
+    assert diagnostics(result.stderr, tiny) == [(line, column, (
+        "floorSize 0.0000001 m cuts the map two_rooms.yaml (200 x 120 cells of 0.05 m) into 100000000 x 60000000 "
+        "blocks: a room's map may be cut into at most 4000000 blocks (free or not); use a larger floorSize "
+        "[org.rei.dsl.roomTooLarge]"))], result.stderr
+    assert diagnostics(result.stderr, bad) and not diagnostics(result.stderr, good), result.stderr
+    assert "Exception" not in result.stderr, result.stderr
+
+
 def test_missing_file_exits_2(run_cli: Callable[..., Any], tmp_path: Path) -> None:
     missing = tmp_path / "nowhere.rei"
     result = run_cli("validate", missing)

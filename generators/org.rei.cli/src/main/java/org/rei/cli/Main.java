@@ -11,6 +11,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.function.Function;
 
 import org.rei.warmjvm.CommandServer;
 
@@ -35,12 +36,22 @@ public final class Main {
 			  --quiet          print diagnostics only
 			exit codes: 0 ok, 1 the test case has errors, 2 bad command or unreadable/unwritable files""";
 
+	/** The code of a file's diagnostic when checking it failed unexpectedly (a bug of REI's, not of the file). */
+	static final String INTERNAL_ERROR = "org.rei.cli.internalError";
+
 	private final PrintStream out;
 	private final PrintStream err;
+	private final Function<Path, HeadlessGenerator> generators;
 
 	Main(PrintStream out, PrintStream err) {
+		this(out, err, HeadlessGenerator::new);
+	}
+
+	/** {@code generators}: the generator for the {@code --templates} folder (or null); tests give their own. */
+	Main(PrintStream out, PrintStream err, Function<Path, HeadlessGenerator> generators) {
 		this.out = out;
 		this.err = err;
+		this.generators = generators;
 	}
 
 	public static void main(String[] args) {
@@ -70,7 +81,7 @@ public final class Main {
 				return USAGE;
 			}
 		}
-		HeadlessGenerator generator = new HeadlessGenerator(options.templates);
+		HeadlessGenerator generator = generators.apply(options.templates);
 		if (options.command.equals("types")) {
 			HeadlessGenerator.CatalogueResult result = generator.describeCatalogue(options.files.get(0));
 			result.diagnostics().forEach(err::println);
@@ -104,6 +115,9 @@ public final class Main {
 			} catch (IOException e) {
 				err.println("rei-cli: cannot write " + options.output + ": " + e.getMessage());
 				return USAGE;
+			} catch (RuntimeException | StackOverflowError | OutOfMemoryError e) {
+				// one file's failure is that file's error: the other files of the same call are still checked
+				result = new HeadlessGenerator.Result(List.of(internalError(file, e)), List.of());
 			}
 			if (report) {
 				result.diagnostics().forEach(err::println);
@@ -120,6 +134,13 @@ public final class Main {
 					: options.files.size() + " files are valid");
 		}
 		return status;
+	}
+
+	/** An unexpected failure as the file's diagnostic, with where it happened, for a bug report. */
+	static Diagnostic internalError(Path file, Throwable e) {
+		StackTraceElement[] trace = e.getStackTrace();
+		return new Diagnostic(file, 1, 1, Diagnostic.Severity.ERROR, "internal error while checking this file, "
+				+ "please report it: " + e + (trace.length > 0 ? " at " + trace[0] : ""), INTERNAL_ERROR);
 	}
 
 	/** The parsed command line. */
