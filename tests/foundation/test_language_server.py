@@ -546,3 +546,48 @@ def test_a_vepl_file_nested_too_deep_gets_its_diagnostic_at_once_and_the_server_
                if d.get("code") == "org.rei.vepl.unknownQuery"]
     assert [d["range"]["start"]["line"] for d in unknown] == [UNKNOWN_QUERY_LINE - 1], unknown
     assert language_server.stop() == 0
+
+
+def test_a_floor_size_typed_on_the_way_to_another_is_a_diagnostic_on_the_number_and_the_server_lives_on(
+    language_server: LspClient, tmp_path: Path, repo_root: Path
+) -> None:
+    """examples/maps/two_rooms.rei (10 x 6 m of 0.05 m cells) while its user retypes `floorSize 0.5` as `0.05`:
+    on the way it reads `0.0000001`, which would cut the map into 6 * 10^15 blocks. That is one error on the number
+    (the block count once overflowed an int and the server's check died with it), then the text goes on being
+    checked, and the server ends cleanly."""
+    for name in ("two_rooms.yaml", "two_rooms.pgm"):
+        (tmp_path / name).write_bytes((repo_root / "examples" / "maps" / name).read_bytes())
+    source = (repo_root / "examples" / "maps" / "two_rooms.rei").read_text(encoding="utf-8")
+    path = tmp_path / "two_rooms.rei"
+    path.write_text(source, encoding="utf-8")
+    uri = path.as_uri()
+    language_server.request("initialize", {"processId": None, "rootUri": tmp_path.as_uri(), "capabilities": {}},
+                            timeout=START_TIMEOUT_S)
+    language_server.notify("initialized", {})
+    language_server.notify("textDocument/didOpen",
+                           {"textDocument": {"uri": uri, "languageId": "rei", "version": 1, "text": source}})
+
+    def published(version: int, floor_size: str, wanted: Callable[[list[Message]], bool]) -> list[Message]:
+        if version > 1:
+            language_server.notify("textDocument/didChange", {
+                "textDocument": {"uri": uri, "version": version},
+                "contentChanges": [{"text": source.replace("floorSize 0.5", f"floorSize {floor_size}")}]})
+        message = language_server.wait_for(
+            lambda m: (m.get("method") == "textDocument/publishDiagnostics" and m["params"]["uri"] == uri
+                       and wanted(m["params"]["diagnostics"])),
+            START_TIMEOUT_S, f"diagnostics of two_rooms.rei with floorSize {floor_size}")
+        return message["params"]["diagnostics"]
+
+    def too_large(diagnostics: list[Message]) -> list[Message]:
+        return [d for d in diagnostics if d.get("code") == "org.rei.dsl.roomTooLarge"]
+
+    assert published(1, "0.5", lambda d: not d) == []
+    line = source.splitlines().index('  room Office occupancy "two_rooms.yaml" floorSize 0.5 {')
+    typing = published(2, "0.0000001", too_large)
+    assert [(d["range"]["start"], d["severity"]) for d in typing] == [
+        ({"line": line, "character": len('  room Office occupancy "two_rooms.yaml" floorSize ')}, 1)], typing
+    assert typing[0]["message"].startswith("floorSize 0.0000001 m cuts the map two_rooms.yaml (200 x 120 cells of "
+                                           "0.05 m) into 100000000 x 60000000 blocks"), typing
+    assert not too_large(published(3, "0.05", lambda d: not too_large(d)))
+    assert published(4, "0.5", lambda d: not d) == []
+    assert language_server.stop() == 0
