@@ -111,59 +111,81 @@ public final class MapReader {
 			throw fields.error("negate", "expected 0, 1, true or false, got " + repr(negate));
 		}
 
-		MapImages.Pixels pixels = MapImages.read(image, detail -> {
+		Cells cells = new Cells((String) mode, negated, occupiedThresh, freeThresh);
+		MapImages.read(image, detail -> {
 			MapException e = fields.error("image", detail);
 			return new MapException(e.file(), e.line(), e.column(), e.field(), e.detail(), image);
-		});
-		byte[] grid = cells(pixels, (String) mode, negated, occupiedThresh, freeThresh);
+		}, cells);
 		Node imageNode = fields.nodes.get("image");
 		// marks count code points; the copy's YAML cuts the text by chars
 		int start = fields.text.offsetByCodePoints(0, imageNode.getStartMark().getIndex());
 		int end = fields.text.offsetByCodePoints(0, imageNode.getEndMark().getIndex());
 		return new OccupancyMap(yaml, image, fields.text, start, end, resolution, ((Number) xyz.get(0)).doubleValue(),
 				((Number) xyz.get(1)).doubleValue(), negated, occupiedThresh, freeThresh, (String) mode,
-				pixels.width(), pixels.height(), grid);
+				cells.width, cells.height, cells.grid);
 	}
 
-	/** Nav2's per-pixel arithmetic; the result's row 0 is the image's last row (the map's bottom). */
-	static byte[] cells(MapImages.Pixels pixels, String mode, boolean negate, double occupiedThresh,
-			double freeThresh) {
-		int w = pixels.width();
-		int h = pixels.height();
-		byte[] grid = new byte[w * h];
-		double[] alpha = pixels.alpha();
-		for (int row = 0; row < h; row++) {
-			int target = (h - 1 - row) * w;
-			for (int col = 0; col < w; col++) {
-				int i = row * w + col;
-				double shade = pixels.shade()[i];
-				byte cell;
-				if (mode.equals("raw")) {
-					double value = Math.floor(shade * 255 + 0.5); // std::round: half away from zero (values >= 0)
-					cell = value >= OccupancyMap.FREE && value <= OccupancyMap.OCCUPIED ? (byte) value
-							: OccupancyMap.UNKNOWN;
-				} else {
-					if (mode.equals("trinary") && alpha != null) {
-						shade = (shade * 3 + alpha[i]) / 4; // the alpha averaged in with the colour channels
-					}
-					double occ = negate ? shade : 1.0 - shade;
-					if (occupiedThresh < occ) {
-						cell = OccupancyMap.OCCUPIED;
-					} else if (occ < freeThresh) {
-						cell = OccupancyMap.FREE;
-					} else if (mode.equals("trinary")) {
-						cell = OccupancyMap.UNKNOWN;
-					} else {
-						cell = (byte) Math.rint((occ - freeThresh) / (occupiedThresh - freeThresh) * 100.0);
-					}
-					if (mode.equals("scale") && alpha != null && alpha[i] < 1.0) {
-						cell = OccupancyMap.UNKNOWN;
-					}
-				}
-				grid[target + col] = cell;
+	/**
+	 * Nav2's per-pixel arithmetic, row by row as the image is read: the grid's row 0 is the image's last row (the
+	 * map's bottom). Only the grid is kept, a byte per cell.
+	 */
+	private static final class Cells implements MapImages.Rows {
+		private final String mode;
+		private final boolean negate;
+		private final double occupiedThresh;
+		private final double freeThresh;
+		int width;
+		int height;
+		byte[] grid;
+
+		Cells(String mode, boolean negate, double occupiedThresh, double freeThresh) {
+			this.mode = mode;
+			this.negate = negate;
+			this.occupiedThresh = occupiedThresh;
+			this.freeThresh = freeThresh;
+		}
+
+		@Override
+		public void start(int w, int h) {
+			width = w;
+			height = h;
+			grid = new byte[w * h]; // at most OccupancyMap.MAX_CELLS, checked from the image's header
+		}
+
+		@Override
+		public void row(int row, double[] shade, double[] alpha) {
+			int target = (height - 1 - row) * width;
+			for (int col = 0; col < width; col++) {
+				grid[target + col] = cell(shade[col], alpha == null ? -1 : alpha[col]);
 			}
 		}
-		return grid;
+
+		/** One pixel; {@code alpha} below 0: the image has none. */
+		private byte cell(double shade, double alpha) {
+			if (mode.equals("raw")) {
+				double value = Math.floor(shade * 255 + 0.5); // std::round: half away from zero (values >= 0)
+				return value >= OccupancyMap.FREE && value <= OccupancyMap.OCCUPIED ? (byte) value
+						: OccupancyMap.UNKNOWN;
+			}
+			if (mode.equals("trinary") && alpha >= 0) {
+				shade = (shade * 3 + alpha) / 4; // the alpha averaged in with the colour channels
+			}
+			double occ = negate ? shade : 1.0 - shade;
+			byte cell;
+			if (occupiedThresh < occ) {
+				cell = OccupancyMap.OCCUPIED;
+			} else if (occ < freeThresh) {
+				cell = OccupancyMap.FREE;
+			} else if (mode.equals("trinary")) {
+				cell = OccupancyMap.UNKNOWN;
+			} else {
+				cell = (byte) Math.rint((occ - freeThresh) / (occupiedThresh - freeThresh) * 100.0);
+			}
+			if (mode.equals("scale") && alpha >= 0 && alpha < 1.0) {
+				cell = OccupancyMap.UNKNOWN;
+			}
+			return cell;
+		}
 	}
 
 	/** The YAML's top-level mapping, each value with the position of its node. */

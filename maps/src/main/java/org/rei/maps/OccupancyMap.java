@@ -24,6 +24,15 @@ public final class OccupancyMap {
 	/** The map_server modes, Nav2's default first. */
 	public static final List<String> MODES = List.of("trinary", "scale", "raw");
 
+	/**
+	 * The most cells (image pixels) a map may have, checked from the image's header (PNG IHDR, PGM header) before
+	 * anything is decoded: 50,000,000, e.g. 7,000 x 7,000 cells, 350 x 350 m at 0.05 m. A small file may declare
+	 * a huge image (a PNG of 1.4 MB can hold 100,000 x 100,000 one-bit pixels); within the limit a map is read in
+	 * memory proportional to its cells. The Python side's {@code rei.maps.MAX_CELLS} is the same number: both are
+	 * copies of {@code maps.max_cells} in contract/vocabulary.json.
+	 */
+	public static final long MAX_CELLS = 50_000_000L;
+
 	private final Path yaml;
 	private final Path image;
 	private final String yamlText;
