@@ -10,12 +10,19 @@ from the left and ``y`` from the bottom, and only blocks wholly inside the map e
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
 
 from rei.maps.occupancy import OCCUPIED, UNKNOWN, OccupancyMap
+
+#: The most blocks of ``floor_size`` (free or not, columns x rows) a map may be cut into: 4,000,000, 16 times the
+#: floors a room from a map may have. A floor size far below the map's resolution would otherwise ask for more blocks
+#: than memory holds (0.0000001 m over 10 x 6 m: 6 * 10^15). A copy of ``maps.max_blocks`` in
+#: contract/vocabulary.json, as the Java side's ``MapBlocks.MAX_BLOCKS``.
+MAX_BLOCKS = 4_000_000
+#: A tolerance of a millionth of a cell, so that 1.0 m over 0.05 m cells is 20 cells, not 20.000000000000004.
+_EPS = 1e-6
 
 
 @dataclass(frozen=True, slots=True)
@@ -86,16 +93,34 @@ class FloorBlocks:
         return [f"F_{x}_{y}" for y, x in zip(ys.tolist(), xs.tolist(), strict=True)]
 
 
+def block_grid(occupancy: OccupancyMap, floor_size: float) -> tuple[float, float]:
+    """The blocks of ``floor_size`` metres the map is cut into, ``(columns, rows)`` (only blocks wholly inside the
+    map), as whole floats: infinite at worst, never an allocation."""
+    res = occupancy.resolution
+    return (float(np.floor(occupancy.width * res / floor_size + _EPS)),
+            float(np.floor(occupancy.height * res / floor_size + _EPS)))
+
+
+def _count(value: float) -> str:
+    return f"{value:.0f}" if value < 1e15 else f"{value:g}"
+
+
 def floor_blocks(occupancy: OccupancyMap, floor_size: float, unknown_free: bool = False) -> FloorBlocks:
-    """Which ``floor_size`` blocks of the map are free (every cell they overlap is free)."""
+    """Which ``floor_size`` blocks of the map are free (every cell they overlap is free). A floor size that cuts
+    the map into more than ``MAX_BLOCKS`` blocks is a ``ValueError`` before anything is allocated."""
     if not floor_size > 0:
         raise ValueError(f"floor size {floor_size:g}: expected metres above 0")
+    columns, rows = block_grid(occupancy, floor_size)
+    if columns * rows > MAX_BLOCKS:
+        raise ValueError(f"floor size {floor_size:g} m cuts the map's {occupancy.width} x {occupancy.height} cells of "
+                         f"{occupancy.resolution:g} m into {_count(columns)} x {_count(rows)} blocks: at most "
+                         f"{MAX_BLOCKS} (free or not); use a larger floor size")
     blocked = obstacle_mask(occupancy, unknown_free)
     res = occupancy.resolution
-    # A tolerance of a millionth of a cell, so that 1.0 m over 0.05 m cells is 20 cells, not 20.000000000000004.
-    eps = 1e-6
-    nx = math.floor(occupancy.width * res / floor_size + eps)
-    ny = math.floor(occupancy.height * res / floor_size + eps)
+    eps = _EPS
+    # no row of blocks, no block: a long thin map's columns alone may not be counted out
+    nx = 0 if rows == 0 else int(columns)
+    ny = 0 if columns == 0 else int(rows)
     # Summed-area table of the blocked cells: any block's count in four lookups.
     table = np.zeros((occupancy.height + 1, occupancy.width + 1), dtype=np.int64)
     table[1:, 1:] = blocked.cumsum(axis=0).cumsum(axis=1)

@@ -16,16 +16,25 @@ Nav2's ``map_io.cpp`` (``loadMapYaml``, ``loadMapFromFile``):
 
 PGM (``P2``, ``P5``, maxval up to 65535) is read here, PNG (every colour type and bit depth) by pypng.
 
+A map has at most ``MAX_CELLS`` cells, checked from the image's header (PNG IHDR, PGM header) before anything is
+decoded, since a small file may declare a huge image (a PNG of 1.4 MB can hold 100,000 x 100,000 one-bit pixels).
+Within the limit the image is read a block of rows at a time into the grid, so reading holds the grid (a byte per
+cell) and little more.
+
 Every error is a ``MapError`` naming the YAML file, the line and column of the field concerned and the field.
 """
 
 from __future__ import annotations
 
+import itertools
 import math
+import os
+import struct
 import zlib
+from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, BinaryIO
 
 import numpy as np
 import png
@@ -35,6 +44,15 @@ from rei import located_yaml
 
 MODES = ("trinary", "scale", "raw")
 FREE, OCCUPIED, UNKNOWN = 0, 100, -1
+#: The most cells (image pixels) a map may have: 50,000,000, e.g. 7,000 x 7,000 cells, 350 x 350 m at 0.05 m. A copy
+#: of ``maps.max_cells`` in contract/vocabulary.json, as the Java side's ``OccupancyMap.MAX_CELLS``.
+MAX_CELLS = 50_000_000
+#: Samples converted at a time: the temporary arrays of a block of rows stay a few megabytes, whatever the map.
+_CHUNK_SAMPLES = 1 << 18
+#: Bytes of a plain (P2) PGM's text split into words at a time.
+_TEXT_PIECE = 1 << 18
+#: Compressed bytes of a PNG inflated at a time: at most about 4 MB of pixels (zlib's ratio is at most 1032:1).
+_IDAT_PIECE = 1 << 12
 
 
 class MapError(ValueError):
@@ -70,10 +88,21 @@ class OccupancyMap:
 
 @dataclass(frozen=True, slots=True)
 class _Pixels:
-    """An image as Nav2 sees it: the mean colour and the alpha as fractions of full scale (image row order)."""
+    """Rows of an image as Nav2 sees them: the mean colour and the alpha as fractions of full scale (image row
+    order)."""
 
     shade_rgb: np.ndarray  # mean of red, green, blue
     alpha: np.ndarray | None  # None: no alpha channel
+
+
+@dataclass(frozen=True, slots=True)
+class _Image:
+    """An image whose header has been read: its size, and its pixels as blocks of rows, each with the index of
+    its first row (from the top)."""
+
+    width: int
+    height: int
+    blocks: Iterator[tuple[int, _Pixels]]
 
 
 class _Fields:
@@ -158,12 +187,15 @@ def load_map(path: Path | str) -> OccupancyMap:
     if negate not in (0, 1) or not isinstance(negate, (int, bool)):
         raise fields.error("negate", f"expected 0, 1, true or false, got {negate!r}")
 
-    pixels = _read_image(image, fields)
-    grid = _cells(pixels, mode, bool(negate), occupied_thresh, free_thresh)
+    read = _read_image(image, fields)
+    grid = np.empty((read.height, read.width), dtype=np.int8)  # at most MAX_CELLS: checked from the header
+    for first, pixels in read.blocks:
+        rows = _cells(pixels, mode, bool(negate), occupied_thresh, free_thresh)
+        # row 0 of the grid is the image's last row (the map's bottom)
+        grid[read.height - first - len(rows):read.height - first] = rows[::-1]
     return OccupancyMap(path=path, image=image, resolution=resolution,
                         origin=(float(origin[0]), float(origin[1]), float(origin[2])), negate=bool(negate),
-                        occupied_thresh=occupied_thresh, free_thresh=free_thresh, mode=mode,
-                        grid=np.ascontiguousarray(grid[::-1]))
+                        occupied_thresh=occupied_thresh, free_thresh=free_thresh, mode=mode, grid=grid)
 
 
 def _cells(pixels: _Pixels, mode: str, negate: bool, occupied_thresh: float, free_thresh: float) -> np.ndarray:
@@ -185,88 +217,236 @@ def _cells(pixels: _Pixels, mode: str, negate: bool, occupied_thresh: float, fre
     return cells.astype(np.int8)
 
 
-def _read_image(image: Path, fields: _Fields) -> _Pixels:
+def _read_image(image: Path, fields: _Fields) -> _Image:
     try:
         with image.open("rb") as stream:
-            head = stream.read(8)
+            head = stream.read(24)  # the signature, then the first chunk's length, type and IHDR's size
     except OSError as error:
         raise fields.error("image", f"cannot read the image {image}: {error.strerror or error}") from None
     if head[:2] in (b"P2", b"P5"):
         return _read_pgm(image, fields)
-    if head == PNG_SIGNATURE:
-        return _read_png(image, fields)
+    if head[:8] == PNG_SIGNATURE:
+        if len(head) == 24 and head[12:16] == b"IHDR":
+            _check_size(image, fields, *struct.unpack(">II", head[16:24]))
+        return _read_png(image, fields)  # else not a PNG pypng reads: it says why
     raise fields.error("image", f"cannot read the image {image}: not a PGM (P2, P5) or PNG file")
 
 
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 
 
-def _read_png(image: Path, fields: _Fields) -> _Pixels:
+def _check_size(image: Path, fields: _Fields, width: int, height: int) -> None:
+    """The cell limit, before anything is decoded; the same message as the Java side's."""
+    if width * height > MAX_CELLS:
+        raise fields.error("image", f"{image}: {width} x {height} = {width * height} cells: a map may have at most "
+                                    f"{MAX_CELLS} cells (crop it, or save it at a coarser resolution)")
+
+
+def _rows_per_block(width: int) -> int:
+    return max(1, _CHUNK_SAMPLES // max(1, width))
+
+
+class _PngReader(png.Reader):
+    """pypng's reader, handing each ``IDAT`` chunk to its decompressor in pieces of ``_IDAT_PIECE`` bytes: pypng
+    inflates what it is given at once, and a well-compressed chunk of a megabyte may inflate to a gigabyte."""
+
+    def chunk(self, lenient: bool = False) -> tuple[bytes, bytes]:
+        pieces: list[bytes] = self.__dict__.setdefault("_pieces", [])
+        if pieces:
+            return b"IDAT", pieces.pop()
+        kind, data = super().chunk(lenient=lenient)
+        if kind == b"IDAT" and len(data) > _IDAT_PIECE:
+            pieces.extend(data[at:at + _IDAT_PIECE] for at in reversed(range(_IDAT_PIECE, len(data), _IDAT_PIECE)))
+            data = data[:_IDAT_PIECE]
+        return kind, data
+
+
+def _read_png(image: Path, fields: _Fields) -> _Image:
     """A PNG's samples as stored (pypng's ``read``: no gamma or significant-bits rescaling, which ImageMagick
-    does not apply either), the palette and a ``tRNS`` transparent colour resolved as ImageMagick reads them."""
+    does not apply either), the palette and a ``tRNS`` transparent colour resolved as ImageMagick reads them;
+    pypng decodes a row at a time (an interlaced image at once)."""
+
+    def failed(error: Exception) -> MapError:
+        return fields.error("image", f"cannot read the image {image}: {error}")
+
     try:
-        width, height, rows, info = png.Reader(filename=str(image)).read()
-        samples = np.vstack([np.asarray(row, dtype=np.int64) for row in rows]) if height else np.zeros((0, 0))
+        width, height, rows, info = _PngReader(filename=str(image)).read()
     except (png.Error, OSError, ValueError, zlib.error) as error:
-        raise fields.error("image", f"cannot read the image {image}: {error}") from None
+        raise failed(error) from None
+    _check_size(image, fields, width, height)  # an IHDR that is not the first chunk: pypng found it
     planes, full = int(info["planes"]), float(2 ** int(info["bitdepth"]) - 1)
-    samples = samples.reshape(height, width, planes)
-    if "palette" in info:
-        palette = np.asarray(info["palette"], dtype=np.int64)
-        samples, full = palette[samples[..., 0]], 255.0
-        planes = palette.shape[1]
-    elif "transparent" in info:  # one colour (or grey) stands for transparent: alpha 0 there, opaque elsewhere
-        key = np.asarray(info["transparent"], dtype=np.int64).reshape(-1)
-        alpha = np.where((samples == key).all(axis=2), 0, int(full))[..., None]
-        samples, planes = np.concatenate([samples, alpha], axis=2), planes + 1
-    colour = samples[..., :1] if planes in (1, 2) else samples[..., :3]
-    shade = colour.mean(axis=2) / full
-    return _Pixels(shade, samples[..., -1] / full if planes in (2, 4) else None)
+    palette = np.asarray(info["palette"], dtype=np.int64) if "palette" in info else None
+    key = np.asarray(info["transparent"], dtype=np.int64).reshape(-1) if "transparent" in info else None
 
+    def pixels(samples: np.ndarray) -> _Pixels:
+        samples = samples.reshape(len(samples), width, planes)
+        scale, depth = full, planes
+        if palette is not None:
+            samples, scale = palette[samples[..., 0]], 255.0
+            depth = palette.shape[1]
+        elif key is not None:  # one colour (or grey) stands for transparent: alpha 0 there, opaque elsewhere
+            alpha = np.where((samples == key).all(axis=2), 0, int(full))[..., None]
+            samples, depth = np.concatenate([samples, alpha], axis=2), planes + 1
+        colour = samples[..., :1] if depth in (1, 2) else samples[..., :3]
+        return _Pixels(colour.mean(axis=2) / scale, samples[..., -1] / scale if depth in (2, 4) else None)
 
-def _read_pgm(image: Path, fields: _Fields) -> _Pixels:
-    """A PGM: three header numbers and the samples, whose shade is ``sample / maxval`` as map_server reads it."""
-    data = image.read_bytes()
-    tokens: list[bytes] = []
-    at = 2
-    while len(tokens) < 3:
-        while at < len(data) and data[at:at + 1].isspace():
-            at += 1
-        if data[at:at + 1] == b"#":
-            while at < len(data) and data[at:at + 1] not in (b"\n", b"\r"):
-                at += 1
-            continue
-        start = at
-        while at < len(data) and not data[at:at + 1].isspace() and data[at:at + 1] != b"#":
-            at += 1
-        if start == at:
-            raise fields.error("image", f"{image}: truncated PGM header")
-        tokens.append(data[start:at])
-    try:
-        width, height, maxval = (int(t) for t in tokens)
-    except ValueError:
-        raise fields.error("image", f"{image}: PGM header {b' '.join(tokens)!r} is not three integers") from None
-    if width <= 0 or height <= 0:
-        raise fields.error("image", f"{image}: PGM size {width} x {height}: expected at least 1 x 1")
-    if not 0 < maxval <= 65535:
-        raise fields.error("image", f"{image}: PGM maxval {maxval}: expected 1..65535 (8 or 16 bits per sample)")
-    count = width * height
-    if data[:2] == b"P5":
-        dtype = np.dtype(">u2") if maxval > 255 else np.dtype("u1")
-        body = data[at + 1:]  # exactly one whitespace byte ends the header
-        if len(body) < count * dtype.itemsize:
-            raise fields.error("image", f"{image}: PGM data holds {len(body) // dtype.itemsize} samples, "
-                                        f"expected {width} x {height} = {count}")
-        samples = np.frombuffer(body, dtype=dtype, count=count)
-    else:
-        words = data[at:].split()
-        if len(words) < count:
-            raise fields.error("image", f"{image}: PGM data holds {len(words)} samples, "
-                                        f"expected {width} x {height} = {count}")
+    def blocks() -> Iterator[tuple[int, _Pixels]]:
+        per_block = _rows_per_block(width * planes)
+        first = 0
         try:
-            samples = np.array([int(w) for w in words[:count]], dtype=np.int64)
+            while first < height:
+                count = min(per_block, height - first)
+                samples = np.empty((count, width * planes), dtype=np.int64)
+                got = 0
+                for row in itertools.islice(rows, count):
+                    samples[got] = row
+                    got += 1
+                if got < count:
+                    raise png.FormatError(f"the image data holds {first + got} rows, expected {height}")
+                yield first, pixels(samples)
+                first += count
+        except (png.Error, OSError, ValueError, zlib.error) as error:
+            raise failed(error) from None
+
+    return _Image(width, height, blocks())
+
+
+class _Bytes:
+    """A file read through a buffer, byte by byte (a PGM header), counting where it is."""
+
+    def __init__(self, stream: BinaryIO) -> None:
+        self.stream, self.buffer, self.at, self.offset = stream, b"", 0, 0
+
+    def peek(self) -> bytes:
+        """The next byte without taking it, ``b""`` at the end."""
+        if self.at == len(self.buffer):
+            self.buffer, self.at = self.stream.read(1 << 16), 0
+        return self.buffer[self.at:self.at + 1]
+
+    def take(self) -> bytes:
+        byte = self.peek()
+        self.at += len(byte)
+        self.offset += len(byte)
+        return byte
+
+
+def _read_pgm(image: Path, fields: _Fields) -> _Image:
+    """A PGM: three header numbers and the samples, whose shade is ``sample / maxval`` as map_server reads it;
+    read as a stream, the header first."""
+    stream = image.open("rb")
+    try:
+        data = _Bytes(stream)
+        binary = data.take() + data.take() == b"P5"
+        tokens: list[bytes] = []
+        while len(tokens) < 3:
+            while data.peek().isspace():
+                data.take()
+            if data.peek() == b"#":
+                while data.peek() not in (b"\n", b"\r", b""):
+                    data.take()
+                continue
+            token = bytearray()
+            while data.peek() and not data.peek().isspace() and data.peek() != b"#":
+                token += data.take()
+            if not token:
+                raise fields.error("image", f"{image}: truncated PGM header")
+            tokens.append(bytes(token))
+        try:
+            width, height, maxval = (int(t) for t in tokens)
         except ValueError:
-            raise fields.error("image", f"{image}: PGM samples are not integers") from None
-    if samples.size and samples.max() > maxval:
-        raise fields.error("image", f"{image}: a PGM sample of {int(samples.max())} exceeds maxval {maxval}")
-    return _Pixels(samples.reshape(height, width).astype(np.float64) / maxval, None)
+            raise fields.error("image", f"{image}: PGM header {b' '.join(tokens)!r} is not three integers") from None
+        if width <= 0 or height <= 0:
+            raise fields.error("image", f"{image}: PGM size {width} x {height}: expected at least 1 x 1")
+        _check_size(image, fields, width, height)
+        if not 0 < maxval <= 65535:
+            raise fields.error("image", f"{image}: PGM maxval {maxval}: expected 1..65535 (8 or 16 bits per sample)")
+        if binary:
+            data.take()  # exactly one whitespace byte ends the header
+            blocks = _pgm_binary(image, fields, stream, data.offset, width, height, maxval)
+        else:
+            blocks = _pgm_plain(image, fields, stream, data.offset, width, height, maxval)
+    except BaseException:
+        stream.close()
+        raise
+    return _Image(width, height, _closing(stream, blocks))
+
+
+def _closing(stream: BinaryIO, blocks: Iterator[tuple[int, _Pixels]]) -> Iterator[tuple[int, _Pixels]]:
+    with stream:
+        yield from blocks
+
+
+def _pgm_binary(image: Path, fields: _Fields, stream: BinaryIO, body: int, width: int, height: int,
+                maxval: int) -> Iterator[tuple[int, _Pixels]]:
+    """P5: the samples from ``body`` on, two bytes big-endian above 255."""
+    dtype = np.dtype(">u2") if maxval > 255 else np.dtype("u1")
+    count = width * height
+    available = max(0, os.fstat(stream.fileno()).st_size - body) // dtype.itemsize
+    if available < count:
+        raise fields.error("image", f"{image}: PGM data holds {available} samples, "
+                                    f"expected {width} x {height} = {count}")
+
+    def blocks() -> Iterator[tuple[int, _Pixels]]:
+        stream.seek(body)
+        largest, per_block = 0, _rows_per_block(width)
+        for first in range(0, height, per_block):
+            rows = min(per_block, height - first)
+            samples = np.frombuffer(stream.read(rows * width * dtype.itemsize), dtype=dtype).reshape(rows, width)
+            largest = max(largest, int(samples.max()))
+            yield first, _Pixels(samples / maxval, None)
+        if largest > maxval:
+            raise fields.error("image", f"{image}: a PGM sample of {largest} exceeds maxval {maxval}")
+
+    return blocks()
+
+
+def _pgm_plain(image: Path, fields: _Fields, stream: BinaryIO, start: int, width: int, height: int,
+               maxval: int) -> Iterator[tuple[int, _Pixels]]:
+    """P2: the samples as decimal words from ``start`` on, read as ``int()`` reads them, a block of rows at a time
+    (a word cut by the end of a read is completed by the next)."""
+    count = width * height
+
+    def words() -> Iterator[list[bytes]]:
+        stream.seek(start)
+        rest = b""
+        while piece := stream.read(_TEXT_PIECE):
+            text = rest + piece
+            cut = len(text) if text[-1:].isspace() else max(text.rfind(c) for c in b" \t\n\r\x0b\x0c") + 1
+            rest = text[cut:]
+            yield text[:cut].split()
+        if rest:
+            yield [rest]
+
+    def blocks() -> Iterator[tuple[int, _Pixels]]:
+        largest, read, first = 0, 0, 0
+        per_block = _rows_per_block(width)
+        samples = np.empty(min(per_block, height) * width, dtype=np.int64)
+        filled = 0
+        for chunk in words():
+            at = 0
+            while at < len(chunk) and read < count:
+                take = min(len(chunk) - at, len(samples) - filled, count - read)
+                try:
+                    values = [int(w) for w in chunk[at:at + take]]
+                except ValueError:
+                    raise fields.error("image", f"{image}: PGM samples are not integers") from None
+                try:
+                    samples[filled:filled + take] = values
+                except OverflowError:  # beyond 64 bits
+                    samples[filled:filled + take] = [min(max(v, -2**63), 2**31 - 1) for v in values]
+                at, filled, read = at + take, filled + take, read + take
+                if filled == len(samples) or read == count:
+                    rows = filled // width
+                    # as the Java side says it: beyond 2^31 - 1 a sample is 2^31 - 1 (above any maxval)
+                    largest = max(largest, min(int(samples[:filled].max()), 2**31 - 1))
+                    yield first, _Pixels(samples[:filled].reshape(rows, width) / maxval, None)
+                    first, filled = first + rows, 0
+            if read == count:
+                break
+        if read < count:
+            raise fields.error("image", f"{image}: PGM data holds {read} samples, "
+                                        f"expected {width} x {height} = {count}")
+        if largest > maxval:
+            raise fields.error("image", f"{image}: a PGM sample of {largest} exceeds maxval {maxval}")
+
+    return blocks()

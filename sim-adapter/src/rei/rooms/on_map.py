@@ -50,9 +50,12 @@ REACH = 1.2
 
 def load_site(yaml: Path, floor_size: float = 1.0, unknown_free: bool = False) -> MapSite:
     """The map's free floor blocks; raises ``MapError`` for a map that can not be read, ``ValueError`` for a
-    floor size that leaves no free floor."""
+    floor size that leaves no free floor or cuts the map into more than ``rei.maps.MAX_BLOCKS`` blocks."""
     occupancy = load_map(yaml)
-    blocks = floor_blocks(occupancy, floor_size, unknown_free)
+    try:
+        blocks = floor_blocks(occupancy, floor_size, unknown_free)
+    except ValueError as error:  # a floor size that cuts the map into too many blocks
+        raise ValueError(f"{yaml}: {error}") from None
     ys, xs = np.nonzero(blocks.free)
     free = frozenset(zip(xs.tolist(), ys.tolist(), strict=True))
     if not free:
