@@ -23,6 +23,7 @@ from rei.edit import TOKEN_HEADER, engine
 from rei.edit.server import ROUTES
 from rei.evaluation import DEFAULT_UTILITIES, load_declared_transitions, load_declared_utilities
 from rei.evaluation.signals import DEFAULT_TRANSITIONS, SIGNAL_RECORD, Signal
+from rei.maps import MAX_BLOCKS, MAX_CELLS
 from rei.mission.executor import MissionEventKind
 from rei.run import jvm
 from rei.sut.external import protocol
@@ -86,6 +87,17 @@ def test_java_copies(contract: dict, java_facts: dict) -> None:
     assert java_facts["room_editor_operations"] == editor["operations"]
     assert java_facts["room_editor_point"] == editor["point"]
     assert java_facts["room_editor_sides"] == editor["sides"]
+
+
+def test_the_map_limits_are_one_fact_of_both_readers_and_of_the_language_page(contract: dict, java_facts: dict,
+                                                                             repo_root: Path) -> None:
+    """The most cells a map may have and the most blocks a floor size may cut it into: Python's rei.maps and Java's
+    org.rei.maps refuse the same maps with the same message (tests/maps), and the language page says the numbers."""
+    limits = (contract["maps"]["max_cells"], contract["maps"]["max_blocks"])
+    assert (MAX_CELLS, MAX_BLOCKS) == limits
+    assert (java_facts["map_max_cells"], java_facts["map_max_blocks"]) == limits
+    page = (repo_root / "docs" / "language.md").read_text(encoding="utf-8")
+    assert f"**{limits[0]:,} cells**" in page and f"**{limits[1]:,} blocks**" in page
 
 
 def test_room_editor_python_copies(contract: dict) -> None:

@@ -16,14 +16,17 @@ warm JVM for the many small ones) and checked against ``floor_blocks``, ``merge_
 
 Bad input: each case is an error at the ``.rei`` file's line and column naming the YAML field (with its line and
 column) or the image's problem, exit code 1, and nothing generated - each through the generator in the warm JVM,
-and one through ``rei generate``, the command users run.
+and one through ``rei generate``, the command users run. An image of more cells than a map may have is refused by
+both readers from its header, with the same message.
 """
 
 from __future__ import annotations
 
 import json
 import math
+import struct
 import xml.etree.ElementTree as ET
+import zlib
 from collections import deque
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
@@ -34,7 +37,7 @@ import numpy as np
 import png
 import pytest
 
-from rei.maps import box_of, floor_blocks, load_map, merge_rectangles, obstacle_mask
+from rei.maps import MapError, box_of, floor_blocks, load_map, merge_rectangles, obstacle_mask
 from rei.run.jvm import JarServer, run_jar
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
@@ -460,6 +463,46 @@ def test_a_bad_map_through_rei_generate(run_cli: Callable[..., Any], tmp_path: P
     assert result.returncode == 1, result.stderr
     check_errors(result.stderr, source, expected)
     assert not out.exists(), "nothing is generated for a bad map"
+
+
+def _png_declaring(width: int, height: int) -> bytes:
+    """A one-bit grey PNG whose IHDR declares ``width x height`` pixels, with three rows of data."""
+    def chunk(kind: bytes, data: bytes) -> bytes:
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
+
+    rows = zlib.compress(bytes(3 * (1 + (width + 7) // 8)))
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 1, 0, 0, 0, 0))
+            + chunk(b"IDAT", rows) + chunk(b"IEND", b""))
+
+
+OVERSIZED = {
+    # 5 x 5 km at 0.05 m: what made `rei gen-rooms --map` use 7.7 GB
+    "png-100000-x-100000": _png_declaring(100_000, 100_000),
+    "png-one-row-over": _png_declaring(10_000, 5_001),
+    "pgm-P5": b"P5\n# 5 x 5 km\n100000 100000\n255\n\xfe\xfe\xfe",
+    "pgm-P2-beyond-64-bits": b"P2\n123456789012345678901 2\n255\n0 0\n",
+}
+
+
+@pytest.mark.parametrize("image", list(OVERSIZED), ids=list(OVERSIZED))
+def test_an_image_of_more_cells_than_a_map_may_have_is_refused_alike_by_both_readers(
+        generator: Path, tmp_path: Path, image: str) -> None:
+    """The one limit (contract/vocabulary.json maps.max_cells) from the image's header, before anything is
+    decoded: the Java generator's error on the .rei file quotes, word for word, the Python reader's MapError."""
+    source = write_bad_case(tmp_path, GOOD_YAML, None, ROOM)
+    (tmp_path / "room.pgm").write_bytes(OVERSIZED[image])  # the readers go by the content, not the name
+    with pytest.raises(MapError) as python:
+        load_map(tmp_path / "room.yaml")
+    assert python.value.detail.endswith("cells: a map may have at most 50000000 cells (crop it, or save it at a "
+                                        "coarser resolution)"), python.value
+    assert (python.value.line, python.value.column, python.value.field) == (1, 8, "image")
+    out, log = tmp_path / "out", tmp_path / "generate.log"
+    result = run_jar("cli", ["generate", str(source), "-o", str(out)], log, timeout=GENERATE_TIMEOUT_S,
+                     server=generator)
+    assert result.code == 1, result.log_tail
+    check_errors(log.read_text(encoding="utf-8"), source,
+                 [(3, 15, f"Cannot use the map room.yaml:1:8: image: {python.value.detail} [", "")])
+    assert not out.exists()
 
 
 def _position(error: str) -> tuple[int, int]:

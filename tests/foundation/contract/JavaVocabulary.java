@@ -9,6 +9,8 @@ import java.util.Map;
 
 import org.rei.dsl.edit.EditOperation;
 import org.rei.dsl.edit.server.Protocol;
+import org.rei.maps.MapBlocks;
+import org.rei.maps.OccupancyMap;
 import org.rei.monitor.config.MonitorSpec;
 import org.rei.monitor.signals.Signal;
 import org.rei.monitor.wamp.LiveMonitor;
@@ -55,6 +57,8 @@ public final class JavaVocabulary {
 		facts.put("room_editor_operations", operations);
 		facts.put("room_editor_point", Arrays.stream(EditOperation.Waypoint.class.getRecordComponents())
 				.map(c -> c.getName()).toList());
+		facts.put("map_max_cells", OccupancyMap.MAX_CELLS); // the room editor's jar holds the language and its maps
+		facts.put("map_max_blocks", MapBlocks.MAX_BLOCKS);
 		System.out.println(new ObjectMapper().writeValueAsString(facts));
 	}
 }
