@@ -137,3 +137,32 @@ def test_sdf_and_world_must_list_the_same_bodies(room_copy: Path, edit_json: Edi
     sdf = read_sdf(room_copy / "world.sdf")
     message = _error(lambda: check_sdf_matches_world(sdf, world))
     assert "world.sdf: 18 models but world.json lists 17 objects; not in world.json: table1" in message
+
+
+def _person(**change: Any) -> dict:
+    person = {"name": "h1", "behaviour": "avoids", "speed": 1.2, "start": 0.0, "loop": False,
+              "route": [{"floor": "F_0_0", "x": 0.5, "y": 0.5, "wait": 0.0}]}
+    person.update(change)
+    return person
+
+
+def test_people_are_read_and_checked(room_copy: Path, edit_json: Edit) -> None:
+    def people(*persons: dict) -> Callable[[Any], None]:
+        def change(data: Any) -> None:
+            data["objects"] = [o for o in data["objects"] if o["name"] != "h1"]
+            data["people"] = list(persons)
+        return change
+
+    edit_json(room_copy / "animation.json", people(_person(speedTo=1.5, group="g")))
+    (ann,) = read_animation(room_copy / "animation.json").people
+    assert (ann.name, ann.speed, ann.speed_to, ann.group, ann.route[0].x) == ("h1", 1.2, 1.5, "g", 0.5)
+    for change, expected in (
+        ({"behaviour": "shy"}, "people[0].behaviour: unknown behaviour 'shy', expected one of avoids, ignores"),
+        ({"speedTo": 1.0}, "people[0].speedTo: must be at least speed (1.2) and at most 3 m/s, got 1.0"),
+        ({"speed": 0}, "people[0].speed: must be > 0 and <= 3 m/s, got 0"),
+        ({"route": []}, "people[0].route: needs at least one stop"),
+    ):
+        edit_json(room_copy / "animation.json", people(_person(**change)))
+        assert expected in _error(lambda: read_animation(room_copy / "animation.json"))
+    edit_json(room_copy / "animation.json", people(_person(name="ghost")))
+    assert "person 'ghost' is not in world.json" in _error(lambda: read_case(room_copy))

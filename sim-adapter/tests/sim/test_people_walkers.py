@@ -133,3 +133,21 @@ def test_a_scared_person_backs_away_from_a_near_robot() -> None:
     robot = RobotView(x=0.5, y=0.0, yaw=math.pi, vx=-0.3, vy=0.0, front=0.15, radius=0.21)
     speed, points = walker(person(Behaviour.SCARED)).target(0.0, (0.0, 0.0), robot)
     assert points[0][0] < -1.0 and speed > 1.0
+
+
+def test_a_follower_keeps_its_place_abreast_of_its_leader_and_arrives_with_it() -> None:
+    from rei.sim.people.walkers import Follower
+
+    leader = walker(person())
+    places = {"leader": (0.0, 0.0)}
+    first = Follower(person(), 0.25, 1, leader, lambda: (places["leader"], 0.0))
+    second = Follower(person(), 0.25, 2, leader, lambda: (places["leader"], 0.0))
+    third = Follower(person(), 0.25, 3, leader, lambda: (places["leader"], 0.0))
+    spacing = 2 * 0.25 + 0.1
+    assert first.target(0.0, (0.0, spacing), FAR) == (0.0, [(0.0, spacing)])  # in its place: stands
+    assert second.target(0.0, (0.0, 0.0), FAR)[1] == [pytest.approx((0.0, -spacing))]  # the leader's right
+    assert third.target(0.0, (0.0, 0.0), FAR)[1] == [pytest.approx((-spacing, spacing / 2))]  # behind, left
+    speed, _ = first.target(0.0, (-2.0, spacing), FAR)
+    assert speed == pytest.approx(1.3)  # far behind: catches up
+    walk(leader, 6.0)
+    assert first.arrivals == leader.arrivals == [pytest.approx(3.85, abs=0.06)]

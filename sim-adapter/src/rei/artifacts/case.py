@@ -16,7 +16,7 @@ from rei.artifacts.errors import ArtifactError
 from rei.artifacts.mission import MissionSpec, read_mission
 from rei.artifacts.monitor import MonitorSpec, read_monitor
 from rei.artifacts.sdf import SdfWorld, read_sdf
-from rei.artifacts.world import WorldSpec, read_world
+from rei.artifacts.world import Category, WorldSpec, read_world
 
 WORLD_SDF = "world.sdf"
 WORLD_JSON = "world.json"
@@ -75,6 +75,11 @@ def read_case(folder: Path | str) -> Case:
                 f"object {animated.name!r} is {animated.category.value} here but {obj.category.value} in "
                 f"{world.path.name}",
             )
+    for person in animation.people:
+        obj = objects.get(person.name)
+        if obj is None or obj.category is not Category.HUMAN:
+            found = "not" if obj is None else f"a {obj.category.value}, not a HUMAN,"
+            raise ArtifactError(animation.path, f"person {person.name!r} is {found} in {world.path.name}")
     if mission.robot != world.robot.name:
         raise ArtifactError(
             mission.path, f"robot {mission.robot!r} is not the world's robot {world.robot.name!r}"
