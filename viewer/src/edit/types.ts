@@ -166,6 +166,12 @@ export interface PointSpec {
   seconds: number;
 }
 
+/** A stop of a route: a floor and the seconds the person waits there (EditOperation.Stop). */
+export interface StopSpec {
+  floor: string;
+  waitSeconds: number;
+}
+
 /** One EditOperation record (bundles/org.rei.dsl.edit/.../EditOperation.java), its kind in `op`. */
 export type Operation =
   | { op: "moveObject"; name: string; floor: string }
@@ -179,6 +185,7 @@ export type Operation =
   | { op: "addWall"; name: string; floor: string; side: Side }
   | { op: "removeWall"; name: string }
   | { op: "setTrajectory"; name: string; points: PointSpec[]; loop: boolean }
+  | { op: "setRoute"; name: string; stops: StopSpec[]; speed: number; start: number; loop: boolean; behaviour: string }
   | { op: "addGoal"; floor: string; index: number; timeoutSeconds: number | null }
   | { op: "removeGoal"; index: number }
   | { op: "moveGoal"; from: number; to: number };

@@ -80,6 +80,27 @@ public sealed interface EditOperation {
 		}
 	}
 
+	/**
+	 * Replaces the route of a person who sees the robot: its stops in order, walking speed (m/s), start (s), loop or
+	 * once, and behaviour as the text writes it ({@code avoids}, {@code ignores}, {@code curious}, {@code scared},
+	 * {@code blocks}). What differs from the route as written changes in place; the rest of its line stays as
+	 * written.
+	 */
+	record SetRoute(String name, List<Stop> stops, double speed, double start, boolean loop, String behaviour)
+			implements EditOperation {
+		public SetRoute {
+			stops = List.copyOf(stops);
+			Objects.requireNonNull(behaviour, "behaviour");
+		}
+	}
+
+	/** A stop of a route: the centre of a floor, and the seconds the person waits there on arrival. */
+	record Stop(String floor, double waitSeconds) {
+		public Stop {
+			Objects.requireNonNull(floor, "floor");
+		}
+	}
+
 	/** A control point: the centre of a floor at a time in seconds. */
 	record Waypoint(String floor, double seconds) {
 		public Waypoint {

@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 import java.util.regex.Pattern;
@@ -22,6 +23,7 @@ import org.eclipse.xtext.resource.IEObjectDescription;
 import org.eclipse.xtext.scoping.IScopeProvider;
 import org.rei.catalogue.ObjectType;
 import org.rei.context.AsciiLayout;
+import org.rei.context.Behaviour;
 import org.rei.context.BuildingBlock;
 import org.rei.context.ContextFactory;
 import org.rei.context.ContextPackage;
@@ -38,6 +40,7 @@ import org.rei.context.NamedElement;
 import org.rei.context.NavigationTask;
 import org.rei.context.PhysicalObject;
 import org.rei.context.Robot;
+import org.rei.context.Route;
 import org.rei.context.RouteStop;
 import org.rei.context.SimulationObject;
 import org.rei.context.StaticObject;
@@ -59,6 +62,7 @@ import org.rei.dsl.edit.EditOperation.RemoveFloor;
 import org.rei.dsl.edit.EditOperation.RemoveGoal;
 import org.rei.dsl.edit.EditOperation.RemoveWall;
 import org.rei.dsl.edit.EditOperation.RotateObject;
+import org.rei.dsl.edit.EditOperation.SetRoute;
 import org.rei.dsl.edit.EditOperation.SetTrajectory;
 import org.rei.dsl.edit.EditOperation.Waypoint;
 
@@ -131,6 +135,8 @@ final class ModelEditor {
 			removeWall(remove);
 		} else if (operation instanceof SetTrajectory set) {
 			setTrajectory(set);
+		} else if (operation instanceof SetRoute set) {
+			setRoute(set);
 		} else if (operation instanceof AddGoal add) {
 			addGoal(add);
 		} else if (operation instanceof RemoveGoal remove) {
@@ -313,6 +319,69 @@ final class ModelEditor {
 		}
 		if (trajectory.isLoop() != set.loop()) {
 			trajectory.setLoop(set.loop());
+		}
+	}
+
+	/**
+	 * Changes the route in place, as a trajectory is changed: a changed floor, wait, speed, start, loop or behaviour
+	 * alone replaces just its part of the line. A value equal to the grammar's default (speed 1.2, start 0, once,
+	 * avoids) may then be left unwritten, as the text may leave it.
+	 */
+	private void setRoute(SetRoute set) {
+		PhysicalObject object = object(set.name());
+		if (!(object instanceof Human person) || person.getOwnedRoute() == null) {
+			throw new EditRefusedException("'" + set.name() + "' " + (object instanceof DynamicObject
+					? "follows a trajectory, not a route: change its trajectory instead"
+					: "stands on a floor and has no route: move it instead"));
+		}
+		if (set.stops().isEmpty()) {
+			throw new EditRefusedException("A route is written with one stop at least: '" + set.name()
+					+ "' would have none");
+		}
+		// as the diagram and the text write it: the enum's name in lower case
+		Behaviour behaviour = Behaviour.VALUES.stream()
+				.filter(b -> b.getName().toLowerCase(Locale.ROOT).equals(set.behaviour())).findFirst().orElse(null);
+		if (behaviour == null) {
+			throw new EditRefusedException("'" + set.behaviour() + "' is not a behaviour: expected avoids, ignores, "
+					+ "curious, scared or blocks");
+		}
+		List<Floor> floors = set.stops().stream().map(s -> floor(s.floor())).toList();
+		changing(person);
+		Route route = person.getOwnedRoute();
+		List<RouteStop> stops = route.getOwnedStops();
+		for (int i = 0; i < floors.size(); i++) {
+			double wait = set.stops().get(i).waitSeconds();
+			if (i < stops.size()) {
+				RouteStop stop = stops.get(i);
+				if (stop.getFloor() != floors.get(i)) {
+					stop.setFloor(floors.get(i));
+				}
+				if (stop.getWait() != wait) {
+					stop.setWait(wait);
+				}
+			} else {
+				RouteStop stop = FACTORY.createRouteStop();
+				stop.setFloor(floors.get(i));
+				if (wait != 0) {
+					stop.setWait(wait);
+				}
+				stops.add(stop);
+			}
+		}
+		while (stops.size() > floors.size()) {
+			stops.remove(stops.size() - 1);
+		}
+		if (route.getSpeed() != set.speed()) {
+			route.setSpeed(set.speed());
+		}
+		if (route.getStart() != set.start()) {
+			route.setStart(set.start());
+		}
+		if (route.isLoop() != set.loop()) {
+			route.setLoop(set.loop());
+		}
+		if (route.getBehaviour() != behaviour) {
+			route.setBehaviour(behaviour);
 		}
 	}
 

@@ -22,7 +22,9 @@ import org.rei.dsl.edit.EditOperation.DeleteObject;
 import org.rei.dsl.edit.EditOperation.MoveObject;
 import org.rei.dsl.edit.EditOperation.RemoveFloor;
 import org.rei.dsl.edit.EditOperation.RotateObject;
+import org.rei.dsl.edit.EditOperation.SetRoute;
 import org.rei.dsl.edit.EditOperation.SetTrajectory;
+import org.rei.dsl.edit.EditOperation.Stop;
 import org.rei.dsl.edit.EditOperation.Waypoint;
 import org.rei.dsl.edit.diagram.Diagram;
 import org.rei.dsl.validation.ReiIssueCodes;
@@ -160,6 +162,110 @@ class PeopleEditTest {
 		assertEquals(List.of("-    human bob route [F_5_0, F_5_3 wait 1s] start 3s ignores"),
 				Texts.diff(original, result.text()));
 		assertEquals(List.of(), result.issues());
+	}
+
+	/**
+	 * What rei search changes of a person on a route (its start, speed, behaviour, a stop's floor): each changed part
+	 * replaces its own token, the rest of the line stays as written, and the saved text reads back as the edit.
+	 */
+	@Test
+	void setRouteChangesOnlyWhatDiffers(@TempDir Path folder) throws IOException {
+		Path file = folder.resolve("reactive_crossing.rei");
+		Files.copy(Texts.repository().resolve(EXAMPLE), file);
+		String original = Files.readString(file);
+		RoomDocument document = RoomDocument.open(file);
+		SetRoute ann = new SetRoute("ann", List.of(new Stop("F_3_3", 0), new Stop("F_2_0", 2)), 0.7, 0, true,
+				"curious");
+		SetRoute bob = new SetRoute("bob", List.of(new Stop("F_5_0", 0), new Stop("F_5_3", 1)), 1.2, 12.5, false,
+				"ignores");
+
+		EditResult result = document.apply(ann, bob);
+		document.save();
+
+		String saved = Files.readString(file);
+		assertEquals(result.text(), saved);
+		assertEquals(List.of("-    human ann route [F_3_3, F_3_0 wait 2s] speed 1.1 loop avoids",
+				"-    human bob route [F_5_0, F_5_3 wait 1s] start 3s ignores",
+				"+    human ann route [F_3_3, F_2_0 wait 2s] speed 0.7 loop curious",
+				"+    human bob route [F_5_0, F_5_3 wait 1s] start 12.5s ignores"), Texts.diff(original, saved));
+		assertEquals(List.of(), result.issues());
+		Texts.assertReadsBackAsEdited(original, document.uri(), saved, ann, bob);
+		Diagram.Route route = document.diagram().movers().get(0).route();
+		assertEquals(new Diagram.Route(List.of(new Diagram.Stop("F_3_3", 0, 3.5, 3.5),
+				new Diagram.Stop("F_2_0", 2, 2.5, 0.5)), 0.7, 0, "curious"), route);
+	}
+
+	/** Options written in an order of the writer's own stay in it when their values change. */
+	@Test
+	void setRouteKeepsTheOptionsWhereTheyAreWritten() {
+		String text = """
+				testcase T {
+				  room R size 6 x 3 {
+				    human ann : Human route [F_0_2 wait 0.5 s,F_3_2 wait 3s, F_5_2]   blocks once start 4 speed 0.9
+				    robot r : Waffle on F_0_0
+				  }
+				  mission M { goto F_5_1 goto F_1_1 }
+				}
+				""";
+		RoomDocument document = RoomDocument.of(URI.createFileURI(Texts.repository().resolve("examples/t.rei")
+				.toString()), text);
+		SetRoute set = new SetRoute("ann", List.of(new Stop("F_0_2", 0.5), new Stop("F_3_2", 3), new Stop("F_5_2", 0)),
+				1.5, 7.25, false, "scared");
+		EditResult result = document.apply(set);
+
+		assertEquals(List.of("-    human ann : Human route [F_0_2 wait 0.5 s,F_3_2 wait 3s, F_5_2]   blocks once start 4 "
+				+ "speed 0.9", "+    human ann : Human route [F_0_2 wait 0.5 s,F_3_2 wait 3s, F_5_2]   scared once "
+						+ "start 7.25s speed 1.5"), Texts.diff(text, result.text()));
+		Texts.assertReadsBackAsEdited(text, document.uri(), result.text(), set);
+	}
+
+	/**
+	 * A value the text leaves to its default is written after the line's last token when it changes; one changed to
+	 * its default goes with its keyword (a behaviour is written out instead), and only its own words go.
+	 */
+	@Test
+	void setRouteWritesAnOptionTheTextLeftOutAndDeletesOnlyWhatGoes() {
+		RoomDocument document = Texts.open(EXAMPLE);
+		String original = document.text();
+		SetRoute bob = new SetRoute("bob", List.of(new Stop("F_5_0", 0), new Stop("F_5_3", 1)), 0.8, 3, true,
+				"blocks");
+		SetRoute ann = new SetRoute("ann", List.of(new Stop("F_3_3", 0), new Stop("F_3_0", 2)), 1.1, 0, false,
+				"avoids");
+		SetRoute bobAgain = new SetRoute("bob", List.of(new Stop("F_5_0", 0), new Stop("F_5_3", 1)), 1.2, 0, false,
+				"avoids");
+
+		EditResult result = document.apply(bob, ann);
+		assertEquals(List.of(), result.issues());
+		assertEquals(List.of("-    human ann route [F_3_3, F_3_0 wait 2s] speed 1.1 loop avoids",
+				"-    human bob route [F_5_0, F_5_3 wait 1s] start 3s ignores",
+				"+    human ann route [F_3_3, F_3_0 wait 2s] speed 1.1 avoids",
+				"+    human bob route [F_5_0, F_5_3 wait 1s] start 3s blocks speed 0.8 loop"),
+				Texts.diff(original, result.text()));
+		Texts.assertReadsBackAsEdited(original, document.uri(), result.text(), bob, ann);
+
+		EditResult defaults = document.apply(bobAgain);
+		assertEquals(List.of("-    human bob route [F_5_0, F_5_3 wait 1s] start 3s blocks speed 0.8 loop",
+				"+    human bob route [F_5_0, F_5_3 wait 1s] avoids"), Texts.diff(result.text(), defaults.text()));
+		Texts.assertReadsBackAsEdited(result.text(), document.uri(), defaults.text(), bobAgain);
+	}
+
+	@Test
+	void setRouteOnWhatHasNoRouteOrWithABadBehaviourIsRefused() {
+		RoomDocument document = Texts.open(EXAMPLE);
+		String original = document.text();
+		List<Stop> stops = List.of(new Stop("F_3_3", 0));
+
+		assertRefused(document, new SetRoute("table1", stops, 1, 0, false, "avoids"),
+				"'table1' stands on a floor and has no route");
+		assertRefused(document, new SetRoute("ann", stops, 1, 0, false, "angry"),
+				"'angry' is not a behaviour: expected avoids, ignores, curious, scared or blocks");
+		assertRefused(document, new SetRoute("ann", List.of(), 1, 0, false, "avoids"),
+				"A route is written with one stop at least");
+		assertRefused(document, new SetRoute("ann", List.of(new Stop("W_x", 0)), 1, 0, false, "avoids"),
+				"has no floor or wall named 'W_x'");
+		assertEquals(original, document.text());
+		assertRefused(Texts.open("examples/simple_navigation.rei"), new SetRoute("walker", stops, 1, 0, false,
+				"avoids"), "'walker' follows a trajectory, not a route");
 	}
 
 	private static void assertRefused(RoomDocument document, EditOperation operation, String message) {

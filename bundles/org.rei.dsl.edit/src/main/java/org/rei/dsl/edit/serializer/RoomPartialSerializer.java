@@ -20,6 +20,9 @@ import org.eclipse.emf.ecore.change.ListChange;
 import org.eclipse.xtext.AbstractElement;
 import org.eclipse.xtext.Assignment;
 import org.eclipse.xtext.CrossReference;
+import org.eclipse.xtext.EcoreUtil2;
+import org.eclipse.xtext.EnumLiteralDeclaration;
+import org.eclipse.xtext.EnumRule;
 import org.eclipse.xtext.GrammarUtil;
 import org.eclipse.xtext.Group;
 import org.eclipse.xtext.Keyword;
@@ -30,6 +33,8 @@ import org.eclipse.xtext.formatting2.regionaccess.IEObjectRegion;
 import org.eclipse.xtext.formatting2.regionaccess.IHiddenRegion;
 import org.eclipse.xtext.formatting2.regionaccess.ISemanticRegion;
 import org.eclipse.xtext.formatting2.regionaccess.ITextRegionAccess;
+import org.eclipse.xtext.formatting2.regionaccess.ITextRegionDiffBuilder;
+import org.eclipse.xtext.ide.serializer.impl.ChangeTreeProvider.EObjectChange;
 import org.eclipse.xtext.ide.serializer.impl.PartialSerializer;
 import org.eclipse.xtext.serializer.ISerializationContext;
 import org.eclipse.xtext.serializer.acceptor.ISemanticSequenceAcceptor;
@@ -50,7 +55,7 @@ import com.google.inject.Inject;
 import com.google.inject.Provider;
 
 /**
- * Xtext's partial serializer with three gaps closed that the REI grammar runs into; without them a small edit
+ * Xtext's partial serializer with five gaps closed that the REI grammar runs into; without them a small edit
  * re-serializes a whole room (derived floors included) or leaves a keyword without its value.
  * <ul>
  * <li>A list inside a repeated group of alternatives ({@code (ownedBlocks+=.. | ownedObjects+=.. | ..)*}) is not
@@ -60,6 +65,10 @@ import com.google.inject.Provider;
  * <li>Unsetting an optional {@code 'yaw' yaw=Number} deleted "90" and kept "yaw": the keyword goes with it.</li>
  * <li>Setting such a value where the text has none re-serialized the whole statement: a trailing optional group
  * is appended after the statement's last token instead, so the rest of the line keeps its text.</li>
+ * <li>A changed enum value (a route's behaviour) went to the value converters, which cannot write one: its
+ * keyword replaces the written one, or follows the statement's last token.</li>
+ * <li>A flag turned off inside a group of options in any order ({@code loop?='loop'}) took the options written after
+ * it along: only its keyword is deleted; neighbouring options deleted together leave one space.</li>
  * </ul>
  */
 public class RoomPartialSerializer extends PartialSerializer {
@@ -243,6 +252,53 @@ public class RoomPartialSerializer extends PartialSerializer {
 		return result;
 	}
 
+	/**
+	 * Removals of neighbouring options ({@code speed 0.8 loop} both turned to their defaults) share the hidden region
+	 * between them, which the diff builder then writes twice: they are merged into one removal.
+	 */
+	@Override
+	protected List<SerializationStrategy> trySerializeIndividualFeatures(EObjectChange change, IEObjectRegion original,
+			ISerializationContext context, IConstraint constraint) {
+		List<SerializationStrategy> strategies = super.trySerializeIndividualFeatures(change, original, context,
+				constraint);
+		if (strategies == null) {
+			return null;
+		}
+		List<SerializationStrategy> result = new ArrayList<>();
+		List<RemoveWords> removals = new ArrayList<>();
+		for (SerializationStrategy strategy : strategies) {
+			if (strategy instanceof RemoveWords removal) {
+				removals.add(removal);
+			} else {
+				result.add(strategy);
+			}
+		}
+		removals.sort(Comparator.comparingInt(removal -> removal.first().getOffset()));
+		RemoveWords merged = null;
+		for (RemoveWords removal : removals) {
+			if (merged != null && merged.last() == removal.first()) {
+				merged = new RemoveWords(merged.first(), removal.last());
+			} else {
+				if (merged != null) {
+					result.add(merged);
+				}
+				merged = removal;
+			}
+		}
+		if (merged != null) {
+			result.add(merged);
+		}
+		return result;
+	}
+
+	/** Deletes the words between two hidden regions, and one of them. */
+	private record RemoveWords(IHiddenRegion first, IHiddenRegion last) implements SerializationStrategy {
+		@Override
+		public void serialize(ITextRegionDiffBuilder result) {
+			result.remove(first, last);
+		}
+	}
+
 	@Override
 	protected List<SerializationStrategy> trySerializeSingleValue(EObject owner, FeatureChange change,
 			IEObjectRegion ownerRegion, IConstraint constraint) {
@@ -256,6 +312,26 @@ public class RoomPartialSerializer extends PartialSerializer {
 		Assignment assignment = GrammarUtil.containingAssignment(assignments.get(0).getGrammarElement());
 		Keyword keyword = leadingKeyword(assignment);
 		ISemanticRegion value = ownerRegion.getRegionFor().feature(feature);
+		String literal = enumKeyword(assignment, owner.eGet(feature));
+		if (literal != null) {
+			// Xtext's own path hands an enum value to the value converters, which cannot write one (a
+			// ClassCastException): the literal's keyword replaces the written one, or follows a trailing statement's
+			// last token. The grammar's default is written out where the text wrote a value, as it reads the same.
+			if (value != null) {
+				return List.of(new ReplaceRegionStrategy(value, literal));
+			}
+			ISemanticRegion last = lastSemanticRegion(ownerRegion);
+			if (owner.eIsSet(feature) && last != null && isTrailing(assignment)) {
+				return List.of(new ReplaceRegionStrategy(last, last.getText() + " " + literal));
+			}
+		}
+		if (isBooleanKeyword(assignment) && value != null) {
+			// a flag turned off (a route's 'loop' in its options): Xtext's own path deletes the options after it
+			// too; only its keyword goes
+			if (!owner.eIsSet(feature)) {
+				return List.of(new RemoveWords(value.getPreviousHiddenRegion(), value.getNextHiddenRegion()));
+			}
+		}
 		if (keyword == null) {
 			return super.trySerializeSingleValue(owner, change, ownerRegion, constraint);
 		}
@@ -264,7 +340,7 @@ public class RoomPartialSerializer extends PartialSerializer {
 			if (first == null || first.getGrammarElement() != keyword) {
 				return super.trySerializeSingleValue(owner, change, ownerRegion, constraint);
 			}
-			return List.of(result -> result.remove(first.getPreviousHiddenRegion(), value.getNextHiddenRegion()));
+			return List.of(new RemoveWords(first.getPreviousHiddenRegion(), value.getNextHiddenRegion()));
 		}
 		if (owner.eIsSet(feature) && value == null && isTrailing(assignment.eContainer())) {
 			String text = serializeValue(owner, feature, assignment);
@@ -283,6 +359,25 @@ public class RoomPartialSerializer extends PartialSerializer {
 				&& group.getElements().get(0) instanceof Keyword keyword && group.getElements().get(1) == assignment
 				&& ("?".equals(group.getCardinality()) || group.eContainer() instanceof UnorderedGroup)) {
 			return keyword;
+		}
+		return null;
+	}
+
+	/** {@code flag?='keyword'}. */
+	private static boolean isBooleanKeyword(Assignment assignment) {
+		return assignment != null && "?=".equals(assignment.getOperator()) && assignment.getTerminal() instanceof Keyword;
+	}
+
+	/** The keyword an enum rule writes {@code value} with, when the assignment calls an enum rule; else null. */
+	private static String enumKeyword(Assignment assignment, Object value) {
+		if (assignment == null || !(assignment.getTerminal() instanceof RuleCall call)
+				|| !(call.getRule() instanceof EnumRule rule) || value == null) {
+			return null;
+		}
+		for (EnumLiteralDeclaration declaration : EcoreUtil2.getAllContentsOfType(rule, EnumLiteralDeclaration.class)) {
+			if (declaration.getEnumLiteral() != null && declaration.getEnumLiteral().getInstance() == value) {
+				return declaration.getLiteral().getValue();
+			}
 		}
 		return null;
 	}

@@ -27,7 +27,9 @@ import org.rei.dsl.edit.EditOperation.RemoveFloor;
 import org.rei.dsl.edit.EditOperation.RemoveGoal;
 import org.rei.dsl.edit.EditOperation.RemoveWall;
 import org.rei.dsl.edit.EditOperation.RotateObject;
+import org.rei.dsl.edit.EditOperation.SetRoute;
 import org.rei.dsl.edit.EditOperation.SetTrajectory;
+import org.rei.dsl.edit.EditOperation.Stop;
 import org.rei.dsl.edit.EditOperation.Waypoint;
 
 import com.fasterxml.jackson.databind.JsonNode;
@@ -100,6 +102,9 @@ final class OperationDecoder {
 			return new RemoveWall(f.string("name"));
 		case "setTrajectory":
 			return new SetTrajectory(f.string("name"), f.waypoints("points"), f.bool("loop"));
+		case "setRoute":
+			return new SetRoute(f.string("name"), f.stops("stops"), f.number("speed"), f.number("start"),
+					f.bool("loop"), f.string("behaviour"));
 		case "addGoal":
 			return new AddGoal(f.string("floor"), f.integer("index"), f.optionalNumber("timeoutSeconds"));
 		case "removeGoal":
@@ -232,6 +237,25 @@ final class OperationDecoder {
 				points.add(new Waypoint(p.string("floor"), p.number("seconds")));
 			}
 			return points;
+		}
+
+		List<Stop> stops(String field) throws RequestException {
+			JsonNode value = required(field, "a list of {\"floor\": NAME, \"waitSeconds\": TIME}");
+			if (!value.isArray()) {
+				throw new RequestException(where + ": '" + field + "' must be a list of {\"floor\": NAME, "
+						+ "\"waitSeconds\": TIME}, got " + describe(value));
+			}
+			List<Stop> stops = new ArrayList<>();
+			for (int i = 0; i < value.size(); i++) {
+				JsonNode stop = value.get(i);
+				Fields s = new Fields(stop, where + ", " + field + "[" + i + "]");
+				if (!stop.isObject()) {
+					throw new RequestException(s.where + ": must be {\"floor\": NAME, \"waitSeconds\": TIME}, got "
+							+ describe(stop));
+				}
+				stops.add(new Stop(s.string("floor"), s.number("waitSeconds")));
+			}
+			return stops;
 		}
 	}
 

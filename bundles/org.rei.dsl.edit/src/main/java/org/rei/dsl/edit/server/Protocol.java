@@ -20,8 +20,8 @@ public final class Protocol {
 	 * a lower-case first letter, and its fields are that record's components.
 	 */
 	public static final List<String> OPERATIONS = List.of("moveObject", "rotateObject", "addObject", "deleteObject",
-			"addHuman", "addDynamic", "addFloor", "removeFloor", "addWall", "removeWall", "setTrajectory", "addGoal",
-			"removeGoal", "moveGoal");
+			"addHuman", "addDynamic", "addFloor", "removeFloor", "addWall", "removeWall", "setTrajectory", "setRoute",
+			"addGoal", "removeGoal", "moveGoal");
 
 	/**
 	 * The {@code kind} of an {@code ok: false} answer: {@code refused}, the request's fault (an edit the text cannot

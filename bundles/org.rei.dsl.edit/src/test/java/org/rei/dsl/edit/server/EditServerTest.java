@@ -178,6 +178,29 @@ class EditServerTest {
 		assertEquals(Files.readString(graph), removed.get("text").asText());
 	}
 
+	/** A person on a route (the people example): setRoute as rei search sends it, and its fields checked. */
+	@Test
+	void setRouteOfAPersonOnARoute() throws Exception {
+		file = dir.resolve("reactive_crossing.rei");
+		Files.copy(Texts.repository().resolve("examples/people/reactive_crossing.rei"), file);
+		open();
+		JsonNode result = apply(2, "{\"op\": \"setRoute\", \"name\": \"bob\", \"stops\": [{\"floor\": \"F_5_0\", "
+				+ "\"waitSeconds\": 0}, {\"floor\": \"F_6_3\", \"waitSeconds\": 1}], \"speed\": 1.2, \"start\": 4.5, "
+				+ "\"loop\": false, \"behaviour\": \"scared\"}");
+		assertOk(result, 2);
+		assertTrue(result.get("text").asText().contains("\n    human bob route [F_5_0, F_6_3 wait 1s] start 4.5s scared\n"),
+				result.get("text")::asText);
+		assertEquals("scared", result.at("/diagram/movers/1/route/behaviour").asText());
+		assertEquals(4.5, result.at("/diagram/movers/1/route/start").asDouble());
+
+		assertRefused(apply(3, "{\"op\": \"setRoute\", \"name\": \"bob\", \"stops\": [{\"floor\": \"F_5_0\"}], "
+				+ "\"speed\": 1, \"start\": 0, \"loop\": false, \"behaviour\": \"avoids\"}"), 3,
+				"operation 0 (setRoute), stops[0]: missing field 'waitSeconds' (a number)");
+		assertRefused(apply(4, "{\"op\": \"setRoute\", \"name\": \"bob\", \"stops\": [{\"floor\": \"F_5_0\", "
+				+ "\"waitSeconds\": 0}], \"speed\": 1, \"start\": 0, \"loop\": false}"), 4,
+				"operation 0 (setRoute): missing field 'behaviour' (a string)");
+	}
+
 	@Test
 	void badRequestsAreAnsweredAndTheServerGoesOn() throws Exception {
 		assertRefused(ask("{\"id\": 1, \"command\": \"state\"}"), 1, "no test case is open");
@@ -206,8 +229,8 @@ class EditServerTest {
 		assertRefused(ask("{\"id\": 12, \"command\": \"redo\"}"), 12, "nothing to redo");
 		assertRefused(apply(13, "{\"op\": \"fly\", \"name\": \"table1\"}"), 13,
 				"operation 0: unknown op 'fly', expected one of moveObject, rotateObject, addObject, deleteObject, "
-						+ "addHuman, addDynamic, addFloor, removeFloor, addWall, removeWall, setTrajectory, addGoal, "
-						+ "removeGoal, moveGoal");
+						+ "addHuman, addDynamic, addFloor, removeFloor, addWall, removeWall, setTrajectory, setRoute, "
+						+ "addGoal, removeGoal, moveGoal");
 		assertRefused(apply(14, "{\"name\": \"table1\"}"), 14, "operation 0 has no 'op'");
 		assertRefused(apply(15, "{\"op\": \"moveObject\", \"name\": \"table1\"}"), 15,
 				"operation 0 (moveObject): missing field 'floor' (a string)");
