@@ -231,7 +231,7 @@ class PeopleEditTest {
 				"blocks");
 		SetRoute ann = new SetRoute("ann", List.of(new Stop("F_3_3", 0), new Stop("F_3_0", 2)), 1.1, 0, false,
 				"avoids");
-		SetRoute bobAgain = new SetRoute("bob", List.of(new Stop("F_5_0", 0), new Stop("F_5_3", 1)), 1.2, 0, false,
+		SetRoute bobAgain = new SetRoute("bob", List.of(new Stop("F_5_0", 0), new Stop("F_5_3", 1)), 0.8, 0, false,
 				"avoids");
 
 		EditResult result = document.apply(bob, ann);
@@ -245,8 +245,48 @@ class PeopleEditTest {
 
 		EditResult defaults = document.apply(bobAgain);
 		assertEquals(List.of("-    human bob route [F_5_0, F_5_3 wait 1s] start 3s blocks speed 0.8 loop",
-				"+    human bob route [F_5_0, F_5_3 wait 1s] avoids"), Texts.diff(result.text(), defaults.text()));
+				"+    human bob route [F_5_0, F_5_3 wait 1s] avoids speed 0.8"), Texts.diff(result.text(), defaults.text()));
 		Texts.assertReadsBackAsEdited(result.text(), document.uri(), defaults.text(), bobAgain);
+	}
+
+	/**
+	 * Several options of one route changed at once (what a search candidate does): two options written after the
+	 * same last word, a new value of that word beside them, neighbouring options deleted together, and 'loop' written
+	 * where the text says 'once'. Each case once failed to read back or left a double space.
+	 */
+	@Test
+	void severalOptionsOfOneRouteChangeTogether() {
+		assertRouteLine("route [F_0_2, F_3_2] speed 0.9 loop avoids", new SetRoute("ann", stops("F_0_2", "F_3_2"), 0.9,
+				2.5, true, "curious"), "route [F_0_2, F_3_2] speed 0.9 loop curious start 2.5s");
+		assertRouteLine("route [F_0_2, F_3_2] speed 0.9", new SetRoute("ann", stops("F_0_2", "F_3_2"), 0.9, 2.5, true,
+				"curious"), "route [F_0_2, F_3_2] speed 0.9 start 2.5s loop curious");
+		assertRouteLine("route [F_0_2, F_3_2] speed 0.9 start 4s loop scared", new SetRoute("ann", stops("F_0_2",
+				"F_3_2"), 0.9, 0, false, "scared"), "route [F_0_2, F_3_2] speed 0.9 scared");
+		assertRouteLine("route [F_0_2, F_3_2] speed 0.9 start 4s loop", new SetRoute("ann", stops("F_0_2", "F_3_2"),
+				0.9, 0, false, "blocks"), "route [F_0_2, F_3_2] speed 0.9 blocks");
+		assertRouteLine("route [F_0_2, F_3_2] blocks once start 4 speed 0.9", new SetRoute("ann", stops("F_0_2",
+				"F_3_2"), 1.4, 4, true, "blocks"), "route [F_0_2, F_3_2] blocks loop start 4 speed 1.4");
+	}
+
+	private static List<Stop> stops(String... floors) {
+		return java.util.Arrays.stream(floors).map(floor -> new Stop(floor, 0)).toList();
+	}
+
+	private static void assertRouteLine(String route, SetRoute set, String expected) {
+		String text = """
+				testcase T {
+				  room R size 6 x 3 {
+				    human ann %s
+				    robot r : Waffle on F_0_0
+				  }
+				  mission M { goto F_5_1 goto F_1_1 }
+				}
+				""".formatted(route);
+		RoomDocument document = RoomDocument.of(URI.createFileURI(Texts.repository().resolve("examples/t.rei")
+				.toString()), text);
+		EditResult result = document.apply(set);
+		assertEquals(List.of("-    human ann " + route, "+    human ann " + expected), Texts.diff(text, result.text()));
+		Texts.assertReadsBackAsEdited(text, document.uri(), result.text(), set);
 	}
 
 	@Test

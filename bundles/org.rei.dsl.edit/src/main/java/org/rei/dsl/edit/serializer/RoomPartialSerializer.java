@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.HashMap;
 import java.util.HashSet;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -17,7 +18,9 @@ import org.eclipse.emf.ecore.EReference;
 import org.eclipse.emf.ecore.EStructuralFeature;
 import org.eclipse.emf.ecore.change.FeatureChange;
 import org.eclipse.emf.ecore.change.ListChange;
+import org.eclipse.emf.ecore.util.EcoreUtil;
 import org.eclipse.xtext.AbstractElement;
+import org.eclipse.xtext.Alternatives;
 import org.eclipse.xtext.Assignment;
 import org.eclipse.xtext.CrossReference;
 import org.eclipse.xtext.EcoreUtil2;
@@ -253,8 +256,11 @@ public class RoomPartialSerializer extends PartialSerializer {
 	}
 
 	/**
-	 * Removals of neighbouring options ({@code speed 0.8 loop} both turned to their defaults) share the hidden region
-	 * between them, which the diff builder then writes twice: they are merged into one removal.
+	 * The changes of one element's options, merged where they touch, since the diff builder writes rewrites that
+	 * share a boundary wrongly: removals of neighbouring options ({@code speed 0.8 loop} both set back to their
+	 * defaults) share the hidden region between them and become one removal; options appended after the same last
+	 * word ({@code start 2s} and {@code curious}) become one replacement of that word, which also takes in a new value
+	 * of that word or its removal.
 	 */
 	@Override
 	protected List<SerializationStrategy> trySerializeIndividualFeatures(EObjectChange change, IEObjectRegion original,
@@ -266,27 +272,55 @@ public class RoomPartialSerializer extends PartialSerializer {
 		}
 		List<SerializationStrategy> result = new ArrayList<>();
 		List<RemoveWords> removals = new ArrayList<>();
+		Map<ISemanticRegion, String> replaced = new LinkedHashMap<>();
+		Map<ISemanticRegion, List<String>> appended = new LinkedHashMap<>();
 		for (SerializationStrategy strategy : strategies) {
 			if (strategy instanceof RemoveWords removal) {
 				removals.add(removal);
+			} else if (strategy instanceof ReplaceWords replace) {
+				replaced.put(replace.region(), replace.text());
+			} else if (strategy instanceof AppendWords append) {
+				appended.computeIfAbsent(append.after(), region -> new ArrayList<>()).add(append.text());
 			} else {
 				result.add(strategy);
 			}
 		}
-		removals.sort(Comparator.comparingInt(removal -> removal.first().getOffset()));
-		RemoveWords merged = null;
-		for (RemoveWords removal : removals) {
-			if (merged != null && merged.last() == removal.first()) {
-				merged = new RemoveWords(merged.first(), removal.last());
-			} else {
-				if (merged != null) {
-					result.add(merged);
+		removals = merged(removals);
+		for (Map.Entry<ISemanticRegion, List<String>> append : appended.entrySet()) {
+			ISemanticRegion last = append.getKey();
+			String words = String.join(" ", append.getValue());
+			RemoveWords ending = removals.stream().filter(r -> r.last() == last.getNextHiddenRegion()).findFirst()
+					.orElse(null);
+			if (replaced.containsKey(last)) {
+				replaced.put(last, replaced.get(last) + " " + words);
+			} else if (ending != null) {
+				// the last word goes: the appended words take its place
+				removals.remove(ending);
+				if (ending.first() != last.getPreviousHiddenRegion()) {
+					removals.add(new RemoveWords(ending.first(), last.getPreviousHiddenRegion()));
 				}
-				merged = removal;
+				replaced.put(last, words);
+			} else {
+				replaced.put(last, last.getText() + " " + words);
 			}
 		}
-		if (merged != null) {
-			result.add(merged);
+		result.addAll(removals);
+		replaced.forEach((region, text) -> result.add(new ReplaceRegionStrategy(region, text)));
+		return result;
+	}
+
+	/** Removals that share a boundary, as one. */
+	private static List<RemoveWords> merged(List<RemoveWords> removals) {
+		List<RemoveWords> sorted = new ArrayList<>(removals);
+		sorted.sort(Comparator.comparingInt(removal -> removal.first().getOffset()));
+		List<RemoveWords> result = new ArrayList<>();
+		for (RemoveWords removal : sorted) {
+			RemoveWords previous = result.isEmpty() ? null : result.get(result.size() - 1);
+			if (previous != null && previous.last() == removal.first()) {
+				result.set(result.size() - 1, new RemoveWords(previous.first(), removal.last()));
+			} else {
+				result.add(removal);
+			}
 		}
 		return result;
 	}
@@ -296,6 +330,22 @@ public class RoomPartialSerializer extends PartialSerializer {
 		@Override
 		public void serialize(ITextRegionDiffBuilder result) {
 			result.remove(first, last);
+		}
+	}
+
+	/** Writes {@code text} instead of a word. */
+	private record ReplaceWords(ISemanticRegion region, String text) implements SerializationStrategy {
+		@Override
+		public void serialize(ITextRegionDiffBuilder result) {
+			result.replace(region, text);
+		}
+	}
+
+	/** Writes {@code text} after a statement's last word, a space between. */
+	private record AppendWords(ISemanticRegion after, String text) implements SerializationStrategy {
+		@Override
+		public void serialize(ITextRegionDiffBuilder result) {
+			result.replace(after, after.getText() + " " + text);
 		}
 	}
 
@@ -312,24 +362,12 @@ public class RoomPartialSerializer extends PartialSerializer {
 		Assignment assignment = GrammarUtil.containingAssignment(assignments.get(0).getGrammarElement());
 		Keyword keyword = leadingKeyword(assignment);
 		ISemanticRegion value = ownerRegion.getRegionFor().feature(feature);
-		String literal = enumKeyword(assignment, owner.eGet(feature));
-		if (literal != null) {
-			// Xtext's own path hands an enum value to the value converters, which cannot write one (a
-			// ClassCastException): the literal's keyword replaces the written one, or follows a trailing statement's
-			// last token. The grammar's default is written out where the text wrote a value, as it reads the same.
-			if (value != null) {
-				return List.of(new ReplaceRegionStrategy(value, literal));
-			}
-			ISemanticRegion last = lastSemanticRegion(ownerRegion);
-			if (owner.eIsSet(feature) && last != null && isTrailing(assignment)) {
-				return List.of(new ReplaceRegionStrategy(last, last.getText() + " " + literal));
-			}
-		}
-		if (isBooleanKeyword(assignment) && value != null) {
-			// a flag turned off (a route's 'loop' in its options): Xtext's own path deletes the options after it
-			// too; only its keyword goes
-			if (!owner.eIsSet(feature)) {
-				return List.of(new RemoveWords(value.getPreviousHiddenRegion(), value.getNextHiddenRegion()));
+		AbstractElement optionElement = optionOf(assignment);
+		if (optionElement != null) {
+			List<SerializationStrategy> option = option(owner, feature, assignment, keyword, value, ownerRegion,
+					isTrailing(optionElement));
+			if (option != null) {
+				return option;
 			}
 		}
 		if (keyword == null) {
@@ -348,15 +386,112 @@ public class RoomPartialSerializer extends PartialSerializer {
 			if (text == null || last == null) {
 				return super.trySerializeSingleValue(owner, change, ownerRegion, constraint);
 			}
-			return List.of(new ReplaceRegionStrategy(last, last.getText() + " " + keyword.getValue() + " " + text));
+			return List.of(new AppendWords(last, keyword.getValue() + " " + text));
 		}
 		return super.trySerializeSingleValue(owner, change, ownerRegion, constraint);
 	}
 
-	/** The keyword of an optional group {@code ('kw' feature=Value)?}, else null. */
+	/**
+	 * A changed option of a group in any order (a route's {@code speed 1.1}, {@code start 3s}, {@code loop},
+	 * {@code curious}), written word by word so that several changes of one element can be merged: a new value
+	 * replaces the written one, an option the text left out is appended after the element's last word (the group
+	 * ends its rule), one set back to its default is deleted with its keyword, a flag turned on replaces its
+	 * alternative ({@code once}) where the text has it. An enum value is written as its keyword, also where it is
+	 * the default (Xtext's own path hands it to the value converters, which cannot write one). Null: not such an
+	 * option, Xtext's own path.
+	 */
+	private List<SerializationStrategy> option(EObject owner, EStructuralFeature feature, Assignment assignment,
+			Keyword keyword, ISemanticRegion value, IEObjectRegion ownerRegion, boolean trailing) {
+		ISemanticRegion last = lastSemanticRegion(ownerRegion);
+		boolean set = owner.eIsSet(feature);
+		String literal = enumKeyword(assignment, owner.eGet(feature));
+		if (literal != null) {
+			if (value != null) {
+				return List.of(new ReplaceWords(value, literal));
+			}
+			return !set ? List.of() : last != null && trailing ? List.of(new AppendWords(last, literal)) : null;
+		}
+		if (isBooleanKeyword(assignment)) {
+			Keyword flag = (Keyword) assignment.getTerminal();
+			if (!set) {
+				return value == null ? List.of()
+						: List.of(new RemoveWords(value.getPreviousHiddenRegion(), value.getNextHiddenRegion()));
+			}
+			if (value != null) {
+				return List.of();
+			}
+			ISemanticRegion other = alternativeKeyword(assignment, ownerRegion);
+			if (other != null) {
+				return List.of(new ReplaceWords(other, flag.getValue()));
+			}
+			return last != null && trailing ? List.of(new AppendWords(last, flag.getValue())) : null;
+		}
+		if (keyword == null) {
+			return null;
+		}
+		if (set && value != null) {
+			String text = serializeValue(owner, feature, assignment);
+			return text == null ? null : List.of(new ReplaceWords(value, text));
+		}
+		if (set) {
+			String text = serializeValue(owner, feature, assignment);
+			return text == null || last == null || !trailing ? null
+					: List.of(new AppendWords(last, keyword.getValue() + " " + text));
+		}
+		if (value == null) {
+			return List.of();
+		}
+		ISemanticRegion next = value.getNextSemanticRegion();
+		if (next != null && EcoreUtil.isAncestor(assignment.eContainer(), next.getGrammarElement())) {
+			// the group goes on after the value ('speed 1.2 to 1.4'): the default is written, the rest stays
+			String text = serializeValue(owner, feature, assignment);
+			return text == null ? null : List.of(new ReplaceWords(value, text));
+		}
+		ISemanticRegion first = value.getPreviousSemanticRegion();
+		return first == null || first.getGrammarElement() != keyword ? null
+				: List.of(new RemoveWords(first.getPreviousHiddenRegion(), value.getNextHiddenRegion()));
+	}
+
+	/** The element of a group in any order ({@code &}) that holds the assignment, or null when none does. */
+	private static AbstractElement optionOf(Assignment assignment) {
+		EObject element = assignment;
+		while (element instanceof AbstractElement current) {
+			EObject container = current.eContainer();
+			if (container instanceof UnorderedGroup) {
+				return current;
+			}
+			if (!(container instanceof Group || container instanceof Alternatives)) {
+				return null;
+			}
+			element = container;
+		}
+		return null;
+	}
+
+	/** The written keyword of the alternative to a flag ({@code once} of {@code (loop?='loop' | 'once')?}), or null. */
+	private static ISemanticRegion alternativeKeyword(Assignment assignment, IEObjectRegion ownerRegion) {
+		if (!(assignment.eContainer() instanceof Alternatives alternatives)) {
+			return null;
+		}
+		for (ISemanticRegion region : ownerRegion.getSemanticRegions()) {
+			EObject element = region.getGrammarElement();
+			if (element instanceof Keyword && element != assignment.getTerminal()
+					&& alternatives.getElements().contains(element)) {
+				return region;
+			}
+		}
+		return null;
+	}
+
+	/**
+	 * The keyword of an optional group {@code ('kw' feature=Value)?}, or of one that goes on with optional parts
+	 * ({@code ('speed' speed=Number ('to' speedTo=Number)?)?}); else null.
+	 */
 	private static Keyword leadingKeyword(Assignment assignment) {
-		if (assignment != null && assignment.eContainer() instanceof Group group && group.getElements().size() == 2
+		if (assignment != null && assignment.eContainer() instanceof Group group && group.getElements().size() >= 2
 				&& group.getElements().get(0) instanceof Keyword keyword && group.getElements().get(1) == assignment
+				&& group.getElements().subList(2, group.getElements().size()).stream()
+						.allMatch(GrammarUtil::isOptionalCardinality)
 				&& ("?".equals(group.getCardinality()) || group.eContainer() instanceof UnorderedGroup)) {
 			return keyword;
 		}
