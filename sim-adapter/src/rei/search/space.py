@@ -2,8 +2,13 @@
 """The search space: the spec's parameters, checked against the base case, as Optuna distributions, and a
 point of it as the room editor's operations (docs/room-editor.md, "Operations") plus the run's seed and fault.
 
-Every value is named as in search.json (``bin1.floor``, ``walker.points.1``, ``walker.start``, ``seed``); the base
-case's own values are a point of the space too (``base_values``), which is where shrinking moves elements back to.
+Every value is named as in search.json (``bin1.floor``, ``walker.points.1``, ``walker.start``, ``ann.stops.1``,
+``seed``); the base case's own values are a point of the space too (``base_values``), which is where shrinking moves
+elements back to.
+
+A human walks a trajectory (on rails: ``points``, and its ``start``, ``speed`` and ``loop`` retime it, the room
+editor's ``setTrajectory``) or a route (a person who sees the robot: its ``start``, ``speed``, ``loop``, ``behaviour``
+and the floors of its ``stop``s, ``setRoute``). A key of the other kind is refused at the key.
 """
 
 from __future__ import annotations
@@ -23,6 +28,11 @@ from rei.search.spec import UNREAD, Parameter, Range
 Values = Mapping[str, Any]
 #: The names of extra pieces of furniture: ``search_extra_0``, ...
 EXTRA = "search_extra_"
+#: The keys of a person on a route and of a trajectory (a human's or a moving object's).
+ROUTE_KEYS = ("start", "speed", "loop", "behaviour", "stop")
+TRAJECTORY_KEYS = ("points", "start", "speed", "loop")
+#: The fastest a person on a route walks (the language's RouteValidator.MAX_SPEED), m/s.
+MAX_ROUTE_SPEED = 3.0
 
 
 @dataclass(frozen=True, slots=True)
@@ -80,6 +90,8 @@ class Space:
                             f"{', '.join(self._humans) or 'none'}")
         if p.target == "goal" and int(p.name) >= len(self._goals):
             raise SpecError(f"{at}: the mission has {len(self._goals)} goal(s): index {p.name} is not one")
+        if p.target == "human" and p.prop in ROUTE_KEYS + TRAJECTORY_KEYS:
+            self._check_kind(p)
         if p.domain is UNREAD:  # its values did not read (the spec's own mistake): only its element is checked
             return
         if p.target == "human" and not self._with_humans and self._humans[p.name].get("kind") == "human":
@@ -93,7 +105,10 @@ class Space:
         if p.target == "furniture":
             self._add_furniture(p, taken)
             return
-        if p.prop == "floor":
+        route = self._route(p.name) if p.target == "human" else None
+        if route is not None:
+            self._add_route(p, route, taken)
+        elif p.prop == "floor":
             own = self._items[p.name]["floor"] if p.target in ("object", "robot") else None
             base = own if own is not None else self._goals[int(p.name)]["floor"]
             free = [f for f in self._floors if f not in taken or taken[f] == p.name] if p.target != "goal" \
@@ -119,6 +134,52 @@ class Space:
             self._float(p.key, p.domain, 0)
         elif p.target == "fault":
             self._float(p.key, p.domain, None)
+        else:
+            raise AssertionError(p)
+
+    def _route(self, name: str) -> Mapping[str, Any] | None:
+        """The route of a person who sees the robot; None for a trajectory."""
+        route: Mapping[str, Any] | None = self._humans[name].get("route")
+        return route
+
+    def _check_kind(self, p: Parameter) -> None:
+        """A key of a route on a trajectory, or the other way round, is refused at the key."""
+        mover = self._humans[p.name]
+        at = p.prop_at or p.where
+        if self._route(p.name) is not None and p.prop not in ROUTE_KEYS:
+            raise SpecError(f"{at}: {p.name} walks a route (a person who sees the robot): '{p.prop}' is a "
+                            f"trajectory's; a route's keys are {', '.join(ROUTE_KEYS)} (a stop's floors: "
+                            f"{{human: {p.name}, stop: INDEX, floor: [...]}})")
+        if self._route(p.name) is None and p.prop not in TRAJECTORY_KEYS:
+            what = "a moving object on a trajectory" if mover.get("kind") == "dynamic" else \
+                "a human on a trajectory"
+            raise SpecError(f"{at}: {p.name} is {what}: '{p.prop}' is a route's (a person who sees the robot); a "
+                            f"trajectory's keys are {', '.join(TRAJECTORY_KEYS)}")
+
+    def _add_route(self, p: Parameter, route: Mapping[str, Any], taken: Mapping[str, str]) -> None:
+        """A person on a route: its start, speed, loop and behaviour, and the floor of a stop."""
+        if p.prop == "start":
+            self._float(p.key, p.domain, float(route["start"]))
+        elif p.prop == "speed":
+            if p.domain.high > MAX_ROUTE_SPEED:
+                raise SpecError(f"{p.where}: {p.name} walks a route, at most {MAX_ROUTE_SPEED:g} m/s (the language's "
+                                f"limit), got [{p.domain.low:g}, {p.domain.high:g}]")
+            self._float(p.key, p.domain, float(route["speed"]))
+        elif p.prop == "loop":
+            self._categorical(p.key, list(p.domain), bool(self._humans[p.name]["loop"]), p.where)
+        elif p.prop == "behaviour":
+            self._categorical(p.key, list(p.domain), route["behaviour"], p.where)
+        elif p.prop == "stop":
+            stops = route["stops"]
+            assert p.index is not None
+            if p.index >= len(stops):
+                raise SpecError(f"{p.prop_at or p.where}: {p.name}'s route has {len(stops)} stop(s), counted from 0: "
+                                f"stop {p.index} is not one")
+            # the first stop is where the person stands at the start: free of furniture and the robot, as every
+            # start; a later one only of furniture
+            blocked = {f for f, name in taken.items() if p.index == 0 or self._items[name]["kind"] == "object"}
+            free = [f for f in self._floors if f not in blocked]
+            self._categorical(p.key, self._checked_floors(p, p.domain, free), stops[p.index]["floor"], p.where)
         else:
             raise AssertionError(p)
 
@@ -181,7 +242,8 @@ class Space:
             elif p.prop == "yaw":
                 operations.append({"op": "rotateObject", "name": p.name, "yawDegrees": float(values[p.key])})
         for human in dict.fromkeys(p.name for p in self.parameters if p.target == "human" and p.name not in removed):
-            operations.append(self._trajectory(human, values))
+            operations.append(self._trajectory(human, values) if self._route(human) is None
+                              else self._set_route(human, values))
         goals = [p for p in self.parameters if p.target == "goal"]
         for p in sorted(goals, key=lambda p: int(p.name)):
             index = int(p.name)
@@ -210,6 +272,19 @@ class Space:
         loop = values.get(f"{human}.loop", base["loop"])
         return {"op": "setTrajectory", "name": human, "loop": bool(loop),
                 "points": [{"floor": f, "seconds": round(t, 3)} for f, t in zip(floors, times, strict=True)]}
+
+    def _set_route(self, human: str, values: Values) -> dict[str, Any]:
+        """The route with the point's values, the base case's where the point has none (numbers to the millisecond
+        and millimetre per second: the text writes what it is given)."""
+        route = self._route(human)
+        assert route is not None
+        stops = [{"floor": values.get(f"{human}.stops.{i}", stop["floor"]), "waitSeconds": float(stop["waitSeconds"])}
+                 for i, stop in enumerate(route["stops"])]
+        return {"op": "setRoute", "name": human, "stops": stops,
+                "speed": round(float(values.get(f"{human}.speed", route["speed"])), 3),
+                "start": round(float(values.get(f"{human}.start", route["start"])), 3),
+                "loop": bool(values.get(f"{human}.loop", self._humans[human]["loop"])),
+                "behaviour": str(values.get(f"{human}.behaviour", route["behaviour"]))}
 
     def _fault(self, values: Values) -> str | None:
         faults = [p for p in self.parameters if p.target == "fault"]

@@ -22,6 +22,8 @@ of elements the base case does not have with them: rei.search.base.with_base_cas
       - {object: bin1, yaw: [0, 180]}           # degrees
       - {human: walker, points: [[F_2_0, F_2_2], any]}  # per control point: its floors (or 'any')
       - {human: walker, start: [0, 20], speed: [0.4, 1.5], loop: [true, false]}
+      - {human: ann, behaviour: [avoids, curious, blocks]}   # a person on a route (start, speed, loop too)
+      - {human: ann, stop: 1, floor: [F_3_0, F_4_0]}          # a stop of its route: its floors, or any
       - {robot: tb3, floor: [F_0_1, F_1_1]}
       - {goal: 1, floor: any}
       - {seed: [0, 1000]}
@@ -50,6 +52,7 @@ from typing import Any
 import yaml
 
 from rei import located_yaml
+from rei.artifacts.animation import Behaviour
 from rei.campaign.spec import ExternalSut, RoomSettings, SpecError, _Reader, _rooms, _sut, check_user_patterns
 from rei.evaluation.metrics import BY_NAME, NAMES, Better
 from rei.search import SAMPLERS
@@ -73,8 +76,9 @@ class Parameter:
     """One searched property of one element. ``target``: object, human, robot, goal, seed, fault or furniture
     (extra pieces: ``domain`` is (types, count Range, floors or None));
     ``name``: the element (a goal's index as text; empty for seed and fault); ``prop``: floor, yaw, points,
-    start, speed, loop, value (seed), rate, gain, width; ``domain``: a Range, a tuple of choices, or for
-    ``points`` a tuple with one tuple of floors (or None: any floor) per control point; None for 'any'."""
+    start, speed, loop, behaviour, stop (a route's stop ``index``: its floor), value (seed), rate, gain, width;
+    ``domain``: a Range, a tuple of choices, or for ``points`` a tuple with one tuple of floors (or None: any
+    floor) per control point; None for 'any'."""
 
     target: str
     name: str
@@ -83,14 +87,18 @@ class Parameter:
     where: str  # FILE:LINE:COLUMN of its value, for later messages
     base: str | None = None  # fault: the preset the searched values are added to
     name_at: str = ""  # FILE:LINE:COLUMN of the element's name (messages about the element)
+    prop_at: str = ""  # FILE:LINE:COLUMN of its key (a key the element's kind does not have: stop for a stop)
+    index: int | None = None  # a route's stop (prop 'stop')
 
     @property
     def key(self) -> str:
-        """Its name in the study and in search.json: ``bin1.floor``, ``goal1.floor``, ``seed``."""
+        """Its name in the study and in search.json: ``bin1.floor``, ``goal1.floor``, ``ann.stops.1``, ``seed``."""
         if self.target == "seed":
             return "seed"
         if self.target in ("fault", "furniture"):
             return f"{self.target}.{self.prop}"
+        if self.prop == "stop":
+            return f"{self.name}.stops.{self.index}"
         owner = f"goal{self.name}" if self.target == "goal" else self.name
         return f"{owner}.{self.prop}"
 
@@ -379,7 +387,10 @@ def _check_controller(controller: str, where: str) -> None:
         raise SpecError(f"{where}: {problem}")
 
 
-_PROPS = {"object": ("floor", "yaw"), "robot": ("floor",), "human": ("points", "start", "speed", "loop"),
+#: A human's keys: a trajectory's (points) and a route's (behaviour, a stop's floor) alike; which apply to which
+#: person is known from the base case (rei.search.space).
+_PROPS = {"object": ("floor", "yaw"), "robot": ("floor",),
+          "human": ("points", "start", "speed", "loop", "behaviour", "stop", "floor"),
           "goal": ("floor",), "seed": (), "fault": ("rate", "gain", "width"), "furniture": ("count", "floor")}
 
 
@@ -434,14 +445,41 @@ def _parameter(item: yaml.Node, loc: _Located, problems: located_yaml.Collector)
     if not props:
         problems.add(f"{loc.at(key_node)}: give what to change of {name_value}: {', '.join(_PROPS[target])}")
     parameters = []
+    if target == "human" and ("stop" in entry or "floor" in entry):
+        stop = _stop(entry, loc, problems)
+        if named and stop is not None:
+            parameters.append(Parameter(target, str(name_value), "stop", stop[1], loc.at(entry["floor"][1]),
+                                        name_at=loc.at(name_node), prop_at=loc.at(entry["stop"][0]), index=stop[0]))
+        props = [prop for prop in props if prop not in ("stop", "floor")]
     for prop in props:
         value_node = entry[prop][1] if prop in known else entry[prop][0]
         domain = problems.read(lambda prop=prop: _domain(prop, entry[prop][1], loc), UNREAD) if prop in known \
             else UNREAD
         if named:
             parameters.append(Parameter(target, str(name_value), prop, domain, loc.at(value_node),
-                                        name_at=loc.at(name_node)))
+                                        name_at=loc.at(name_node), prop_at=loc.at(entry[prop][0])))
     return parameters
+
+
+def _stop(entry: dict[str, tuple[yaml.Node, yaml.Node]], loc: _Located,
+          problems: located_yaml.Collector) -> tuple[int, Any] | None:
+    """``stop: INDEX, floor: [...]`` of a person on a route: (the stop's index, its floors or None for any; UNREAD
+    when they did not read), None when one of the two keys is missing."""
+    if "stop" not in entry:
+        problems.add(f"{loc.at(entry['floor'][0])}: a person's 'floor' is a floor of its route's stops: give 'stop' "
+                     "too, the stop's index in the route (0 is the first)")
+        return None
+    if "floor" not in entry:
+        problems.add(f"{loc.at(entry['stop'][0])}: give 'floor' with 'stop': the floors the stop may be on, a list "
+                     "or 'any'")
+        return None
+    index_node, floor_node = entry["stop"][1], entry["floor"][1]
+    index = problems.read(lambda: loc.value(index_node), None)
+    if isinstance(index, bool) or not isinstance(index, int) or index < 0:
+        problems.add(f"{loc.at(index_node)}: 'stop' is the stop's index in the person's route (0 is the first), "
+                     f"got {index!r}")
+        return None
+    return index, problems.read(lambda: _floors(loc.value(floor_node), floor_node, loc), UNREAD)
 
 
 def _furniture(types: Any, node: yaml.Node, entry: dict[str, tuple[yaml.Node, yaml.Node]], item: yaml.Node,
@@ -526,6 +564,14 @@ def _domain(prop: str, node: yaml.Node, loc: _Located) -> Any:
     if prop == "loop":
         if not isinstance(value, list) or not value or not all(isinstance(v, bool) for v in value):
             raise SpecError(f"{loc.at(node)}: 'loop' lists the choices, such as [true, false]")
+        return tuple(dict.fromkeys(value))
+    if prop == "behaviour":
+        known = [b.value for b in Behaviour]
+        if not isinstance(value, list) or not value or not all(isinstance(v, str) for v in value):
+            raise SpecError(f"{loc.at(node)}: 'behaviour' lists the choices, such as [{', '.join(known)}]")
+        unknown = [v for v in value if v not in known]
+        if unknown:
+            raise SpecError(f"{loc.at(node)}: {unknown[0]!r} is not a behaviour; expected {', '.join(known)}")
         return tuple(dict.fromkeys(value))
     if prop == "yaw":
         return _range(value, node, loc)
@@ -763,7 +809,7 @@ def _changes(stored: SearchSpec, given: SearchSpec, file: str) -> list[tuple[str
 
 
 def _unplaced(parameter: Parameter) -> Parameter:
-    return dataclasses.replace(parameter, where="", name_at="")
+    return dataclasses.replace(parameter, where="", name_at="", prop_at="")
 
 
 def _shown(value: Any) -> str:
