@@ -4,6 +4,7 @@
  */
 package org.rei.dsl.documentation;
 
+import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 
@@ -14,8 +15,10 @@ import org.rei.catalogue.ObjectType;
 import org.rei.catalogue.RobotType;
 import org.rei.context.Behaviour;
 import org.rei.context.ControlPoint;
+import org.rei.context.Crowd;
 import org.rei.context.Environment;
 import org.rei.context.Floor;
+import org.rei.context.Group;
 import org.rei.context.Human;
 import org.rei.context.MonitorSpec;
 import org.rei.context.Route;
@@ -25,13 +28,14 @@ import org.rei.context.StaticObject;
 import org.rei.context.Trajectory;
 import org.rei.context.Wall;
 import org.rei.context.layout.FloorLayout;
+import org.rei.context.people.WalkingSpeed;
 import org.rei.dsl.derived.RoomDesugaring;
 
 /**
  * What an editor's hover shows (Markdown; the language server sends it as the hover's contents): where a floor
  * is, what an object type measures and weighs, what a robot type can do, what the monitor's thresholds mean, when
- * a human passes where (or, on a route, where it goes, how fast and how it behaves towards the robot). Derived
- * from the model and the catalogue, never stored text.
+ * a human passes where (or, on a route, where it goes, how fast and how it behaves towards the robot), who a crowd
+ * or a group is. Derived from the model and the catalogue, never stored text.
  */
 public class ReiDocumentationProvider implements IEObjectDocumentationProvider {
 
@@ -51,6 +55,9 @@ public class ReiDocumentationProvider implements IEObjectDocumentationProvider {
 		}
 		if (o instanceof Human h) {
 			return human(h);
+		}
+		if (o instanceof Crowd c) {
+			return crowd(c);
 		}
 		if (o instanceof SimulationObject s) {
 			String where = s instanceof StaticObject so && so.getFloor() != null ? " on " + floorLine(so.getFloor()) : "";
@@ -89,7 +96,8 @@ public class ReiDocumentationProvider implements IEObjectDocumentationProvider {
 	private static String objectType(ObjectType t) {
 		return String.format(Locale.ROOT, "**%s** (%s): %s %s x %s x %s m, %s kg", t.getName(),
 				t.getCategory().getLiteral(), t.getShape().getLiteral().toLowerCase(Locale.ROOT), num(t.getSizeX()),
-				num(t.getSizeY()), num(t.getSizeZ()), num(t.getMass()));
+				num(t.getSizeY()), num(t.getSizeZ()), num(t.getMass()))
+				+ (t.isSetWalkingSpeed() ? "; walks at " + speed(WalkingSpeed.of(t)) + " m/s" : "");
 	}
 
 	private static String robotType(RobotType r) {
@@ -105,7 +113,10 @@ public class ReiDocumentationProvider implements IEObjectDocumentationProvider {
 	}
 
 	private static String human(Human h) {
-		StringBuilder b = new StringBuilder("**Human " + h.getName() + "**");
+		StringBuilder b = new StringBuilder(h instanceof Group g
+				? "**Group " + g.getName() + "**, " + g.getCount() + " people (" + g.getName() + "_1 leads, "
+						+ members(g.getName(), 2, g.getCount()) + " keep near it)"
+				: "**Human " + h.getName() + "**");
 		Trajectory t = h.getOwnedTrajectory();
 		if (t != null) {
 			b.append(t.isLoop() ? ", walking in a loop (Catmull-Rom through the points):" : ", walking once:");
@@ -118,7 +129,7 @@ public class ReiDocumentationProvider implements IEObjectDocumentationProvider {
 		}
 		Route r = h.getOwnedRoute();
 		if (r != null) {
-			b.append(", walking a route at ").append(num(r.getSpeed())).append(" m/s")
+			b.append(", walking a route at ").append(speed(WalkingSpeed.of(r, h.getType()))).append(" m/s")
 					.append(r.getStart() > 0 ? " from " + num(r.getStart()) + " s" : "")
 					.append(r.isLoop() ? " in a loop" : ", then staying at the last stop").append("; ")
 					.append(behaviour(r.getBehaviour())).append(':');
@@ -131,6 +142,34 @@ public class ReiDocumentationProvider implements IEObjectDocumentationProvider {
 			}
 		}
 		return b.append(type(h.getType())).toString();
+	}
+
+	private static String crowd(Crowd c) {
+		StringBuilder b = new StringBuilder("**Crowd " + c.getName() + "**, ");
+		b.append(c.getCount() == 1 ? "1 person (" : c.getCount() + " people (")
+				.append(members(c.getName(), 1, c.getCount())).append(") walking at ")
+				.append(speed(WalkingSpeed.of(c))).append(" m/s, ")
+				.append(c.isSetRate() ? "setting off " + num(c.getRate()) + " a second from " + num(c.getStart()) + " s"
+						: "setting off at " + num(c.getStart()) + " s")
+				.append(c.isLoop() ? ", back and forth" : ", then staying").append("; ")
+				.append(behaviour(c.getBehaviour())).append(":\n- from ").append(names(c.getFrom()))
+				.append("\n- to ").append(names(c.getTo()));
+		return b.append(type(c.getType())).toString();
+	}
+
+	/** "g_2 and g_3", "g_2 to g_5", "g_1": the people of a crowd or group from number {@code first} on. */
+	private static String members(String name, int first, int count) {
+		return count <= first ? name + "_" + first
+				: name + "_" + first + (count == first + 1 ? " and " : " to ") + name + "_" + count;
+	}
+
+	private static String names(List<Floor> floors) {
+		return String.join(", ", floors.stream().map(f -> f.eIsProxy() ? "?" : f.getName()).toList());
+	}
+
+	/** "1.2" or "1-1.4". */
+	private static String speed(WalkingSpeed speed) {
+		return num(speed.speed()) + (speed.isRange() ? "-" + num(speed.speedTo()) : "");
 	}
 
 	/** What a behaviour does, as docs/language.md says it. */

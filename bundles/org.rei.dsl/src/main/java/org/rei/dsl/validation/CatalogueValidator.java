@@ -124,6 +124,31 @@ public class CatalogueValidator extends ReiCheckBase {
 		}
 	}
 
+	/**
+	 * {@code speed A to B} on a type: how fast its people walk when their statements say nothing, as a route's
+	 * speed would say it (RouteValidator); only people walk.
+	 */
+	@Check
+	public void checkWalkingSpeed(ObjectType type) {
+		if (!type.isSetWalkingSpeed() || !(type.eContainer() instanceof Catalogue)) {
+			return;
+		}
+		if (type.getCategory() != ObjectCategory.HUMAN) {
+			error("Only a human type walks: a " + type.getCategory().getLiteral().toLowerCase() + " type has no walking "
+					+ "speed", type, CAT.getObjectType_WalkingSpeed(), ReiIssueCodes.TYPE_CATEGORY);
+			return;
+		}
+		String problem = RouteValidator.speedProblem(type.getWalkingSpeed());
+		if (problem != null) {
+			error(problem, type, CAT.getObjectType_WalkingSpeed(), ReiIssueCodes.OUT_OF_RANGE);
+		} else if (type.isSetWalkingSpeedTo()) {
+			problem = RouteValidator.rangeProblem(type.getWalkingSpeed(), type.getWalkingSpeedTo());
+			if (problem != null) {
+				error(problem, type, CAT.getObjectType_WalkingSpeedTo(), ReiIssueCodes.OUT_OF_RANGE);
+			}
+		}
+	}
+
 	@Check
 	public void checkRobot(RobotType robot) {
 		if (robot.getSizeZ() > 0 && robot.getSizeZ() < MIN_ROBOT_HEIGHT) {

@@ -5,6 +5,7 @@
 package org.rei.dsl.validation;
 
 import java.util.HashMap;
+import java.util.List;
 import java.util.Map;
 
 import org.eclipse.emf.ecore.EReference;
@@ -13,6 +14,7 @@ import org.rei.catalogue.ObjectCategory;
 import org.rei.catalogue.ObjectType;
 import org.rei.catalogue.RobotType;
 import org.rei.context.ContextPackage;
+import org.rei.context.Crowd;
 import org.rei.context.DynamicObject;
 import org.rei.context.Environment;
 import org.rei.context.Floor;
@@ -23,7 +25,10 @@ import org.rei.context.SimulationObject;
 import org.rei.context.StaticObject;
 import org.rei.context.Wall;
 
-/** Objects stand on floor centres, one per floor, and their catalogue types fit the role they play. */
+/**
+ * Objects stand on floor centres, one per floor, and their catalogue types fit the role they play. A crowd's people
+ * stand on its from floors, which no one else may start on.
+ */
 public class PlacementValidator extends ReiCheckBase {
 
 	@Check
@@ -53,6 +58,10 @@ public class PlacementValidator extends ReiCheckBase {
 	}
 
 	private void occupy(Map<Floor, PhysicalObject> occupants, PhysicalObject object) {
+		if (object instanceof Crowd crowd) {
+			occupy(occupants, crowd);
+			return;
+		}
 		Floor floor = object.startFloor();
 		if (floor == null || floor.eIsProxy()) {
 			return;
@@ -69,6 +78,23 @@ public class PlacementValidator extends ReiCheckBase {
 		}
 	}
 
+	/** Each of the from floors, reported at the floor's name in the list; a floor named twice is taken once. */
+	private void occupy(Map<Floor, PhysicalObject> occupants, Crowd crowd) {
+		List<Floor> from = crowd.getFrom();
+		for (int i = 0; i < from.size(); i++) {
+			Floor floor = from.get(i);
+			if (floor == null || floor.eIsProxy()) {
+				continue;
+			}
+			PhysicalObject first = occupants.putIfAbsent(floor, crowd);
+			if (first != null && first != crowd) {
+				error("Floor " + floor.getName() + " is already taken by '" + first.getName() + "': expected a free "
+						+ "floor, a crowd's people stand on its from floors alone", crowd,
+						ContextPackage.Literals.CROWD__FROM, i, ReiIssueCodes.FLOOR_OCCUPIED);
+			}
+		}
+	}
+
 	private static ObjectCategory expectedCategory(SimulationObject object) {
 		if (object instanceof Floor) {
 			return ObjectCategory.FLOOR;
@@ -76,7 +102,7 @@ public class PlacementValidator extends ReiCheckBase {
 		if (object instanceof Wall) {
 			return ObjectCategory.WALL;
 		}
-		if (object instanceof Human) {
+		if (object instanceof Human || object instanceof Crowd) {
 			return ObjectCategory.HUMAN;
 		}
 		if (object instanceof DynamicObject) {

@@ -23,6 +23,9 @@ public interface ReiIssueCodes {
 	String NEGATIVE_TIME = PREFIX + "negativeTime";
 	String STOP_OCCUPIED = PREFIX + "stopOccupied";
 	String STOP_UNREACHABLE = PREFIX + "stopUnreachable";
+	String TOO_FEW_PEOPLE = PREFIX + "tooFewPeople";
+	String AREA_TOO_SMALL = PREFIX + "areaTooSmall";
+	String AREA_UNREACHABLE = PREFIX + "areaUnreachable";
 	String MISSING_MISSION = PREFIX + "missingMission";
 	String TOO_FEW_GOALS = PREFIX + "tooFewGoals";
 	String GOAL_UNREACHABLE = PREFIX + "goalUnreachable";

@@ -31,11 +31,35 @@ public class RouteValidator extends ReiCheckBase {
 
 	@Check
 	public void checkSpeed(Route route) {
-		if (!(route.getSpeed() > 0 && route.getSpeed() <= MAX_SPEED)) {
-			error("A walking speed is above 0 and at most " + num(MAX_SPEED) + " m/s (people walk at about 1.2-1.4): "
-					+ "got " + num(route.getSpeed()), route, ContextPackage.Literals.ROUTE__SPEED,
-					ReiIssueCodes.OUT_OF_RANGE);
+		String problem = speedProblem(route.getSpeed());
+		if (problem != null) {
+			error(problem, route, ContextPackage.Literals.ROUTE__SPEED, ReiIssueCodes.OUT_OF_RANGE);
 		}
+	}
+
+	/** {@code speed 1.0 to 1.4}: a range from the slowest to the fastest, no faster than a single speed may be. */
+	@Check
+	public void checkSpeedRange(Route route) {
+		if (route.isSetSpeedTo()) {
+			String problem = rangeProblem(route.getSpeed(), route.getSpeedTo());
+			if (problem != null) {
+				error(problem, route, ContextPackage.Literals.ROUTE__SPEED_TO, ReiIssueCodes.OUT_OF_RANGE);
+			}
+		}
+	}
+
+	/** What is wrong with a walking speed, {@code null} when nothing is. */
+	static String speedProblem(double speed) {
+		return speed > 0 && speed <= MAX_SPEED ? null
+				: "A walking speed is above 0 and at most " + num(MAX_SPEED) + " m/s (people walk at about 1.2-1.4): "
+						+ "got " + num(speed);
+	}
+
+	/** What is wrong with the fastest speed of a range, {@code null} when nothing is. */
+	static String rangeProblem(double speed, double speedTo) {
+		return speedTo >= speed && speedTo <= MAX_SPEED ? null
+				: "The fastest walking speed of a range is at least its slowest (" + num(speed) + ") and at most "
+						+ num(MAX_SPEED) + " m/s: got " + num(speedTo);
 	}
 
 	@Check
@@ -113,7 +137,7 @@ public class RouteValidator extends ReiCheckBase {
 		}
 	}
 
-	private static String num(double v) {
+	static String num(double v) {
 		return v == Math.rint(v) && Math.abs(v) < 1e15 ? String.valueOf((long) v) : String.valueOf(v);
 	}
 }
