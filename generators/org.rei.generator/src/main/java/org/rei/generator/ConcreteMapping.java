@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 
 import org.eclipse.emf.common.util.URI;
@@ -18,16 +19,20 @@ import org.rei.catalogue.ObjectCategory;
 import org.rei.catalogue.ObjectType;
 import org.rei.catalogue.Shape;
 import org.rei.catalogue.util.Catalogues;
+import org.rei.context.Behaviour;
 import org.rei.context.BuildingBlock;
 import org.rei.context.ControlPoint;
+import org.rei.context.Crowd;
 import org.rei.context.DynamicObject;
 import org.rei.context.Environment;
 import org.rei.context.Floor;
+import org.rei.context.Group;
 import org.rei.context.Human;
 import org.rei.context.Mission;
 import org.rei.context.NavigationTask;
 import org.rei.context.PhysicalObject;
 import org.rei.context.Robot;
+import org.rei.context.Route;
 import org.rei.context.RouteStop;
 import org.rei.context.StaticObject;
 import org.rei.context.Task;
@@ -35,6 +40,8 @@ import org.rei.context.TestCase;
 import org.rei.context.Wall;
 import org.rei.context.layout.FloorLayout;
 import org.rei.context.layout.WallPlacement;
+import org.rei.context.people.PeoplePlacement;
+import org.rei.context.people.WalkingSpeed;
 import org.rei.mission.GeometricGoal;
 import org.rei.mission.MissionDescription;
 import org.rei.mission.MissionFactory;
@@ -46,13 +53,15 @@ import org.rei.runtime.RuntimeFactory;
 
 /**
  * The model-to-model step: abstract test case + floor layout to the concrete environment (every body with its
- * pose and size) and the concrete mission (goals as world-frame poses), thesis 4.1.3 and 4.3.1.
+ * pose and size) and the concrete mission (goals as world-frame poses), thesis 4.1.3 and 4.3.1. Crowds and groups
+ * are expanded here into the people they are (NAME_1 to NAME_N, each a HUMAN body and a {@link Person}), placed by
+ * the {@link PeoplePlacement} the validator counts with, so the simulation only ever sees single people.
  */
 final class ConcreteMapping {
 
 	/** Result of one mapping; the EGL templates read these. */
 	record Result(ConcreteEnvironment environment, MissionDescription mission, List<ConcreteObject> bodies,
-			List<ConcreteObject> floors, ConcreteObject robot, List<DynamicObject> animated, List<Human> people,
+			List<ConcreteObject> floors, ConcreteObject robot, List<DynamicObject> animated, List<Person> people,
 			Map<PhysicalObject, ConcreteObject> concrete, List<ObjectType> types) {
 	}
 
@@ -87,7 +96,8 @@ final class ConcreteMapping {
 		List<ConcreteObject> bodies = new ArrayList<>();
 		List<ConcreteObject> floors = new ArrayList<>();
 		List<DynamicObject> animated = new ArrayList<>();
-		List<Human> people = new ArrayList<>();
+		List<Person> people = new ArrayList<>();
+		PeoplePlacement placement = null;
 		Map<PhysicalObject, ConcreteObject> concrete = new HashMap<>();
 		Map<String, ObjectType> types = new LinkedHashMap<>();
 
@@ -115,13 +125,24 @@ final class ConcreteMapping {
 			bodies.addAll(mapWalls(mapRoom, types));
 		}
 		for (PhysicalObject object : env.getOwnedObjects()) {
+			if (object instanceof Crowd || object instanceof Group) {
+				if (placement == null) {
+					placement = PeoplePlacement.of(env, layout, humanType);
+				}
+				if (object instanceof Crowd crowd) {
+					crowd(crowd, layout, placement, types, bodies, people);
+				} else {
+					group((Group) object, layout, placement, types, bodies, people);
+				}
+				continue;
+			}
 			ConcreteObject body = physical(object, layout, types);
 			bodies.add(body);
 			concrete.put(object, body);
 			if (object instanceof Human human && human.getOwnedRoute() != null) {
 				// a person who sees the robot: a body like any human, moved by the pedestrian model, not on rails
 				checkRoute(human, layout);
-				people.add(human);
+				people.add(person(human.getName(), human.getOwnedRoute(), human.getType(), null, layout));
 			} else if (object instanceof DynamicObject dynamic) {
 				checkTrajectory(dynamic, layout);
 				animated.add(dynamic);
@@ -239,6 +260,103 @@ final class ConcreteMapping {
 				throw new GenerationException("control point times of " + object.getName() + " must strictly increase");
 			}
 			previous = point.getTime();
+		}
+	}
+
+	/**
+	 * A crowd's people: person i stands on the from floors' lattice point i - 1 and walks to the to floors' point
+	 * (i - 1) mod their number, setting off (i - 1) / rate seconds after the crowd's start.
+	 */
+	private void crowd(Crowd crowd, FloorLayout layout, PeoplePlacement placement, Map<String, ObjectType> types,
+			List<ConcreteObject> bodies, List<Person> people) throws GenerationException {
+		onFloors(crowd.getFrom(), "a from floor of crowd " + crowd.getName(), layout);
+		onFloors(crowd.getTo(), "a to floor of crowd " + crowd.getName(), layout);
+		List<PeoplePlacement.Spot> from = placement.from(crowd);
+		List<PeoplePlacement.Spot> to = placement.to(crowd);
+		int count = crowd.getCount();
+		if (count < 1 || from.size() < count || to.isEmpty()) {
+			throw new GenerationException("crowd " + crowd.getName() + " of " + count + ": its from floors hold "
+					+ from.size() + " and its to floors " + to.size() + " people of radius "
+					+ Numbers.format(placement.radius(crowd)));
+		}
+		ObjectType type = typeOf(crowd.getType(), humanType, types);
+		WalkingSpeed speed = WalkingSpeed.of(crowd);
+		for (int i = 1; i <= count; i++) {
+			PeoplePlacement.Spot start = from.get(i - 1);
+			PeoplePlacement.Spot target = to.get((i - 1) % to.size());
+			String name = crowd.getName() + "_" + i;
+			bodies.add(humanBody(name, type, start.x(), start.y(), start.floor()));
+			double setsOff = crowd.getStart() + (crowd.isSetRate() ? (i - 1) / crowd.getRate() : 0);
+			people.add(new Person(name, behaviour(crowd.getBehaviour()), speed.speed(), speed.speedTo(), setsOff,
+					crowd.isLoop(), null, List.of(stop(start), stop(target))));
+		}
+	}
+
+	/**
+	 * A group's people: NAME_1, its leader, on the first stop's centre as a routed human; the others on the places
+	 * beside it, nearest first; all with the group's route, speed, start, loop and behaviour.
+	 */
+	private void group(Group group, FloorLayout layout, PeoplePlacement placement, Map<String, ObjectType> types,
+			List<ConcreteObject> bodies, List<Person> people) throws GenerationException {
+		checkRoute(group, layout);
+		Floor first = group.startFloor();
+		if (first == null) {
+			throw new GenerationException("group " + group.getName() + " has no route to stand on");
+		}
+		List<PeoplePlacement.Spot> beside = placement.beside(group);
+		int count = group.getCount();
+		if (count < 2 || beside.size() < count - 1) {
+			throw new GenerationException("group " + group.getName() + " of " + count + ": " + first.getName()
+					+ " and the free floors beside it hold " + (1 + beside.size()) + " people of radius "
+					+ Numbers.format(placement.radius(group)));
+		}
+		ObjectType type = typeOf(group.getType(), humanType, types);
+		double[] centre = layout.centreOf(first);
+		for (int i = 1; i <= count; i++) {
+			String name = group.getName() + "_" + i;
+			if (i == 1) {
+				bodies.add(humanBody(name, type, centre[0], centre[1], first));
+			} else {
+				PeoplePlacement.Spot spot = beside.get(i - 2);
+				bodies.add(humanBody(name, type, spot.x(), spot.y(), spot.floor()));
+			}
+			people.add(person(name, group.getOwnedRoute(), group.getType(), group.getName(), layout));
+		}
+	}
+
+	/** A person on a route of floor centres: a routed human, or one of a group. */
+	private static Person person(String name, Route route, ObjectType type, String group, FloorLayout layout) {
+		List<Person.Stop> stops = new ArrayList<>();
+		for (RouteStop stop : route.getOwnedStops()) {
+			double[] centre = layout.centreOf(stop.getFloor());
+			stops.add(new Person.Stop(stop.getFloor().getName(), centre[0], centre[1], stop.getWait()));
+		}
+		WalkingSpeed speed = WalkingSpeed.of(route, type);
+		return new Person(name, behaviour(route.getBehaviour()), speed.speed(), speed.speedTo(), route.getStart(),
+				route.isLoop(), group, stops);
+	}
+
+	private static Person.Stop stop(PeoplePlacement.Spot spot) {
+		return new Person.Stop(spot.floor().getName(), spot.x(), spot.y(), 0);
+	}
+
+	/** As animation.json names it: the grammar's word. */
+	private static String behaviour(Behaviour behaviour) {
+		return behaviour.getName().toLowerCase(Locale.ROOT);
+	}
+
+	/** A person's body, as {@link #physical} makes a human's, at a point of a floor instead of its centre. */
+	private static ConcreteObject humanBody(String name, ObjectType type, double x, double y, Floor floor) {
+		double sizeY = type.getShape() == Shape.CYLINDER ? type.getSizeX() : type.getSizeY();
+		return body(name, type, ObjectCategory.HUMAN, type.getSizeX(), sizeY, type.getSizeZ(), x, y,
+				type.getSizeZ() / 2, 0, floor);
+	}
+
+	private static void onFloors(List<Floor> floors, String what, FloorLayout layout) throws GenerationException {
+		for (Floor floor : floors) {
+			if (floor == null || layout.cellOf(floor).isEmpty()) {
+				throw new GenerationException(what + " is not a floor of the room");
+			}
 		}
 	}
 

@@ -9,7 +9,6 @@ import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.IdentityHashMap;
-import java.util.Locale;
 import java.util.Map;
 
 import org.eclipse.emf.ecore.EObject;
@@ -24,7 +23,6 @@ import org.rei.catalogue.Shape;
 import org.rei.context.Direction;
 import org.rei.context.Floor;
 import org.rei.context.PhysicalObject;
-import org.rei.context.Route;
 import org.rei.context.layout.Cell;
 import org.rei.context.layout.FloorLayout;
 import org.rei.runtime.ConcreteObject;
@@ -249,11 +247,6 @@ public final class TemplateSupport {
 	/** world.json's {@code map} member of a room from an occupancy map, {@code null} for another room. */
 	public String map() {
 		return mapRoom == null ? null : mapRoom.json();
-	}
-
-	/** A route's behaviour as animation.json names it: the grammar's word ({@code avoids}, ...). */
-	public String behaviour(Route route) {
-		return route.getBehaviour().getName().toLowerCase(Locale.ROOT);
 	}
 
 	/** The body an abstract object became. */

@@ -6,12 +6,18 @@ package org.rei.generator;
 
 import org.eclipse.emf.ecore.resource.impl.ResourceSetImpl;
 import org.rei.catalogue.Catalogue;
+import org.rei.catalogue.CatalogueFactory;
+import org.rei.catalogue.ObjectCategory;
+import org.rei.catalogue.ObjectType;
+import org.rei.catalogue.Shape;
 import org.rei.catalogue.util.Catalogues;
 import org.rei.context.Behaviour;
 import org.rei.context.ContextFactory;
 import org.rei.context.ControlPoint;
+import org.rei.context.Crowd;
 import org.rei.context.Environment;
 import org.rei.context.Floor;
+import org.rei.context.Group;
 import org.rei.context.Human;
 import org.rei.context.Mission;
 import org.rei.context.NavigationTask;
@@ -149,6 +155,73 @@ final class TestCases {
 		stand.setBehaviour(Behaviour.CURIOUS);
 		bob.setOwnedRoute(stand);
 		env.getOwnedObjects().add(bob);
+		return testCase;
+	}
+
+	/**
+	 * 8 x 4 floors walled around, the robot on F_4_0 with goals F_4_3 and F_4_1, and people who see it: a scared
+	 * crowd of 3 ({@code crowd shoppers 3 from [F_0_1, F_0_2] to [F_7_1, F_7_3] rate 2 speed 1.0 to 1.4 loop
+	 * scared}), a group of 2 ({@code group family 2 route [F_3_2, F_5_2 wait 2s] start 1}) and ann, of a type
+	 * Adult that walks at 0.8 to 1.0 m/s, standing on F_6_3 ({@code human ann : Adult route [F_6_3]}).
+	 */
+	static TestCase withCrowds() {
+		TestCase testCase = grid(8, 4);
+		Environment env = testCase.getOwnedEnvironment();
+		Floor[][] g = new Floor[8][4];
+		for (var block : env.getOwnedBlocks()) {
+			if (block instanceof Floor floor) {
+				String[] xy = floor.getName().split("_");
+				g[Integer.parseInt(xy[1])][Integer.parseInt(xy[2])] = floor;
+			}
+		}
+		env.getOwnedRobot().setFloor(g[4][0]);
+		NavigationTask back = F.createNavigationTask();
+		back.setGoal(g[4][1]);
+		((NavigationTask) testCase.getOwnedMission().getOwnedTasks().get(0)).setGoal(g[4][3]);
+		testCase.getOwnedMission().getOwnedTasks().add(back);
+
+		Crowd shoppers = F.createCrowd();
+		shoppers.setName("shoppers");
+		shoppers.setCount(3);
+		shoppers.getFrom().add(g[0][1]);
+		shoppers.getFrom().add(g[0][2]);
+		shoppers.getTo().add(g[7][1]);
+		shoppers.getTo().add(g[7][3]);
+		shoppers.setRate(2);
+		shoppers.setSpeed(1.0);
+		shoppers.setSpeedTo(1.4);
+		shoppers.setLoop(true);
+		shoppers.setBehaviour(Behaviour.SCARED);
+		env.getOwnedObjects().add(shoppers);
+
+		Group family = F.createGroup();
+		family.setName("family");
+		family.setCount(2);
+		Route walk = F.createRoute();
+		walk.getOwnedStops().add(stop(g[3][2], 0));
+		walk.getOwnedStops().add(stop(g[5][2], 2));
+		walk.setStart(1);
+		family.setOwnedRoute(walk);
+		env.getOwnedObjects().add(family);
+
+		ObjectType adult = CatalogueFactory.eINSTANCE.createObjectType();
+		adult.setName("Adult");
+		adult.setCategory(ObjectCategory.HUMAN);
+		adult.setShape(Shape.CYLINDER);
+		adult.setSizeX(0.5);
+		adult.setSizeY(0.5);
+		adult.setSizeZ(1.7);
+		adult.setMass(70);
+		adult.setColour("#E0AC69");
+		adult.setWalkingSpeed(0.8);
+		adult.setWalkingSpeedTo(1.0);
+		Human ann = F.createHuman();
+		ann.setName("ann");
+		ann.setType(adult);
+		Route stand = F.createRoute();
+		stand.getOwnedStops().add(stop(g[6][3], 0));
+		ann.setOwnedRoute(stand);
+		env.getOwnedObjects().add(ann);
 		return testCase;
 	}
 
