@@ -14,9 +14,11 @@ import org.eclipse.xtext.util.CancelIndicator;
 import org.eclipse.xtext.validation.CheckMode;
 import org.eclipse.xtext.validation.IResourceValidator;
 import org.eclipse.xtext.validation.Issue;
+import org.rei.context.Crowd;
 import org.rei.context.DynamicObject;
 import org.rei.context.Environment;
 import org.rei.context.Floor;
+import org.rei.context.Group;
 import org.rei.context.Human;
 import org.rei.context.Mission;
 import org.rei.context.MonitorSpec;
@@ -98,6 +100,10 @@ final class Issues {
 			return "floor";
 		} else if (e instanceof Wall) {
 			return "wall";
+		} else if (e instanceof Crowd) {
+			return "crowd";
+		} else if (e instanceof Group) {
+			return "group";
 		} else if (e instanceof Human) {
 			return "human";
 		} else if (e instanceof DynamicObject) {

@@ -238,6 +238,7 @@ public final class RoomDocument {
 		// one file is edited and nothing is renamed: no other file or reference needs updating
 		serializer.setUpdateRelatedFiles(false);
 		serializer.setUpdateCrossReferences(false);
+		PeopleRefusals.check(testCase, operations);
 		ModelEditor editor = new ModelEditor(testCase, injector.getInstance(IScopeProvider.class), reservedWords);
 		serializer.addModification(version.resource(), resource -> operations.forEach(editor::apply));
 		List<IEmfResourceChange> changes = new ArrayList<>();

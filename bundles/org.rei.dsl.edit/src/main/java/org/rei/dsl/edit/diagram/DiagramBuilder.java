@@ -15,10 +15,12 @@ import org.rei.catalogue.util.Catalogues;
 import org.rei.context.AsciiLayout;
 import org.rei.context.BuildingBlock;
 import org.rei.context.ControlPoint;
+import org.rei.context.Crowd;
 import org.rei.context.DynamicObject;
 import org.rei.context.Environment;
 import org.rei.context.Floor;
 import org.rei.context.GridLayout;
+import org.rei.context.Group;
 import org.rei.context.OccupancyLayout;
 import org.rei.context.Human;
 import org.rei.context.MonitorSpec;
@@ -55,6 +57,9 @@ public final class DiagramBuilder {
 		List<Diagram.Item> objects = new ArrayList<>();
 		List<Diagram.Mover> movers = new ArrayList<>();
 		for (PhysicalObject object : environment.getOwnedObjects()) {
+			if (object instanceof Crowd || object instanceof Group) {
+				continue; // not drawn: as many people as the line says, placed by the generator, edited in the text
+			}
 			if (object instanceof DynamicObject mover) {
 				movers.add(mover(mover, layout, defaults));
 			} else {
