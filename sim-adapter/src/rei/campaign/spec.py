@@ -18,7 +18,8 @@ does not surface as an error in run 17 of 23 an hour later. Format (docs/campaig
     variants: [{name: base}]    # default variants: name, humans (true), fault (null), controller, sut
     groups:
       - name: small
-        rooms: {size: small, density: dense, humans: 0, count: 7, seed: 1}  # catalogue: FILE, robot: NAME
+        rooms: {size: small, density: dense, humans: 0, count: 7, seed: 1}  # catalogue: FILE, robot: NAME,
+                                                                            #   people: reactive, behaviour: B
         variants: [{name: base}, {name: fault1, fault: "laser:1%"}]
       - name: examples
         cases: [../simple_navigation.rei]      # relative to the spec file
@@ -93,6 +94,9 @@ class RoomSettings:
     map: Path | None = None
     floor_size: float = 1.0
     unknown_free: bool = False
+    #: the humans are people who see the robot with this behaviour (or mixed: ``people: reactive``, ``behaviour``);
+    #: None: humans on lanes
+    reactive: str | None = None
 
     def generate(self, count: int | None = None) -> list[Room]:
         """The first ``count`` rooms of these settings (default: ``count`` of the settings)."""
@@ -100,9 +104,11 @@ class RoomSettings:
 
         count = self.count if count is None else count
         if self.map is None:
-            return generate_rooms(str(self.size), self.density, self.humans, self.seed, count, self.types)
+            return generate_rooms(str(self.size), self.density, self.humans, self.seed, count, self.types,
+                                  self.reactive)
         site = load_site(self.map, self.floor_size, self.unknown_free)
-        return generate_map_rooms(site, self.density, self.humans, self.seed, count, self.types)
+        return generate_map_rooms(site, self.density, self.humans, self.seed, count, self.types,
+                                  reactive=self.reactive)
 
 
 @dataclass(frozen=True, slots=True)
@@ -283,13 +289,13 @@ def _rooms(r: _Reader, base: Path) -> RoomSettings:
     """A group's ``rooms`` settings, checked by generating their first room; a mistake the generator finds is
     placed at the setting its message names (else at the mapping)."""
     from rei.maps import MapError
-    from rei.rooms import GenerationError
+    from rei.rooms import BEHAVIOURS, MIXED, GenerationError
     from rei.rooms.catalogue import room_types
 
     problems = located_yaml.Collector()
     with problems.check():
-        r.only("size", "map", "floor_size", "unknown_free", "density", "humans", "count", "seed", "catalogue",
-               "robot")
+        r.only("size", "map", "floor_size", "unknown_free", "density", "humans", "people", "behaviour", "count", "seed",
+               "catalogue", "robot")
     catalogue, robot = r.get("catalogue"), r.get("robot")
     if robot is not None and catalogue is None:
         problems.add(f"{r.key_at('robot')}: 'robot' picks a robot type of 'catalogue': give the catalogue too")
@@ -307,12 +313,18 @@ def _rooms(r: _Reader, base: Path) -> RoomSettings:
     seed = problems.read(lambda: r.int("seed", 0, minimum=0), 0)
     floor_size = problems.read(lambda: r.number("floor_size", 1.0), 1.0)
     unknown_free = problems.read(lambda: r.bool("unknown_free", False), False)
+    people = problems.read(lambda: r.choice("people", ("rails", "reactive"), "rails"), "rails")
+    behaviour = problems.read(lambda: r.choice("behaviour", (*BEHAVIOURS, MIXED), "avoids"), "avoids")
+    if r.get("behaviour") is not None and people != "reactive":
+        problems.add(f"{r.key_at('behaviour')}: 'behaviour' is the behaviour of people who see the robot: give "
+                     "'people: reactive' too")
     problems.raise_if_any(SpecError)  # the generator's check needs every setting
     try:
         types = DEFAULT_TYPES if catalogue is None else room_types((base / str(catalogue)).resolve(),
                                                                     None if robot is None else str(robot))
         settings = RoomSettings(size=size, density=r.get("density"), humans=r.get("humans"), count=count, seed=seed,
-                                types=types, map=map_file, floor_size=floor_size, unknown_free=unknown_free)
+                                types=types, map=map_file, floor_size=floor_size, unknown_free=unknown_free,
+                                reactive=behaviour if people == "reactive" else None)
         settings.generate(1)  # checks them
     except (ValueError, TypeError, GenerationError, MapError) as error:
         raise SpecError(f"{r.named_in(str(error))}: {error}") from None

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: EPL-2.0
-"""`rei gen-rooms --size S|--map FILE.yaml [--density D] [--humans N] --count K --seed S [--catalogue FILE] -o DIR`:
-procedural test rooms.
+"""`rei gen-rooms --size S|--map FILE.yaml [--density D] [--humans N [--people reactive [--behaviour B]]] --count K
+--seed S [--catalogue FILE] -o DIR`: procedural test rooms.
 
 Writes K `.rei` test cases (thesis 7.4): a grid of floors with walls, furniture from the catalogue, humans
 walking lanes of free floors, the robot on the left wall and a mission whose first goal is on the right wall.
@@ -11,7 +11,9 @@ frequent, at most 1.2 x 1.2 m each) and gives the robot its robot type (`--robot
 rooms import it. `--map FILE.yaml` furnishes a real building instead: a ROS occupancy map (map_server format),
 its free blocks of `--floor-size` metres (1.0 by default) as floors, the rooms written as `occupancy` rooms that
 name the map by its path relative to them (rei.rooms.on_map; a room drawn on a map is drawn again until the planner
-finds every leg). Every leg of every mission is checked with the reference navigation's planner (`--no-check`
+finds every leg). `--people reactive` makes the humans people who see the robot (docs/people.md): each loops round
+a route of 2 or 3 stops on free floors, reachable from each other, with the behaviour `--behaviour` gives (avoids by
+default; mixed: each person's drawn). Every leg of every mission is checked with the reference navigation's planner (`--no-check`
 skips it). Exit 0: written; 1: a room failed the check; 2: bad arguments, an invalid catalogue or map.
 """
 
@@ -23,10 +25,23 @@ from typing import Any
 
 from rei.cli.errors import EXIT_INVALID, EXIT_OK, CommandError
 
+#: What the generated humans are: on trajectories (rails), or people who see the robot (reactive, on routes).
+PEOPLE = ("rails", "reactive")
+
+
+def reactive(people: str, behaviour: str | None) -> str | None:
+    """``--people`` and ``--behaviour`` as rei.rooms takes them: the people's behaviour, None for humans on rails."""
+    if people == "rails":
+        if behaviour is not None:
+            raise CommandError("--behaviour is the behaviour of people who see the robot: give --people reactive too")
+        return None
+    return behaviour or "avoids"
+
 
 def register(subparsers: argparse._SubParsersAction[Any]) -> None:
     """Add the `gen-rooms` subcommand."""
     from rei.rooms.classes import DENSITIES, SIZES
+    from rei.rooms.model import BEHAVIOURS, MIXED
 
     parser = subparsers.add_parser("gen-rooms", help="generate procedural test rooms (.rei files)",
                                    description=__doc__.split("\n\n", 1)[1] if __doc__ else None)
@@ -40,6 +55,12 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
                         help="with --map: unknown cells are floor (default: obstacles)")
     parser.add_argument("--density", choices=DENSITIES, help="furniture density (default: the class's)")
     parser.add_argument("--humans", type=int, metavar="N", help="walking humans (default: the class's)")
+    parser.add_argument("--people", choices=PEOPLE, default="rails",
+                        help="rails: humans walk lanes on trajectories (default); reactive: people who see the robot, "
+                             "on routes")
+    parser.add_argument("--behaviour", choices=(*BEHAVIOURS, MIXED), metavar="B",
+                        help=f"with --people reactive: their behaviour towards the robot, one of "
+                             f"{', '.join((*BEHAVIOURS, MIXED))} (mixed: each person's drawn; default avoids)")
     parser.add_argument("--count", type=int, default=1, metavar="K", help="rooms to write (default 1)")
     parser.add_argument("--seed", type=int, default=0, metavar="S", help="seed (default 0)")
     parser.add_argument("--catalogue", type=Path, metavar="FILE",
@@ -60,12 +81,14 @@ def run(args: argparse.Namespace) -> int:
         raise CommandError("--robot picks a robot type of --catalogue FILE: give the catalogue too")
     if args.map is None and (args.floor_size is not None or args.unknown_free):
         raise CommandError("--floor-size and --unknown-free describe the floors of --map FILE.yaml: give the map too")
+    people = reactive(args.people, args.behaviour)
     try:
         types = DEFAULT_TYPES if args.catalogue is None else room_types(args.catalogue, args.robot)
         if args.map is not None:
-            written = _write_map_rooms(args, types)
+            written = _write_map_rooms(args, types, people)
         else:
-            written = write_rooms(args.output, args.size, args.density, args.humans, args.seed, args.count, types)
+            written = write_rooms(args.output, args.size, args.density, args.humans, args.seed, args.count, types,
+                                  people)
     except (ValueError, GenerationError) as error:
         raise CommandError(str(error)) from None
     except OSError as error:
@@ -74,13 +97,14 @@ def run(args: argparse.Namespace) -> int:
     for room, path in written:
         # a room on a map was checked while it was drawn (drawn again until it passed)
         problems = [] if args.no_check or room.site is not None else _check(room)
-        print(f"{path}  {len(room.furniture)} objects, {len(room.walkers)} humans, {len(room.goals)} goals"
+        humans = f"{len(room.walkers)} humans" if room.reactive is None else f"{len(room.people)} people on routes"
+        print(f"{path}  {len(room.furniture)} objects, {humans}, {len(room.goals)} goals"
               + ("" if not problems else "  UNPLANNABLE: " + "; ".join(problems)))
         failed += bool(problems)
     return EXIT_INVALID if failed else EXIT_OK
 
 
-def _write_map_rooms(args: argparse.Namespace, types: Any) -> list[tuple[Any, Path]]:
+def _write_map_rooms(args: argparse.Namespace, types: Any, people: str | None) -> list[tuple[Any, Path]]:
     from rei.maps import MapError
     from rei.rooms import write_map_rooms
     from rei.rooms.on_map import load_site
@@ -93,7 +117,7 @@ def _write_map_rooms(args: argparse.Namespace, types: Any) -> list[tuple[Any, Pa
     except MapError as error:
         raise CommandError(str(error)) from None
     return write_map_rooms(args.output, site, args.density, args.humans, args.seed, args.count, types,
-                           check=not args.no_check)
+                           check=not args.no_check, reactive=people)
 
 
 def _check(room: Any) -> list[str]:

@@ -9,11 +9,18 @@ import random
 from collections import deque
 from collections.abc import Callable, Collection, Iterable, Mapping
 
-from rei.rooms.model import Cell, Walker
+from rei.rooms.model import BEHAVIOURS, MIXED, Cell, Person, Walker
 
 #: The four sides of a floor (4-neighbours), in the order both generators have always walked them.
 SIDES = ((-1, 0), (1, 0), (0, -1), (0, 1))
 HUMAN_SPEED = (0.4, 0.7)  # m/s
+#: People who see the robot: desired walking speeds (m/s, to 0.1), stops per route, the fewest floors between two
+#: consecutive stops (along the floors), the waits at a stop (s) and the latest start (s).
+PEOPLE_SPEED = (0.8, 1.4)
+PEOPLE_STOPS = (2, 3)
+PEOPLE_LEG = 3
+PEOPLE_WAITS = (0, 0, 1, 2, 3)
+PEOPLE_START = 5
 
 
 def grid(width: int, height: int) -> frozenset[Cell]:
@@ -102,3 +109,45 @@ def draw_walkers(rng: random.Random, humans: int, start: Cell, goals: Iterable[C
         else:
             return None
     return walkers
+
+
+def draw_people(rng: random.Random, humans: int, start: Cell, goals: Iterable[Cell], floors: Collection[Cell],
+                behaviour: str, tries: int) -> list[Person] | None:
+    """People who see the robot, each on a route of 2 or 3 stops round which it loops: every stop a floor of
+    ``floors`` away from the robot's start (and its neighbours), the goals and every other person's stops, each at
+    least ``PEOPLE_LEG`` floors along the floors from the one before (and the last from the first), so a person
+    walks across the room, and the pedestrian model finds its way between them around what the caller then places
+    (the caller keeps furniture off the stops and every free floor reachable). ``behaviour``: theirs, or ``mixed``
+    (each drawn). None when a person's route is not found in ``tries`` draws."""
+    banned = {start, *neighbours(start), *goals}
+    people: list[Person] = []
+    for number in range(1, humans + 1):
+        for _ in range(tries):
+            stops = _route(rng, floors, banned)
+            if stops is not None:
+                break
+        else:
+            return None
+        waits = [rng.choice(PEOPLE_WAITS) for _ in stops]
+        speed = round(rng.uniform(*PEOPLE_SPEED), 1)
+        drawn = rng.choice(BEHAVIOURS)  # drawn whatever the setting, so a fixed behaviour keeps the same room
+        people.append(Person(f"person{number}", tuple(zip(stops, waits, strict=True)), speed,
+                             rng.randint(0, PEOPLE_START), drawn if behaviour == MIXED else behaviour))
+        banned |= set(stops)
+    return people
+
+
+def _route(rng: random.Random, floors: Collection[Cell], banned: Collection[Cell]) -> list[Cell] | None:
+    allowed = sorted(c for c in floors if c not in banned)
+    if not allowed:
+        return None
+    stops = [rng.choice(allowed)]
+    for _ in range(rng.randint(*PEOPLE_STOPS) - 1):
+        apart = distances(floors, stops[-1])
+        options = [c for c in allowed if c not in stops and apart.get(c, 0) >= PEOPLE_LEG]
+        if not options:
+            return None
+        stops.append(rng.choice(options))
+    if distances(floors, stops[-1]).get(stops[0], 0) < PEOPLE_LEG:  # the way back round the loop is a walk too
+        return None
+    return stops

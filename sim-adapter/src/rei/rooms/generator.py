@@ -3,11 +3,12 @@
 
 A room is drawn on a grid of 1 m floors. The robot starts on the left wall and its first goal is on the right
 wall ("the robot starts from one side of the room to reach the other", thesis 7.4.4); later goals are spread
-over the room. Humans walk straight lanes of floors back and forth. Furniture is then placed floor by floor,
+over the room. Humans walk straight lanes of floors back and forth, or (``reactive``) are people who see the robot,
+looping round routes of 2 or 3 stops (rei.rooms.floors.draw_people). Furniture is then placed floor by floor,
 and a piece is kept only if the room stays navigable for the reference navigation:
 
 * it stays inside the walls with a gap (walls are 0.1 m thick, centred on the room's edge);
-* it does not reach into the start, a goal or a human's lane, nor into a neighbour's furniture;
+* it does not reach into the start, a goal, a human's lane or a person's stop, nor into a neighbour's furniture;
 * every floor without furniture stays reachable from every other (4-neighbours), so each goal is reachable
   from the start and from the previous goal, and no floor is cut off;
 * the start and every goal keep at least two neighbouring floors free, so the robot can approach and leave.
@@ -27,7 +28,7 @@ from functools import partial
 
 from rei.rooms import floors
 from rei.rooms.classes import MAX_HUMANS, RoomClass, room_class
-from rei.rooms.model import DEFAULT_TYPES, Cell, Furniture, Goal, Room, RoomTypes
+from rei.rooms.model import BEHAVIOURS, DEFAULT_TYPES, MIXED, Cell, Furniture, Goal, Person, Room, RoomTypes
 
 #: Wall half thickness plus the gap kept between furniture and a wall, in metres.
 WALL_CLEARANCE = 0.05 + 0.03
@@ -39,10 +40,18 @@ class GenerationError(RuntimeError):
     """No room of these settings could be drawn (only possible for settings beyond the documented ones)."""
 
 
+def check_reactive(reactive: str | None) -> None:
+    """``reactive``: the behaviour of generated people who see the robot (or ``mixed``), None for humans on lanes."""
+    if reactive is not None and reactive not in (*BEHAVIOURS, MIXED):
+        raise ValueError(f"the people's behaviour must be one of {', '.join((*BEHAVIOURS, MIXED))}, got {reactive!r}")
+
+
 def generate_room(size: str, density: str | None = None, humans: int | None = None, seed: int = 0,
-                  index: int = 1, types: RoomTypes = DEFAULT_TYPES) -> Room:
+                  index: int = 1, types: RoomTypes = DEFAULT_TYPES, reactive: str | None = None) -> Room:
     """Room ``index`` (from 1) of ``rei gen-rooms --size SIZE --density D --humans N --seed SEED``; ``types``:
-    what it is furnished from (``--catalogue``)."""
+    what it is furnished from (``--catalogue``); ``reactive``: the humans are people who see the robot with this
+    behaviour (or ``mixed``; ``--people reactive --behaviour B``), None: humans on lanes."""
+    check_reactive(reactive)
     cls = room_class(size)
     density = density or cls.default_density
     humans = cls.default_humans if humans is None else humans
@@ -51,9 +60,12 @@ def generate_room(size: str, density: str | None = None, humans: int | None = No
         raise ValueError(f"a {size} room holds 0 to {MAX_HUMANS[size]} humans, got {humans}")
     if seed < 0 or index < 1:
         raise ValueError(f"seed must be >= 0 and index >= 1, got {seed}, {index}")
+    # people who see the robot draw from a sequence of their own (the same for every behaviour): rooms with humans
+    # on lanes stay what they were
+    people = "" if reactive is None else "/people"
     for attempt in range(MAX_ATTEMPTS):
-        rng = random.Random(f"rei-rooms/1/{size}/{density}/{humans}/{seed}/{index}/{attempt}")
-        room = _attempt(rng, cls, density, humans, seed, index, types)
+        rng = random.Random(f"rei-rooms/1/{size}/{density}/{humans}/{seed}/{index}/{attempt}{people}")
+        room = _attempt(rng, cls, density, humans, seed, index, types, reactive)
         if room is not None:
             return room
     raise GenerationError(f"no {size} {density} room with {humans} humans for seed {seed} index {index} "
@@ -61,22 +73,28 @@ def generate_room(size: str, density: str | None = None, humans: int | None = No
 
 
 def generate_rooms(size: str, density: str | None = None, humans: int | None = None, seed: int = 0,
-                   count: int = 1, types: RoomTypes = DEFAULT_TYPES) -> list[Room]:
-    return [generate_room(size, density, humans, seed, i, types) for i in range(1, count + 1)]
+                   count: int = 1, types: RoomTypes = DEFAULT_TYPES, reactive: str | None = None) -> list[Room]:
+    return [generate_room(size, density, humans, seed, i, types, reactive) for i in range(1, count + 1)]
 
 
 def _attempt(rng: random.Random, cls: RoomClass, density: str, humans: int, seed: int, index: int,
-             types: RoomTypes) -> Room | None:
+             types: RoomTypes, reactive: str | None = None) -> Room | None:
     w, h = cls.width, cls.height
     room_floors = floors.grid(w, h)
     start = (0, rng.randrange(h))
     goals = _goals(rng, cls, start)
-    walkers = floors.draw_walkers(rng, humans, start, goals, partial(_lane, cls), room_floors, floor_size=1.0,
-                                  tries=100)
-    if walkers is None:
+    if reactive is None:
+        walkers = floors.draw_walkers(rng, humans, start, goals, partial(_lane, cls), room_floors, floor_size=1.0,
+                                      tries=100)
+        people: list[Person] | None = []
+    else:
+        walkers = []
+        people = floors.draw_people(rng, humans, start, goals, room_floors, reactive, tries=100)
+    if walkers is None or people is None:
         return None
     robot_cells = {start, *goals}
-    reserved = robot_cells | {c for walker in walkers for c in walker.cells()}
+    reserved = robot_cells | {c for walker in walkers for c in walker.cells()} | {
+        c for person in people for c in person.cells()}
     placed: dict[Cell, Furniture] = {}
     wanted = cls.objects(density)
     counters: dict[str, int] = {}
@@ -99,7 +117,7 @@ def _attempt(rng: random.Random, cls: RoomClass, density: str, humans: int, seed
     timeouts = [_timeout(a, b) for a, b in zip((start, *goals), goals, strict=False)]
     return Room(name, cls.size, density, seed, index, w, h, start,
                 tuple(Goal(c, t) for c, t in zip(goals, timeouts, strict=True)),
-                tuple(placed.values()), tuple(walkers), types)
+                tuple(placed.values()), tuple(walkers), types, people=tuple(people), reactive=reactive)
 
 
 def _goals(rng: random.Random, cls: RoomClass, start: Cell) -> list[Cell]:

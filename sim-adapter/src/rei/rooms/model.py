@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: EPL-2.0
-"""A generated room as plain data: floors on a grid, furniture, humans on lanes, the robot and its goals.
+"""A generated room as plain data: floors on a grid, furniture, humans on lanes (or people who see the robot on
+routes), the robot and its goals.
 
 Kept apart from the generator so the rendering (``render``), the geometry (``footprint``) and the navigability
 check read one small model, and a test can build a room by hand.
@@ -93,6 +94,28 @@ class Walker:
         return [(x0 + i * dx, y0 + i * dy) for i in range(n + 1)]
 
 
+#: What generated people who see the robot may do: one of the language's behaviours, or ``mixed`` (each person's
+#: drawn from the seed).
+BEHAVIOURS = ("avoids", "ignores", "curious", "scared", "blocks")
+MIXED = "mixed"
+
+
+@dataclass(frozen=True, slots=True)
+class Person:
+    """A person who sees the robot (``human NAME route [...]``): walks its stops in order and round again (``loop``),
+    waiting ``wait`` seconds on arriving at each, at ``speed`` m/s from ``start`` seconds on, reacting to the robot
+    as ``behaviour`` says; a pedestrian model finds the way between its stops (docs/people.md)."""
+
+    name: str
+    stops: tuple[tuple[Cell, int], ...]  # (floor, wait in s)
+    speed: float
+    start: int
+    behaviour: str
+
+    def cells(self) -> list[Cell]:
+        return [cell for cell, _ in self.stops]
+
+
 @dataclass(frozen=True, slots=True)
 class Goal:
     cell: Cell
@@ -130,12 +153,25 @@ class Room:
     walkers: tuple[Walker, ...]
     types: RoomTypes = DEFAULT_TYPES
     site: MapSite | None = None  # a room on an occupancy map; None: a grid of 1 m floors with walls around
+    #: people who see the robot instead of humans on lanes, and their behaviour (a BEHAVIOURS or MIXED) when the
+    #: room has them (None: humans on lanes, ``walkers``)
+    people: tuple[Person, ...] = ()
+    reactive: str | None = None
+
+    @property
+    def humans(self) -> int:
+        return len(self.walkers) + len(self.people)
 
     @property
     def stem(self) -> str:
-        """File name without ``.rei``: sorts by class (or map), seed and index."""
+        """File name without ``.rei``: sorts by class (or map), seed and index; ``h2`` humans on lanes, ``p2``
+        people who see the robot (``p2-curious`` when they do not just avoid it)."""
         kind = self.size if self.site is None else self.site.yaml.stem
-        return f"{kind}_{self.density}_h{len(self.walkers)}_s{self.seed}_{self.index:02d}"
+        if self.reactive is None:
+            humans = f"h{len(self.walkers)}"
+        else:
+            humans = f"p{len(self.people)}" + ("" if self.reactive == "avoids" else f"-{self.reactive}")
+        return f"{kind}_{self.density}_{humans}_s{self.seed}_{self.index:02d}"
 
     def contains(self, cell: Cell) -> bool:
         if self.site is not None:

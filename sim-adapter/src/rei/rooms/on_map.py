@@ -6,13 +6,14 @@ seed.
 The floors are the map's free blocks of ``floor_size`` metres (``rei.maps.floor_blocks``, as the language reads
 an ``occupancy`` room); everything is placed in the largest area of floors connected side by side. The robot
 starts on a random floor, its first goal is among the floors farthest from it (counted along the floors), the
-next at least a third of that far from the one before. Humans walk straight lanes of 3 to 6 floors. Furniture
+next at least a third of that far from the one before. Humans walk straight lanes of 3 to 6 floors, or are people
+who see the robot on routes of 2 or 3 stops (``reactive``, rei.rooms.floors.draw_people). Furniture
 is placed floor by floor, as in ``rei.rooms.generator``, and a piece is kept only if:
 
 * it is a type whose footprint is at most 1.2 floors a side (it reaches at most a tenth of a floor into the
   next) and its footprint keeps a gap from every obstacle cell of the map;
 * it keeps 0.6 m from any other piece (a lane the reference navigation can take: twice its 0.24 m inflation
-  radius and a margin) and a gap from the start, the goals and the humans' lanes;
+  radius and a margin) and a gap from the start, the goals, the humans' lanes and the people's stops;
 * every floor without furniture stays reachable from every other, and the start and the goals keep two free
   neighbours.
 
@@ -30,9 +31,17 @@ from pathlib import Path
 import numpy as np
 
 from rei.maps import MapError, floor_blocks, load_map, obstacle_mask
-from rei.rooms.floors import SIDES, component, distances, draw_walkers, neighbours, still_navigable
-from rei.rooms.generator import GAP, GenerationError, rect_gap
-from rei.rooms.model import DEFAULT_TYPES, Cell, Furniture, Goal, MapSite, Room, RoomTypes
+from rei.rooms.floors import (
+    SIDES,
+    component,
+    distances,
+    draw_people,
+    draw_walkers,
+    neighbours,
+    still_navigable,
+)
+from rei.rooms.generator import GAP, GenerationError, check_reactive, rect_gap
+from rei.rooms.model import DEFAULT_TYPES, Cell, Furniture, Goal, MapSite, Person, Room, RoomTypes
 
 #: Furnished share of the floors per density: the share of the generated grid rooms (thesis 7.4's classes).
 SHARES = {"dense": 0.25, "sparse": 0.12}
@@ -65,11 +74,14 @@ def load_site(yaml: Path, floor_size: float = 1.0, unknown_free: bool = False) -
 
 
 def generate_map_room(site: MapSite, density: str | None = None, humans: int | None = None, seed: int = 0,
-                      index: int = 1, types: RoomTypes = DEFAULT_TYPES, check: bool = True) -> Room:
+                      index: int = 1, types: RoomTypes = DEFAULT_TYPES, check: bool = True,
+                      reactive: str | None = None) -> Room:
     """Room ``index`` (from 1) of ``rei gen-rooms --map ...``; ``check``: draw again until the reference planner
-    finds every leg (``--no-check``: the first room drawn)."""
+    finds every leg (``--no-check``: the first room drawn); ``reactive``: people who see the robot with this
+    behaviour (or ``mixed``) instead of humans on lanes."""
     from rei.rooms.check import unplannable_legs
 
+    check_reactive(reactive)
     density = density or DEFAULT_DENSITY
     if density not in SHARES:
         raise ValueError(f"density must be one of {', '.join(SHARES)}, got {density!r}")
@@ -91,8 +103,8 @@ def generate_map_room(site: MapSite, density: str | None = None, humans: int | N
     drawn = 0
     for attempt in range(MAX_ATTEMPTS):
         rng = random.Random(f"rei-rooms/map/1/{site.yaml.name}/{site.floor_size}/{density}/{humans}/{seed}/{index}/"
-                            f"{attempt}")
-        room = _attempt(rng, site, area, furniture, density, humans, seed, index, types)
+                            f"{attempt}{'' if reactive is None else '/people'}")
+        room = _attempt(rng, site, area, furniture, density, humans, seed, index, types, reactive)
         if room is None:
             continue
         drawn += 1
@@ -100,19 +112,22 @@ def generate_map_room(site: MapSite, density: str | None = None, humans: int | N
         if not problems:
             return room
     what = (f"{drawn} drawn, none navigable (last: {problems[0]})" if drawn else
-            f"the start, goals and {humans} humans' lanes never fit in its {len(area)} connected floors of "
+            f"the start, goals and {humans} {'people' if reactive else 'humans'}' "
+            f"{'routes' if reactive else 'lanes'} never fit in its {len(area)} connected floors of "
             f"{site.floor_size:g} m")
     raise GenerationError(f"no {density} room with {humans} humans on {site.yaml.name} for seed {seed} index {index} "
                           f"in {MAX_ATTEMPTS} attempts: {what}")
 
 
 def generate_map_rooms(site: MapSite, density: str | None = None, humans: int | None = None, seed: int = 0,
-                       count: int = 1, types: RoomTypes = DEFAULT_TYPES, check: bool = True) -> list[Room]:
-    return [generate_map_room(site, density, humans, seed, i, types, check) for i in range(1, count + 1)]
+                       count: int = 1, types: RoomTypes = DEFAULT_TYPES, check: bool = True,
+                       reactive: str | None = None) -> list[Room]:
+    return [generate_map_room(site, density, humans, seed, i, types, check, reactive) for i in range(1, count + 1)]
 
 
 def _attempt(rng: random.Random, site: MapSite, area: list[Cell], furniture: dict[str, tuple[float, float]],
-             density: str, humans: int, seed: int, index: int, types: RoomTypes) -> Room | None:
+             density: str, humans: int, seed: int, index: int, types: RoomTypes,
+             reactive: str | None = None) -> Room | None:
     floors = set(area)
     roomy = [c for c in area if sum(n in floors for n in neighbours(c)) >= 2]
     if not roomy:
@@ -121,12 +136,18 @@ def _attempt(rng: random.Random, site: MapSite, area: list[Cell], furniture: dic
     goals = _goals(rng, floors, roomy, start)
     if goals is None:
         return None
-    walkers = draw_walkers(rng, humans, start, goals, partial(_lane, sorted(floors)), floors,
-                           floor_size=site.floor_size, tries=200)
-    if walkers is None:
+    if reactive is None:
+        walkers = draw_walkers(rng, humans, start, goals, partial(_lane, sorted(floors)), floors,
+                               floor_size=site.floor_size, tries=200)
+        people: list[Person] | None = []
+    else:
+        walkers = []
+        people = draw_people(rng, humans, start, goals, floors, reactive, tries=200)
+    if walkers is None or people is None:
         return None
     robot_cells = {start, *goals}
-    reserved = robot_cells | {c for walker in walkers for c in walker.cells()}
+    reserved = robot_cells | {c for walker in walkers for c in walker.cells()} | {
+        c for person in people for c in person.cells()}
     blocked = _blocked_table(site)
     weights = {name: types.weights[name] for name in furniture}
     wanted = max(1, round(SHARES[density] * len(area)))
@@ -150,7 +171,7 @@ def _attempt(rng: random.Random, site: MapSite, area: list[Cell], furniture: dic
     ys = [c[1] for c in site.free]
     return Room(name, "map", density, seed, index, max(xs) + 1, max(ys) + 1, start,
                 tuple(Goal(c, t) for c, t in zip(goals, timeouts, strict=True)), tuple(placed.values()),
-                tuple(walkers), types, site)
+                tuple(walkers), types, site, tuple(people), reactive)
 
 
 def _largest_area(free: frozenset[Cell]) -> list[Cell]:

@@ -16,9 +16,12 @@ ROBOT = "tb3"
 
 def render(room: Room, count: int | None = None, folder: Path | None = None) -> str:
     """``folder``: where the file will be written; a user catalogue is imported by its path relative to it."""
-    humans = len(room.walkers)
+    humans = room.humans
     catalogue = room.types.catalogue
     options = "" if catalogue is None else f" --catalogue {catalogue.name}"
+    if room.reactive is not None:
+        options = " --people reactive" + ("" if room.reactive == "avoids" else f" --behaviour {room.reactive}") \
+            + options
     site = room.site
     where = (f"--size {room.size}" if site is None
              else f"--map {site.yaml.name} --floor-size {site.floor_size!r}{' --unknown-free' * site.unknown_free}")
@@ -45,6 +48,10 @@ def render(room: Room, count: int | None = None, folder: Path | None = None) -> 
     for walker in room.walkers:
         lines.append(f"    human {walker.name} trajectory [{floor_name(walker.start)} @ 0s, "
                      f"{floor_name(walker.end)} @ {walker.period}s] loop")
+    for person in room.people:
+        stops = ", ".join(floor_name(cell) + (f" wait {wait}s" if wait else "") for cell, wait in person.stops)
+        start = f" start {person.start}s" if person.start else ""
+        lines.append(f"    human {person.name} route [{stops}] speed {person.speed:g}{start} loop {person.behaviour}")
     lines.append(f"    robot {ROBOT} : {room.types.robot} on {floor_name(room.start)}")
     lines.append("  }")
     lines.append("  mission Tour {")

@@ -37,7 +37,8 @@ def write_base_case(rooms: RoomSettings, out: Path, log: Callable[[str], None] =
     path.write_text(render(room, 1, path.parent), encoding="utf-8")
     log(f"base case: {path} (generated room; `rei gen-rooms` with these settings writes the same first room)")
     log(f"  objects: {', '.join(f.name for f in room.furniture) or 'none'}; humans: "
-        f"{', '.join(w.name for w in room.walkers) or 'none'}; robot: {ROBOT}; goals: 0 to {len(room.goals) - 1}")
+        f"{', '.join([*(w.name for w in room.walkers), *(p.name for p in room.people)]) or 'none'}; robot: {ROBOT}; "
+        f"goals: 0 to {len(room.goals) - 1}")
     return path
 
 
