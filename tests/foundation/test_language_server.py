@@ -398,6 +398,53 @@ def test_a_person_on_a_route_is_hovered_outlined_and_checked(
     assert language_server.stop() == 0
 
 
+def test_a_crowd_and_a_group_are_hovered_outlined_and_checked(
+    language_server: LspClient, tmp_path: Path, repo_root: Path
+) -> None:
+    """A crowd and a group (docs/language.md, crowds and groups), in the example as written: its file is clean, the
+    crowd's hover says who its people are, how fast and when they set off and between which floors, the group's
+    who leads, and the outline lists both as it lists everything named in the room."""
+    text = (repo_root / "examples" / "people" / "crowds.rei").read_text(encoding="utf-8")
+    path = tmp_path / "crowds.rei"
+    path.write_text(text, encoding="utf-8")
+    uri = path.as_uri()
+    language_server.request("initialize", {"processId": None, "rootUri": tmp_path.as_uri(), "capabilities": {}},
+                            timeout=START_TIMEOUT_S)
+    language_server.notify("initialized", {})
+    language_server.notify("textDocument/didOpen",
+                           {"textDocument": {"uri": uri, "languageId": "rei", "version": 1, "text": text}})
+    published = language_server.wait_for(
+        lambda m: m.get("method") == "textDocument/publishDiagnostics" and m["params"]["uri"] == uri,
+        START_TIMEOUT_S, f"diagnostics for {path.name}")
+    assert published["params"]["diagnostics"] == []
+    lines = text.splitlines()
+
+    def hover(statement: str, word: str) -> str:
+        line = next(i for i, s in enumerate(lines) if statement in s)
+        result = language_server.request("textDocument/hover", {
+            "textDocument": {"uri": uri},
+            "position": {"line": line, "character": lines[line].index(word) + 1}}, timeout=START_TIMEOUT_S)
+        assert result is not None, f"no hover on {word!r}"
+        return result["contents"]["value"] if isinstance(result["contents"], dict) else str(result["contents"])
+
+    crowd = hover("crowd shoppers", "shoppers")
+    assert crowd.startswith("**Crowd shoppers**, 12 people (shoppers_1 to shoppers_12) walking at 1-1.4 m/s, "
+                            "setting off 1 a second from 0 s, back and forth; avoids:"), crowd
+    assert "\n- from F_0_2, F_0_3, F_0_4, F_0_5, F_1_2, F_1_3, F_1_4, F_1_5\n- to F_12_2, " in crowd, crowd
+    group = hover("group family", "family")
+    assert group.startswith("**Group family**, 3 people (family_1 leads, family_2 and family_3 keep near it), "
+                            "walking a route at 1-1.2 m/s in a loop; avoids:"), group
+    assert "- F_5_6, waits 2 s: x 5..6 m, y 6..7 m" in group, group
+    symbols = language_server.request("textDocument/documentSymbol", {"textDocument": {"uri": uri}},
+                                      timeout=START_TIMEOUT_S)
+
+    def names(items: list[Message]) -> list[str]:
+        return [n for s in items for n in [s["name"].rsplit(".", 1)[-1], *names(s.get("children") or [])]]
+
+    assert {"shoppers", "family", "tb3", "table1"} <= set(names(symbols)), names(symbols)
+    assert language_server.stop() == 0
+
+
 VEPL_TEXT = """\
 queryEvent closeFound as robotClose found
 queryEvent thesisFar() as findFarObject found
