@@ -373,6 +373,9 @@ final class ModelEditor {
 		}
 		if (route.getSpeed() != set.speed()) {
 			route.setSpeed(set.speed());
+			if (route.isSetSpeedTo()) {
+				route.unsetSpeedTo(); // a range's (speed 1.0 to 1.4) person now walks at the one speed given
+			}
 		}
 		if (route.getStart() != set.start()) {
 			route.setStart(set.start());

@@ -268,6 +268,15 @@ class PeopleEditTest {
 				"F_3_2"), 1.4, 4, true, "blocks"), "route [F_0_2, F_3_2] blocks loop start 4 speed 1.4");
 	}
 
+	/** A person whose speed is a range walks at the one speed given when it changes; the same speed keeps it. */
+	@Test
+	void aSpeedRangeBecomesTheSpeedGiven() {
+		assertRouteLine("route [F_0_2, F_3_2] speed 1.0 to 1.4 loop", new SetRoute("ann", stops("F_0_2", "F_3_2"), 0.7,
+				0, true, "avoids"), "route [F_0_2, F_3_2] speed 0.7 loop");
+		assertRouteLine("route [F_0_2, F_3_2] speed 1.0 to 1.4 loop", new SetRoute("ann", stops("F_0_2", "F_3_2"), 1.0,
+				3, true, "avoids"), "route [F_0_2, F_3_2] speed 1.0 to 1.4 loop start 3s");
+	}
+
 	private static List<Stop> stops(String... floors) {
 		return java.util.Arrays.stream(floors).map(floor -> new Stop(floor, 0)).toList();
 	}
