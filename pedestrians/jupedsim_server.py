@@ -143,8 +143,14 @@ class Server:
             sides = [self.seeing] if robot or self.blind is None else [self.seeing, self.blind]
             self.mover_agents.append([(side, self._add(side, "the robot" if robot else "a body on rails",
                                                        x, y, radius, 0.0)) for side in sides])
-        self.routing = jps.RoutingEngine(self.area)
-        self.legs = [self._legs(self.routing, p) for p in people]
+        # the ways are found where the widest person fits: the area opened by its radius has no gap narrower than a
+        # body (a way through one would stop a person in front of it for good); the area as it is where that fails
+        widest = max(self.radii, default=0.0) * 0.95
+        opened = shapely.set_precision(self.area.buffer(-widest).buffer(widest).intersection(self.area), 1e-6)
+        self.routing = jps.RoutingEngine(opened if not opened.is_empty else self.area)
+        self._opened = opened
+        self._full_routing: Any = None
+        self.legs = [self._legs(p) for p in people]
 
     def _add(self, side: _Side, name: str, x: float, y: float, radius: float, speed: float) -> int:
         try:
@@ -157,7 +163,7 @@ class Server:
             raise ValueError(f"{name} {what} at ({point[0]:.2f}, {point[1]:.2f}), outside the walkable area "
                              "(the floors less walls and furniture)")
 
-    def _legs(self, routing: Any, person: dict[str, Any]) -> list[list[list[float]]]:
+    def _legs(self, person: dict[str, Any]) -> list[list[list[float]]]:
         stops = [tuple(s) for s in person["stops"]]
         for i, stop in enumerate(stops):
             self._check_inside(person["name"], f"has stop {i + 1}", stop)
@@ -166,11 +172,8 @@ class Server:
             pairs.append((stops[-1], stops[0]))
         legs = []
         for a, b in pairs:
-            if not routing.is_routable(b) or not routing.is_routable(a):
-                raise ValueError(f"{person['name']} cannot walk from ({a[0]:.2f}, {a[1]:.2f}) to "
-                                 f"({b[0]:.2f}, {b[1]:.2f}): a stop is off the walkable area")
             try:
-                points = routing.compute_waypoints(a, b)
+                points = self._way(a, b)
             except RuntimeError as error:
                 raise ValueError(f"{person['name']} cannot walk from ({a[0]:.2f}, {a[1]:.2f}) to "
                                  f"({b[0]:.2f}, {b[1]:.2f}): {error}") from None
@@ -181,11 +184,25 @@ class Server:
             legs.append(kept)
         return legs
 
+    def _way(self, a: tuple[float, float], b: tuple[float, float]) -> list[tuple[float, float]]:
+        """The waypoints from ``a`` to ``b`` where the widest person fits, else on the area as it is."""
+        if self.routing.is_routable(a) and self.routing.is_routable(b):
+            try:
+                return list(self.routing.compute_waypoints(a, b))
+            except RuntimeError:
+                pass  # a and b in parts of the opened area that only a gap joins
+        if self._full_routing is None:
+            self._full_routing = jps.RoutingEngine(self.area)
+        if not (self._full_routing.is_routable(a) and self._full_routing.is_routable(b)):
+            raise RuntimeError("a stop is off the walkable area")
+        return list(self._full_routing.compute_waypoints(a, b))
+
     def route(self, start: list[float], end: list[float]) -> list[list[float]]:
         a, b = self._inside_target(*start), self._inside_target(*end)
-        if not (self.routing.is_routable(a) and self.routing.is_routable(b)):
+        try:
+            return [[float(q[0]), float(q[1])] for q in self._way(a, b)]
+        except RuntimeError:
             return [list(a), list(b)]
-        return [[float(q[0]), float(q[1])] for q in self.routing.compute_waypoints(a, b)]
 
     def _first_fitting(self, points: list[list[float]], radius: float) -> list[float]:
         if len(points) > 1:
