@@ -178,3 +178,22 @@ def test_what_the_robot_cost_the_people(run_cli, write_rei, tmp_path: Path) -> N
     blocking = cost("F_2_2", "blocking")  # standing on her straight line: she walks round it
     assert blocking["detour"] > 0.1 and blocking["delay"] > 0.1 and not blocking["censored"]
     assert blocking["walked"] == pytest.approx(blocking["walked_without_robot"] + blocking["detour"], abs=0.01)
+
+
+def test_no_way_through_a_gap_narrower_than_a_body(run_cli, tmp_path: Path) -> None:
+    # a generated room where a curious person's way on from the robot ran through the 0.15 m between a table and a
+    # chair: it stood in front of the gap from 24 s on; routed where a body fits, it walks round
+    rooms = tmp_path / "rooms"
+    result = run_cli("gen-rooms", "--size", "medium", "--humans", "3", "--people", "reactive", "--behaviour", "mixed",
+                     "--seed", "2", "--count", "1", "-o", rooms)
+    assert result.returncode == 0, result.stderr
+    (source,) = rooms.glob("*.rei")
+    folder = tmp_path / "case"
+    assert run_cli("generate", source, "-o", folder).returncode == 0
+    run_mission(folder, tmp_path / "run", MissionRunOptions(seed=0), run_id="gap")
+    from rei.wamp.recording import read_recording
+
+    track = [(m["t"], next(o["pose"][:2] for o in m["objects"] if o["name"] == "person3"))
+             for m in read_recording(tmp_path / "run" / "streams" / "state.msgpack")]
+    later = [xy for t, xy in track if 24.0 <= t <= 40.0]
+    assert max(math.dist(later[0], xy) for xy in later) > 1.0
