@@ -30,11 +30,14 @@ from rei.sim.native_output import quiet_native_output
 from rei.sim.odometry import WheelOdometry
 from rei.sim.people import DT as CROWD_DT
 from rei.sim.people import Crowd, CrowdPath, Mover, RobotView, footprint_radius
-from rei.sim.robot_model import load_robot, wheel_torque_for
+from rei.sim.robot_model import ROBOT_COLLISION_GROUP, load_robot, wheel_torque_for
 from rei.sim.state import ObjectState, RobotState, SimState
 from rei.sim.world_loader import GRAVITY, load_world
 from rei.spline import Trajectory
 from rei.sut.api import LaserScan, Observation, StaticMap
+
+#: The collision group of the people who see the robot: their mask is the robot's group alone.
+PEOPLE_COLLISION_GROUP = 0x4000
 
 MAX_ACCELERATION = 2.5
 """m/s^2 the wheel motors can give the robot: sets their torque limit (a TurtleBot3 manages about this)."""
@@ -185,6 +188,12 @@ class Simulation:
                              mass=world.object(person.name).mass, trajectory=CrowdPath(self._crowd, i))
                 for i, person in enumerate(people)], mode, self.dt, floors, GRAVITY)
             self._people.place(0.0)
+            # the model keeps people apart from each other, the walls and the furniture; in the physics they touch
+            # only the robot (and the lidar sees them): bodies pressed together by the model's tight spacing made
+            # hundreds of contacts a step, each pair costing the solver and the rays
+            for person in people:
+                p.setCollisionFilterGroupMask(self.world.body_of[person.name], -1, PEOPLE_COLLISION_GROUP,
+                                              ROBOT_COLLISION_GROUP, physicsClientId=client)
         self._animator = Animator(client, animated, mode, self.dt, floors, GRAVITY)
         self._animator.place(0.0)
         # Bodies loaded but never stepped keep stale broadphase bounds: rays would miss them in the first scan.
@@ -229,10 +238,9 @@ class Simulation:
         if self._crowd is not None and n >= self._next_crowd:
             self._crowd_steps += 1
             self._next_crowd = max(n + 1, math.ceil(self._crowd_steps * self.physics_rate * CROWD_DT - 1e-9))
-            t_next = self._next_crowd * self.dt
             robot = self._robot_view()
-            self._crowd.advance_to(t_next, robot, [(robot.x, robot.y), *(self._pose(b)[:2] for b in self._rails)])
-            self._people.update(self.t, t_next)
+            self._crowd.step(robot, [(robot.x, robot.y), *(self._pose(b)[:2] for b in self._rails)])
+            self._people.update(self.t, self._next_crowd * self.dt)
 
     def _robot_view(self) -> RobotView:
         x, y, _, yaw = self._pose(self._robot.body)

@@ -1,12 +1,13 @@
 # SPDX-License-Identifier: EPL-2.0
 """The reactive people of a run: the people server's model stepped in lockstep with the physics.
 
-The crowd steps every :data:`DT` seconds of simulated time (JuPedSim's models are made for 10-50 ms). Before each
-step it tells the model where the robot and the bodies on rails are (their true poses: the people see where the
-robot really is, not where the model last let it be) and where each person wants to go (``walkers``). The animator
-then moves each person's body in the physics towards the model's position, interpolated between the two latest
-crowd steps, as it moves a body on rails towards its trajectory: the body is still a solid the robot can touch and
-the lidar sees.
+The crowd steps every :data:`DT` seconds of simulated time (JuPedSim's models are made for 10-50 ms). Each step it
+tells the model where the robot and the bodies on rails are (their true poses: the people see where the robot
+really is, not where the model last let it be) and where each person wants to go (``walkers``). The model computes
+the step in its own process while the physics runs the next 50 ms (pipelined: on two cores the people cost little
+more than their bodies), and the animator moves each person's body in the physics towards the model's latest
+place, as it moves a body on rails towards its trajectory: one step behind the model, the body is still a solid
+the robot can touch and the lidar sees.
 """
 
 from __future__ import annotations
@@ -79,6 +80,7 @@ class Crowd:
         self._steps = 0
         self.robot_lag = 0.0  # the farthest the people's robot was from the true robot at a step (m)
         self._seen_robot: Point | None = None
+        self._pending = False  # a step asked for whose reply is not read yet
         self.walked = [Walked() for _ in people]
         self._rails: list[list[Point]] = []  # the bodies on rails at each step, for the run without the robot
 
@@ -90,24 +92,38 @@ class Crowd:
         reply = self._server.request({"op": "route", "from": list(a), "to": list(b)})
         return [(q[0], q[1]) for q in reply["waypoints"]]
 
-    def advance_to(self, t: float, robot: RobotView, movers: Sequence[Point]) -> None:
-        """Step until the crowd's time is at least ``t``; ``movers`` in the order given at the start, the robot
-        first."""
-        while self.t < t - 1e-9:
-            if self._seen_robot is not None:  # where the people saw the robot after the last step, and it is now
+    def step(self, robot: RobotView, movers: Sequence[Point]) -> None:
+        """One crowd step, at a multiple of DT; ``movers`` in the order given at the start, the robot first.
+
+        Pipelined: the model computes the step asked for now while the physics runs the next DT, and its places are
+        taken at the next call. So the people's bodies follow the model one step (50 ms) behind; the model itself is
+        given the robot's true pose of every step."""
+        if self._pending:
+            self._apply(self._server.receive("step"))
+            if self._seen_robot is not None:  # where the people saw the robot, and where it really was then
                 self.robot_lag = max(self.robot_lag, math.dist(self._seen_robot, movers[0]))
-            self._rails.append([tuple(m) for m in movers[1:]])  # type: ignore[misc]
-            reply = self._step(robot, movers)
-            self._seen_robot = (reply["seen"][0][0], reply["seen"][0][1])
+        self._rails.append([tuple(m) for m in movers[1:]])  # type: ignore[misc]
+        self._server.send({"op": "step", "movers": [list(m) for m in movers], "targets": self._targets(robot)})
+        self._pending = True
 
     def _step(self, robot: RobotView, movers: Sequence[Point]) -> dict:
+        """One crowd step, waiting for the model (the run without the robot)."""
+        reply = self._server.request({"op": "step", "movers": [list(m) for m in movers],
+                                      "targets": self._targets(robot)})
+        self._apply(reply)
+        return reply
+
+    def _targets(self, robot: RobotView) -> list[list]:
         targets = []
         for walker, at in zip(self.walkers, self._now, strict=True):
             speed, points = walker.target(self.t, at, robot)
             targets.append([speed, *(list(q) for q in points)])
-        reply = self._server.request({"op": "step", "movers": [list(m) for m in movers], "targets": targets})
+        return targets
+
+    def _apply(self, reply: dict) -> None:
         self._before = self._now
         self._now = [(q[0], q[1]) for q in reply["positions"]]
+        self._seen_robot = (reply["seen"][0][0], reply["seen"][0][1]) if reply["seen"] else None
         self._steps += 1
         self.t = self._steps * DT
         for i, (walker, (x0, y0), (x1, y1)) in enumerate(zip(self.walkers, self._before, self._now, strict=True)):
@@ -119,7 +135,6 @@ class Crowd:
             while len(walked.walked_at) < len(walker.arrivals):
                 walked.arrivals.append(walker.arrivals[len(walked.walked_at)])
                 walked.walked_at.append(walked.walked)
-        return reply
 
     def without_robot(self) -> list[Walked]:
         """The same people, seed and bodies on rails for as long as this crowd has run, without the robot: the model
@@ -128,19 +143,20 @@ class Crowd:
         alone = Crowd(self._world, [_seeing(p) for p in self._people], rails, seed=self._seed)
         try:
             nowhere = RobotView(math.inf, math.inf, 0.0, 0.0, 0.0, 0.0, 0.0)
-            for movers in self._rails:
+            for movers in self._rails[:self._steps]:  # the steps this crowd took (the last asked may be pending)
                 alone._step(nowhere, movers)
             return alone.walked
         finally:
             alone.close()
 
-    def position(self, index: int, t: float) -> Point:
-        """Person ``index``'s place in the model at ``t``, between the two latest steps (the latest after)."""
-        (x0, y0), (x1, y1) = self._before[index], self._now[index]
-        a = 1.0 if self._steps == 0 else min(1.0, max(0.0, (t - (self.t - DT)) / DT))
-        return (x0 + a * (x1 - x0), y0 + a * (y1 - y0))
+    def position(self, index: int) -> Point:
+        """Person ``index``'s place in the model after the latest step taken."""
+        return self._now[index]
 
     def close(self) -> None:
+        if self._pending:
+            self._pending = False
+            self._server.discard("step")
         self._server.close()
 
 
@@ -199,5 +215,5 @@ class CrowdPath:
         self._crowd = crowd
         self._index = index
 
-    def position(self, t: float) -> Point:
-        return self._crowd.position(self._index, t)
+    def position(self, t: float) -> Point:  # the animator asks for a time; the crowd has one place
+        return self._crowd.position(self._index)

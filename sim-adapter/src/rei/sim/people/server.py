@@ -61,6 +61,11 @@ class PeopleServer:
         self._buffer = b""
 
     def request(self, message: dict[str, Any], timeout: float = STEP_TIMEOUT) -> dict[str, Any]:
+        self.send(message)
+        return self.receive(message.get("op"), timeout)
+
+    def send(self, message: dict[str, Any]) -> None:
+        """Send a request without waiting for its reply (:meth:`receive` reads it)."""
         data = msgpack.packb(message, use_bin_type=True)
         stdin = self._process.stdin
         assert stdin is not None
@@ -69,10 +74,18 @@ class PeopleServer:
             stdin.flush()
         except (BrokenPipeError, OSError):
             raise self._dead(f"before {message.get('op')!r}") from None
-        reply = msgpack.unpackb(self._read(timeout, message.get("op")), raw=False)
+
+    def receive(self, op: Any, timeout: float = STEP_TIMEOUT) -> dict[str, Any]:
+        """The reply to the oldest request sent and not yet received; raises its error."""
+        reply = msgpack.unpackb(self._read(timeout, op), raw=False)
         if "error" in reply:
             raise PeopleError(str(reply["error"]))
         return reply
+
+    def discard(self, op: Any) -> None:
+        """Read and drop the reply of a request sent (a pending step when the run ends)."""
+        with contextlib.suppress(PeopleError):
+            self.receive(op, timeout=5.0)
 
     def _read(self, timeout: float, op: Any) -> bytes:
         deadline = time.monotonic() + timeout
