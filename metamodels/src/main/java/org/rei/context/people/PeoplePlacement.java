@@ -17,6 +17,7 @@ import java.util.Set;
 import java.util.TreeSet;
 
 import org.rei.catalogue.ObjectType;
+import org.rei.catalogue.Shape;
 import org.rei.context.BuildingBlock;
 import org.rei.context.Crowd;
 import org.rei.context.Direction;
@@ -24,18 +25,23 @@ import org.rei.context.Environment;
 import org.rei.context.Floor;
 import org.rei.context.Group;
 import org.rei.context.PhysicalObject;
+import org.rei.context.StaticObject;
+import org.rei.context.Wall;
 import org.rei.context.layout.Cell;
 import org.rei.context.layout.FloorLayout;
+import org.rei.context.layout.WallPlacement;
 
 /**
  * Where the people of crowds and groups stand and where a crowd's people walk to (docs/language.md, "Crowds and
  * groups"); the validator counts what it finds, the generator places the people on it, so both agree.
  * <p>
  * An <b>area</b> (a set of floors) holds the points of a square lattice of spacing {@code 2 * radius + 0.1} m: the
- * first point {@code radius + 0.05} m in from the bottom-left corner of the area's bounding box, the points in rows
- * from the bottom, each row from the left. A point is kept when its disc of {@code radius + 0.05} m lies on the
- * area's floors and crosses no wall between two of them, so people of that radius stand 0.1 m apart and 0.05 m in
- * from the area's edge. A crowd's {@link #from} and {@link #to} areas are its floors; a group's followers stand on
+ * first point {@code radius + 0.05} m in from the bottom-left corner of the area's bounding box (from the inner
+ * face of a wall along its left or bottom side: a wall stands half on its floor), the points in rows from the
+ * bottom, each row from the left. A point is kept when its disc of {@code radius + 0.05} m lies on the area's floors
+ * and touches no wall and no furniture's footprint (the simulation's walkable area, docs/people.md), so people of
+ * that radius stand 0.1 m apart and 0.05 m in from the area's edge: the people server refuses anyone nearer to a
+ * wall than its radius. A crowd's {@link #from} and {@link #to} areas are its floors; a group's followers stand on
  * the lattice of the leader's floor and of the free floors beside it, nearest the leader first, at least a spacing
  * from it ({@link #beside}).
  * <p>
@@ -59,6 +65,7 @@ public final class PeoplePlacement {
 	public record Spot(Floor floor, double x, double y) {
 	}
 
+	private final Environment environment;
 	private final FloorLayout layout;
 	private final ObjectType defaultHuman;
 	private final Map<Floor, PhysicalObject> starts = new LinkedHashMap<>();
@@ -66,6 +73,7 @@ public final class PeoplePlacement {
 	private final Map<Group, List<Spot>> beside = new IdentityHashMap<>();
 
 	private PeoplePlacement(Environment environment, FloorLayout layout, ObjectType defaultHuman) {
+		this.environment = environment;
 		this.layout = layout;
 		this.defaultHuman = defaultHuman;
 		starts.putAll(starts(environment));
@@ -179,8 +187,6 @@ public final class PeoplePlacement {
 		Map<Cell, Floor> area = new HashMap<>();
 		double originX = 0;
 		double originY = 0;
-		int minX = Integer.MAX_VALUE;
-		int minY = Integer.MAX_VALUE;
 		for (Floor floor : floors) {
 			Cell cell = floor == null ? null : layout.cellOf(floor).orElse(null);
 			if (cell == null) {
@@ -192,16 +198,29 @@ public final class PeoplePlacement {
 				originY = centre[1] - (cell.y() + 0.5) * size;
 			}
 			area.putIfAbsent(cell, floor);
-			minX = Math.min(minX, cell.x());
-			minY = Math.min(minY, cell.y());
 		}
 		if (area.isEmpty() || !(radius > 0) || !(size > 0)) {
 			return List.of();
 		}
-		Area a = new Area(area, size, originX, originY, radius + CLEARANCE);
+		double margin = radius + CLEARANCE;
 		double spacing = 2 * radius + GAP;
-		double firstX = originX + minX * size + a.margin;
-		double firstY = originY + minY * size + a.margin;
+		// the bounding box of the floors less the walls along their sides: a wall stands half on its floor
+		double left = Double.POSITIVE_INFINITY;
+		double bottom = Double.POSITIVE_INFINITY;
+		double right = Double.NEGATIVE_INFINITY;
+		double top = Double.NEGATIVE_INFINITY;
+		for (Map.Entry<Cell, Floor> e : area.entrySet()) {
+			double x0 = originX + e.getKey().x() * size;
+			double y0 = originY + e.getKey().y() * size;
+			left = Math.min(left, Math.max(x0, face(e.getValue(), Direction.LEFT, originX, originY)));
+			bottom = Math.min(bottom, Math.max(y0, face(e.getValue(), Direction.BOTTOM, originX, originY)));
+			right = Math.max(right, x0 + size);
+			top = Math.max(top, y0 + size);
+		}
+		Area a = new Area(area, size, originX, originY, margin, obstacles(left - margin, bottom - margin,
+				right + margin, top + margin, originX, originY));
+		double firstX = left + margin;
+		double firstY = bottom + margin;
 		// only points inside an area floor can be kept: enumerate those, row by row
 		TreeSet<Long> points = new TreeSet<>();
 		for (Cell cell : area.keySet()) {
@@ -229,25 +248,94 @@ public final class PeoplePlacement {
 		return spots;
 	}
 
+	/**
+	 * Where the inner face of the wall on a side of a floor is (x for LEFT, y for BOTTOM), or minus infinity when no
+	 * wall stands there.
+	 */
+	private double face(Floor floor, Direction side, double originX, double originY) {
+		if (!(layout.neighbour(floor, side) instanceof Wall wall)) {
+			return Double.NEGATIVE_INFINITY;
+		}
+		return layout.placementOf(wall).map(p -> side == Direction.LEFT ? originX + p.x() + p.sizeX() / 2
+				: originY + p.y() + p.sizeY() / 2).orElse(Double.NEGATIVE_INFINITY);
+	}
+
+	/**
+	 * What people cannot stand in, as the simulation's walkable area leaves it out: the walls and the furniture's
+	 * footprints (turned by their yaw), those that reach into a box.
+	 */
+	private List<Obstacle> obstacles(double minX, double minY, double maxX, double maxY, double originX,
+			double originY) {
+		List<Obstacle> near = new ArrayList<>();
+		for (WallPlacement wall : layout.walls()) {
+			Obstacle o = new Obstacle(originX + wall.x(), originY + wall.y(), wall.sizeX() / 2, wall.sizeY() / 2, 0,
+					false);
+			if (o.reaches(minX, minY, maxX, maxY)) {
+				near.add(o);
+			}
+		}
+		for (PhysicalObject object : environment.getOwnedObjects()) {
+			if (!(object instanceof StaticObject) || object.getFloor() == null || object.getType() == null
+					|| object.getType().eIsProxy() || layout.cellOf(object.getFloor()).isEmpty()) {
+				continue;
+			}
+			ObjectType type = object.getType();
+			double[] centre = layout.centreOf(object.getFloor());
+			boolean disc = type.getShape() == Shape.CYLINDER;
+			Obstacle o = new Obstacle(centre[0], centre[1], type.getSizeX() / 2,
+					(disc ? type.getSizeX() : type.getSizeY()) / 2, Math.toRadians(object.getYaw()), disc);
+			if (o.reaches(minX, minY, maxX, maxY)) {
+				near.add(o);
+			}
+		}
+		return near;
+	}
+
+	/** A box of half sizes hx, hy turned by yaw about its centre, or a disc of radius hx. */
+	private record Obstacle(double x, double y, double hx, double hy, double yaw, boolean disc) {
+
+		double distance(double px, double py) {
+			double dx = px - x;
+			double dy = py - y;
+			if (disc) {
+				return Math.max(0, Math.hypot(dx, dy) - hx);
+			}
+			double c = Math.cos(yaw);
+			double s = Math.sin(yaw);
+			double u = Math.abs(c * dx + s * dy) - hx;
+			double v = Math.abs(-s * dx + c * dy) - hy;
+			return Math.hypot(Math.max(u, 0), Math.max(v, 0));
+		}
+
+		/** Whether it may reach into the box (by its circumscribed circle). */
+		boolean reaches(double minX, double minY, double maxX, double maxY) {
+			double r = Math.hypot(hx, disc ? 0 : hy);
+			return x + r >= minX && x - r <= maxX && y + r >= minY && y - r <= maxY;
+		}
+	}
+
 	/** The cells of an area and what a disc on it must keep clear of. */
-	private final class Area {
+	private static final class Area {
 		final Map<Cell, Floor> cells;
 		final double size;
 		final double originX;
 		final double originY;
 		final double margin;
+		final List<Obstacle> obstacles;
 
-		Area(Map<Cell, Floor> cells, double size, double originX, double originY, double margin) {
+		Area(Map<Cell, Floor> cells, double size, double originX, double originY, double margin,
+				List<Obstacle> obstacles) {
 			this.cells = cells;
 			this.size = size;
 			this.originX = originX;
 			this.originY = originY;
 			this.margin = margin;
+			this.obstacles = obstacles;
 		}
 
 		/**
 		 * The floor holding the point when the disc of {@link #margin} around it lies on the area's floors and
-		 * crosses no wall between two of them (two floors side by side that are no neighbours), else {@code null}.
+		 * touches no wall and no furniture, else {@code null}.
 		 */
 		Floor covered(double x, double y) {
 			int fromX = (int) Math.floor((x - margin - originX) / size);
@@ -256,37 +344,24 @@ public final class PeoplePlacement {
 			int toY = (int) Math.floor((y + margin - originY) / size);
 			for (int cx = fromX; cx <= toX; cx++) {
 				for (int cy = fromY; cy <= toY; cy++) {
-					Floor floor = cells.get(new Cell(cx, cy));
-					if (floor == null) {
-						if (distance(x, y, cx, cy, cx + 1, cy + 1) < margin - EPS) {
-							return null;
-						}
-						continue;
-					}
-					Floor right = cells.get(new Cell(cx + 1, cy));
-					if (right != null && cx + 1 <= toX && !linked(floor, Direction.RIGHT, right, Direction.LEFT)
-							&& distance(x, y, cx + 1, cy, cx + 1, cy + 1) < margin - EPS) {
+					if (!cells.containsKey(new Cell(cx, cy)) && distance(x, y, cx, cy) < margin - EPS) {
 						return null;
 					}
-					Floor top = cells.get(new Cell(cx, cy + 1));
-					if (top != null && cy + 1 <= toY && !linked(floor, Direction.TOP, top, Direction.BOTTOM)
-							&& distance(x, y, cx, cy + 1, cx + 1, cy + 1) < margin - EPS) {
-						return null;
-					}
+				}
+			}
+			for (Obstacle obstacle : obstacles) {
+				if (obstacle.distance(x, y) < margin - EPS) {
+					return null;
 				}
 			}
 			return cells.get(new Cell((int) Math.floor((x - originX) / size), (int) Math.floor((y - originY) / size)));
 		}
 
-		/** From a point to the rectangle (or segment) between two cell corners, in metres. */
-		private double distance(double x, double y, int cx0, int cy0, int cx1, int cy1) {
-			double dx = Math.max(Math.max(originX + cx0 * size - x, 0), x - (originX + cx1 * size));
-			double dy = Math.max(Math.max(originY + cy0 * size - y, 0), y - (originY + cy1 * size));
+		/** From a point to a cell, in metres. */
+		private double distance(double x, double y, int cx, int cy) {
+			double dx = Math.max(Math.max(originX + cx * size - x, 0), x - (originX + (cx + 1) * size));
+			double dy = Math.max(Math.max(originY + cy * size - y, 0), y - (originY + (cy + 1) * size));
 			return Math.hypot(dx, dy);
-		}
-
-		private boolean linked(Floor a, Direction side, Floor b, Direction back) {
-			return layout.neighbour(a, side) == b || layout.neighbour(b, back) == a;
 		}
 	}
 }

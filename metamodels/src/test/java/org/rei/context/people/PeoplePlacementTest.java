@@ -14,6 +14,7 @@ import org.junit.jupiter.api.Test;
 import org.rei.catalogue.CatalogueFactory;
 import org.rei.catalogue.ObjectCategory;
 import org.rei.catalogue.ObjectType;
+import org.rei.catalogue.Shape;
 import org.rei.context.ContextFactory;
 import org.rei.context.Crowd;
 import org.rei.context.Environment;
@@ -67,7 +68,7 @@ class PeoplePlacementTest {
 	private static List<String> points(List<PeoplePlacement.Spot> spots) {
 		List<String> points = new ArrayList<>();
 		for (PeoplePlacement.Spot spot : spots) {
-			points.add(String.format(Locale.ROOT, "%s (%.1f, %.1f)", spot.floor().getName(), spot.x(), spot.y()));
+			points.add(String.format(Locale.ROOT, "%s (%.2f, %.2f)", spot.floor().getName(), spot.x(), spot.y()));
 		}
 		return points;
 	}
@@ -77,8 +78,9 @@ class PeoplePlacementTest {
 		grid(6, 4);
 		List<Floor> area = List.of(grid[1][1], grid[2][1], grid[1][2], grid[2][2]);
 
-		assertEquals(List.of("F_1_1 (1.3, 1.3)", "F_1_1 (1.9, 1.3)", "F_2_1 (2.5, 1.3)", "F_1_1 (1.3, 1.9)",
-				"F_1_1 (1.9, 1.9)", "F_2_1 (2.5, 1.9)", "F_1_2 (1.3, 2.5)", "F_1_2 (1.9, 2.5)", "F_2_2 (2.5, 2.5)"),
+		assertEquals(List.of("F_1_1 (1.30, 1.30)", "F_1_1 (1.90, 1.30)", "F_2_1 (2.50, 1.30)",
+				"F_1_1 (1.30, 1.90)", "F_1_1 (1.90, 1.90)", "F_2_1 (2.50, 1.90)", "F_1_2 (1.30, 2.50)",
+				"F_1_2 (1.90, 2.50)", "F_2_2 (2.50, 2.50)"),
 				points(placement().lattice(area, 0.25)));
 	}
 
@@ -88,9 +90,9 @@ class PeoplePlacementTest {
 		grid(4, 4);
 		List<Floor> corner = List.of(grid[0][0], grid[1][0], grid[0][1]);
 
-		assertEquals(List.of("F_0_0 (0.3, 0.3)", "F_0_0 (0.9, 0.3)", "F_1_0 (1.5, 0.3)", "F_0_0 (0.3, 0.9)",
-				"F_0_1 (0.3, 1.5)"), points(placement().lattice(corner, 0.25)));
-		assertEquals(List.of("F_3_3 (3.3, 3.3)"), points(placement().lattice(List.of(grid[3][3]), 0.25)));
+		assertEquals(List.of("F_0_0 (0.30, 0.30)", "F_0_0 (0.90, 0.30)", "F_1_0 (1.50, 0.30)", "F_0_0 (0.30, 0.90)",
+				"F_0_1 (0.30, 1.50)"), points(placement().lattice(corner, 0.25)));
+		assertEquals(List.of("F_3_3 (3.30, 3.30)"), points(placement().lattice(List.of(grid[3][3]), 0.25)));
 		assertEquals(List.of(), points(placement().lattice(List.of(grid[3][3]), 0.5)), "a 1 m disc needs more");
 	}
 
@@ -117,8 +119,40 @@ class PeoplePlacementTest {
 		robot.setFloor(c);
 		env.setOwnedRobot(robot);
 
-		assertEquals(List.of("A (0.3, 0.3)", "B (1.5, 0.3)", "A (0.3, 0.9)", "B (1.5, 0.9)", "C (0.3, 1.5)",
-				"C (0.9, 1.5)", "D (1.5, 1.5)"), points(placement().lattice(List.of(a, b, c, d), 0.25)));
+		assertEquals(List.of("A (0.30, 0.30)", "B (1.50, 0.30)", "A (0.30, 0.90)", "B (1.50, 0.90)",
+				"C (0.30, 1.50)", "C (0.90, 1.50)", "D (1.50, 1.50)"),
+				points(placement().lattice(List.of(a, b, c, d), 0.25)));
+	}
+
+	/**
+	 * As the simulation's walkable area leaves them out: a wall stands half on its floor, so the lattice starts at
+	 * its inner face, and furniture reaching over from the next floor keeps people off.
+	 */
+	@Test
+	void wallsAndFurnitureKeepPeopleOff() {
+		grid(3, 2);
+		Wall wall = F.createWall();
+		wall.setName("W");
+		env.getOwnedBlocks().add(wall);
+		grid[0][0].setLeft(wall);
+		ObjectType bench = CatalogueFactory.eINSTANCE.createObjectType();
+		bench.setName("Bench");
+		bench.setCategory(ObjectCategory.STATIC);
+		bench.setShape(Shape.BOX);
+		bench.setSizeX(1.6);
+		bench.setSizeY(0.8);
+		StaticObject object = F.createStaticObject();
+		object.setName("bench");
+		object.setType(bench);
+		object.setFloor(grid[2][0]);
+		env.getOwnedObjects().add(object);
+
+		assertEquals(List.of("F_0_0 (0.35, 0.30)", "F_0_0 (0.95, 0.30)"),
+				points(placement().lattice(List.of(grid[0][0], grid[1][0]), 0.25)),
+				"from the wall's face at 0.05; (1.55, 0.30) is 0.15 m from the bench's end at 1.7");
+		object.setYaw(90);
+		assertEquals(List.of("F_0_0 (0.35, 0.30)", "F_0_0 (0.95, 0.30)", "F_1_0 (1.55, 0.30)"),
+				points(placement().lattice(List.of(grid[0][0], grid[1][0]), 0.25)), "turned, it reaches no further");
 	}
 
 	@Test
@@ -133,12 +167,12 @@ class PeoplePlacementTest {
 		big.setCategory(ObjectCategory.HUMAN);
 		big.setSizeX(0.3);
 
-		assertEquals(List.of("F_1_0 (1.3, 0.3)", "F_1_0 (1.3, 0.9)", "F_1_1 (1.3, 1.5)"),
+		assertEquals(List.of("F_1_0 (1.30, 0.30)", "F_1_0 (1.30, 0.90)", "F_1_1 (1.30, 1.50)"),
 				points(placement().from(crowd)));
-		assertEquals(List.of("F_5_1 (5.3, 1.3)"), points(placement().to(crowd)));
+		assertEquals(List.of("F_5_1 (5.30, 1.30)"), points(placement().to(crowd)));
 		crowd.setType(big);
 		assertEquals(0.15, placement().radius(crowd));
-		assertEquals(List.of("F_5_1 (5.2, 1.2)", "F_5_1 (5.6, 1.2)", "F_5_1 (5.2, 1.6)", "F_5_1 (5.6, 1.6)"),
+		assertEquals(List.of("F_5_1 (5.20, 1.20)", "F_5_1 (5.60, 1.20)", "F_5_1 (5.20, 1.60)", "F_5_1 (5.60, 1.60)"),
 				points(placement().to(crowd)));
 	}
 
@@ -152,8 +186,8 @@ class PeoplePlacementTest {
 		grid(5, 5);
 		Group family = group("family", 3, grid[2][2]);
 		List<String> cross = points(placement().beside(family));
-		assertEquals(List.of("F_2_1 (2.5, 1.9)", "F_1_2 (1.9, 2.5)", "F_3_2 (3.1, 2.5)", "F_2_3 (2.5, 3.1)",
-				"F_2_1 (2.5, 1.3)", "F_1_2 (1.3, 2.5)", "F_3_2 (3.7, 2.5)", "F_2_3 (2.5, 3.7)"), cross);
+		assertEquals(List.of("F_2_1 (2.50, 1.90)", "F_1_2 (1.90, 2.50)", "F_3_2 (3.10, 2.50)", "F_2_3 (2.50, 3.10)",
+				"F_2_1 (2.50, 1.30)", "F_1_2 (1.30, 2.50)", "F_3_2 (3.70, 2.50)", "F_2_3 (2.50, 3.70)"), cross);
 
 		StaticObject table = F.createStaticObject();
 		table.setName("table");
@@ -165,11 +199,11 @@ class PeoplePlacementTest {
 		crowd.getTo().add(grid[1][2]);
 		env.getOwnedObjects().add(1, crowd);
 		// an L of three floors: the lattice starts at its own corner
-		assertEquals(List.of("F_3_2 (3.5, 2.3)", "F_2_3 (2.3, 3.5)"), points(placement().beside(family)),
+		assertEquals(List.of("F_3_2 (3.50, 2.30)", "F_2_3 (2.30, 3.50)"), points(placement().beside(family)),
 				"the table's floor and the crowd's to floor are not free");
 
 		Group friends = group("friends", 2, grid[3][3]);
-		assertEquals(List.of("F_4_3 (4.5, 3.3)", "F_3_4 (3.3, 4.5)"), points(placement().beside(friends)),
+		assertEquals(List.of("F_4_3 (4.50, 3.30)", "F_3_4 (3.30, 4.50)"), points(placement().beside(friends)),
 				"family's two followers stand on F_3_2 and F_2_3, which are not free for friends");
 	}
 
