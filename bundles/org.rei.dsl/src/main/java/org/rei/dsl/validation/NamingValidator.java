@@ -54,6 +54,9 @@ public class NamingValidator extends ReiCheckBase {
 	 */
 	@Check
 	public void checkPeopleNames(Environment environment) {
+		if (environment.getOwnedObjects().stream().noneMatch(o -> o instanceof Crowd || o instanceof Group)) {
+			return; // a room of a hundred thousand floors is not read through for nothing
+		}
 		Map<String, Map<Integer, SimulationObject>> numbered = new HashMap<>();
 		Stream.concat(Stream.concat(environment.getOwnedBlocks().stream(), environment.getOwnedObjects().stream()),
 				Stream.ofNullable(environment.getOwnedRobot())).forEach(element -> {
