@@ -16,12 +16,15 @@ between the stops of a route.
 Requests:
 ``init``  ``dt``, ``seed``, ``floors`` ``[[x0, y0, x1, y1], ...]``, ``obstacles`` ``[[x, y, yaw, sx, sy, circle],
           ...]``, ``movers`` ``[[x, y, radius, robot], ...]`` (the robot and the bodies on rails: seen, not moved),
-          ``people`` ``[{name, x, y, radius, speed, sees_robot, stops: [[x, y], ...], loop}, ...]``.
+          ``people`` ``[{name, x, y, radius, speed, sees_robot, stops: [[x, y], ...], loop, time_gap?}, ...]``
+          (``time_gap``: the model's time headway to the person ahead, for a group that walks closer than
+          strangers; the model's own 1.06 s otherwise).
           Reply: ``legs``, per person the waypoints of each leg of its route (stop i to stop i + 1, and the last
           back to the first for a loop).
 ``step``  ``movers`` ``[[x, y], ...]`` where they are now; ``targets`` ``[[speed, [x, y], ...], ...]`` per person:
           its desired speed and where it would go, in order of preference: the first point where the person fits
-          (its radius from every wall and piece of furniture) is taken, else the first.
+          (its radius from every wall and piece of furniture) is taken, else the first; a point ``[x, y, speed]``
+          brings its own desired speed.
           Reply: ``positions`` ``[[x, y], ...]`` per person after one step of ``dt``, and ``seen`` ``[[x, y], ...]``
           where the people who see them had each mover (it may lag behind a mover that pushes into a crowd).
 ``route`` ``from``, ``to``: reply ``waypoints``, the way the routing engine finds between them (for a person back
@@ -84,9 +87,12 @@ class _Side:
         self._steered: dict[int, tuple[float, float, float]] = {}
         self.positions: dict[int, tuple[float, float]] = {}
 
-    def add(self, x: float, y: float, radius: float, speed: float) -> int:
-        agent = self.sim.add_agent(jps.AnticipationVelocityModelAgentParameters(
-            journey_id=self.journey, stage_id=self.stage, position=(x, y), radius=radius, desired_speed=speed))
+    def add(self, x: float, y: float, radius: float, speed: float, time_gap: float | None = None) -> int:
+        parameters = jps.AnticipationVelocityModelAgentParameters(
+            journey_id=self.journey, stage_id=self.stage, position=(x, y), radius=radius, desired_speed=speed)
+        if time_gap is not None:
+            parameters.time_gap = time_gap
+        agent = self.sim.add_agent(parameters)
         self.positions[agent] = (x, y)
         return agent
 
@@ -136,7 +142,8 @@ class Server:
         for p, sees in zip(people, self.sees, strict=True):
             own, other = (self.seeing, self.blind) if sees else (self.blind, self.seeing)
             assert own is not None
-            self.walkers.append((own, self._add(own, p["name"], p["x"], p["y"], p["radius"], p["speed"])))
+            self.walkers.append((own, self._add(own, p["name"], p["x"], p["y"], p["radius"], p["speed"],
+                                                p.get("time_gap"))))
             self.puppets.append(None if other is None else
                                 (other, self._add(other, p["name"], p["x"], p["y"], p["radius"], p["speed"])))
         for x, y, radius, robot in movers:
@@ -152,9 +159,10 @@ class Server:
         self._full_routing: Any = None
         self.legs = [self._legs(p) for p in people]
 
-    def _add(self, side: _Side, name: str, x: float, y: float, radius: float, speed: float) -> int:
+    def _add(self, side: _Side, name: str, x: float, y: float, radius: float, speed: float,
+             time_gap: float | None = None) -> int:
         try:
-            return side.add(x, y, radius, speed)
+            return side.add(x, y, radius, speed, time_gap)
         except RuntimeError as error:
             raise ValueError(f"{name} cannot stand at ({x:.2f}, {y:.2f}): {error}") from None
 
@@ -219,7 +227,7 @@ class Server:
         """:meth:`_inside_target` of every point, tested at once (a point at a time costs more than the model)."""
         if not points:
             return []
-        xy = np.asarray(points, dtype=float)
+        xy = np.asarray([q[:2] for q in points], dtype=float)
         inside = shapely.contains_xy(self._inside, xy[:, 0], xy[:, 1])
         return [(float(x), float(y)) if ok else self._inside_target(x, y)
                 for (x, y), ok in zip(xy.tolist(), inside.tolist(), strict=True)]
@@ -236,9 +244,9 @@ class Server:
                 self._follow(side, agent, (x, y))
         chosen = [self._first_fitting(points, radius)
                   for radius, (_, *points) in zip(self.radii, request["targets"], strict=True)]
-        for (side, agent), target, (speed, *_) in zip(self.walkers, self._inside_targets(chosen),
-                                                      request["targets"], strict=True):
-            side.steer(agent, target, speed)
+        for (side, agent), target, point, (speed, *_) in zip(self.walkers, self._inside_targets(chosen), chosen,
+                                                             request["targets"], strict=True):
+            side.steer(agent, target, point[2] if len(point) > 2 else speed)
         for puppet, (side, agent) in zip(self.puppets, self.walkers, strict=True):
             if puppet is not None:
                 self._follow(*puppet, side.position(agent))

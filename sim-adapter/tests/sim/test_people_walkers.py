@@ -135,19 +135,28 @@ def test_a_scared_person_backs_away_from_a_near_robot() -> None:
     assert points[0][0] < -1.0 and speed > 1.0
 
 
-def test_a_follower_keeps_its_place_abreast_of_its_leader_and_arrives_with_it() -> None:
+def test_a_follower_keeps_its_place_abreast_of_its_leader_or_on_its_trail_and_arrives_with_it() -> None:
     from rei.sim.people.walkers import Follower
 
     leader = walker(person())
-    places = {"leader": (0.0, 0.0)}
-    first = Follower(person(), 0.25, 1, leader, lambda: (places["leader"], 0.0))
-    second = Follower(person(), 0.25, 2, leader, lambda: (places["leader"], 0.0))
-    third = Follower(person(), 0.25, 3, leader, lambda: (places["leader"], 0.0))
     spacing = 2 * 0.25 + 0.1
-    assert first.target(0.0, (0.0, spacing), FAR) == (0.0, [(0.0, spacing)])  # in its place: stands
-    assert second.target(0.0, (0.0, 0.0), FAR)[1] == [pytest.approx((0.0, -spacing))]  # the leader's right
-    assert third.target(0.0, (0.0, 0.0), FAR)[1] == [pytest.approx((-spacing, spacing / 2))]  # behind, left
-    speed, _ = first.target(0.0, (-2.0, spacing), FAR)
-    assert speed == pytest.approx(1.3)  # far behind: catches up
+    state: dict = {"trail": None}
+
+    def place():
+        return (0.0, 0.0), 0.0, state["trail"]
+
+    first, second, third = (Follower(person(), 0.25, k, leader, place) for k in (1, 2, 3))
+    assert first.target(0.0, (0.0, -1.0), FAR) == (0.0, [(0.0, -1.0)])  # the leader has not set off: stands
+    state["trail"] = lambda back: (-back, 0.0)  # it came along the x axis
+    assert first.target(0.0, (0.0, spacing), FAR)[0] == 0.0  # in its place: stands
+    # abreast on the left, else in file on the trail; the second on the right; the third behind on the left; each
+    # place with the pace that gets there: twice the walk a metre or more off, standing when there
+    assert first.target(0.0, (0.0, 0.0), FAR)[1] == [pytest.approx((0.0, spacing, 1.6)),
+                                                     pytest.approx((-spacing, 0.0, 1.6))]
+    assert second.target(0.0, (0.0, 0.0), FAR)[1] == [pytest.approx((0.0, -spacing, 1.6)),
+                                                      pytest.approx((-2 * spacing, 0.0, 2.0))]
+    assert third.target(0.0, (0.0, 0.0), FAR)[1] == [pytest.approx((-spacing, spacing / 2, 1.0 + math.hypot(
+        spacing, spacing / 2))), pytest.approx((-3 * spacing, 0.0, 2.0))]
+    assert first.target(0.0, (-spacing, 0.0), FAR)[1][1][2] == 0.0
     walk(leader, 6.0)
     assert first.arrivals == leader.arrivals == [pytest.approx(3.85, abs=0.06)]

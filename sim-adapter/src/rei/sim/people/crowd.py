@@ -13,7 +13,7 @@ the robot can touch and the lidar sees.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -25,6 +25,9 @@ from rei.sim.people.walkers import Follower, Point, RobotView, Walker
 
 #: Crowd step (s).
 DT = 0.05
+#: The model's time headway (s) of a group's members: they walk a step apart, where strangers keep about a second
+#: (the model's own 1.06 s), which would string a group out over metres at a walk.
+GROUP_TIME_GAP = 0.3
 
 
 @dataclass(frozen=True, slots=True)
@@ -72,7 +75,8 @@ class Crowd:
         speeds = [p.speed if p.speed_to is None else float(draw.uniform(p.speed, p.speed_to)) for p in people]
         reply = self._server.request(_init(world, people, radii, speeds, movers, seed), timeout=INIT_TIMEOUT)
         self.walkers = _walkers(people, radii, speeds, reply["legs"], self._route, self._heading)
-        start = [(p.route[0].x, p.route[0].y) for p in people]
+        # where each body stands in world.json: its first stop, or, for a group's follower, its own place beside it
+        start = [(bodies[p.name].pose[0], bodies[p.name].pose[1]) for p in people]
         self._before = start
         self._now = start
         self._headings = [0.0] * len(people)
@@ -82,11 +86,26 @@ class Crowd:
         self._seen_robot: Point | None = None
         self._pending = False  # a step asked for whose reply is not read yet
         self.walked = [Walked() for _ in people]
+        self._trails: dict[int, list[tuple[float, Point]]] = {  # a group leader's last places, by distance walked
+            i: [] for i, p in enumerate(people) if p.group is not None and _leads(p, people)}
         self._rails: list[list[Point]] = []  # the bodies on rails at each step, for the run without the robot
 
-    def _heading(self, index: int) -> tuple[Point, float]:
-        """A person's place now and its heading (the way it last moved)."""
-        return self._now[index], self._headings[index]
+    def _heading(self, index: int) -> tuple[Point, float, Callable[[float], Point] | None]:
+        """A leader's place now, its heading (the way it last moved) and its trail: where it was when it had walked
+        ``back`` metres less than now (None before it has walked)."""
+        walked = self.walked[index].walked
+        if walked <= 0.0:
+            return self._now[index], self._headings[index], None
+        trail = self._trails.setdefault(index, [])
+
+        def back(distance: float) -> Point:
+            wanted = walked - distance
+            for at, place in reversed(trail):
+                if at <= wanted:
+                    return place
+            return trail[0][1] if trail else self._now[index]
+
+        return self._now[index], self._headings[index], back
 
     def _route(self, a: Point, b: Point) -> list[Point]:
         reply = self._server.request({"op": "route", "from": list(a), "to": list(b)})
@@ -132,6 +151,10 @@ class Crowd:
                 self._headings[i] = math.atan2(y1 - y0, x1 - x0)
             walked = self.walked[i]
             walked.walked += step
+            if i in self._trails and step > 0.0:
+                self._trails[i].append((walked.walked, (x1, y1)))
+                if len(self._trails[i]) > 400:  # 20 s of walk: more than any follower looks back
+                    del self._trails[i][:200]
             while len(walked.walked_at) < len(walker.arrivals):
                 walked.arrivals.append(walker.arrivals[len(walked.walked_at)])
                 walked.walked_at.append(walked.walked)
@@ -174,12 +197,17 @@ def _init(world: WorldSpec, people: Sequence[PersonSpec], radii: Sequence[float]
                  for o in world.objects if o.category.value in ("WALL", "STATIC")]
     return {"op": "init", "protocol": PROTOCOL, "dt": DT, "seed": seed, "floors": floors, "obstacles": obstacles,
             "movers": [[m.x, m.y, m.radius, m.robot] for m in movers],
-            "people": [{"name": p.name, "x": p.route[0].x, "y": p.route[0].y, "radius": r, "speed": v,
+            "people": [{"name": p.name, "x": x, "y": y, "radius": r, "speed": v,
                         "sees_robot": p.behaviour is not Behaviour.IGNORES,
-                        "stops": [[s.x, s.y] for s in p.route] if _leads(p, people) else [[p.route[0].x,
-                                                                                           p.route[0].y]],
-                        "loop": p.loop}
-                       for p, r, v in zip(people, radii, speeds, strict=True)]}
+                        # a follower walks no route of its own: it keeps its place by its leader
+                        "stops": [[s.x, s.y] for s in p.route] if _leads(p, people) else [[x, y]],
+                        "loop": p.loop, **({"time_gap": GROUP_TIME_GAP} if p.group is not None else {})}
+                       for p, r, v, (x, y) in zip(people, radii, speeds, _places(world, people), strict=True)]}
+
+
+def _places(world: WorldSpec, people: Sequence[PersonSpec]) -> list[Point]:
+    bodies = {o.name: o for o in world.objects}
+    return [(bodies[p.name].pose[0], bodies[p.name].pose[1]) for p in people]
 
 
 def _leads(person: PersonSpec, people: Sequence[PersonSpec]) -> bool:

@@ -101,9 +101,10 @@ class Walker:
     def engaged(self) -> bool:
         return self._engaged is not None
 
-    def target(self, t: float, at: Point, robot: RobotView) -> tuple[float, list[Point]]:
+    def target(self, t: float, at: Point, robot: RobotView) -> tuple[float, list[tuple[float, ...]]]:
         """``(speed, points)``: how fast the person at ``at`` would like to walk at time ``t``, and where: the first
-        of ``points`` where it fits (a way round the robot has two sides)."""
+        of ``points`` where it fits (a way round the robot has two sides); a point ``(x, y, speed)`` brings its
+        own speed."""
         speed = self.speed
         if t < self.spec.start:
             return (0.0, [at])
@@ -214,30 +215,42 @@ class Walker:
 
 
 class Follower(Walker):
-    """A member of a group who is not its leader: it keeps its place beside or behind the leader (``leader``: the
-    leader's place now and its heading), around the robot as the leader goes; it reaches the leader's stops when
-    the leader does."""
+    """A member of a group who is not its leader: it keeps its place beside or behind the leader, or, where that
+    place is a wall or furniture (a group along a wall, through a door), walks in file on the leader's trail; it
+    goes round the robot as the leader does, and reaches the leader's stops when the leader does. ``place``: the
+    leader's place now, its heading and its trail (rei.sim.people.crowd)."""
 
     def __init__(self, spec: PersonSpec, radius: float, slot: int, leader: Walker,
-                 place: Callable[[], tuple[Point, float]], speed: float | None = None) -> None:
+                 place: Callable[[], tuple[Point, float, Callable[[float], Point] | None]],
+                 speed: float | None = None) -> None:
         super().__init__(spec, radius, [], lambda a, b: [a, b], speed)
         self._leader = leader
         self._place = place
         self.arrivals = leader.arrivals  # the group arrives together
-        spacing = 2 * radius + 0.1
+        spacing = self._spacing = 2 * radius + 0.1
+        self._slot = slot
         row, side = (slot - 1) // 2, 1.0 if slot % 2 else -1.0
         # the first two abreast of the leader, the others in pairs behind
         self._offset = (0.0, side * spacing) if row == 0 else (-spacing * row, side * spacing / 2)
 
-    def target(self, t: float, at: Point, robot: RobotView) -> tuple[float, list[Point]]:
-        if t < self.spec.start:
+    def target(self, t: float, at: Point, robot: RobotView) -> tuple[float, list[tuple[float, ...]]]:
+        (lx, ly), heading, trail = self._place()
+        if t < self.spec.start or trail is None:  # the leader has not set off: it has no heading yet
             return (0.0, [at])
-        (lx, ly), heading = self._place()
         c, s = math.cos(heading), math.sin(heading)
         lon, lat = self._offset
         slot = (lx + c * lon - s * lat, ly + s * lon + c * lat)
-        far = math.dist(at, slot)
-        # catch up when behind, stand when the leader stands and the place is taken
-        speed = 0.0 if far < ARRIVE_STOP else min(3.0, max(self._leader.speed, self.speed) * (1.3 if far > 0.5
-                                                                                             else 1.0))
-        return (speed, self._around(at, slot, robot))
+        in_file = trail(self._spacing * self._slot)
+        ways = self._around(at, slot, robot)
+        if ways != [slot]:  # going round the robot
+            return (self._pace(math.dist(at, slot)), ways)
+        # each place with the pace that gets there: the model takes the first where the person fits
+        return (self._pace(math.dist(at, slot)), [(*slot, self._pace(math.dist(at, slot))),
+                                                  (*in_file, self._pace(math.dist(at, in_file)))])
+
+    def _pace(self, far: float) -> float:
+        """Stand when at the place (the leader stands, the place is taken); behind, hurry: up to twice the pace
+        a metre off."""
+        if far < ARRIVE_STOP:
+            return 0.0
+        return min(3.0, max(self._leader.speed, self.speed) * (1.0 + min(far, 1.0)))
