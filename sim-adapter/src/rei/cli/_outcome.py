@@ -19,10 +19,11 @@ def print_verdicts(summary: Any) -> None:
 
 def write_views(out: Path) -> None:
     """report.html and run.mcap; a failure here must not hide the verdicts printed before."""
-    from rei.report import write_mcap, write_report
+    from rei.report import write_views as write_both
 
     try:
-        print(f"report: {write_report(out)}")
-        print(f"mcap:   {write_mcap(out)} (open in Foxglove Studio)")
+        report, mcap = write_both(out)
+        print(f"report: {report}")
+        print(f"mcap:   {mcap} (open in Foxglove Studio)")
     except Exception as error:  # noqa: BLE001 - the run's results are already written
         print(f"rei: no report: {type(error).__name__}: {error}", file=sys.stderr)

@@ -58,17 +58,19 @@ code{font-size:12px}
 """
 
 
-def write_report(out_dir: Path, case_dir: Path | None = None) -> Path:
-    """Write `OUT/report.html` for the run in `out_dir` (case files in `case_dir`, default OUT/case)."""
-    data = load_run(Path(out_dir), case_dir)
+def write_report(out_dir: Path, case_dir: Path | None = None, *, data: RunData | None = None,
+                 tracks: Tracks | None = None) -> Path:
+    """Write `OUT/report.html` for the run in `out_dir` (case files in `case_dir`, default OUT/case); ``data`` and
+    ``tracks``: the run already read (rei.report.write_views reads it once for both views)."""
+    data = data or load_run(Path(out_dir), case_dir)
     path = Path(out_dir) / REPORT_NAME
-    path.write_text(render_report(data), encoding="utf-8")
+    path.write_text(render_report(data, tracks), encoding="utf-8")
     return path
 
 
-def render_report(data: RunData) -> str:
+def render_report(data: RunData, tracks: Tracks | None = None) -> str:
     """The whole page as text."""
-    tracks = collect_tracks(data.states())
+    tracks = tracks or collect_tracks(data.states())
     data.state_count = tracks.states
     title = _title(data)
     sections = [

@@ -33,7 +33,7 @@ from mcap.writer import Writer
 from rei.report import foxglove as fg
 from rei.report.decimate import decimate
 from rei.report.run_data import RunData, load_run
-from rei.report.tracks import collect_tracks
+from rei.report.tracks import Tracks, collect_tracks
 
 MCAP_NAME = "run.mcap"
 PROFILE = ""  # not ROS: plain JSON messages
@@ -41,21 +41,24 @@ _BELIEF_RGBA = (0.9, 0.49, 0.13, 0.35)
 _ROBOT_RGBA = (0.12, 0.23, 0.58, 1.0)
 
 
-def write_mcap(out_dir: Path, case_dir: Path | None = None) -> Path:
-    """Write `OUT/run.mcap` for the run in `out_dir` (case files in `case_dir`, default OUT/case)."""
-    data = load_run(Path(out_dir), case_dir)
+def write_mcap(out_dir: Path, case_dir: Path | None = None, *, data: RunData | None = None,
+               tracks: Tracks | None = None) -> Path:
+    """Write `OUT/run.mcap` for the run in `out_dir` (case files in `case_dir`, default OUT/case); ``data`` and
+    ``tracks``: the run already read (rei.report.write_views reads it once for both views)."""
+    data = data or load_run(Path(out_dir), case_dir)
     path = Path(out_dir) / MCAP_NAME
     with open(path, "wb") as f:
-        _McapRun(data, Writer(f)).write()
+        _McapRun(data, Writer(f), tracks).write()
     return path
 
 
 class _McapRun:
     """One MCAP file being written: schemas and channels registered on first use, messages in time order."""
 
-    def __init__(self, data: RunData, writer: Writer) -> None:
+    def __init__(self, data: RunData, writer: Writer, tracks: Tracks | None = None) -> None:
         self.data = data
         self.writer = writer
+        self.tracks = tracks
         self.schemas: dict[str, int] = {}
         self.channels: dict[str, int] = {}
         self.sequence: dict[str, int] = {}
@@ -71,7 +74,7 @@ class _McapRun:
         if occupancy is not None:
             self.publish("/map", "Grid", t0, fg.occupancy_grid(t0, occupancy.grid, occupancy.resolution,
                                                                 occupancy.origin[0], occupancy.origin[1]))
-        tracks = collect_tracks(self.data.states())
+        tracks = self.tracks or collect_tracks(self.data.states())
         if len(tracks.robot):
             paths = [fg.line_entity(t0, "true_path", decimate(tracks.robot.xy()), _ROBOT_RGBA)]
             if len(tracks.believed):
