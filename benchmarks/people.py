@@ -21,8 +21,8 @@ its people server and the navigation have started):
 
 - real-time factor: simulated seconds / wall seconds of the loop (navigation included);
 - mean step time: wall time of ``Simulation.step`` (physics, lidar, animators, the crowd) per physics step;
-- the people's share of a step: the time in ``Crowd.advance_to`` (the walkers' targets and the people server's
-  step, waited for over its pipe) and in the people's animator, over the whole step time; and of it the time
+- the people's share of a step: the time in ``Crowd.step`` (the walkers' targets, the people server's reply to
+  the step asked for at the previous crowd step, read from its pipe, and the next request) and in the people's animator, over the whole step time; and of it the time
   waiting for the server, and the server process's CPU seconds;
 - the physics: the time in pybullet's ``stepSimulation`` per step, which grows with the people's bodies in
   contact (a person is a 0.5 m cylinder, and people who give way to each other walk close).
@@ -99,7 +99,7 @@ class Measure:
     wall_s: float
     steps: int
     step_s: float  # wall seconds inside Simulation.step
-    crowd_s: float  # of it in Crowd.advance_to
+    crowd_s: float  # of it in Crowd.step
     animator_s: float  # of it in the people's animator
     server_s: float  # of crowd_s waiting for the people server's replies
     physics_s: float  # of step_s in pybullet's stepSimulation (every body's contacts, the people's included)
@@ -133,7 +133,7 @@ class _Timers:
     @contextlib.contextmanager
     def installed(self) -> Iterator[_Timers]:
         crowd_cls, animator_cls, server_cls = crowd_module.Crowd, animator_module.Animator, server_module.PeopleServer
-        advance, update, request = crowd_cls.advance_to, animator_cls.update, server_cls.request
+        advance, update, request = crowd_cls.step, animator_cls.update, server_cls.receive
         step_simulation = pybullet.stepSimulation
         timers = self
 
@@ -168,12 +168,12 @@ class _Timers:
             finally:
                 timers.server += time.perf_counter() - started
 
-        crowd_cls.advance_to, animator_cls.update, server_cls.request = timed_advance, timed_update, timed_request
+        crowd_cls.step, animator_cls.update, server_cls.receive = timed_advance, timed_update, timed_request
         pybullet.stepSimulation = timed_physics  # the simulation calls it through the module, at each step
         try:
             yield self
         finally:
-            crowd_cls.advance_to, animator_cls.update, server_cls.request = advance, update, request
+            crowd_cls.step, animator_cls.update, server_cls.receive = advance, update, request
             pybullet.stepSimulation = step_simulation
 
 
