@@ -5,7 +5,7 @@
 # environment, <repo>/.venv-people, beside the people server (pedestrians/jupedsim_server.py) that runs it.
 #
 # Why a separate venv and process: JuPedSim's wheel links parts of CGAL that are GPL-3.0-or-later, and REI's
-# Python package must hold no GPL code (docs/people.md#licence). REI's simulation therefore never imports it; it
+# Python package must hold no GPL code (docs/people.md#licence-where-jupedsim-runs). REI's simulation therefore never imports it; it
 # starts the server as a separate program and talks to it over a pipe, as it runs the WAMP router. The wheel also
 # declares PySide6 and VTK for its visualizer (about 1.5 GB), which the simulation core does not use: JuPedSim is
 # installed without them (--no-deps) and its run-time needs (numpy, shapely, deprecated) are named here.

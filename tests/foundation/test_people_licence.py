@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: EPL-2.0
 """JuPedSim's wheel links GPL-3.0-or-later parts of CGAL: only the people server may import it, never REI's
-package (docs/people.md#licence)."""
+package (docs/people.md#licence-where-jupedsim-runs)."""
 
 from __future__ import annotations
 

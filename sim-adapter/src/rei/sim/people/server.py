@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: EPL-2.0
 """The people server as a child process: started with ``.venv-people``'s Python, spoken to over a pipe.
 
-JuPedSim runs in a program of its own (``pedestrians/jupedsim_server.py``, docs/people.md#licence), never in
+JuPedSim runs in a program of its own (``pedestrians/jupedsim_server.py``, docs/people.md#licence-where-jupedsim-runs), never in
 REI's process. Each request is one length-prefixed msgpack map on its standard input, each reply one on its
 standard output; a reply that does not come within its time limit, or a server that dies, is a
 :class:`PeopleError` with the end of the server's error output, never a hang.
