@@ -53,6 +53,7 @@ from pathlib import Path
 from typing import Any
 
 import yaml
+
 from rei.search.outputs import (
     FORMAT,  # search.json's format: rei-search/2 counts events as distinct failures
 )

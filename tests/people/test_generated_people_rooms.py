@@ -11,6 +11,7 @@ import math
 from pathlib import Path
 
 import pytest
+
 from rei.geometry import Twist2D
 from rei.rooms import generate_room, render
 from rei.sim.simulation import Simulation
