@@ -175,6 +175,8 @@ class Simulation:
         if people:
             # the people see the robot and the bodies on rails; a third seed, so the others' draws stay as they were
             (crowd_seed,) = seeds.spawn(1)
+            # what the people see of the robot's shape: its front's distance from its centre, its footprint's disc
+            self._robot_extent = (robot_spec.size[0] / 2, footprint_radius(robot_spec.shape, robot_spec.size))
             rails = [world.object(a.name) for a in animated]
             self._rails = [b.body for b in animated]
             self._crowd = Crowd(world, people, [
@@ -245,8 +247,7 @@ class Simulation:
     def _robot_view(self) -> RobotView:
         x, y, _, yaw = self._pose(self._robot.body)
         vx, vy, _ = self._twist(self._robot.body)
-        spec = self.case.world.robot
-        return RobotView(x, y, yaw, vx, vy, spec.size[0] / 2, footprint_radius(spec.shape, spec.size))
+        return RobotView(x, y, yaw, vx, vy, *self._robot_extent)
 
     def _take_scan(self) -> None:
         ranges = self._lidar.scan()

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from rei.sim.people.crowd import Crowd, Walked
+from rei.sim.people.crowd import Crowd
 
 
 def people_cost(crowd: Crowd, end: float) -> dict[str, dict[str, Any]]:
@@ -43,5 +43,3 @@ def people_cost(crowd: Crowd, end: float) -> dict[str, dict[str, Any]]:
 def _round(value: float | None) -> float | None:
     return None if value is None else round(value, 3)
 
-
-__all__ = ["Walked", "people_cost"]

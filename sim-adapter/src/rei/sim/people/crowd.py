@@ -73,10 +73,10 @@ class Crowd:
         # a person of a speed range gets its speed from the run's seed, in the order people are listed
         draw = np.random.default_rng(seed)
         speeds = [p.speed if p.speed_to is None else float(draw.uniform(p.speed, p.speed_to)) for p in people]
-        reply = self._server.request(_init(world, people, radii, speeds, movers, seed), timeout=INIT_TIMEOUT)
-        self.walkers = _walkers(people, radii, speeds, reply["legs"], self._route, self._heading)
         # where each body stands in world.json: its first stop, or, for a group's follower, its own place beside it
         start = [(bodies[p.name].pose[0], bodies[p.name].pose[1]) for p in people]
+        reply = self._server.request(_init(world, people, start, radii, speeds, movers, seed), timeout=INIT_TIMEOUT)
+        self.walkers = _walkers(people, radii, speeds, reply["legs"], self._route, self._heading)
         self._before = start
         self._now = start
         self._headings = [0.0] * len(people)
@@ -96,7 +96,7 @@ class Crowd:
         walked = self.walked[index].walked
         if walked <= 0.0:
             return self._now[index], self._headings[index], None
-        trail = self._trails.setdefault(index, [])
+        trail = self._trails[index]  # only a group's leader has followers that ask
 
         def back(distance: float) -> Point:
             wanted = walked - distance
@@ -189,8 +189,8 @@ def _seeing(person: PersonSpec) -> PersonSpec:
                       person.speed_to, person.group)
 
 
-def _init(world: WorldSpec, people: Sequence[PersonSpec], radii: Sequence[float], speeds: Sequence[float],
-          movers: Sequence[Mover], seed: int) -> dict:
+def _init(world: WorldSpec, people: Sequence[PersonSpec], places: Sequence[Point], radii: Sequence[float],
+          speeds: Sequence[float], movers: Sequence[Mover], seed: int) -> dict:
     floors = [[f.center[0] - world.floor_size / 2, f.center[1] - world.floor_size / 2,
                f.center[0] + world.floor_size / 2, f.center[1] + world.floor_size / 2] for f in world.floors]
     obstacles = [[o.pose[0], o.pose[1], o.pose[3], o.size[0], o.size[1], o.shape is Shape.CYLINDER]
@@ -202,12 +202,7 @@ def _init(world: WorldSpec, people: Sequence[PersonSpec], radii: Sequence[float]
                         # a follower walks no route of its own: it keeps its place by its leader
                         "stops": [[s.x, s.y] for s in p.route] if _leads(p, people) else [[x, y]],
                         "loop": p.loop, **({"time_gap": GROUP_TIME_GAP} if p.group is not None else {})}
-                       for p, r, v, (x, y) in zip(people, radii, speeds, _places(world, people), strict=True)]}
-
-
-def _places(world: WorldSpec, people: Sequence[PersonSpec]) -> list[Point]:
-    bodies = {o.name: o for o in world.objects}
-    return [(bodies[p.name].pose[0], bodies[p.name].pose[1]) for p in people]
+                       for p, r, v, (x, y) in zip(people, radii, speeds, places, strict=True)]}
 
 
 def _leads(person: PersonSpec, people: Sequence[PersonSpec]) -> bool:
