@@ -32,6 +32,10 @@ class FakeMaker:
         self.made: list[Candidate] = []
         self.runs = RunOptions()  # read by CandidateMaker.write for each case's `rei run` line (nav, humans)
         self._base_folder = out  # read by CandidateMaker.write (the fake's texts import no catalogue)
+        self.base_text = ""  # no crowd or group: nothing for rei.search.space to read or validate
+
+    def validate(self, text: str) -> list[dict[str, Any]]:
+        return []
 
     def make(self, key: str, edit: Edit) -> Candidate:
         candidate = Candidate(key, edit, VALID, json.dumps(edit.operations, sort_keys=True) + "\n")

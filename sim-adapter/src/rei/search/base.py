@@ -61,7 +61,8 @@ def with_base_case_problems(error: SpecError) -> SpecError:
             case = unchecked.case or write_base_case(unchecked.rooms, Path(folder), log=lambda _: None)
             maker = CandidateMaker(case, Path(folder), log=lambda _: None)
             try:
-                Space(unchecked.parameters, maker.diagram, maker.palette, humans=unchecked.humans)
+                Space(unchecked.parameters, maker.diagram, maker.palette, humans=unchecked.humans,
+                      text=maker.base_text, validate=maker.validate)
             finally:
                 maker.close()
     except SpecError as found:  # the base case's mistakes: a name it does not have, or it is not valid itself

@@ -123,9 +123,15 @@ class CandidateMaker:
                                 f"restart: {error}") from None
 
     def _apply(self, edit: Edit) -> dict[str, Any]:
-        answer = self._engine.request("reset", text=self.base_text)
+        # the crowds' and groups' values are the text's (the engine does not edit them), so validated with the rest
+        answer = self._engine.request("reset", text=edit.text(self.base_text))
         # a point that only sets the run's seed or fault edits nothing: the engine refuses an empty apply
         return self._engine.request("apply", operations=list(edit.operations)) if edit.operations else answer
+
+    def validate(self, text: str) -> list[dict[str, Any]]:
+        """The language's issues of ``text`` (another version of the base case), as the engine reports them."""
+        issues: list[dict[str, Any]] = self._engine.request("reset", text=text).get("issues") or []
+        return issues
 
     def write(self, candidate: Candidate, path: Path | None = None) -> Path:
         """``OUT/candidates/<key>.rei`` (or ``path``), with the `rei run` line that reproduces its run (seed, fault,

@@ -3,8 +3,10 @@
 each step that still fails the same way: the same event (kind, element, place: rei.search.failures), violating at
 least the requirements it did.
 
-Steps, in order: remove each object and human the failure does not name, then the extra pieces of furniture
-(the last first), then move each parameter back to the base case's value. Each step is one candidate (validated and checked like any other) and, when valid, one
+Steps, in order: remove each object, human, crowd and group the failure does not name (a crowd's person names its
+crowd), then the extra pieces of furniture (the last first), then move each parameter back to the base case's
+value, but a crowd's or a group's count towards its fewest people (as many as the failure's person needs; then
+halfway) and a crowd's rate towards its slowest. Each step is one candidate (validated and checked like any other) and, when valid, one
 simulation; ``budget`` caps the simulations per failure. The shrunk case is written to
 ``OUT/shrunk/<id>.rei`` with its runs in ``OUT/shrunk/runs/<id>-<step>/``, ``<id>`` the failure's (``failure_id``):
 named by what failed, not by its rank, which a resumed search with a larger budget may change.
@@ -68,7 +70,6 @@ def shrink(failure: Failure, values: Mapping[str, Any], space: Space, maker: Can
     (events, run folder) of cases simulated while shrinking other failures, by case (``case_of``); a case is
     not simulated twice. ``failure_name``: the failure's name in file names (``failure_id``)."""
     seen = {} if seen is None else seen
-    base = space.base_values()
     current = dict(values)
     removed: list[str] = []
     steps = kept = 0
@@ -124,15 +125,18 @@ def shrink(failure: Failure, values: Mapping[str, Any], space: Space, maker: Can
     for element in space.removable():
         if steps >= budget:
             break
-        if element != failure.element:
+        if not space.owns(element, failure.element):  # a crowd's person fails with its crowd
             keep(current, [*removed, element])
     while int(current.get(EXTRA_COUNT) or 0) > 0 and steps < budget:  # extra furniture, the last piece first
         if not keep({**current, EXTRA_COUNT: int(current[EXTRA_COUNT]) - 1}, removed):
             break
-    for name in [k for k in current if current[k] != base.get(k)]:
-        if steps >= budget:
-            break
-        keep({**current, name: base.get(name)}, removed)
+    for name in list(current):
+        # towards the base case's value; a crowd's or a group's count towards fewer people, a crowd's rate slower
+        for value in space.smaller(name, current[name], failure.element):
+            if value == current[name]:
+                continue
+            if steps >= budget or keep({**current, name: value}, removed):
+                break
     final = maker.make(f"shrunk-{failure_name}", space.edit(current, removed))
     path: Path | None = folder / f"{failure_name}.rei"
     if final.status == VALID:

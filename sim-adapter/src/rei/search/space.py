@@ -9,20 +9,28 @@ elements back to.
 A human walks a trajectory (on rails: ``points``, and its ``start``, ``speed`` and ``loop`` retime it, the room
 editor's ``setTrajectory``) or a route (a person who sees the robot: its ``start``, ``speed``, ``loop``, ``behaviour``
 and the floors of its ``stop``s, ``setRoute``). A key of the other kind is refused at the key.
+
+A crowd or a group (``shoppers.count``, ``shoppers.rate``, ``shoppers.behaviour``, ``family.count``) is a line of
+the text the room editor does not edit: its values are set in the base case's text (rei.search.gatherings) before
+the engine validates it, and a count larger than the line's floors hold is refused when the spec is checked, with
+the language's own message.
 """
 
 from __future__ import annotations
 
+import difflib
 import itertools
 import math
-from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+import re
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
 from typing import Any
 
 from optuna.distributions import BaseDistribution, CategoricalDistribution, FloatDistribution, IntDistribution
 
 from rei import located_yaml
 from rei.campaign.spec import SpecError
+from rei.search.gatherings import gatherings, with_values
 from rei.search.spec import UNREAD, Parameter, Range
 
 Values = Mapping[str, Any]
@@ -37,22 +45,34 @@ MAX_ROUTE_SPEED = 3.0
 
 @dataclass(frozen=True, slots=True)
 class Edit:
-    """A point of the space as what to do to the base case: edit operations, the run's seed and fault."""
+    """A point of the space as what to do to the base case: edit operations, the run's seed and fault, and the
+    crowds' and groups' values to set in the base case's text first (rei.search.gatherings.with_values)."""
 
     operations: tuple[dict[str, Any], ...]
     seed: int
     fault: str | None
+    people: tuple[dict[str, Any], ...] = field(default=())
+
+    def text(self, base: str) -> str:
+        """The base case's text with the crowds' and groups' values (the text itself when it has none)."""
+        return with_values(base, self.people) if self.people else base
 
 
 class Space:
     """The parameters of a spec over one base case (its room editor diagram)."""
 
     def __init__(self, parameters: Sequence[Parameter], diagram: Mapping[str, Any],
-                 palette: Sequence[Mapping[str, Any]] = (), *, humans: bool = True) -> None:
-        """``humans``: whether the runs have the humans (a spec's ``humans: false`` leaves them out). Every
-        parameter the base case does not have is a problem of one ``SpecError``."""
+                 palette: Sequence[Mapping[str, Any]] = (), *, humans: bool = True, text: str = "",
+                 validate: Callable[[str], list[dict[str, Any]]] | None = None) -> None:
+        """``humans``: whether the runs have the humans (a spec's ``humans: false`` leaves them out); ``text``: the
+        base case's text (its crowds and groups); ``validate``: the language's issues of a text (the room editor's
+        engine), to check a crowd's or a group's largest count. Every parameter the base case does not have is a
+        problem of one ``SpecError``."""
         self.parameters = tuple(parameters)
         self._with_humans = humans
+        self._text = text
+        self._validate = validate
+        self._gatherings = gatherings(text)
         self._diagram = diagram
         self._floors = {f["name"]: (float(f["centreX"]), float(f["centreY"])) for f in diagram["room"]["floors"]}
         objects = {o["name"]: o for o in diagram.get("objects") or []}
@@ -88,6 +108,9 @@ class Space:
         if p.target == "human" and p.name not in self._humans:
             raise SpecError(f"{at}: the base case has no human or moving object named {p.name!r}; it has "
                             f"{', '.join(self._humans) or 'none'}")
+        if p.target in ("crowd", "group"):
+            self._add_gathering(p)
+            return
         if p.target == "goal" and int(p.name) >= len(self._goals):
             raise SpecError(f"{at}: the mission has {len(self._goals)} goal(s): index {p.name} is not one")
         if p.target == "human" and p.prop in ROUTE_KEYS + TRAJECTORY_KEYS:
@@ -136,6 +159,47 @@ class Space:
             self._float(p.key, p.domain, None)
         else:
             raise AssertionError(p)
+
+    def _add_gathering(self, p: Parameter) -> None:
+        """A crowd's or a group's count, rate or behaviour: the line exists and is of that kind, the runs have the
+        humans, the largest count fits its floors."""
+        at = p.name_at or p.where
+        g = self._gatherings.get(p.name)
+        if g is None or g.kind != p.target:
+            same = [name for name, other in self._gatherings.items() if other.kind == p.target]
+            if g is not None:
+                hint = f": {p.name} is a {g.kind}, searched as {{{g.kind}: {p.name}, ...}}"
+            else:
+                close = difflib.get_close_matches(p.name, same, n=1)
+                hint = f" (did you mean {close[0]}?)" if close else ""
+            raise SpecError(f"{at}: the base case has no {p.target} named {p.name!r}{hint}; its {p.target}s: "
+                            f"{', '.join(same) or 'none'}")
+        if p.domain is UNREAD:
+            return
+        if not self._with_humans:
+            raise SpecError(f"{at}: {p.name} is a {p.target} of people and the spec runs without humans (humans: "
+                            f"false): its {p.prop} would change nothing; remove its parameters or set humans: true")
+        if p.prop == "count":
+            self._check_count(p)
+            self._float(p.key, p.domain, g.count)
+        elif p.prop == "rate":
+            self._float(p.key, p.domain, g.rate)  # None: unwritten, every person sets off at the start
+        elif p.prop == "behaviour":
+            self._categorical(p.key, list(p.domain), g.behaviour, p.where)
+        else:
+            raise AssertionError(p)
+
+    def _check_count(self, p: Parameter) -> None:
+        """The most people the range reaches must fit the line's floors: the language's own check of the base case
+        with that count (its message said at the range), so that no candidate is refused for it."""
+        if self._validate is None:
+            return
+        high = int(p.domain.high)
+        text = with_values(self._text, [{"name": p.name, "count": high}])
+        own = [i for i in self._validate(text) if i.get("severity") == "error" and i.get("element") == p.name]
+        if own:
+            raise SpecError(f"{p.where}: {p.name} of {high} people is more than the base case's room takes: "
+                            f"{own[0]['message']}")
 
     def _route(self, name: str) -> Mapping[str, Any] | None:
         """The route of a person who sees the robot; None for a trajectory."""
@@ -255,7 +319,11 @@ class Space:
                         "floor": values[f"furniture.{i}.floor"]} for i in range(min(count, self._extras))]
         operations += [{"op": "deleteObject", "name": name} for name in removed]
         seed = int(values.get("seed", 0) or 0)
-        return Edit(tuple(operations), seed, self._fault(values))
+        people: dict[str, dict[str, Any]] = {}
+        for p in self.parameters:
+            if p.target in ("crowd", "group") and p.name not in removed and values.get(p.key) is not None:
+                people.setdefault(p.name, {"name": p.name})[p.prop] = values[p.key]
+        return Edit(tuple(operations), seed, self._fault(values), tuple(people.values()))
 
     def _trajectory(self, human: str, values: Values) -> dict[str, Any]:
         base = self._humans[human]
@@ -295,8 +363,33 @@ class Space:
         return f"{faults[0].base},{settings}"
 
     def removable(self) -> list[str]:
-        """The objects and humans of the base case: what shrinking may try to remove (never the robot)."""
-        return [name for name, item in self._items.items() if item["kind"] == "object"] + list(self._humans)
+        """The objects, humans, crowds and groups of the base case: what shrinking may try to remove (never the
+        robot)."""
+        return [name for name, item in self._items.items() if item["kind"] == "object"] + list(self._humans) + \
+            list(self._gatherings)
+
+    def owns(self, name: str, element: str) -> bool:
+        """Whether ``element`` (what a failure names) is ``name`` or one of its people, when ``name`` is a crowd or
+        a group (``shoppers_3`` of ``shoppers``)."""
+        if element == name:
+            return True
+        return name in self._gatherings and re.fullmatch(rf"{re.escape(name)}_[0-9]+", element) is not None
+
+    def smaller(self, key: str, value: Any, element: str) -> list[Any]:
+        """The values shrinking tries for ``key``, in order, after ``value`` failed: towards the base case's value,
+        but a crowd's or a group's count towards its fewest people (never fewer than the failure's own person,
+        ``shoppers_7`` needs 7; then halfway) and a crowd's rate towards its slowest."""
+        p = next((p for p in self.parameters if p.key == key), None)
+        if p is None or p.target not in ("crowd", "group") or p.prop == "behaviour":
+            return [self._base.get(key)]
+        if p.prop == "rate":
+            return [p.domain.low] if value is None or float(value) > p.domain.low else []
+        own = re.fullmatch(rf"{re.escape(p.name)}_([0-9]+)", element)
+        least = max(int(p.domain.low), int(own[1]) if own else 0)
+        if value is None or int(value) <= least:
+            return []
+        halfway = (least + int(value)) // 2
+        return [least] + ([halfway] if least < halfway < int(value) else [])
 
     def floor_at(self, x: float, y: float) -> str:
         """The floor whose centre is nearest to (x, y): where something happened, as the test case names it."""

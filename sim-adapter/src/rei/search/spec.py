@@ -29,6 +29,8 @@ of elements the base case does not have with them: rei.search.base.with_base_cas
       - {seed: [0, 1000]}
       - {fault: "laser:1%", rate: [0.0, 0.05]}  # and gain, width
       - {furniture: [Chair, Box], count: [0, 3], floor: any}  # extra pieces from the catalogues
+      - {crowd: shoppers, count: [2, 12], rate: [0.2, 2], behaviour: [avoids, ignores, blocks]}  # a crowd's line
+      - {group: family, count: [2, 4], behaviour: [avoids, curious]}  # a group's line
     objectives:                 # one, or several (a Pareto search)
       - utility                 # or {utility: minimize}
       - {metric: clearance_humans_min}          # summary.json's metrics, default: towards the worse side
@@ -73,8 +75,9 @@ class Range:
 
 @dataclass(frozen=True, slots=True)
 class Parameter:
-    """One searched property of one element. ``target``: object, human, robot, goal, seed, fault or furniture
-    (extra pieces: ``domain`` is (types, count Range, floors or None));
+    """One searched property of one element. ``target``: object, human, robot, goal, seed, fault, furniture
+    (extra pieces: ``domain`` is (types, count Range, floors or None)), crowd or group (``count``, ``rate``,
+    ``behaviour`` of its line);
     ``name``: the element (a goal's index as text; empty for seed and fault); ``prop``: floor, yaw, points,
     start, speed, loop, behaviour, stop (a route's stop ``index``: its floor), value (seed), rate, gain, width;
     ``domain``: a Range, a tuple of choices, or for ``points`` a tuple with one tuple of floors (or None: any
@@ -391,7 +394,10 @@ def _check_controller(controller: str, where: str) -> None:
 #: person is known from the base case (rei.search.space).
 _PROPS = {"object": ("floor", "yaw"), "robot": ("floor",),
           "human": ("points", "start", "speed", "loop", "behaviour", "stop", "floor"),
-          "goal": ("floor",), "seed": (), "fault": ("rate", "gain", "width"), "furniture": ("count", "floor")}
+          "goal": ("floor",), "seed": (), "fault": ("rate", "gain", "width"), "furniture": ("count", "floor"),
+          "crowd": ("count", "rate", "behaviour"), "group": ("count", "behaviour")}
+#: The fewest people of a crowd and of a group (the language's tooFewPeople: a group's leader and one more).
+LEAST_PEOPLE = {"crowd": 1, "group": 2}
 
 
 def _parameters(node: yaml.Node, loc: _Located, problems: located_yaml.Collector) -> tuple[Parameter, ...]:
@@ -453,7 +459,7 @@ def _parameter(item: yaml.Node, loc: _Located, problems: located_yaml.Collector)
         props = [prop for prop in props if prop not in ("stop", "floor")]
     for prop in props:
         value_node = entry[prop][1] if prop in known else entry[prop][0]
-        domain = problems.read(lambda prop=prop: _domain(prop, entry[prop][1], loc), UNREAD) if prop in known \
+        domain = problems.read(lambda prop=prop: _domain(prop, entry[prop][1], loc, target), UNREAD) if prop in known \
             else UNREAD
         if named:
             parameters.append(Parameter(target, str(name_value), prop, domain, loc.at(value_node),
@@ -548,8 +554,21 @@ def _check_fault_range(fault: Any, prop: str, domain: Range, where: str) -> None
                             f"accepts: {error}") from None
 
 
-def _domain(prop: str, node: yaml.Node, loc: _Located) -> Any:
+def _domain(prop: str, node: yaml.Node, loc: _Located, target: str = "") -> Any:
     value = loc.value(node)
+    if prop == "count":  # a crowd's or a group's number of people
+        domain = _range(value, node, loc, integer=True)
+        if domain.low < LEAST_PEOPLE[target]:
+            least = LEAST_PEOPLE[target]
+            raise SpecError(f"{loc.at(node)}: a {target} has {least} {'person' if least == 1 else 'people'} or more "
+                            f"(the language's least), got [{domain.low:g}, {domain.high:g}]")
+        return domain
+    if prop == "rate":  # a crowd's people a second
+        domain = _range(value, node, loc)
+        if domain.low <= 0:
+            raise SpecError(f"{loc.at(node)}: a crowd's rate (people a second) must be positive, got "
+                            f"[{domain.low:g}, {domain.high:g}]")
+        return domain
     if prop == "floor":
         return _floors(value, node, loc)
     if prop == "points":

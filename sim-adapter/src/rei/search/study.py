@@ -134,7 +134,8 @@ class Search:
                                     runs=RunOptions(spec.controller, spec.humans, spec.sut, spec.patterns,
                                                     spec.utilities))
         try:
-            self.space = Space(spec.parameters, self.maker.diagram, self.maker.palette, humans=spec.humans)
+            self.space = Space(spec.parameters, self.maker.diagram, self.maker.palette, humans=spec.humans,
+                               text=self.maker.base_text, validate=self.maker.validate)
         except BaseException:  # a parameter the base case does not have: the engine's JVM goes now
             self.maker.close()
             raise
