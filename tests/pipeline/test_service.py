@@ -80,6 +80,43 @@ def test_runs_through_the_service_match_a_run_of_its_own_with_a_router_and_secre
     assert "replayed 665 state" in (first / "monitor-replay.log").read_text()
 
 
+def test_a_run_starts_its_simulation_on_the_spare_router_before_its_case_is_generated(
+    tmp_path: Path, own_service: Path
+) -> None:
+    """The simulation's start-up (about 0.4 s) overlaps the case's generation: it is started, held, the moment
+    the spare router is taken, on the thread that takes it, and it lives on after that thread's work is done (a
+    child started with a parent-death signal dies with the *thread* that started it)."""
+    import threading
+
+    from rei.cli import build_parser
+    from rei.cli._case import prepare_output
+    from rei.cli.run import _Warm
+    from rei.run.held import HeldSimulation, start_simulation
+    from rei.wamp.router import Router
+
+    out = tmp_path / "out"
+    prepare_output(out)
+    args = build_parser("run").parse_args(["run", "case.rei", "-o", str(out)])
+    started = threading.Event()
+
+    def hold(router: Router) -> HeldSimulation:
+        held = start_simulation(out / "case", out, router, router.run_id)
+        started.set()
+        return held
+
+    with _Warm(args, out, hold) as warm:
+        assert started.wait(120), "no simulation started on the spare router"
+        assert not (out / "case").exists()  # nothing generated: the simulation waits, held
+        time.sleep(1.0)
+        router, held = warm.taken()
+        assert router is not None and held is not None
+        try:
+            assert held.process.poll() is None, (out / "simulation.log").read_text()
+        finally:
+            held.process.stop()
+            router.stop()
+
+
 def test_a_killed_service_is_replaced_by_the_next_run_with_one_line(
     run_cli: Any, repo_root: Path, tmp_path: Path, own_service: Path
 ) -> None:

@@ -16,6 +16,7 @@ import secrets
 import shutil
 import sys
 import threading
+from collections.abc import Callable
 from concurrent.futures import Future
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Self
@@ -33,6 +34,7 @@ from rei.cli._router_options import add_router_options, check_router_options
 from rei.cli.errors import CommandError
 
 if TYPE_CHECKING:
+    from rei.run.held import HeldSimulation
     from rei.run.patterns import PatternSelection
     from rei.run.pipeline import PipelineOptions
     from rei.wamp.router import Router
@@ -88,27 +90,22 @@ def run(args: argparse.Namespace) -> int:
     prepare_output(out)
     # the run's own modules load while the case is generated and the router taken over (both wait on sockets)
     threading.Thread(target=_import_run_modules, name="rei-imports", daemon=True).start()
-    with _Warm(args, out) as warm:
+    sim_args, external_sut = tuple(mission_argv(args)), args.sut is not None or args.sut_attach
+    target = case_target(Path(args.case), out)
+
+    def hold(router: Router) -> HeldSimulation:
+        """The simulation, started held on the spare router the moment it is taken: it starts up (Python, pybullet,
+        its router session: about 0.4 s) while the case is generated, not after."""
         from rei.run.held import start_simulation
 
-        # a spare router waiting already: the simulation starts up (held) while the case is generated
-        router = warm.router(wait=False)
+        return start_simulation(target, out, router, router.run_id, sim_args=sim_args, external_sut=external_sut)
+
+    with _Warm(args, out, hold) as warm:
+        case_dir = case_folder(Path(args.case), out, server=warm.cli)
+        check_collector_objects(args, case_dir)
+        # the first run of a service: its spare router was starting meanwhile
+        router, held = warm.taken()
         run_id = router.run_id if router is not None else args.run_id or secrets.token_hex(6)
-        sim_args, external_sut = tuple(mission_argv(args)), args.sut is not None or args.sut_attach
-        held = None if router is None else start_simulation(
-            case_target(Path(args.case), out), out, router, run_id, sim_args=sim_args, external_sut=external_sut)
-        try:
-            case_dir = case_folder(Path(args.case), out, server=warm.cli)
-            check_collector_objects(args, case_dir)
-        except BaseException:
-            if held is not None:
-                held.process.stop()
-            if router is not None:
-                router.stop()
-            raise
-        if router is None:  # the first run of a service: its spare router was starting meanwhile
-            router = warm.router(wait=True)
-            run_id = router.run_id if router is not None else run_id
         options = _options(args, patterns, declared, warm.monitor, sim_args=sim_args, external_sut=external_sut)
         return _run(out, case_dir, dataclasses.replace(options, router=router, simulation=held), run_id)
 
@@ -150,14 +147,18 @@ def _import_run_modules() -> None:
 
 class _Warm:
     """What the background service (rei.service) has ready for this run: warm JVMs, and a spare router taken
-    over in the background while the case is generated. Without the service (``--no-service``,
-    ``REI_SERVICE=off``, or it cannot be reached) every attribute is None and the run starts its own."""
+    over in the background while the case is generated, with the run's simulation started on it at once
+    (``hold``). Without the service (``--no-service``, ``REI_SERVICE=off``, or it cannot be reached) every
+    attribute is None and the run starts its own."""
 
-    def __init__(self, args: argparse.Namespace, out: Path) -> None:
+    def __init__(self, args: argparse.Namespace, out: Path, hold: Callable[[Router], HeldSimulation]) -> None:
         self.out = out
         self.monitor: Path | None = None
         self.cli: Path | None = None
-        self._taking: Future[dict[str, Any] | None] | None = None
+        self._taking: Future[tuple[Router, HeldSimulation | None] | None] | None = None
+        self._lock = threading.Lock()
+        self._closed = False  # the run ended before it took the router: whatever is taken later is stopped
+        self._over = threading.Event()
         from rei import service
 
         if args.no_service or not service.enabled():
@@ -178,28 +179,23 @@ class _Warm:
 
             def take() -> None:
                 try:
-                    taking.set_result(found.take_router(os.getpid(), ROUTER_WAIT))
-                except BaseException as error:  # noqa: BLE001 - handed to router()
+                    taking.set_result(self._take(found.take_router(os.getpid(), ROUTER_WAIT), hold))
+                except BaseException as error:  # noqa: BLE001 - handed to taken()
                     taking.set_exception(error)
+                # a child dies with the thread that started it (rei.lifetime: the kernel's parent-death signal
+                # is per thread), so this one lives as long as the run
+                self._over.wait()
 
             threading.Thread(target=take, name="rei-take-router", daemon=True).start()
 
-    def router(self, *, wait: bool) -> Router | None:
-        """The spare router, moved into OUT/router; None when the service had none ready in time (or, without
-        ``wait``, not ready yet: then ask again later)."""
-        if self._taking is None or not (wait or self._taking.done()):
-            return None
-        from rei.service.client import ServiceError
-        from rei.wamp.router import Router
-
-        taking, self._taking = self._taking, None
-        try:
-            description = taking.result()
-        except ServiceError as error:
-            print(f"rei: {error}; this run starts its own router", flush=True)
-            return None
+    def _take(self, description: dict[str, Any] | None,
+              hold: Callable[[Router], HeldSimulation]) -> tuple[Router, HeldSimulation | None] | None:
+        """The spare router moved into OUT/router, and the simulation started held on it (None: the service had
+        no router ready in time)."""
         if description is None:
             return None
+        from rei.wamp.router import Router
+
         folder = self.out / "router"
         if folder.is_symlink() or folder.is_file():
             folder.unlink()
@@ -209,12 +205,48 @@ class _Warm:
             os.rename(description["run_dir"], folder)  # the run keeps its router's config, log and secrets
         except OSError:  # another file system: the run's folder points to it instead
             folder.symlink_to(description["run_dir"], target_is_directory=True)
-        return Router.adopt(description, folder)
+        router = Router.adopt(description, folder)
+        with self._lock:
+            if self._closed:  # the run is over already: nothing to start
+                router.stop()
+                return None
+            try:
+                return router, hold(router)
+            except Exception as error:  # noqa: BLE001 - the pipeline starts the simulation itself then
+                print(f"rei: the simulation did not start early ({error}); the run starts it", flush=True)
+                return router, None
+
+    def taken(self) -> tuple[Router | None, HeldSimulation | None]:
+        """The spare router and the simulation held on it, waiting for them; (None, None) when the service had no
+        router ready in time (the run starts its own)."""
+        if self._taking is None:
+            return None, None
+        from rei.service.client import ServiceError
+
+        taking, self._taking = self._taking, None
+        try:
+            result = taking.result()
+        except ServiceError as error:
+            print(f"rei: {error}; this run starts its own router", flush=True)
+            return None, None
+        return (None, None) if result is None else result
 
     def __enter__(self) -> Self:
         return self
 
     def __exit__(self, *exc: object) -> None:
+        self._over.set()
+        with self._lock:
+            self._closed = True
+            taking, self._taking = self._taking, None
+        # the run ended before taking what was started for it (a case that did not generate, Ctrl-C)
+        if taking is not None and taking.done() and taking.exception() is None:
+            left = taking.result()
+            if left is not None:
+                router, held = left
+                if held is not None:
+                    held.process.stop()
+                router.stop()
         folder = self.out / "router"
         if folder.is_symlink():  # the router's folder stayed on another file system: keep a copy of it
             target = folder.resolve()
