@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: EPL-2.0
-"""Laser fault injection (thesis 7.5, Fig. 38-39): additive impulse noise arriving as a Poisson process.
+"""Laser impulse noise (thesis 7.5, Fig. 38-39): additive impulses arriving as a Poisson process.
 
 The thesis fed a Simulink Poisson source into the laser topic; here the same model works on each scan:
 
@@ -114,14 +114,18 @@ class LaserFaultInjector:
         self._range_min = range_min
         self._range_max = range_max
 
-    def apply(self, ranges: np.ndarray) -> np.ndarray:
-        """A new array: ``ranges`` with this scan's impulses added (the input is not modified)."""
+    def apply(self, ranges: np.ndarray, gain: float | None = None) -> np.ndarray:
+        """A new array: ``ranges`` with this scan's impulses added (the input is not modified).
+
+        ``gain``: this scan's gain when a schedule changes it over time (rei.sim.faults.timing.Ramp), else the
+        fault's own; the draws are the same either way, so a constant gain records what it always did."""
         n = ranges.shape[0]
         count = int(self._rng.poisson(self.fault.rate * n))
         if count == 0:
             return ranges
+        g = self.fault.gain if gain is None else gain
         starts = self._rng.integers(0, n, size=count)
-        amplitudes = self._rng.uniform(-self.fault.gain, self.fault.gain, size=count) * self._range_max
+        amplitudes = self._rng.uniform(-g, g, size=count) * self._range_max
         noise = np.zeros(n)
         offsets = np.arange(self.fault.width)
         for start, amplitude in zip(starts, amplitudes, strict=True):

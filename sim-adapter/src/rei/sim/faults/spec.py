@@ -1,0 +1,208 @@
+# SPDX-License-Identifier: EPL-2.0
+"""Faults as text: ``--fault`` specs and the ``<fault>`` elements of mission.xml share these keys.
+
+``--fault`` takes faults separated by ``;``, each ``SENSOR:KIND,key=value,...``:
+
+* ``laser:blackout,from=5,to=7``; ``laser:freeze,from=10,to=11``; ``laser:noise,sigma=0.02``;
+  ``laser:occlusion,angles=-30..30,range=0.2``; ``laser:impulse,rate=0.03,gain=0.2@0/0.8@30,width=3,period=10,duty=10%``;
+* timing keys (every kind): ``from``, ``to`` (seconds), ``period`` with ``pulse`` (seconds) or ``duty`` (a fraction
+  or a percentage); without any of them a fault acts for the whole run;
+* the run-long impulse noise as before: ``laser:1%``, ``laser:10%,gain=0.8``, ``laser:rate=R,gain=G,width=W``;
+* the thesis's gated presets ``laser:gated-1%`` and ``laser:gated-10%`` (pulses of 1 % and 10 % of a 10 s period,
+  the ``10%`` preset's noise inside them), which take further keys too (``laser:gated-10%,gain=0.8,from=5``).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+
+from rei.sim.faults.impulse import PRESETS, LaserFault
+from rei.sim.faults.laser import Blackout, Freeze, Impulse, LaserKind, Occlusion, RangeNoise
+from rei.sim.faults.schedule import Fault, FaultSchedule
+from rei.sim.faults.timing import Ramp, Timing, parse_ramp
+
+TIMING_KEYS = ("from", "to", "period", "pulse", "duty")
+KIND_KEYS: dict[str, tuple[str, ...]] = {
+    "impulse": ("rate", "gain", "width"),
+    "freeze": (),
+    "blackout": (),
+    "occlusion": ("angles", "range"),
+    "noise": ("sigma",),
+}
+GATED_PERIOD = 10.0
+"""Seconds per period of the thesis's gated presets: a 1 % pulse is 0.1 s, one scan of a 10 Hz lidar."""
+GATED = {"gated-1%": 0.01, "gated-10%": 0.10}
+
+
+def as_schedule(fault: FaultSchedule | LaserFault | str | None) -> FaultSchedule:
+    """A schedule from what the simulation accepts: a schedule, a run-long impulse noise or a ``--fault`` spec."""
+    if isinstance(fault, FaultSchedule):
+        return fault
+    if isinstance(fault, LaserFault):
+        return FaultSchedule((Fault("laser", Impulse(fault.rate, Ramp.constant(fault.gain), fault.width),
+                                    Timing.always()),))
+    return parse_faults(fault)
+
+
+def parse_faults(spec: str | None) -> FaultSchedule:
+    """The schedule a ``--fault`` spec describes (empty for None, ``""`` and ``none``). Raises ``ValueError``
+    naming the spec and what is wrong."""
+    if spec is None or spec.strip() in ("", "none"):
+        return FaultSchedule()
+    faults = []
+    for item in spec.split(";"):
+        if not item.strip():
+            continue
+        try:
+            faults.append(_one(item))
+        except ValueError as error:
+            raise ValueError(f"bad fault spec {item.strip()!r}: {error}") from None
+    return FaultSchedule(tuple(faults))
+
+
+def _one(item: str) -> Fault:
+    sensor, sep, body = (s.strip() for s in item.strip().partition(":"))
+    if sensor != "laser" or not sep:
+        raise ValueError("expected 'laser:KIND,key=value,...' (KIND one of "
+                         f"{', '.join(KIND_KEYS)}), 'laser:<preset>' or 'laser:rate=R,gain=G,width=W'")
+    parts = [p.strip() for p in body.split(",") if p.strip()]
+    if not parts:
+        raise ValueError("nothing after 'laser:'")
+    values: dict[str, str] = {}
+    head = parts[0] if "=" not in parts[0] else None
+    for part in parts[1:] if head is not None else parts:
+        key, eq, value = (s.strip() for s in part.partition("="))
+        if not eq:
+            raise ValueError(f"{part!r} is not key=value")
+        if key in values:
+            raise ValueError(f"{key} given twice")
+        values[key] = value
+    if head is None or head in PRESETS:
+        # today's run-long impulse noise, written as it always was
+        base = PRESETS.get(head or "")
+        defaults = {} if base is None else {"rate": f"{base.rate!r}", "gain": f"{base.gain!r}",
+                                            "width": str(base.width)}
+        if base is None:
+            missing = sorted({"rate", "gain", "width"} - set(values))
+            if missing:
+                raise ValueError(f"missing {', '.join(missing)} (or start with a preset: {', '.join(PRESETS)})")
+        return fault_from_fields("laser", "impulse", {**defaults, **values})
+    if head in GATED:
+        base = PRESETS["10%"]
+        preset = {"rate": f"{base.rate!r}", "gain": f"{base.gain!r}", "width": str(base.width),
+                  "period": f"{GATED_PERIOD:g}", "duty": f"{GATED[head]!r}"}
+        if "pulse" in values:
+            preset.pop("duty")
+        return fault_from_fields("laser", "impulse", {**preset, **values})
+    if head not in KIND_KEYS:
+        raise ValueError(f"unknown laser fault {head!r}: known kinds {', '.join(KIND_KEYS)}, presets "
+                         f"{', '.join([*PRESETS, *GATED])}")
+    if head == "impulse":
+        base = PRESETS["10%"]
+        values = {"rate": f"{base.rate!r}", "gain": f"{base.gain!r}", "width": str(base.width), **values}
+    return fault_from_fields("laser", head, values)
+
+
+def fault_from_fields(sensor: str, kind: str, fields: Mapping[str, str]) -> Fault:
+    """A fault from its keys as text (``--fault`` and mission.xml). Raises ``ValueError`` naming the key."""
+    known = KIND_KEYS.get(kind)
+    if sensor != "laser" or known is None:
+        raise ValueError(f"unknown fault {sensor} {kind}: known laser kinds {', '.join(KIND_KEYS)}")
+    for key in fields:
+        if key not in known and key not in TIMING_KEYS:
+            allowed = ", ".join(f"{k}=" for k in (*known, *TIMING_KEYS))
+            raise ValueError(f"{key!r} is not a key of a laser {kind} fault (keys: {allowed})")
+    return Fault(sensor, _effect(kind, fields), timing_from_fields(fields))
+
+
+def timing_from_fields(fields: Mapping[str, str]) -> Timing:
+    if not any(k in fields for k in TIMING_KEYS):
+        return Timing.always()
+    start = _seconds(fields, "from", 0.0)
+    end = _seconds(fields, "to", math.inf)
+    period = _maybe_seconds(fields, "period")
+    if "pulse" in fields and "duty" in fields:
+        raise ValueError("give the pulse width as pulse= (seconds) or duty= (a share of the period), not both")
+    pulse = _maybe_seconds(fields, "pulse")
+    if "duty" in fields:
+        duty = _duty(fields["duty"])
+        if period is None:
+            raise ValueError("duty= needs period=")
+        pulse = duty * period
+    return Timing(start, end, period, pulse)
+
+
+def _effect(kind: str, fields: Mapping[str, str]) -> LaserKind:
+    if kind == "freeze":
+        return Freeze()
+    if kind == "blackout":
+        return Blackout()
+    if kind == "noise":
+        return RangeNoise(_required(fields, "sigma", kind))
+    if kind == "occlusion":
+        text = fields.get("angles")
+        if text is None:
+            raise ValueError("an occlusion needs angles=FROM..TO (degrees)")
+        low, dots, high = text.partition("..")
+        if not dots:
+            raise ValueError(f"angles {text!r}: expected FROM..TO in degrees, e.g. -30..30")
+        return Occlusion(_number(low, "angle"), _number(high, "angle"), _required(fields, "range", kind))
+    gain = parse_ramp(fields["gain"]) if "gain" in fields else Ramp.constant(PRESETS["10%"].gain)
+    width_text = fields.get("width", "1")
+    try:
+        width = int(width_text)
+    except ValueError:
+        raise ValueError(f"width {width_text!r} is not a whole number of beams") from None
+    return Impulse(_required(fields, "rate", kind), gain, width)
+
+
+def _required(fields: Mapping[str, str], key: str, kind: str) -> float:
+    if key not in fields:
+        raise ValueError(f"a laser {kind} fault needs {key}=")
+    return _number(fields[key], key)
+
+
+def _seconds(fields: Mapping[str, str], key: str, default: float) -> float:
+    return _number(fields[key].removesuffix("s"), key) if key in fields else default
+
+
+def _maybe_seconds(fields: Mapping[str, str], key: str) -> float | None:
+    return _number(fields[key].removesuffix("s"), key) if key in fields else None
+
+
+def _duty(text: str) -> float:
+    share = _number(text[:-1], "duty") / 100.0 if text.endswith("%") else _number(text, "duty")
+    if not 0.0 < share <= 1.0:
+        raise ValueError(f"duty must be in (0, 1] (or (0 %, 100 %]), got {text}")
+    return share
+
+
+def _number(text: str, what: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise ValueError(f"{what} {text!r} is not a number") from None
+    if not math.isfinite(value):
+        raise ValueError(f"{what} {text!r} is not a finite number")
+    return value
+
+
+def fault_fields(fault: Fault) -> dict[str, str]:
+    """The keys of a fault as text, the inverse of :func:`fault_from_fields` (for writing a schedule back)."""
+    out: dict[str, str] = {}
+    effect = fault.effect
+    if isinstance(effect, Impulse):
+        out.update(rate=repr(effect.rate), gain=effect.gain.text(), width=str(effect.width))
+    elif isinstance(effect, Occlusion):
+        out.update(angles=f"{effect.angle_from!r}..{effect.angle_to!r}", range=repr(effect.range))
+    elif isinstance(effect, RangeNoise):
+        out.update(sigma=repr(effect.sigma))
+    timing = fault.timing
+    if not timing.whole_run:
+        out["from"] = repr(timing.start)
+        if math.isfinite(timing.end):
+            out["to"] = repr(timing.end)
+        if timing.period is not None and timing.pulse is not None:
+            out.update(period=repr(timing.period), pulse=repr(timing.pulse))
+    return out
