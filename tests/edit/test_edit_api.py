@@ -175,6 +175,38 @@ def test_rei_edit_keeps_unsaved_edits_when_stopped(rei_script: Path, tmp_path: P
     assert "on F_2_1" in case.read_text(encoding="utf-8"), "stopping the editor saved unasked"
 
 
+def test_rei_edit_stops_on_a_ctrl_c_that_lands_on_another_thread(rei_script: Path, tmp_path: Path) -> None:
+    """The kernel hands a process's signal to any of its threads; one that lands on a server thread must stop
+    the editor too (a main thread blocked in a wait without timeout never saw it: the editor ran on)."""
+    case = tmp_path / "case.rei"
+    case.write_text((Path(__file__).parents[2] / CASE).read_text(encoding="utf-8"), encoding="utf-8")
+    process = subprocess.Popen([str(rei_script), "edit", str(case)], stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE, text=True)
+    try:
+        assert process.stdout is not None
+        line = process.stdout.readline()
+        assert line.startswith("edit: http://127.0.0.1:"), line
+        others = [int(tid) for tid in os.listdir(f"/proc/{process.pid}/task") if int(tid) != process.pid]
+        assert others, "rei edit runs no thread besides its main one"
+        _thread_kill(process.pid, others[0], signal.SIGINT)
+        _, err = process.communicate(timeout=30)
+    finally:
+        if process.poll() is None:
+            process.kill()
+            process.wait()
+    assert process.returncode == 0, err
+
+
+def _thread_kill(pid: int, tid: int, sig: signal.Signals) -> None:
+    """tgkill(2): ``sig`` to thread ``tid`` of process ``pid`` only (os.kill lets the kernel choose the thread)."""
+    import ctypes
+
+    libc = ctypes.CDLL(None, use_errno=True)
+    sys_tgkill = 234  # x86_64
+    if libc.syscall(sys_tgkill, pid, tid, int(sig)) != 0:
+        raise OSError(ctypes.get_errno(), f"tgkill({pid}, {tid}, {sig.name})")
+
+
 def _signal_engine(editor: Editor, sig: signal.Signals) -> None:
     pid = editor.engine.pid
     assert pid is not None

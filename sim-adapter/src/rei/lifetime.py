@@ -14,6 +14,7 @@ import os
 import shutil
 import signal
 import sys
+import threading
 from collections.abc import Iterator, Sequence
 
 
@@ -66,3 +67,17 @@ def sigterm_unwinds() -> Iterator[None]:
         yield
     finally:
         signal.signal(signal.SIGTERM, previous)
+
+
+#: Seconds between the wake-ups of a main thread that waits for a stop (``wait_for_stop``).
+SIGNAL_POLL_S = 0.2
+
+
+def wait_for_stop(stop: threading.Event) -> None:
+    """Wait in the main thread until ``stop`` is set, or a signal handler raises (Ctrl-C's KeyboardInterrupt).
+
+    A wait without a timeout can miss a signal for good: the kernel delivers a process's signal to any of its
+    threads, and when that is not the main thread, the main thread's blocked wait is not interrupted, while Python
+    runs handlers only in the main thread. Waking every ``SIGNAL_POLL_S`` lets them run."""
+    while not stop.wait(SIGNAL_POLL_S):
+        pass

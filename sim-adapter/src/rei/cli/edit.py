@@ -20,6 +20,7 @@ from pathlib import Path
 from typing import Any
 
 from rei.cli.errors import CommandError
+from rei.lifetime import wait_for_stop
 
 
 def register(subparsers: argparse._SubParsersAction[Any]) -> None:
@@ -60,7 +61,7 @@ def run(args: argparse.Namespace) -> int:
         print(f"edit: {server.url}  ({case}; Ctrl-C to stop)", flush=True)
         if args.open:
             _open_privately(server.url)
-        stop.wait()
+        wait_for_stop(stop)  # not stop.wait(): see there
     except KeyboardInterrupt:
         pass
     finally:

@@ -15,6 +15,7 @@ from pathlib import Path
 from typing import Any
 
 from rei.cli.errors import CommandError
+from rei.lifetime import wait_for_stop
 
 
 def register(subparsers: argparse._SubParsersAction[Any]) -> None:
@@ -64,7 +65,7 @@ def run(args: argparse.Namespace) -> int:
     previous = signal.signal(signal.SIGTERM, lambda signum, frame: stop.set())
     try:
         print(f"view: {server.url}  (run {args.run} at {args.router}; Ctrl-C to stop)", flush=True)
-        stop.wait()
+        wait_for_stop(stop)  # not stop.wait(): see there
     except KeyboardInterrupt:
         pass
     finally:
