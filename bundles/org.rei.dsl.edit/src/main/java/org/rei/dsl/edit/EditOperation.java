@@ -94,6 +94,31 @@ public sealed interface EditOperation {
 		}
 	}
 
+	/**
+	 * Adds a crowd ({@code crowd NAME COUNT (: TYPE)? from [...] to [...] rate RATE}): {@code count} people who stand
+	 * spread over the {@code from} floors and walk to the {@code to} floors; {@code type} null for the default
+	 * Human, {@code rate} (people a second) null when all set off at once.
+	 */
+	record AddCrowd(String name, String type, int count, List<String> from, List<String> to, Double rate)
+			implements EditOperation {
+		public AddCrowd {
+			from = List.copyOf(from);
+			to = List.copyOf(to);
+		}
+	}
+
+	/**
+	 * Changes a crowd's size, areas and rate in place: a changed floor or number replaces just its token, the rest of
+	 * its line (speed, start, loop, behaviour, layout over several lines) stays as written; {@code rate} null
+	 * removes it (all set off at once).
+	 */
+	record SetCrowd(String name, int count, List<String> from, List<String> to, Double rate) implements EditOperation {
+		public SetCrowd {
+			from = List.copyOf(from);
+			to = List.copyOf(to);
+		}
+	}
+
 	/** A stop of a route: the centre of a floor, and the seconds the person waits there on arrival. */
 	record Stop(String floor, double waitSeconds) {
 		public Stop {

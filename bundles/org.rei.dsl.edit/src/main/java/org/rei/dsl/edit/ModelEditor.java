@@ -14,6 +14,7 @@ import java.util.Set;
 import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 
+import org.eclipse.emf.common.util.ECollections;
 import org.eclipse.emf.common.util.EList;
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.EReference;
@@ -28,6 +29,7 @@ import org.rei.context.BuildingBlock;
 import org.rei.context.ContextFactory;
 import org.rei.context.ContextPackage;
 import org.rei.context.ControlPoint;
+import org.rei.context.Crowd;
 import org.rei.context.Direction;
 import org.rei.context.DynamicObject;
 import org.rei.context.Environment;
@@ -49,6 +51,7 @@ import org.rei.context.TestCase;
 import org.rei.context.Trajectory;
 import org.rei.context.Wall;
 import org.rei.context.layout.FloorLayout;
+import org.rei.dsl.edit.EditOperation.AddCrowd;
 import org.rei.dsl.edit.EditOperation.AddDynamic;
 import org.rei.dsl.edit.EditOperation.AddFloor;
 import org.rei.dsl.edit.EditOperation.AddGoal;
@@ -62,6 +65,7 @@ import org.rei.dsl.edit.EditOperation.RemoveFloor;
 import org.rei.dsl.edit.EditOperation.RemoveGoal;
 import org.rei.dsl.edit.EditOperation.RemoveWall;
 import org.rei.dsl.edit.EditOperation.RotateObject;
+import org.rei.dsl.edit.EditOperation.SetCrowd;
 import org.rei.dsl.edit.EditOperation.SetRoute;
 import org.rei.dsl.edit.EditOperation.SetTrajectory;
 import org.rei.dsl.edit.EditOperation.Waypoint;
@@ -137,6 +141,10 @@ final class ModelEditor {
 			setTrajectory(set);
 		} else if (operation instanceof SetRoute set) {
 			setRoute(set);
+		} else if (operation instanceof AddCrowd add) {
+			addCrowd(add);
+		} else if (operation instanceof SetCrowd set) {
+			setCrowd(set);
 		} else if (operation instanceof AddGoal add) {
 			addGoal(add);
 		} else if (operation instanceof RemoveGoal remove) {
@@ -385,6 +393,91 @@ final class ModelEditor {
 		}
 		if (route.getBehaviour() != behaviour) {
 			route.setBehaviour(behaviour);
+		}
+	}
+
+	/** Built whole, areas included, before it joins the room: the serializer writes it as one statement. */
+	private void addCrowd(AddCrowd add) {
+		checkNewName(add.name());
+		String owner = "crowd '" + add.name() + "'";
+		ObjectType type = add.type() == null ? null : type(add.type());
+		List<Floor> from = area(owner, "from", add.from());
+		List<Floor> to = area(owner, "to", add.to());
+		checkCrowdNumbers(owner, add.count(), add.rate());
+		Crowd crowd = FACTORY.createCrowd();
+		crowd.setName(add.name());
+		if (type != null) {
+			crowd.setType(type);
+		}
+		crowd.setCount(add.count());
+		crowd.getFrom().addAll(from);
+		crowd.getTo().addAll(to);
+		if (add.rate() != null) {
+			crowd.setRate(add.rate());
+		}
+		environment.getOwnedObjects().add(crowd);
+		created.add(crowd);
+	}
+
+	/**
+	 * Changes a crowd in place, as a route is changed: a changed floor of an area, count or rate replaces just its
+	 * token; an area's floors past the new ones go, new ones are appended.
+	 */
+	private void setCrowd(SetCrowd set) {
+		PhysicalObject object = object(set.name());
+		if (!(object instanceof Crowd crowd)) {
+			throw new EditRefusedException("'" + set.name() + "' is not a crowd: only a crowd has from and to areas");
+		}
+		String owner = "crowd '" + set.name() + "'";
+		List<Floor> from = area(owner, "from", set.from());
+		List<Floor> to = area(owner, "to", set.to());
+		checkCrowdNumbers(owner, set.count(), set.rate());
+		changing(crowd);
+		if (crowd.getCount() != set.count()) {
+			crowd.setCount(set.count());
+		}
+		// the fewest moves, adds and removes (a floor may change places within an area: the list is unique)
+		ECollections.setEList(crowd.getFrom(), from);
+		ECollections.setEList(crowd.getTo(), to);
+		if (set.rate() == null) {
+			if (crowd.isSetRate()) {
+				crowd.unsetRate();
+			}
+		} else if (!crowd.isSetRate() || crowd.getRate() != set.rate()) {
+			crowd.setRate(set.rate());
+		}
+	}
+
+	/** The floors of a crowd's area, each looked up with its place in the area in a refusal's message. */
+	private List<Floor> area(String owner, String which, List<String> names) {
+		if (names.isEmpty()) {
+			throw new EditRefusedException("A crowd's " + which + " area is written with one floor at least: " + owner
+					+ " would have none");
+		}
+		List<Floor> floors = new ArrayList<>();
+		Set<String> seen = new HashSet<>();
+		for (int i = 0; i < names.size(); i++) {
+			String name = names.get(i);
+			try {
+				floors.add(floor(name));
+			} catch (EditRefusedException e) {
+				throw new EditRefusedException(owner + ", " + which + "[" + i + "]: " + e.getMessage());
+			}
+			if (!seen.add(name)) {
+				throw new EditRefusedException(owner + ", " + which + "[" + i + "]: floor " + name + " is in the "
+						+ which + " area twice");
+			}
+		}
+		return floors;
+	}
+
+	private static void checkCrowdNumbers(String owner, int count, Double rate) {
+		if (count < 1) {
+			throw new EditRefusedException("A crowd has 1 person at least: " + owner + " would have " + count);
+		}
+		if (rate != null && !(rate > 0)) {
+			throw new EditRefusedException("A crowd's rate is people a second, above 0: " + owner + " would have "
+					+ rate + " (leave it out for all to set off at once)");
 		}
 	}
 

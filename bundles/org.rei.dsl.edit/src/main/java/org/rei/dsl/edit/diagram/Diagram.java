@@ -13,7 +13,7 @@ import java.util.List;
  * null for a floor the layout could not place.
  */
 public record Diagram(String testCase, Room room, List<Item> objects, Item robot, List<Mover> movers,
-		Mission mission, Monitor monitor) {
+		Mission mission, Monitor monitor, List<CrowdAreas> crowds, List<GroupRoute> groups) {
 
 	/**
 	 * @param form "grid" ({@code size C x R}), "map", "occupancy" (an occupancy map) or "graph" (floors and walls
@@ -74,6 +74,23 @@ public record Diagram(String testCase, Room room, List<Item> objects, Item robot
 
 	/** A stop of a route: a floor, the seconds the person waits there, and the floor's centre. */
 	public record Stop(String floor, double waitSeconds, Double x, Double y) {
+	}
+
+	/**
+	 * A crowd as its line writes it: how many people, their type, the floors they stand spread over ({@code from})
+	 * and those they walk to ({@code to}), in the text's order, and the people a second who set off (null: all at
+	 * once). Its people are placed by the generator, so the diagram draws its areas, not them.
+	 */
+	public record CrowdAreas(String name, int count, Footprint footprint, List<Area> from, List<Area> to,
+			Double rate, double speed, boolean loop, String behaviour) {
+	}
+
+	/** A floor of a crowd's area and its centre. */
+	public record Area(String floor, Double x, Double y) {
+	}
+
+	/** A group: {@code count} people who walk one route together (its leader's). */
+	public record GroupRoute(String name, int count, Footprint footprint, Route route, boolean loop) {
 	}
 
 	/** @param timeout the goal's own timeout, null when the mission's task timeout applies */

@@ -50,15 +50,26 @@ public final class DiagramBuilder {
 		Environment environment = testCase.getOwnedEnvironment();
 		if (environment == null) {
 			return new Diagram(testCase.getName(), null, List.of(), null, List.of(), mission(testCase, null),
-					monitor(testCase.getOwnedMonitor()));
+					monitor(testCase.getOwnedMonitor()), List.of(), List.of());
 		}
 		FloorLayout layout = RoomDesugaring.layoutOf(environment); // a map room: in the map's frame
 		Catalogue defaults = Catalogues.loadDefault(resourceSet(testCase));
 		List<Diagram.Item> objects = new ArrayList<>();
 		List<Diagram.Mover> movers = new ArrayList<>();
+		List<Diagram.CrowdAreas> crowds = new ArrayList<>();
+		List<Diagram.GroupRoute> groups = new ArrayList<>();
 		for (PhysicalObject object : environment.getOwnedObjects()) {
-			if (object instanceof Crowd || object instanceof Group) {
-				continue; // not drawn: as many people as the line says, placed by the generator, edited in the text
+			// as many people as the line says, placed by the generator: drawn as their areas or route, not as movers
+			if (object instanceof Crowd crowd) {
+				crowds.add(crowd(crowd, layout, defaults));
+				continue;
+			}
+			if (object instanceof Group group) {
+				groups.add(new Diagram.GroupRoute(group.getName(), group.getCount(),
+						footprint(group.getType(), defaults, "Human"),
+						group.getOwnedRoute() == null ? null : route(group.getOwnedRoute(), layout),
+						group.getOwnedRoute() != null && group.getOwnedRoute().isLoop()));
+				continue;
 			}
 			if (object instanceof DynamicObject mover) {
 				movers.add(mover(mover, layout, defaults));
@@ -69,7 +80,23 @@ public final class DiagramBuilder {
 		Robot robot = environment.getOwnedRobot();
 		return new Diagram(testCase.getName(), room(environment, layout, defaults), objects,
 				robot == null ? null : item(robot, "robot", layout, defaults), movers, mission(testCase, layout),
-				monitor(testCase.getOwnedMonitor()));
+				monitor(testCase.getOwnedMonitor()), crowds, groups);
+	}
+
+	private static Diagram.CrowdAreas crowd(Crowd crowd, FloorLayout layout, Catalogue defaults) {
+		return new Diagram.CrowdAreas(crowd.getName(), crowd.getCount(), footprint(crowd.getType(), defaults, "Human"),
+				area(crowd.getFrom(), layout), area(crowd.getTo(), layout), crowd.isSetRate() ? crowd.getRate() : null,
+				crowd.getSpeed(), crowd.isLoop(), crowd.getBehaviour().getName().toLowerCase(Locale.ROOT));
+	}
+
+	private static List<Diagram.Area> area(List<Floor> floors, FloorLayout layout) {
+		List<Diagram.Area> area = new ArrayList<>();
+		for (Floor floor : floors) {
+			double[] centre = centre(floor, layout);
+			area.add(new Diagram.Area(name(floor), centre == null ? null : centre[0],
+					centre == null ? null : centre[1]));
+		}
+		return area;
 	}
 
 	private static Diagram.Room room(Environment environment, FloorLayout layout, Catalogue defaults) {

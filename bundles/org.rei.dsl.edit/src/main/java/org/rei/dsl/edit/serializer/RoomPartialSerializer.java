@@ -103,7 +103,43 @@ public class RoomPartialSerializer extends PartialSerializer {
 		if (repeatedGroup && feature instanceof EReference reference && reference.isContainment()) {
 			return serializeContainmentList(owner, reference, change, ownerRegion);
 		}
+		if (feature instanceof EReference reference && !reference.isContainment()) {
+			List<SerializationStrategy> list = serializeReferenceList(owner, reference, ownerRegion);
+			if (list != null) {
+				return list;
+			}
+		}
 		return super.trySerializeMultiValue(owner, change, ownerRegion, constraint);
+	}
+
+	/**
+	 * A list of cross-references written {@code '[' x+=[T] (',' x+=[T])* ']'} (a crowd's areas): Xtext re-writes
+	 * the whole statement for any change of one, losing its layout. Here the names between the brackets are
+	 * re-written and nothing else: the first written name's place takes the whole new list, the others go with
+	 * their commas (the removal starts where that replacement ends, which the diff builder writes right here).
+	 * Null (Xtext's way) for a list written otherwise or that would be empty.
+	 */
+	private List<SerializationStrategy> serializeReferenceList(EObject owner, EReference feature,
+			IEObjectRegion ownerRegion) {
+		List<ISemanticRegion> written = ownerRegion.getRegionFor().features(feature);
+		List<?> now = (List<?>) owner.eGet(feature);
+		CrossReference reference = written.isEmpty() ? null
+				: GrammarUtil.containingCrossReference(written.get(0).getGrammarElement());
+		if (reference == null || now.isEmpty()) {
+			return null;
+		}
+		ISemanticRegion first = written.get(0);
+		ISemanticRegion last = written.get(written.size() - 1);
+		List<String> names = new ArrayList<>();
+		for (Object target : now) {
+			names.add(crossReferenceSerializer.serializeCrossRef(owner, reference, (EObject) target, null, errors));
+		}
+		if (written.size() == 1) {
+			return List.of(new ReplaceWords(first, String.join(", ", names)));
+		}
+		IHiddenRegion afterFirst = first.getNextHiddenRegion();
+		IHiddenRegion afterLast = last.getNextHiddenRegion();
+		return List.of(new ReplaceWords(first, String.join(", ", names)), edits -> edits.remove(afterFirst, afterLast));
 	}
 
 	/**

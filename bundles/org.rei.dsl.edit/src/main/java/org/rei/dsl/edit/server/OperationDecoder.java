@@ -14,6 +14,7 @@ import java.util.stream.Collectors;
 
 import org.rei.context.Direction;
 import org.rei.dsl.edit.EditOperation;
+import org.rei.dsl.edit.EditOperation.AddCrowd;
 import org.rei.dsl.edit.EditOperation.AddDynamic;
 import org.rei.dsl.edit.EditOperation.AddFloor;
 import org.rei.dsl.edit.EditOperation.AddGoal;
@@ -27,6 +28,7 @@ import org.rei.dsl.edit.EditOperation.RemoveFloor;
 import org.rei.dsl.edit.EditOperation.RemoveGoal;
 import org.rei.dsl.edit.EditOperation.RemoveWall;
 import org.rei.dsl.edit.EditOperation.RotateObject;
+import org.rei.dsl.edit.EditOperation.SetCrowd;
 import org.rei.dsl.edit.EditOperation.SetRoute;
 import org.rei.dsl.edit.EditOperation.SetTrajectory;
 import org.rei.dsl.edit.EditOperation.Stop;
@@ -105,6 +107,12 @@ final class OperationDecoder {
 		case "setRoute":
 			return new SetRoute(f.string("name"), f.stops("stops"), f.number("speed"), f.number("start"),
 					f.bool("loop"), f.string("behaviour"));
+		case "addCrowd":
+			return new AddCrowd(f.string("name"), f.optionalString("type"), f.integer("count"), f.floors("from"),
+					f.floors("to"), f.optionalNumber("rate"));
+		case "setCrowd":
+			return new SetCrowd(f.string("name"), f.integer("count"), f.floors("from"), f.floors("to"),
+					f.optionalNumber("rate"));
 		case "addGoal":
 			return new AddGoal(f.string("floor"), f.integer("index"), f.optionalNumber("timeoutSeconds"));
 		case "removeGoal":
@@ -237,6 +245,24 @@ final class OperationDecoder {
 				points.add(new Waypoint(p.string("floor"), p.number("seconds")));
 			}
 			return points;
+		}
+
+		/** A list of floor names (a crowd's area); an empty one is the editor's to refuse, with its message. */
+		List<String> floors(String field) throws RequestException {
+			JsonNode value = required(field, "a list of floor names");
+			if (!value.isArray()) {
+				throw new RequestException(where + ": '" + field + "' must be a list of floor names, got "
+						+ describe(value));
+			}
+			List<String> floors = new ArrayList<>();
+			for (int i = 0; i < value.size(); i++) {
+				if (!value.get(i).isTextual()) {
+					throw new RequestException(where + ", " + field + "[" + i + "]: must be a floor name, got "
+							+ describe(value.get(i)));
+				}
+				floors.add(value.get(i).asText());
+			}
+			return floors;
 		}
 
 		List<Stop> stops(String field) throws RequestException {

@@ -21,7 +21,7 @@ public final class Protocol {
 	 */
 	public static final List<String> OPERATIONS = List.of("moveObject", "rotateObject", "addObject", "deleteObject",
 			"addHuman", "addDynamic", "addFloor", "removeFloor", "addWall", "removeWall", "setTrajectory", "setRoute",
-			"addGoal", "removeGoal", "moveGoal");
+			"addCrowd", "setCrowd", "addGoal", "removeGoal", "moveGoal");
 
 	/**
 	 * The {@code kind} of an {@code ok: false} answer: {@code refused}, the request's fault (an edit the text cannot
