@@ -60,3 +60,27 @@ def test_a_search_over_a_crowd_finds_the_robot_driving_into_a_person(tmp_path: P
         assert {p["behaviour"] for p in people} == {params["oncoming.behaviour"]}
         starts = sorted(p["start"] for p in people)
         assert abs(starts[1] - starts[0] - 1 / float(options[1])) < 0.01, starts
+
+
+BAD = """\
+case: crowd.rei
+parameters:
+  - {crowd: oncoming, count: [2, 40]}
+  - {crowd: oncomming, rate: [0.5, 1]}
+objectives: [utility]
+"""
+
+
+def test_a_crowd_the_room_cannot_take_or_does_not_have_is_refused_at_the_spec(tmp_path: Path, run_cli: Any) -> None:
+    shutil.copy(EXAMPLE / "crowd.rei", tmp_path / "crowd.rei")
+    spec = tmp_path / "bad.yaml"
+    spec.write_text(BAD, encoding="utf-8")
+    result = run_cli("search", spec, "-o", tmp_path / "out", timeout=120)
+    assert result.returncode == 2, result.stdout + result.stderr
+    # the language's own check of the largest count, through the room editor's engine, placed at the range
+    assert result.stderr.splitlines() == [
+        (f"rei: error: {spec}:3:30: oncoming of 40 people is more than the base case's room takes: Crowd 'oncoming' "
+        "of 40: its from floors hold at most 12 people of radius 0.25 (name more floors, or fewer people)"),
+        (f"rei: error: {spec}:4:13: the base case has no crowd named 'oncomming' (did you mean oncoming?); its "
+        "crowds: oncoming")], result.stderr
+    assert not (tmp_path / "out" / "runs").exists()  # nothing ran
