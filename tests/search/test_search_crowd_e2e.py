@@ -3,7 +3,7 @@
 room editor engine, generator, people server, simulation, monitor jar, evaluator and the reference navigation:
 examples/search/crowd.yaml at a budget of 4. In its base case three people who see the robot pass it; the search
 changes how many come, how often and how they behave towards the robot, and each candidate's crowd line and
-generated people are what it sampled. Found with seeds 1, 2 and 3 within the first three evaluations, each
+generated people are what it sampled. Found with seeds 1, 2 and 3 within the first two evaluations, each
 through a person who ignored the robot or stepped into its way (36-55 s a search of 4 on the 2-core machine)."""
 
 from __future__ import annotations
