@@ -7,10 +7,14 @@ import math
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from rei.artifacts._xml import read_root
 from rei.artifacts.errors import ArtifactError
 from rei.geometry import Pose2D
+
+if TYPE_CHECKING:
+    from rei.sim.faults import Fault
 
 
 @dataclass(frozen=True, slots=True)
@@ -35,6 +39,7 @@ class MissionSpec:
     start_floor: str | None
     start: Pose2D
     goals: tuple[GoalSpec, ...]
+    faults: tuple[Fault, ...] = ()  # the test case's fault schedule (<faults>), in the order written
 
 
 def read_mission(path: Path | str) -> MissionSpec:
@@ -65,7 +70,30 @@ def read_mission(path: Path | str) -> MissionSpec:
         start_floor=start.get("floor"),
         start=_pose(path, "<start>", start),
         goals=goals,
+        faults=_faults(path, root),
     )
+
+
+def _faults(path: Path, root: ET.Element) -> tuple[Fault, ...]:
+    """``<faults><fault sensor="laser" kind="blackout" from="5" to="7"/>...</faults>``: the attributes besides
+    sensor and kind are the keys of a ``--fault`` spec (rei.sim.faults.spec), read by the same code."""
+    elements = [f for block in root.findall("faults") for f in block]
+    if not elements:
+        return ()
+    from rei.sim.faults import fault_from_fields  # the simulator's model; read only when a case has faults
+
+    faults = []
+    for i, element in enumerate(elements):
+        where = f"fault #{i}"
+        if element.tag != "fault":
+            raise ArtifactError(path, f"<faults> holds <fault> elements only, got <{element.tag}>")
+        fields = dict(element.attrib)
+        sensor, kind = fields.pop("sensor", ""), fields.pop("kind", "")
+        try:
+            faults.append(fault_from_fields(sensor, kind, fields))
+        except ValueError as error:
+            raise ArtifactError(path, f"{where}: {error}") from None
+    return tuple(faults)
 
 
 def _goal(path: Path, i: int, goal: ET.Element) -> GoalSpec:

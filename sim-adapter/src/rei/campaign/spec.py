@@ -78,6 +78,9 @@ class Variant:
     fault: str | None = None
     controller: str = "nav"
     sut: ExternalSut | None = None
+    #: the behaviour towards the robot of every person who sees it (avoids, ignores, curious, scared, blocks; mixed
+    #: in generated rooms): the same rooms and cases, their people behaving so (rei.campaign.plan); None: as written
+    behaviour: str | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -265,6 +268,9 @@ def _group(r: _Reader, base: Path, controller: str, sut: ExternalSut | None, var
                                              base), None)
     own = problems.read(lambda: _variants(r, "variants", controller, variants, base, sut), variants)
     repeated = problems.read(lambda: r.int("repetitions", repetitions, minimum=1), repetitions)
+    if not problems:
+        with problems.check():
+            _check_behaviours(r, own, cases, rooms)
     problems.raise_if_any(SpecError)
     return Group(name, cases, rooms, own, repeated)
 
@@ -379,11 +385,11 @@ def _variants(r: _Reader, key: str, controller: str, default: tuple[Variant, ...
 
 
 def _variant(v: _Reader, controller: str, base: Path, sut: ExternalSut | None) -> Variant:
-    from rei.sim.faults import parse_fault
+    from rei.sim.faults import parse_faults
 
     problems = located_yaml.Collector()
     with problems.check():
-        v.only("name", "humans", "fault", "controller", "sut")
+        v.only("name", "humans", "fault", "controller", "sut", "behaviour")
     name = problems.read(lambda: v.name("name", None), "")
     humans = problems.read(lambda: v.bool("humans", True), True)
     fault = v.get("fault")
@@ -391,16 +397,63 @@ def _variant(v: _Reader, controller: str, base: Path, sut: ExternalSut | None) -
         problems.add(f"{v.at('fault')}: 'fault' must be text such as \"laser:1%\"")
     elif fault is not None:
         try:
-            parse_fault(fault)
+            parse_faults(fault)
         except ValueError as error:
             problems.add(f"{v.at('fault')}: fault: {error}")
     spec = problems.read(lambda: v.controller("controller", controller), controller)
+    behaviour = problems.read(lambda: _behaviour(v), None)
     own_sut = problems.read(lambda: _sut(v, base), None)
     if v.get("sut") is not None and v.get("controller") is not None:
         problems.add(f"{v.key_at('sut')}: give either 'controller' (in-process) or 'sut' (external), not both")
     problems.raise_if_any(SpecError)
     variant_sut = own_sut if own_sut is not None else (None if v.get("controller") is not None else sut)
-    return Variant(name, humans, fault, spec, variant_sut)
+    return Variant(name, humans, fault, spec, variant_sut, behaviour)
+
+
+def _behaviour(v: _Reader) -> str | None:
+    from rei.rooms import BEHAVIOURS, MIXED
+
+    if v.get("behaviour") is None:
+        return None
+    behaviour: str = v.choice("behaviour", (*BEHAVIOURS, MIXED), None)
+    return behaviour
+
+
+def _check_behaviours(r: _Reader, variants: tuple[Variant, ...], cases: tuple[Path, ...],
+                      rooms: RoomSettings | None) -> None:
+    """A variant that sets the people's behaviour needs people who see the robot in every case of the group: rooms
+    generated with ``people: reactive``, or .rei files with a person on a route, a crowd or a group (``mixed`` is
+    drawn per person by the room generator: generated rooms only). Placed at the group's rooms or cases."""
+    from rei.search.gatherings import gatherings
+
+    varied = [v for v in variants if v.behaviour is not None]
+    if not varied:
+        return
+    first = varied[0]
+    what = f"variant {first.name!r} sets the people's behaviour ({first.behaviour})"
+    problems = located_yaml.Collector()
+    if rooms is not None:
+        if rooms.reactive is None:
+            problems.add(f"{r.at('rooms')}: {what}: these rooms' humans walk lanes; give 'people: reactive'")
+        problems.raise_if_any(SpecError)
+        return
+    mixed = next((v for v in varied if v.behaviour == "mixed"), None)
+    if mixed is not None:
+        problems.add(f"{r.at('cases')}: variant {mixed.name!r}: 'mixed' draws each person's behaviour in generated "
+                     f"rooms ('rooms' with 'people: reactive'); for test cases give one behaviour")
+    for i, case in enumerate(cases):
+        if case.suffix != ".rei":
+            problems.add(f"{r.item_at('cases', i)}: {what}: {case.name} is a generated folder; give its .rei file")
+            continue
+        try:
+            text = case.read_text(encoding="utf-8")
+        except OSError as error:
+            problems.add(f"{r.item_at('cases', i)}: cannot read {case}: {error.strerror or error}")
+            continue
+        if not gatherings(text, routes=True):
+            problems.add(f"{r.item_at('cases', i)}: {what}: {case.name} has no person who sees the robot (a human "
+                         f"on a route, a crowd or a group)")
+    problems.raise_if_any(SpecError)
 
 
 def _case_stem(case: Path) -> str:

@@ -18,8 +18,11 @@ def add_mission_options(parser: argparse.ArgumentParser) -> None:
                         help="controller under test: nav, nav:key=value,..., script:FILE or a plug-in (default nav)")
     parser.add_argument("--seed", type=int, default=0, help="seed of every random choice (default 0)")
     parser.add_argument("--no-humans", action="store_true", help="leave the humans out of the world")
-    parser.add_argument("--fault", metavar="SPEC", help="inject a fault, e.g. laser:1%%, laser:10%% or "
-                        "laser:rate=0.01,gain=0.5,width=3")
+    parser.add_argument("--fault", metavar="SPEC", help="faults besides the test case's, ';' between two: "
+                        "laser:KIND,key=value,... with KIND impulse, freeze, blackout, occlusion or noise and "
+                        "from=, to= (s), period= with pulse= or duty= (e.g. laser:blackout,from=5,to=7); the "
+                        "run-long impulse noise laser:1%%, laser:10%% or laser:rate=0.01,gain=0.5,width=3; the "
+                        "thesis's gated laser:gated-1%%, laser:gated-10%% (docs/faults.md)")
     parser.add_argument("--animation", choices=("velocity", "force"), default="velocity",
                         help="how humans and moving objects follow their trajectories: velocity (default) sets "
                         "their velocity each step; force pushes them with F = m dv/dt through the contact solver, "
@@ -51,13 +54,13 @@ def add_mission_options(parser: argparse.ArgumentParser) -> None:
 
 def check_mission_options(args: argparse.Namespace) -> None:
     """Refuse a bad controller or fault before any process starts."""
-    from rei.sim.faults import parse_fault
+    from rei.sim.faults import parse_faults
     from rei.sut.registry import UnknownControllerError, create_controller
 
     sut_options(args)
     try:
         if args.fault:
-            parse_fault(args.fault)
+            parse_faults(args.fault)
         create_controller(args.controller)
     except (ValueError, UnknownControllerError) as error:
         raise CommandError(str(error)) from None

@@ -32,6 +32,14 @@ class MissionEventKind(enum.Enum):
     END = "END"
 
 
+#: The fault kinds per sensor (contract/vocabulary.json ``faults.kinds``; rei.sim.faults implements them). Each
+#: window edge of a fault is a mission-topic event besides MissionEventKind's: FAULT_<SENSOR>_<KIND>_BEGIN/_END.
+FAULT_KINDS: dict[str, tuple[str, ...]] = {"laser": ("impulse", "freeze", "blackout", "occlusion", "noise")}
+FAULT_EVENTS: tuple[str, ...] = tuple(f"FAULT_{sensor.upper()}_{kind.upper()}_{edge}"
+                                      for sensor, kinds in FAULT_KINDS.items() for kind in kinds
+                                      for edge in ("BEGIN", "END"))
+
+
 @dataclass(frozen=True, slots=True)
 class MissionEvent:
     """One mission event. ``task_index``/``goal`` are set for task events; ``reason`` says why a task failed

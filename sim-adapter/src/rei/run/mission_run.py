@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING, Any
 from rei.artifacts import read_case
 from rei.geometry import Twist2D
 from rei.mission import MissionEvent, MissionExecutor, TaskResult, mission_info
+from rei.sim.faults import FaultClock, fault_fields
 from rei.sim.people.cost import people_cost
 from rei.sim.simulation import Simulation
 from rei.sut.api import Controller
@@ -76,6 +77,7 @@ class MissionRunResult:
     error: str | None = None  # what ended the run early (an external SUT that broke it)
     sut: dict[str, Any] | None = None  # an external SUT's counts (rei.sut.external.SutStats)
     people: dict[str, dict[str, Any]] | None = None  # what the robot cost each person (rei.sim.people.cost)
+    faults: list[dict[str, str]] | None = None  # the run's fault schedule (the mission's, then --fault's)
 
     @property
     def succeeded(self) -> bool:
@@ -139,9 +141,15 @@ def run_mission(
             controller.reset(sim.static_map(), case.mission.start)
             command = Twist2D()
             next_progress = 0.0
+            faults = FaultClock(sim.faults)
             while not executor.done and sim.t < time_limit:
                 if sim.steps % control_every == 0:
                     executor.tick(sim.t, sim.robot_pose())
+                # a fault window's edge is published at the first step at or after it (the scans follow the same
+                # schedule), after the mission's BEGIN and before the controller sees this step's observation
+                for edge in faults.due(sim.t):
+                    missions.publish(sim.t, edge.event, reason=edge.fault.describe())
+                if sim.steps % control_every == 0:
                     command = controller.step(sim.observation())
                 sim.step(command)
                 if collector.due(sim.t):  # a snapshot costs; build it only when it will be sent
@@ -162,7 +170,9 @@ def run_mission(
             tasks=tuple(executor.results) if executor is not None else (), goals=len(case.mission.goals),
             state_messages=collector.seq, mission_messages=missions.seq, cut_off=error is None and not done,
             error=error,
-            sut=None if external is None else external.stats.to_json(), people=people)
+            sut=None if external is None else external.stats.to_json(), people=people,
+            faults=[{"sensor": f.sensor, "kind": f.kind, **fault_fields(f), "description": f.describe()}
+                    for f in sim.faults.faults])
     _write_summary(out_dir, case_dir, options, result)
     return result
 
@@ -200,6 +210,7 @@ def _write_summary(out_dir: Path, case_dir: Path, options: MissionRunOptions, re
         **({"sut": result.sut} if result.sut is not None else {}),
         **({"people": result.people} if result.people is not None else {}),
         "tasks": [asdict(task) for task in result.tasks],
+        **({"faults": result.faults} if result.faults else {}),
         "messages": {"state": result.state_messages, "mission": result.mission_messages},
     }
     (out_dir / "sim.json").write_text(json.dumps(summary, indent=2) + "\n", encoding="utf-8")

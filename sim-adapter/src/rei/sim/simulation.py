@@ -24,7 +24,7 @@ from rei.sim.animator import AnimatedBody, Animator, DriveMode
 from rei.sim.clearance import FootprintClearance
 from rei.sim.contacts import ContactSensor
 from rei.sim.drive import DiffDrive
-from rei.sim.faults import LaserFault, LaserFaultInjector, parse_fault
+from rei.sim.faults import FaultSchedule, LaserFault, LaserFaults, as_schedule, fault_generators
 from rei.sim.lidar import Lidar
 from rei.sim.native_output import quiet_native_output
 from rei.sim.odometry import WheelOdometry
@@ -54,7 +54,7 @@ class Simulation:
         physics_rate: float = 240.0,
         humans: bool = True,
         lidar_rate: float | None = None,
-        fault: LaserFault | str | None = None,
+        fault: FaultSchedule | LaserFault | str | None = None,
         odom_noise: float = 0.0,
         animator_rate: float = 60.0,
         animation_mode: DriveMode | str = DriveMode.VELOCITY,
@@ -62,8 +62,9 @@ class Simulation:
         """Load ``case`` (a folder of the five generated files, or an already read :class:`Case`).
 
         ``humans=False`` removes the HUMAN bodies (a static run of the same room); DYNAMIC objects stay.
-        ``lidar_rate`` defaults to world.json's lidar rate. ``fault`` is a :class:`LaserFault` or a spec string
-        (``laser:1%``). ``odom_noise`` is in m^0.5 (see rei.sim.odometry).
+        ``lidar_rate`` defaults to world.json's lidar rate. ``fault`` is a :class:`FaultSchedule`, a run-long
+        :class:`LaserFault` or a ``--fault`` spec (``laser:1%``, ``laser:blackout,from=5,to=7``); it acts after
+        the mission's own faults (mission.xml), in :attr:`faults`. ``odom_noise`` is in m^0.5 (rei.sim.odometry).
         """
         self.case = case if isinstance(case, Case) else read_case(case)
         robot_spec = self.case.world.robot
@@ -86,7 +87,7 @@ class Simulation:
         self.dt = 1.0 / self.physics_rate
         self.lidar_rate = float(lidar_rate)
         self.animator_rate = float(animator_rate)
-        self.fault = parse_fault(fault) if isinstance(fault, str) else fault
+        self.faults = FaultSchedule(self.case.mission.faults) + as_schedule(fault)
         self._steps = 0
         self._next_animation = 0
         self._animations = 0
@@ -146,10 +147,10 @@ class Simulation:
         self._clearance = FootprintClearance(robot_spec.size[0], robot_spec.size[1])
         lidar = robot_spec.lidar
         self._fault = (
-            LaserFaultInjector(
-                self.fault, np.random.default_rng(fault_seed), lidar.range_min, lidar.range_max
-            )
-            if self.fault is not None
+            LaserFaults(self.faults, fault_generators(self.faults, fault_seed), range_min=lidar.range_min,
+                        range_max=lidar.range_max, angle_min=0.0, angle_increment=self._lidar.angle_increment,
+                        beams=lidar.beams)
+            if self.faults.of("laser")
             else None
         )
         floors = frozenset(self.world.body_of[o.name] for o in world.objects if o.category is Category.FLOOR)
@@ -252,7 +253,7 @@ class Simulation:
     def _take_scan(self) -> None:
         ranges = self._lidar.scan()
         if self._fault is not None:
-            ranges = self._fault.apply(ranges)
+            ranges = self._fault.apply(self.t, ranges)
         ranges.flags.writeable = False
         spec = self._lidar.spec
         self._scan = LaserScan(

@@ -20,7 +20,7 @@ from typing import Any, Protocol
 import msgpack
 import numpy as np
 
-from rei.mission.executor import MissionEventKind
+from rei.mission.executor import FAULT_EVENTS, MissionEventKind
 
 
 class Pose2DLike(Protocol):
@@ -200,8 +200,19 @@ def encode_mission_event(
 ) -> dict[str, Any]:
     """A mission message. BEGIN/END concern no task: ``task_index`` -1 and ``goal`` nil.
 
-    Task events need a ``task_index`` >= 0 and a goal ``[x, y, yaw]``; TASK_FAIL needs a ``reason``.
+    Task events need a ``task_index`` >= 0 and a goal ``[x, y, yaw]``; TASK_FAIL needs a ``reason``. A fault's
+    window edge (``FAULT_LASER_BLACKOUT_BEGIN``, rei.mission.executor.FAULT_EVENTS) concerns no task either; its
+    ``reason`` says which fault.
     """
+    if isinstance(event, str) and event in FAULT_EVENTS:
+        if task_index != -1 or goal is not None:
+            raise ValueError(f"{event} concerns no task: task_index must be -1 and goal None")
+        if not math.isfinite(float(t)):
+            raise ValueError(f"mission event time must be finite, got {t}")
+        fault: dict[str, Any] = {"seq": int(seq), "t": float(t), "event": event, "task_index": -1, "goal": None}
+        if reason:
+            fault["reason"] = str(reason)
+        return fault
     kind = MissionEventKind(event)
     per_task = kind in (MissionEventKind.TASK_START, MissionEventKind.TASK_SUCCESS, MissionEventKind.TASK_FAIL)
     if per_task and (task_index < 0 or goal is None):
