@@ -1,18 +1,26 @@
 # SPDX-License-Identifier: EPL-2.0
 """A spec expanded into what to prepare (one generated case folder per test case) and what to run.
 
-Pure: no files are touched, so the order and names of runs can be tested, and a resumed campaign plans exactly
-the same runs. A run's key names its folder (``OUT/runs/<key>``) and stays the same across resumes.
+Pure: no files are written (a behaviour variant of a .rei file reads it), so the order and names of runs can be
+tested, and a resumed campaign plans exactly the same runs. A run's key names its folder (``OUT/runs/<key>``) and
+stays the same across resumes.
+
+A variant with a ``behaviour`` runs the group's cases with every person who sees the robot behaving so: a generated
+room is generated again with that behaviour (the same room: the people's draws do not depend on it, only the word
+after their route), a .rei file is rewritten (rei.search.gatherings.with_behaviour); each is a case of its own
+(``OUT/cases/<its key>``), while its runs keep the room's name as their ``case``, so reports and `rei compare`
+pair and group them by room and by variant.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import re
 from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any
 
-from rei.campaign.spec import Spec, SpecError
+from rei.campaign.spec import Group, Spec, SpecError
 
 _UNSAFE = re.compile(r"[^A-Za-z0-9_-]+")
 
@@ -76,29 +84,52 @@ class Plan:
     runs: tuple[RunTask, ...]
 
 
-def plan_campaign(spec: Spec, out: Path) -> Plan:
+def _sources(group: Group, out: Path, behaviour: str | None = None) -> list[CaseSource]:
+    """The group's cases, with every person who sees the robot behaving ``behaviour`` (None: as written)."""
+    from rei.campaign.prepare import relocated_imports
     from rei.rooms import render
+    from rei.search.gatherings import with_behaviour
 
+    sources: list[CaseSource] = []
+    if group.rooms is not None:
+        r = group.rooms if behaviour is None else dataclasses.replace(group.rooms, reactive=behaviour)
+        for room in r.generate():
+            sources.append(CaseSource(room.stem, group.name, None, render(room, r.count, out / "rooms")))
+        return sources
+    for path in group.cases:
+        stem = _UNSAFE.sub("_", path.stem if path.suffix == ".rei" else path.name)
+        if behaviour is None:
+            sources.append(CaseSource(stem, group.name, path, None))
+        else:  # checked by the spec: a .rei file with people who see the robot; written to OUT/rooms
+            text = with_behaviour(path.read_text(encoding="utf-8"), behaviour)
+            sources.append(CaseSource(f"{stem}-{behaviour}", group.name, None,
+                                      relocated_imports(text, path.parent, out / "rooms")))
+    return sources
+
+
+def plan_campaign(spec: Spec, out: Path) -> Plan:
     out = out.resolve()
     cases: dict[str, CaseSource] = {}
     runs: list[RunTask] = []
+
+    def add(source: CaseSource) -> None:
+        known = cases.get(source.key)
+        if known is not None and (known.path, known.text) != (source.path, source.text):
+            raise SpecError(f"two different test cases are both named {source.key!r} (groups {known.group!r} "
+                            f"and {source.group!r}); rename one file")
+        cases.setdefault(source.key, source)
+
     for group in spec.groups:
-        sources: list[CaseSource] = []
-        if group.rooms is not None:
-            r = group.rooms
-            for room in r.generate():
-                sources.append(CaseSource(room.stem, group.name, None, render(room, r.count, out / "rooms")))
-        else:
-            for path in group.cases:
-                stem = path.stem if path.suffix == ".rei" else path.name
-                sources.append(CaseSource(_UNSAFE.sub("_", stem), group.name, path, None))
-        for source in sources:
-            known = cases.get(source.key)
-            if known is not None and (known.path, known.text) != (source.path, source.text):
-                raise SpecError(f"two different test cases are both named {source.key!r} (groups {known.group!r} "
-                                f"and {source.group!r}); rename one file")
-            cases.setdefault(source.key, source)
+        sources = _sources(group, out)
+        behaviours = {b: _sources(group, out, b) for b in dict.fromkeys(v.behaviour for v in group.variants) if b}
+        for index, source in enumerate(sources):
+            if any(v.behaviour is None for v in group.variants):
+                add(source)
             for variant in group.variants:
+                # the variant's own version of the case: the same room, its people behaving as the variant says
+                own = source if variant.behaviour is None else behaviours[variant.behaviour][index]
+                if own is not source:
+                    add(own)
                 for rep in range(group.repetitions):
                     key = f"{group.name}__{source.key}__{variant.name}__r{rep}"
                     runs.append(RunTask(
@@ -106,7 +137,7 @@ def plan_campaign(spec: Spec, out: Path) -> Plan:
                         seed=spec.seed + rep, humans=variant.humans, fault=variant.fault,
                         controller=variant.controller, sut=variant.sut.to_dict() if variant.sut else None,
                         mode=spec.mode, timeout=spec.timeout, report=spec.report,
-                        case_dir=str(source.case_dir(out)), run_dir=str(out / "runs" / key),
+                        case_dir=str(own.case_dir(out)), run_dir=str(out / "runs" / key),
                         patterns=str(spec.patterns) if spec.patterns else None,
                         utilities=str(spec.utilities) if spec.utilities else None))
     return Plan(tuple(cases.values()), tuple(runs))

@@ -83,11 +83,13 @@ def run_campaign(spec: Spec, out: Path, backend: Backend, *, retry_errors: bool 
                               "cpu": round(prepare_cpu, 3),
                               "wall": round(Sample.now().wall - start.wall, 3)}
         todo = []
+        # by the folder a run runs (a behaviour variant's case is not its room's: rei.campaign.plan)
+        by_folder = {str(source.case_dir(out.resolve())): prepared[source.key] for source in plan.cases}
         for task in plan.runs:
             done = finished_result(task)
             if done is not None and not (retry_errors and done.status != "COMPLETED"):
                 continue
-            problem = prepared[task.case].error
+            problem = by_folder[task.case_dir].error
             if problem is not None:  # the case could not be generated: the run is an ERROR, not a crash
                 # recorded as a run that ended in ERROR is (its folder, the task.json that makes it finished)
                 Path(task.run_dir).mkdir(parents=True, exist_ok=True)

@@ -50,12 +50,19 @@ class Gathering:
         return [f"{self.name}_{i}" for i in range(1, self.count + 1)]
 
 
-def gatherings(text: str) -> dict[str, Gathering]:
-    """Every crowd and group of ``text``, by name, in the order written (none when it has none)."""
+def gatherings(text: str, *, routes: bool = False) -> dict[str, Gathering]:
+    """Every crowd and group of ``text``, by name, in the order written (none when it has none); with ``routes``,
+    every person on a route too (``human NAME route [...]``, kind human, count 1), so that every behaviour towards
+    the robot in the text is among them."""
     masked = _STRING.sub(lambda m: " " * len(m[0]), _COMMENT.sub(lambda m: re.sub(r"[^\n]", " ", m[0]), text))
     tokens = [(m[0], m.start(), m.end()) for m in _TOKEN.finditer(masked)]
     found: dict[str, Gathering] = {}
     for i, (word, _, _) in enumerate(tokens):
+        if routes and word == "human" and i + 2 < len(tokens) and _ID.fullmatch(tokens[i + 1][0]):
+            person = _read("human", tokens, i)
+            if person is not None:
+                found.setdefault(person.name, person)
+            continue
         if word not in ("crowd", "group") or i + 2 >= len(tokens):
             continue
         # a statement: the keyword, a name and a whole number (crowd and group are names too: 'object crowd : Box',
@@ -72,15 +79,16 @@ def gatherings(text: str) -> dict[str, Gathering]:
 
 def _read(kind: str, tokens: list[tuple[str, int, int]], i: int) -> Gathering | None:
     name = tokens[i + 1][0].lstrip("^")
-    count_token = tokens[i + 2]
-    j = i + 3
+    # a person on a route is one person: its count stands nowhere in the text
+    count_token = tokens[i + 2] if kind != "human" else ("1", tokens[i + 1][2], tokens[i + 1][2])
+    j = i + 3 if kind != "human" else i + 2
 
     def word(k: int) -> str:
         return tokens[k][0] if k < len(tokens) else ""
 
     if word(j) == ":":
         j += 2
-    lists = ("from", "to") if kind == "crowd" else ("route",)
+    lists = ("from", "to") if kind == "crowd" else ("route",)  # a group's route, or a person's
     for keyword in lists:
         if word(j) != keyword or word(j + 1) != "[":
             return None
@@ -121,11 +129,18 @@ def number(value: float) -> str:
     return text if text not in ("", "-0") else "0"
 
 
-def with_values(text: str, settings: Iterable[Mapping[str, Any]]) -> str:
+def with_behaviour(text: str, behaviour: str) -> str:
+    """``text`` with every person on a route, crowd and group behaving ``behaviour`` towards the robot (a campaign's
+    behaviour variant, rei.campaign.plan)."""
+    found = gatherings(text, routes=True)
+    return with_values(text, [{"name": name, "behaviour": behaviour} for name in found], routes=True)
+
+
+def with_values(text: str, settings: Iterable[Mapping[str, Any]], *, routes: bool = False) -> str:
     """``text`` with each setting's crowd or group changed: ``{"name": N, "count": 5, "rate": 0.5,
     "behaviour": "blocks"}``, any of the three left out to keep it as written. An unwritten rate or behaviour is
     appended to the statement; ``avoids`` is not written where none is (it is the default)."""
-    found = gatherings(text)
+    found = gatherings(text, routes=routes)
     changes: list[tuple[int, int, str]] = []
     for setting in settings:
         g = found[setting["name"]]
