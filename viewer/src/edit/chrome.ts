@@ -53,9 +53,10 @@ export class Chrome {
   tools(index: RoomIndex | null, selection: Selection | null, tool: Tool): void {
     const kind = selection?.kind;
     const turnable = kind === "object" || kind === "robot";
-    const drafting = tool.kind === "path";
+    const drafting = tool.kind === "path" || tool.kind === "route" || tool.kind === "crowd";
     const layoutPart = kind === "floor" || kind === "wall";
     const deletable = kind === "object" || kind === "human" || kind === "dynamic" || kind === "goal"
+      || kind === "crowd" || kind === "group"
       || (layoutPart && index?.editableLayout === true);
     this.button("rotate-left").disabled = !turnable || drafting;
     this.button("rotate-right").disabled = !turnable || drafting;
@@ -63,7 +64,9 @@ export class Chrome {
     this.button("delete").title = kind === "robot" ? "a room has exactly one robot: move it instead"
       : layoutPart && index?.editableLayout !== true ? "this room's floors and walls come from its size or map"
         : "delete the selection (Delete)";
-    this.button("draw-path").disabled = drafting || !(kind === "human" || kind === "dynamic");
+    this.button("draw-path").disabled = drafting || !(kind === "human" || kind === "dynamic" || kind === "crowd");
+    this.button("draw-path").title = kind === "crowd" ? "Choose the selected crowd's areas: click floors or drag"
+      : "Draw the selected human's path or route: click floors";
     this.button("finish-path").disabled = !drafting;
     this.button("cancel-path").disabled = !drafting;
     this.button("add-goal").disabled = index?.diagram.mission === null || drafting;

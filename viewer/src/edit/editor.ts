@@ -12,7 +12,9 @@ import type { Actions } from "./panels";
 import { layoutHint, Panels } from "./panels";
 import { RoomIndex } from "./room";
 import { draftOf, finishOperation, newDynamicDraft, newHumanDraft } from "./tools/path";
-import type { Issue, Operation, PaletteType, PointSpec, State, Status } from "./types";
+import { crowdDraftOf, crowdOperation, crowdProblem, newCrowdDraft, routeDraftOf, routeOperation } from "./tools/people";
+import type { CrowdDraft } from "./model";
+import type { Issue, Operation, PaletteType, PointSpec, State, Status, StopSpec } from "./types";
 
 export const POLL_MS = 1000;
 
@@ -61,6 +63,14 @@ export class Editor implements Actions {
     this.selection = this.existing(this.selection);
     const tool = this.tool;
     if (tool.kind === "path" && !tool.draft.isNew && !state.diagram.movers.some((m) => m.name === tool.draft.name)) {
+      this.tool = { kind: "select" };
+    }
+    // a draft of something an undo or a reload took away has nothing left to change
+    if (tool.kind === "route" && !state.diagram.movers.some((m) => m.name === tool.draft.name && m.route != null)) {
+      this.tool = { kind: "select" };
+    }
+    if (tool.kind === "crowd" && !tool.draft.isNew
+      && !(state.diagram.crowds ?? []).some((c) => c.name === tool.draft.name)) {
       this.tool = { kind: "select" };
     }
     this.chrome.setFile(state.file);
@@ -115,8 +125,10 @@ export class Editor implements Actions {
   redraw(): void {
     const { state, index } = this;
     if (state === null || index === null) return;
+    const tool = this.tool;
     this.diagram.render({ index, issues: this.issues, selection: this.selection,
-      draft: this.tool.kind === "path" ? this.tool.draft : null });
+      draft: tool.kind === "path" ? tool.draft : null, routeDraft: tool.kind === "route" ? tool.draft : null,
+      crowdDraft: tool.kind === "crowd" ? tool.draft : null });
     this.panels.render(state, index, this.selection, this.tool);
     this.chrome.tools(index, this.selection, this.tool);
     this.chrome.showHint(this.hint(index));
@@ -133,6 +145,13 @@ export class Editor implements Actions {
     if (tool.kind === "path") {
       return "Click floors to add control points. Enter or Finish saves the path, Escape cancels.";
     }
+    if (tool.kind === "route") {
+      return "Click floors to add stops to the route. Enter or Finish saves it, Escape cancels.";
+    }
+    if (tool.kind === "crowd") {
+      return `Click floors or drag a rectangle over them for the crowd's ${tool.draft.area} area `
+        + "(From / To in the side panel switch). Enter or Finish saves the crowd, Escape cancels.";
+    }
     if (index.diagram.room === null) return "This test case has no room.";
     if (!index.editableLayout) return layoutHint(index);
     return "Click a dashed cell to add a floor there; select a floor for its add-wall strips; Delete removes.";
@@ -148,7 +167,9 @@ export class Editor implements Actions {
         : selection.kind === "wall" ? d.room?.walls.some((w) => w.name === name)
           : selection.kind === "robot" ? d.robot?.name === name
             : selection.kind === "object" ? d.objects.some((o) => o.name === name)
-              : d.movers.some((m) => m.name === name);
+              : selection.kind === "crowd" ? (d.crowds ?? []).some((c) => c.name === name)
+                : selection.kind === "group" ? (d.groups ?? []).some((g) => g.name === name)
+                  : d.movers.some((m) => m.name === name);
     return found === true ? selection : null;
   }
 
@@ -237,12 +258,14 @@ export class Editor implements Actions {
   async deleteSelected(): Promise<void> {
     const selection = this.selection;
     const index = this.index;
-    if (selection === null || index === null || this.tool.kind === "path") return;
+    if (selection === null || index === null || this.drafting) return;
     let operation: Operation;
     switch (selection.kind) {
       case "object":
       case "human":
       case "dynamic":
+      case "crowd":
+      case "group":
         operation = { op: "deleteObject", name: selection.name };
         break;
       case "goal":
@@ -276,14 +299,61 @@ export class Editor implements Actions {
 
   // ---- trajectories -------------------------------------------------------------------------------------
 
+  /** A path, a route or a crowd is being drawn: the other edits wait until it is finished or cancelled. */
+  get drafting(): boolean {
+    return this.tool.kind === "path" || this.tool.kind === "route" || this.tool.kind === "crowd";
+  }
+
+  /** Draws the selected mover's path anew (or extends it); a person who walks a route gets its route drawn. */
   startPath(extend = false): void {
     const selection = this.selection;
+    if (selection?.kind === "crowd") return this.startCrowd(true);
     const mover = this.index?.diagram.movers.find((m) => m.name === selection?.name);
     if (mover === undefined) {
       this.chrome.toast("Select a human (or a moving object) first.", "error");
       return;
     }
+    if (mover.route != null) {
+      this.setTool({ kind: "route", draft: routeDraftOf(mover, extend) });
+      return;
+    }
     this.setTool({ kind: "path", draft: draftOf(mover, extend) });
+  }
+
+  /** Changes the stops of the route being drawn, or of the selected person's route at once. */
+  editStops(stops: StopSpec[], loop: boolean): void {
+    const tool = this.tool;
+    if (tool.kind === "route") {
+      this.setTool({ kind: "route", draft: { ...tool.draft, stops, loop } });
+      return;
+    }
+    const mover = this.index?.diagram.movers.find((m) => m.name === this.selection?.name);
+    const operation = mover === undefined ? null : routeOperation(mover, stops, loop);
+    if (operation !== null) void this.apply(operation);
+  }
+
+  /** A new crowd, or the selected crowd's areas (`existing`): clicks and rectangles choose floors. */
+  startCrowd(existing = false): void {
+    const index = this.index;
+    if (index === null) return;
+    const selection = this.selection;
+    const crowd = existing && selection?.kind === "crowd"
+      ? index.diagram.crowds?.find((c) => c.name === selection.name) : undefined;
+    if (crowd === undefined) this.selection = null;
+    this.setTool({ kind: "crowd", draft: crowd === undefined ? newCrowdDraft(index) : crowdDraftOf(crowd) });
+  }
+
+  /** Changes the crowd being placed, or the selected crowd's size or rate at once. */
+  editCrowd(change: Partial<CrowdDraft>): void {
+    const tool = this.tool;
+    if (tool.kind === "crowd") {
+      this.setTool({ kind: "crowd", draft: { ...tool.draft, ...change } });
+      return;
+    }
+    const selection = this.selection;
+    const crowd = selection?.kind === "crowd"
+      ? this.index?.diagram.crowds?.find((c) => c.name === selection.name) : undefined;
+    if (crowd !== undefined) void this.apply(crowdOperation({ ...crowdDraftOf(crowd), ...change }));
   }
 
   editPoints(points: PointSpec[], loop: boolean): void {
@@ -298,8 +368,11 @@ export class Editor implements Actions {
     }
   }
 
+  /** Finish (Enter): saves the path, route or crowd being drawn as one operation. */
   async finishPath(): Promise<void> {
     const tool = this.tool;
+    if (tool.kind === "route") return this.finishRoute(tool.draft.name, tool.draft.stops, tool.draft.loop);
+    if (tool.kind === "crowd") return this.finishCrowd(tool.draft);
     if (tool.kind !== "path") return;
     if (tool.draft.points.length === 0) {
       this.chrome.toast("Click at least one floor for the path first.", "error");
@@ -312,7 +385,32 @@ export class Editor implements Actions {
     }
   }
 
+  private async finishRoute(name: string, stops: StopSpec[], loop: boolean): Promise<void> {
+    const mover = this.index?.diagram.movers.find((m) => m.name === name);
+    if (stops.length === 0) {
+      this.chrome.toast("Click at least one floor for the route first.", "error");
+      return;
+    }
+    const operation = mover === undefined ? null : routeOperation(mover, stops, loop);
+    if (operation !== null && await this.apply(operation)) {
+      this.tool = { kind: "select" };
+      this.select({ kind: "human", name });
+    }
+  }
+
+  private async finishCrowd(draft: CrowdDraft): Promise<void> {
+    const problem = crowdProblem(draft);
+    if (problem !== null) {
+      this.chrome.toast(problem, "error");
+      return;
+    }
+    if (await this.apply(crowdOperation(draft))) {
+      this.tool = { kind: "select" };
+      this.select({ kind: "crowd", name: draft.name });
+    }
+  }
+
   cancelPath(): void {
-    if (this.tool.kind === "path") this.setTool({ kind: "select" });
+    if (this.drafting) this.setTool({ kind: "select" });
   }
 }

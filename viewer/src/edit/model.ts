@@ -2,11 +2,12 @@
 // The editor's own state around the server's State: what is selected, which tool is active, and which diagram
 // elements the validation issues are on. Elements are found by name (names are unique in a test case); goals
 // have no name and are found by their place in the mission.
-import type { Footprint, Issue, PaletteType, PointSpec } from "./types";
+import type { Footprint, Issue, PaletteType, PointSpec, StopSpec } from "./types";
 
-export type Kind = "floor" | "wall" | "object" | "robot" | "human" | "dynamic" | "goal" | "ghost";
+export type Kind = "floor" | "wall" | "object" | "robot" | "human" | "dynamic" | "goal" | "crowd" | "group" | "ghost";
 /** The kinds that can be selected (a ghost is clicked to add a floor, never selected). */
-export const KINDS: ReadonlySet<string> = new Set(["floor", "wall", "object", "robot", "human", "dynamic", "goal"]);
+export const KINDS: ReadonlySet<string> = new Set(["floor", "wall", "object", "robot", "human", "dynamic", "goal",
+  "crowd", "group"]);
 
 export interface Selection {
   kind: Kind;
@@ -30,12 +31,36 @@ export interface PathDraft {
   loop: boolean;
 }
 
+/** The route of a person who sees the robot being drawn: one setRoute on Finish (speed, start, behaviour kept). */
+export interface RouteDraft {
+  name: string;
+  stops: StopSpec[];
+  loop: boolean;
+}
+
+/**
+ * A crowd being placed (addCrowd) or changed (setCrowd): its two areas of floors, the one clicks and rectangles
+ * go to (`area`), its size and rate. One operation on Finish, so the whole placement is one undo step.
+ */
+export interface CrowdDraft {
+  name: string;
+  isNew: boolean;
+  count: number;
+  /** People a second; null: all set off at once. */
+  rate: number | null;
+  from: string[];
+  to: string[];
+  area: "from" | "to";
+}
+
 /** The active tool. Placing and adding a goal are one click each (Shift-click keeps the tool), like most editors. */
 export type Tool =
   | { kind: "select" }
   | { kind: "place"; type: PaletteType }
   | { kind: "goal" }
-  | { kind: "path"; draft: PathDraft };
+  | { kind: "path"; draft: PathDraft }
+  | { kind: "route"; draft: RouteDraft }
+  | { kind: "crowd"; draft: CrowdDraft };
 
 /** The key of a diagram element: `n:NAME`, or `g:INDEX` for a goal. */
 export const nameKey = (name: string): string => `n:${name}`;

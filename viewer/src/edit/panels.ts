@@ -5,9 +5,9 @@
 import { byId } from "../dom";
 import { HUMAN } from "../draw/colours";
 import { formatSeconds } from "./draw/items";
-import type { Selection, Tool } from "./model";
+import type { CrowdDraft, Selection, Tool } from "./model";
 import type { RoomIndex } from "./room";
-import type { Issue, PaletteType, PointSpec, State } from "./types";
+import type { Issue, Mover, PaletteType, PointSpec, State, StopSpec } from "./types";
 
 const MAX_ISSUE_ROWS = 300;
 
@@ -25,6 +25,12 @@ export interface Actions {
   startPath(extend?: boolean): void;
   finishPath(): void;
   cancelPath(): void;
+  /** Changes the stops of the route being drawn, or of the selected person's route at once. */
+  editStops(stops: StopSpec[], loop: boolean): void;
+  /** Places a new crowd, or changes the selected crowd's areas (`existing`). */
+  startCrowd(existing?: boolean): void;
+  /** Changes the crowd being placed, or the selected crowd's size or rate at once. */
+  editCrowd(change: Partial<CrowdDraft>): void;
 }
 
 interface Props {
@@ -118,12 +124,31 @@ export class Panels {
         el("span", { text: type.name }, entry);
       }
     }
+    el("h3", { text: "Crowds", title: "people who walk from one area of floors to another" }, this.palette);
+    const crowd = button("", "A crowd: choose its from and to areas (click floors or drag a rectangle), its size and "
+      + "rate; Finish (Enter) adds it", this.palette, () => this.actions.startCrowd(), "palette-entry");
+    crowd.id = "new-crowd";
+    crowd.classList.toggle("active", tool.kind === "crowd" && tool.draft.isNew);
+    el("span", { class: "swatch crowd" }, crowd);
+    el("span", { text: "Crowd" }, crowd);
   }
 
   private renderSelection(index: RoomIndex, selection: Selection | null, tool: Tool): void {
     const box = this.selection;
     box.replaceChildren();
     const d = index.diagram;
+    if (tool.kind === "route") {
+      el("p", { text: `Route of ${tool.draft.name}`, class: "title" }, box);
+      el("p", { class: "hint", text: "Click floors to add stops; set a stop's wait here. Finish (Enter) saves the route, "
+        + "Escape cancels." }, box);
+      this.renderStops(box, tool.draft.stops, tool.draft.loop, true);
+      this.draftButtons(box, tool.draft.stops.length === 0, () => this.actions.editStops([], tool.draft.loop));
+      return;
+    }
+    if (tool.kind === "crowd") {
+      this.renderCrowdDraft(box, tool.draft);
+      return;
+    }
     const draft = tool.kind === "path" ? tool.draft : null;
     if (draft !== null) {
       const what = draft.kind === "dynamic" ? "moving object" : "human";
@@ -162,6 +187,38 @@ export class Panels {
       facts.insertBefore(el("dt", { text: "yaw" }), yaw);
       numberField(yaw, String(item.yaw), "15", (value) => this.actions.setYaw(value)).id = "yaw";
       el("span", { text: " °" }, yaw);
+    } else if (selection.kind === "crowd") {
+      const crowd = d.crowds?.find((c) => c.name === selection.name);
+      if (crowd === undefined) return;
+      fact("type", crowd.footprint?.type ?? "Human");
+      this.crowdFields(facts, crowd.count, crowd.rate);
+      fact("from", crowd.from.map((a) => a.floor ?? "?").join(", "));
+      fact("to", crowd.to.map((a) => a.floor ?? "?").join(", "));
+      fact("walks", `${formatSeconds(crowd.speed)} m/s, ${crowd.behaviour}${crowd.loop ? ", loop" : ""}`);
+      const row = el("div", { class: "row" }, box);
+      button("Change areas", "choose the from and to floors again: click floors or drag a rectangle", row,
+        () => this.actions.startCrowd(true)).id = "edit-areas";
+    } else if (selection.kind === "group") {
+      const group = d.groups?.find((g) => g.name === selection.name);
+      if (group === undefined) return;
+      fact("people", String(group.count));
+      fact("route", (group.route?.stops ?? []).map((s) => s.floor + (s.waitSeconds > 0
+        ? ` wait ${formatSeconds(s.waitSeconds)}s` : "")).join(", "));
+      el("p", { class: "hint", text: "A group's route and size are changed in the text; Delete removes its line." }, box);
+    } else if ((selection.kind === "human") && d.movers.some((m) => m.name === selection.name && m.route != null)) {
+      const mover = d.movers.find((m) => m.name === selection.name) as Mover;
+      fact("type", mover.footprint?.type ?? "Human");
+      fact("behaviour", mover.route?.behaviour ?? "?");
+      fact("speed", `${formatSeconds(mover.route?.speed ?? 0)} m/s`);
+      fact("start", `${formatSeconds(mover.route?.start ?? 0)} s`);
+      const stops = (mover.route?.stops ?? []).flatMap((s) => (s.floor === null ? []
+        : [{ floor: s.floor, waitSeconds: s.waitSeconds }]));
+      this.renderStops(box, stops, mover.loop, false);
+      const row = el("div", { class: "row" }, box);
+      button("Draw route", "a new route: click floors for its stops", row, () => this.actions.startPath()).id =
+        "draw-route";
+      button("Extend route", "add stops after the last one by clicking floors", row,
+        () => this.actions.startPath(true)).id = "extend-route";
     } else if (selection.kind === "human" || selection.kind === "dynamic") {
       const mover = d.movers.find((m) => m.name === selection.name);
       if (mover === undefined) return;
@@ -188,6 +245,92 @@ export class Panels {
       fact("floor", goal?.floor ?? "?");
       fact("timeout", goal?.timeout == null ? "the mission's" : `${formatSeconds(goal.timeout)} s`);
     }
+  }
+
+  /** Finish, Cancel and Clear under a draft. */
+  private draftButtons(box: HTMLElement, empty: boolean, clear: () => void): void {
+    const row = el("div", { class: "row" }, box);
+    button("Finish", "save it (Enter)", row, () => this.actions.finishPath()).id = "finish-draft";
+    button("Cancel", "drop the drawing (Escape)", row, () => this.actions.cancelPath());
+    button("Clear", "remove every floor and start again", row, clear, "clear-points").disabled = empty;
+  }
+
+  /** A route's stops: waits editable, stops removable, loop or once. */
+  private renderStops(box: HTMLElement, stops: readonly StopSpec[], loop: boolean, drafting: boolean): void {
+    const list = el("ol", { class: "points stops" }, box);
+    list.id = "stops";
+    stops.forEach((stop, i) => {
+      const row = el("li", {}, list);
+      row.dataset.stop = String(i);
+      el("span", { text: stop.floor, class: "floor" }, row);
+      el("span", { text: "wait" }, row);
+      numberField(row, formatSeconds(stop.waitSeconds), "1",
+        (value) => this.actions.editStops(stops.map((s, j) => (j === i ? { ...s, waitSeconds: value } : s)), loop),
+        { class: "wait", title: "seconds the person waits at this stop" }).min = "0";
+      el("span", { text: "s" }, row);
+      const remove = button("×", "remove this stop", row, () =>
+        this.actions.editStops(stops.filter((_, j) => j !== i), loop), "remove-stop");
+      remove.disabled = !drafting && stops.length <= 1;
+    });
+    if (stops.length === 0) el("li", { class: "hint", text: "no stops yet: click a floor" }, list);
+    const label = el("label", { class: "loop" }, box);
+    const check = el("input", {}, label);
+    check.type = "checkbox";
+    check.id = "loop";
+    check.checked = loop;
+    label.append(" loop (else once)");
+    check.addEventListener("change", () => this.actions.editStops([...stops], check.checked));
+  }
+
+  /** A crowd's size and rate: fields that change the draft, or the selected crowd at once. */
+  private crowdFields(facts: HTMLElement, count: number, rate: number | null): void {
+    const countBox = el("dd", {}, facts);
+    facts.insertBefore(el("dt", { text: "people" }), countBox);
+    const countField = numberField(countBox, String(count), "1", (value) => {
+      if (Number.isInteger(value) && value >= 1) this.actions.editCrowd({ count: value });
+    }, { title: "how many people the crowd has" });
+    countField.id = "crowd-count";
+    countField.min = "1";
+    const rateBox = el("dd", {}, facts);
+    facts.insertBefore(el("dt", { text: "rate" }), rateBox);
+    const rateField = el("input", { title: "people a second who set off one after another; blank: all at once" },
+      rateBox);
+    rateField.type = "number";
+    rateField.step = "0.1";
+    rateField.min = "0";
+    rateField.id = "crowd-rate";
+    rateField.value = rate === null ? "" : String(rate);
+    rateField.placeholder = "all at once";
+    rateField.addEventListener("change", () => {
+      const text = rateField.value.trim();
+      const value = Number(text);
+      if (text === "") this.actions.editCrowd({ rate: null });
+      else if (Number.isFinite(value)) this.actions.editCrowd({ rate: value });
+    });
+    el("span", { text: " /s" }, rateBox);
+  }
+
+  private renderCrowdDraft(box: HTMLElement, draft: CrowdDraft): void {
+    el("p", { text: draft.isNew ? `New crowd ${draft.name}` : `Areas of crowd ${draft.name}`, class: "title" }, box);
+    el("p", { class: "hint", text: `Click floors, or drag a rectangle over them, for the ${draft.area} area (a `
+      + "rectangle replaces it). Finish (Enter) saves the crowd, Escape cancels." }, box);
+    const areas = el("div", { class: "row areas" }, box);
+    for (const which of ["from", "to"] as const) {
+      const b = button(`${which === "from" ? "From" : "To"} (${draft[which].length})`,
+        `choose the floors the people ${which === "from" ? "start on" : "walk to"}`, areas,
+        () => this.actions.editCrowd({ area: which }), `area-${which}`);
+      b.id = `crowd-${which}`;
+      b.classList.toggle("active", draft.area === which);
+    }
+    const facts = el("dl", {}, box);
+    this.crowdFields(facts, draft.count, draft.rate);
+    for (const which of ["from", "to"] as const) {
+      el("dt", { text: which }, facts);
+      el("dd", { text: draft[which].length === 0 ? "–" : draft[which].join(", "), class: `area-floors ${which}` },
+        facts);
+    }
+    this.draftButtons(box, draft.from.length === 0 && draft.to.length === 0,
+      () => this.actions.editCrowd({ [draft.area]: [] }));
   }
 
   /** A trajectory's points: times editable, points removable, loop or once. */

@@ -75,6 +75,53 @@ export interface Mover {
   kind: "human" | "dynamic";
   footprint: Footprint | null;
   points: Waypoint[];
+  /** The trajectory's, or the route's: starts over after its last point or stop. */
+  loop: boolean;
+  /** A person who sees the robot walks a route instead of a trajectory (no points then); null otherwise. */
+  route: Route | null;
+}
+
+export interface RouteStop {
+  floor: string | null;
+  waitSeconds: number;
+  x: number | null;
+  y: number | null;
+}
+
+/** A route of floors (docs/language.md): stops in order, speed m/s, start s, behaviour as written (`avoids`...). */
+export interface Route {
+  stops: RouteStop[];
+  speed: number;
+  start: number;
+  behaviour: string;
+}
+
+/** A floor of a crowd's area and its centre (null when the floor is not placed). */
+export interface Area {
+  floor: string | null;
+  x: number | null;
+  y: number | null;
+}
+
+/** A crowd: `count` people spread over the `from` floors who walk to the `to` floors, `rate` a second (null: at once). */
+export interface CrowdAreas {
+  name: string;
+  count: number;
+  footprint: Footprint | null;
+  from: Area[];
+  to: Area[];
+  rate: number | null;
+  speed: number;
+  loop: boolean;
+  behaviour: string;
+}
+
+/** A group: `count` people who walk their leader's route together. */
+export interface GroupRoute {
+  name: string;
+  count: number;
+  footprint: Footprint | null;
+  route: Route | null;
   loop: boolean;
 }
 
@@ -108,6 +155,9 @@ export interface Diagram {
   movers: Mover[];
   mission: Mission | null;
   monitor: Monitor | null;
+  /** Optional: an engine older than the page's has neither. */
+  crowds?: CrowdAreas[];
+  groups?: GroupRoute[];
 }
 
 export interface Issue {
@@ -186,6 +236,8 @@ export type Operation =
   | { op: "removeWall"; name: string }
   | { op: "setTrajectory"; name: string; points: PointSpec[]; loop: boolean }
   | { op: "setRoute"; name: string; stops: StopSpec[]; speed: number; start: number; loop: boolean; behaviour: string }
+  | { op: "addCrowd"; name: string; type: string | null; count: number; from: string[]; to: string[]; rate: number | null }
+  | { op: "setCrowd"; name: string; count: number; from: string[]; to: string[]; rate: number | null }
   | { op: "addGoal"; floor: string; index: number; timeoutSeconds: number | null }
   | { op: "removeGoal"; index: number }
   | { op: "moveGoal"; from: number; to: number };

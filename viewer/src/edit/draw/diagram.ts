@@ -2,7 +2,7 @@
 // The diagram as one SVG: layers in drawing order, the floors kept between renders (see floors.ts), the rest
 // redrawn from each State. Marks (selection, issues, drop target) are classes on the elements, found through a
 // registry by key (nameKey / goalKey), never by searching the DOM.
-import type { PathDraft, Selection } from "../model";
+import type { CrowdDraft, PathDraft, RouteDraft, Selection } from "../model";
 import { selectionKey } from "../model";
 import type { RoomIndex } from "../room";
 import { placed } from "../room";
@@ -16,6 +16,7 @@ import { IssueLabels, MAX_LABELS } from "./issues";
 import type { Registry } from "./items";
 import { drawGoals, drawMovers, drawObjects, drawRobot, drawWalls } from "./items";
 import { drawDraft, drawDragPreview, drawFloorOutline, drawSideButtons } from "./overlay";
+import { drawAreaRectangle, drawCrowd, drawCrowdDraft, drawGroup, drawRouteDraft, drawRoutedHuman } from "./people";
 
 /** Label sizes in screen pixels, whatever the zoom. */
 const LABEL_PX = 12;
@@ -26,6 +27,8 @@ export interface RenderInput {
   issues: ReadonlyMap<string, readonly Issue[]>;
   selection: Selection | null;
   draft: PathDraft | null;
+  routeDraft?: RouteDraft | null;
+  crowdDraft?: CrowdDraft | null;
 }
 
 export class DiagramView {
@@ -36,6 +39,7 @@ export class DiagramView {
   private mapDrawn = "";
   private readonly walls: SVGGElement;
   private readonly route: SVGGElement;
+  private readonly crowds: SVGGElement;
   private readonly objects: SVGGElement;
   private readonly movers: SVGGElement;
   private readonly robot: SVGGElement;
@@ -58,6 +62,8 @@ export class DiagramView {
     const floors = layer("floors");
     const ghosts = layer("ghosts");
     this.walls = layer("walls");
+    // crowds' areas lie on the floors, under everything that stands or walks on them
+    this.crowds = layer("crowds");
     this.route = layer("route");
     // paths under furniture: a path's wide hit stroke would otherwise cover the furniture it passes
     this.movers = layer("movers");
@@ -86,18 +92,25 @@ export class DiagramView {
     this.drawMap(index);
     if (this.floorLayer.update(index)) this.labelledFloors = index.placed.length;
     const registry: Registry = new Map();
-    for (const group of [this.walls, this.route, this.objects, this.movers, this.robot, this.goals, this.labels,
+    for (const group of [this.walls, this.crowds, this.route, this.objects, this.movers, this.robot, this.goals, this.labels,
       this.overlay, this.overlayLabels, this.preview]) clear(group);
     drawWalls(this.walls, index, registry);
     drawObjects(this.objects, this.labels, index.diagram.objects, registry);
-    drawMovers(this.movers, this.labels, index.diagram.movers, registry);
+    const d = index.diagram;
+    drawMovers(this.movers, this.labels, d.movers.filter((m) => m.route == null), registry);
+    for (const mover of d.movers) if (mover.route != null) drawRoutedHuman(this.movers, this.labels, index, mover, registry);
+    for (const group of d.groups ?? []) drawGroup(this.movers, this.labels, index, group, registry);
+    for (const crowd of d.crowds ?? []) drawCrowd(this.crowds, this.labels, index, crowd, registry);
     drawRobot(this.robot, this.labels, index.diagram.robot, registry);
     drawGoals(this.goals, this.route, index, registry);
     this.registry = registry;
     this.mark(input);
     if (input.draft !== null) drawDraft(this.overlay, this.overlayLabels, index, input.draft);
+    if (input.routeDraft != null) drawRouteDraft(this.overlay, this.overlayLabels, index, input.routeDraft);
+    if (input.crowdDraft != null) drawCrowdDraft(this.overlay, index, input.crowdDraft);
+    const drafting = input.draft !== null || input.routeDraft != null || input.crowdDraft != null;
     const selected = input.selection;
-    if (selected !== null && selected.kind === "floor" && index.editableLayout && input.draft === null) {
+    if (selected !== null && selected.kind === "floor" && index.editableLayout && !drafting) {
       const floor = index.floors.get(selected.name);
       if (floor !== undefined && placed(floor)) drawSideButtons(this.overlay, index, floor);
     }
@@ -181,6 +194,17 @@ export class DiagramView {
       const reach = Math.max(item.footprint?.sizeX ?? 0.3, item.footprint?.sizeY ?? 0.3) / 2;
       return { x: item.x, y: item.y, reach, name, kind: item.kind, index: null };
     }
+    // people who see the robot: a routed person's or a group's first stop, a crowd's first from floor
+    const routed = diagram.movers.find((m) => m.name === name && m.route != null);
+    const group = diagram.groups?.find((g) => g.name === name);
+    const crowd = diagram.crowds?.find((c) => c.name === name);
+    const places = routed?.route?.stops ?? group?.route?.stops ?? crowd?.from;
+    if (places !== undefined) {
+      const first = places.find((p) => p.x !== null && p.y !== null);
+      if (first === undefined || first.x === null || first.y === null) return null;
+      const kind = routed !== undefined ? "human" : group !== undefined ? "group" : "crowd";
+      return { x: first.x, y: first.y, reach: 0.3, name, kind, index: null };
+    }
     const mover = diagram.movers.find((m) => m.name === name);
     if (mover !== undefined) {
       const first = mover.points.find((p) => p.x !== null && p.y !== null);
@@ -208,6 +232,12 @@ export class DiagramView {
     clear(this.preview);
     drawDragPreview(this.preview, at, footprint, yaw, floor !== null);
     this.floorLayer.mark("drop-target", floor === null ? [] : [floor]);
+  }
+
+  /** The rectangle of floors being dragged for a crowd's area. */
+  areaPreview(a: [number, number], b: [number, number], which: "from" | "to"): void {
+    clear(this.preview);
+    drawAreaRectangle(this.preview, a, b, which);
   }
 
   clearPreview(): void {

@@ -9,6 +9,7 @@ import { KINDS, nameKey } from "../model";
 import type { Side } from "../types";
 import { SIDES } from "../types";
 import { appendPoint } from "./path";
+import { appendStop, floorsIn, setArea, toggleFloor } from "./people";
 import type { DragSession, PointerHandlers } from "./pointer";
 
 const isSide = (value: string): value is Side => (SIDES as readonly string[]).includes(value);
@@ -48,6 +49,16 @@ export class Gestures implements PointerHandlers {
       this.editor.setTool({ kind: "path", draft: appendPoint(index, tool.draft, floor.name) });
       return;
     }
+    if (tool.kind === "route") {
+      if (floor === undefined) return this.editor.chrome.toast("A route's stops are floors: click a floor.", "error");
+      this.editor.setTool({ kind: "route", draft: appendStop(tool.draft, floor.name) });
+      return;
+    }
+    if (tool.kind === "crowd") {
+      if (floor === undefined) return this.editor.chrome.toast("A crowd's areas are floors: click a floor.", "error");
+      this.editor.setTool({ kind: "crowd", draft: toggleFloor(tool.draft, floor.name) });
+      return;
+    }
     const side = target?.getAttribute("data-add-wall");
     const onFloor = target?.getAttribute("data-floor");
     if (side != null && onFloor != null && isSide(side)) {
@@ -77,9 +88,29 @@ export class Gestures implements PointerHandlers {
   }
 
   /** Furniture and the robot drag onto another floor; the drop snaps to the floor under the pointer. */
-  drag(target: Element | null, _world: [number, number]): DragSession | null {
+  drag(target: Element | null, world: [number, number]): DragSession | null {
     const index = this.editor.index;
-    if (index === null || target === null || this.editor.tool.kind !== "select") return null;
+    const tool = this.editor.tool;
+    if (index !== null && tool.kind === "crowd") {
+      // a rectangle over floors: they become the area being chosen
+      const start = world;
+      const area = tool.draft.area;
+      return {
+        move: (at) => this.editor.diagram.areaPreview(start, at, area),
+        drop: (at) => {
+          this.editor.diagram.clearPreview();
+          const floors = floorsIn(index, start, at);
+          const current = this.editor.tool;
+          if (floors.length === 0) {
+            this.editor.chrome.toast("The rectangle holds no floor.", "error");
+          } else if (current.kind === "crowd") {
+            this.editor.setTool({ kind: "crowd", draft: setArea(current.draft, floors) });
+          }
+        },
+        cancel: () => this.editor.diagram.clearPreview(),
+      };
+    }
+    if (index === null || target === null || tool.kind !== "select") return null;
     const kind = target.getAttribute("data-kind");
     const name = target.getAttribute("data-name") ?? "";
     const d = index.diagram;

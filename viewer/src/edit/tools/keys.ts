@@ -29,7 +29,7 @@ export function installKeys(editor: Editor): void {
     } else if (key === "escape") {
       editor.escape();
     } else if (key === "enter") {
-      if (editor.tool.kind === "path") {
+      if (editor.drafting) {
         event.preventDefault();
         void editor.finishPath();
       }
