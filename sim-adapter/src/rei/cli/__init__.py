@@ -21,7 +21,7 @@ from rei.toolchain import ToolchainError
 
 #: Subcommand modules under `rei.cli`, in the order `rei --help` lists them.
 COMMANDS: tuple[str, ...] = ("validate", "generate", "sim", "run", "evaluate", "import_", "monitor", "report",
-                            "gen_rooms", "campaign", "compare", "search", "view", "edit", "service", "nav_sut", "ros1_bridge", "ros2_bridge")
+                            "gen_rooms", "campaign", "compare", "search", "view", "edit", "robot", "service", "nav_sut", "ros1_bridge", "ros2_bridge")
 
 
 def build_parser(only: str | None = None) -> argparse.ArgumentParser:

@@ -1,0 +1,78 @@
+# SPDX-License-Identifier: EPL-2.0
+"""`rei robot FILE [--arg NAME:=VALUE ...] [--lidar LINK] [--json]`: what REI reads from a robot description.
+
+FILE is a URDF or xacro file (every file goes through xacro, with the arguments given). Prints the footprint (the
+collision shapes projected onto the floor: a convex polygon, or a circle for a round robot), its bounding box, the
+lidar's pose (of the link --lidar names) and the differential drive from the wheel joints, relative to the root
+link; then what the description does not say and what was skipped (meshes that are not there). Exit 0: read;
+1: a description that cannot be used (the message names the file, and the line when the parser gives one).
+See docs/robots.md.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+from pathlib import Path
+from typing import Any
+
+from rei.cli.errors import EXIT_INVALID, EXIT_OK, CommandError
+
+
+def register(subparsers: argparse._SubParsersAction[Any]) -> None:
+    """Add the `robot` subcommand."""
+    parser = subparsers.add_parser("robot", help="inspect a robot description (URDF or xacro): footprint, lidar, "
+                                   "drive", description=__doc__.split("\n\n", 1)[1] if __doc__ else None)
+    parser.add_argument("file", metavar="FILE", type=Path, help="a .urdf or .xacro file")
+    parser.add_argument("--arg", action="append", default=[], metavar="NAME:=VALUE", type=_xacro_arg,
+                        help="a xacro argument, as on xacro's command line (repeatable); VALUE may be empty")
+    parser.add_argument("--lidar", metavar="LINK", help="the lidar's link (e.g. base_scan)")
+    parser.add_argument("--json", action="store_true", help="print one JSON object instead of text")
+    parser.set_defaults(handler=run)
+
+
+def _xacro_arg(text: str) -> tuple[str, str]:
+    name, sep, value = text.partition(":=")
+    if not sep or not name:
+        raise argparse.ArgumentTypeError(f"'{text}': write NAME:=VALUE")
+    return name, value
+
+
+def run(args: argparse.Namespace) -> int:
+    from rei.robots import Circle, DescriptionError, load_description
+
+    try:
+        robot = load_description(args.file, dict(args.arg), lidar=args.lidar)
+    except DescriptionError as error:
+        raise CommandError(str(error), exit_code=EXIT_INVALID) from None
+    if args.json:
+        print(json.dumps(robot.to_json(), indent=2))
+        return EXIT_OK
+    for warning in robot.warnings:
+        print(f"rei: warning: {warning}", file=sys.stderr)
+    footprint = robot.footprint
+    print(f"robot {robot.name} ({robot.path}), poses relative to {robot.base_link}")
+    if isinstance(footprint, Circle):
+        print(f"footprint: circle, centre ({footprint.x:.4f}, {footprint.y:.4f}) m, radius {footprint.radius:.4f} m")
+    else:
+        print(f"footprint: convex polygon of {len(footprint.points)} vertices, {footprint.area:.5f} m^2:")
+        print("  " + " ".join(f"({x:.4f}, {y:.4f})" for x, y in footprint.points))
+    xmin, ymin, xmax, ymax = footprint.bounds
+    print(f"bounding box: x {xmin:.4f} .. {xmax:.4f}, y {ymin:.4f} .. {ymax:.4f} "
+          f"({xmax - xmin:.4f} x {ymax - ymin:.4f} m)")
+    print(f"collision shapes: {len(robot.parts)} (" + ", ".join(f"{p.link} {p.kind}" for p in robot.parts) + ")")
+    if robot.lidar is not None:
+        lidar = robot.lidar
+        tilt = (f", tilted roll {math.degrees(lidar.roll):.1f} deg pitch {math.degrees(lidar.pitch):.1f} deg"
+                if abs(lidar.roll) > 1e-6 or abs(lidar.pitch) > 1e-6 else "")
+        print(f"lidar: {lidar.link} at x {lidar.x:.4f}, y {lidar.y:.4f}, z {lidar.z:.4f} m, "
+              f"yaw {math.degrees(lidar.yaw):.1f} deg{tilt}")
+    if robot.drive is not None:
+        drive = robot.drive
+        print(f"drive: differential, wheel separation {drive.wheel_separation:.4f} m, wheel radius "
+              f"{drive.wheel_radius:.4f} m ({drive.left_joint} left, {drive.right_joint} right)")
+    for missing in robot.missing:
+        print(f"not in the description: {missing}")
+    return EXIT_OK
