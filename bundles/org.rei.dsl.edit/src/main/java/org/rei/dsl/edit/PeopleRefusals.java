@@ -20,8 +20,9 @@ import org.rei.dsl.edit.EditOperation.SetTrajectory;
 
 /**
  * What only the text says of a crowd or a group (docs/language.md, "Crowds and groups"): as many people as its line
- * says, placed by the generator, so the diagram neither draws nor drags them. Operations on one are refused before
- * the model is touched, with a message that says so; deleting one deletes its line, as for any person. A floor a
+ * says, placed by the generator, so the diagram draws a crowd's areas and a group's route but never drags them as
+ * one body (a crowd's areas change through setCrowd). Operations on one are refused before the model is touched,
+ * with a message that says so; deleting one deletes its line, as for any person. A floor a
  * crowd names cannot be removed (a group's stops are route stops, which {@link ModelEditor} already guards).
  */
 final class PeopleRefusals {
