@@ -6,7 +6,8 @@ systems under test, settings or versions. Runs pair by group, case, variant and 
 in ERROR are listed, not dropped. Per navigation metric (docs/metrics.md) the paired difference with its 95 %
 bootstrap interval and a paired test (Wilcoxon signed-rank; success: McNemar's exact test), and a regression
 verdict from the thresholds (default: success, SPL and collisions worse at p < 0.05, minimum clearances 5 cm
-lower). Writes OUT/compare.html, OUT/compare.json and OUT/verdicts.xml (JUnit). Exit 0: no regression;
+lower, any more robot-at-fault collisions with people, 2 % more of the mission in people's intimate space, people
+delayed 1 s more). Writes OUT/compare.html, OUT/compare.json and OUT/verdicts.xml (JUnit). Exit 0: no regression;
 1: a metric regressed; 2: bad arguments or thresholds, or no run pairs.
 """
 

@@ -54,14 +54,20 @@ class Thresholds:
 
 
 def default_thresholds() -> Thresholds:
-    """Without a file: fewer successes, worse SPL or more collisions beyond chance (p < 0.05), and minimum
-    clearances 5 cm closer on average."""
+    """Without a file: fewer successes, worse SPL or more collisions beyond chance (p < 0.05), minimum clearances
+    5 cm closer on average; and among people: any more collisions in which the robot drove into a person (a
+    requirement, NO_ROBOT_AT_FAULT_COLLISION, so one more in one pair is a regression: no test waits for chance),
+    2 % more of the mission within a person's intimate space (0.45 m) and people delayed 1 s more by the robot on
+    average. The people's metrics are judged only where both sides had people (else not applicable)."""
     return Thresholds((
         Threshold("success", Better.HIGHER, 0.0, 0.05),
         Threshold("spl", Better.HIGHER, 0.0, 0.05),
         Threshold("collision_episodes", Better.LOWER, 0.0, 0.05),
         Threshold("clearance_static_min", Better.HIGHER, 0.05),
         Threshold("clearance_humans_min", Better.HIGHER, 0.05),
+        Threshold("collisions_robot_at_fault", Better.LOWER, 0.0),
+        Threshold("intimate_share", Better.LOWER, 0.02),
+        Threshold("people_delay_mean", Better.LOWER, 1.0),
     ), "defaults")
 
 
