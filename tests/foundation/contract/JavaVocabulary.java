@@ -34,6 +34,7 @@ public final class JavaVocabulary {
 		facts.put("sut_max_message_size", SutClient.MAX_MESSAGE_SIZE);
 		facts.put("mission_events", MissionEvent.KINDS);
 		facts.put("vepl_mission_events", VeplValidator.MISSION_EVENTS);
+		facts.put("fault_events", MissionEvent.FAULT_EVENTS);
 		facts.put("signal_record", Arrays.stream(Signal.class.getRecordComponents()).map(c -> c.getName()).toList());
 		facts.put("signal_payload", List.copyOf(new Signal(0, 0, "S", "robot", "", 0).payload().keySet()));
 		facts.put("sut_uri_template", SutClient.URI_TEMPLATE);

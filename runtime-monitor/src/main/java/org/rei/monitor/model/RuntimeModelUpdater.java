@@ -279,6 +279,9 @@ public final class RuntimeModelUpdater {
 
 	/** Applies one mission event to the mission state. */
 	public void applyMission(MissionMessage m) {
+		if (MissionEvent.isFault(m.event())) {
+			return; // a fault window's edge: no mission or task state changes, the patterns see it as an event
+		}
 		MissionState s = model.getOwnedMissionState();
 		switch (m.event()) {
 		case MissionEvent.BEGIN -> s.setBegun(true);

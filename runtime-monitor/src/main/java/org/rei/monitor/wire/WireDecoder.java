@@ -26,7 +26,7 @@ public final class WireDecoder {
 	// array headers come from the wire: a few bytes may claim billions of elements, so never allocate by them
 	private static final int CAPACITY = 1024;
 	private static final int MAX_REALS = 1 << 16;
-	private static final Set<String> EVENTS = Set.copyOf(MissionEvent.KINDS);
+	private static final Set<String> EVENTS = Set.copyOf(MissionEvent.ALL);
 
 	private WireDecoder() {
 	}

@@ -34,7 +34,7 @@ class PatternRulesTest {
 		List<DrlSources.Source> atStart = PatternRules.compile(PatternRules.packaged(),
 				DrlSources.packaged(DrlSources.QUERIES));
 		Map<String, String> aheadOfTime = byName(DrlSources.packaged(DrlSources.RULES));
-		assertEquals(List.of("contacts.drl", "geometry.drl", "laser.drl", "mission.drl", "vepl-events.drl"),
+		assertEquals(List.of("contacts.drl", "faults.drl", "geometry.drl", "laser.drl", "mission.drl", "vepl-events.drl"),
 				List.copyOf(aheadOfTime.keySet()));
 		assertEquals(aheadOfTime, byName(atStart));
 	}

@@ -31,9 +31,9 @@ public class VeplDocumentationProvider implements IEObjectDocumentationProvider 
 					+ (q.getKind() == QueryEventKind.FOUND ? " appears" : " disappears") + definition(o);
 		}
 		if (o instanceof AtomicEvent a) {
-			boolean known = MissionEvent.KINDS.contains(a.getMission());
+			boolean known = MissionEvent.ALL.contains(a.getMission());
 			return "**Atomic event " + a.getName() + "**: the mission topic's `" + a.getMission() + "` event"
-					+ (known ? "" : " (not one the mission executor sends: " + String.join(", ", MissionEvent.KINDS) + ")")
+					+ (known ? "" : " (not one the mission topic carries: " + String.join(", ", MissionEvent.ALL) + ")")
 					+ definition(o);
 		}
 		if (o instanceof ComplexEvent c) {

@@ -4,10 +4,12 @@
  */
 package org.rei.vepl.runtime;
 
+import java.util.ArrayList;
 import java.util.List;
 
 /**
- * An event of the mission topic in the session: {@code event} is BEGIN, TASK_START, TASK_SUCCESS, TASK_FAIL or END;
+ * An event of the mission topic in the session: {@code event} is BEGIN, TASK_START, TASK_SUCCESS, TASK_FAIL or END,
+ * or a fault window's edge ({@link #FAULT_EVENTS});
  * the target is {@code mission} or {@code task_<index>}, the range the robot's distance to the task's goal.
  */
 public final class MissionEvent extends SessionEvent {
@@ -22,6 +24,15 @@ public final class MissionEvent extends SessionEvent {
 	 * (checked by tests/foundation/test_vocabulary_contract.py).
 	 */
 	public static final List<String> KINDS = List.of(BEGIN, TASK_START, TASK_SUCCESS, TASK_FAIL, END);
+	/**
+	 * The fault window edges the simulation sends on the mission topic, {@code FAULT_<SENSOR>_<KIND>_BEGIN/_END}:
+	 * Java's one copy of {@code faults} in contract/vocabulary.json (checked by test_vocabulary_contract.py). They
+	 * concern no task; the default patterns (faults.vepl) publish each as the signal {@code SIG_} + its name.
+	 */
+	public static final List<String> FAULT_EVENTS = faultEvents("LASER",
+			List.of("IMPULSE", "FREEZE", "BLACKOUT", "OCCLUSION", "NOISE"));
+	/** Every event the mission topic carries: {@link #KINDS} then {@link #FAULT_EVENTS}. */
+	public static final List<String> ALL = concat(KINDS, FAULT_EVENTS);
 
 	private final String event;
 	private final int taskIndex;
@@ -31,6 +42,26 @@ public final class MissionEvent extends SessionEvent {
 		super(subject, taskIndex >= 0 ? "task_" + taskIndex : "mission", range, t);
 		this.event = event;
 		this.taskIndex = taskIndex;
+	}
+
+	/** @return whether {@code event} is a fault window's edge rather than a mission or task event */
+	public static boolean isFault(String event) {
+		return FAULT_EVENTS.contains(event);
+	}
+
+	private static List<String> faultEvents(String sensor, List<String> kinds) {
+		List<String> out = new ArrayList<>();
+		for (String kind : kinds) {
+			out.add("FAULT_" + sensor + "_" + kind + "_BEGIN");
+			out.add("FAULT_" + sensor + "_" + kind + "_END");
+		}
+		return List.copyOf(out);
+	}
+
+	private static List<String> concat(List<String> a, List<String> b) {
+		List<String> out = new ArrayList<>(a);
+		out.addAll(b);
+		return List.copyOf(out);
 	}
 
 	public String getEvent() {

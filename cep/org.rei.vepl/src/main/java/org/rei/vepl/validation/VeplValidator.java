@@ -54,8 +54,8 @@ public class VeplValidator extends AbstractVeplValidator {
 	@Inject
 	private IQualifiedNameProvider names;
 
-	/** The events of the mission topic (docs/protocol.md). */
-	public static final List<String> MISSION_EVENTS = MissionEvent.KINDS;
+	/** The events of the mission topic (docs/protocol.md): the mission's, then the fault window edges. */
+	public static final List<String> MISSION_EVENTS = MissionEvent.ALL;
 
 	@Check
 	public void checkUniqueNames(PatternFile file) {

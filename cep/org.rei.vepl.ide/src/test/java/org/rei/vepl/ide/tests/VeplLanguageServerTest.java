@@ -25,6 +25,7 @@ import org.junit.jupiter.api.Assertions;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.rei.vepl.runtime.MissionEvent;
 import org.rei.vepl.validation.KnownQueries;
 
 /**
@@ -93,7 +94,7 @@ class VeplLanguageServerTest extends AbstractLanguageServerTest {
 				"[1:24-1:33] org.rei.vepl.unknownQuery Unknown query 'robotNear': the loaded queries are "
 						+ String.join(", ", defaultsAnd(OWN)),
 				"[2:31-2:40] org.rei.vepl.unknownMissionEvent Unknown mission event 'TASK_STRT': one of BEGIN, "
-						+ "TASK_START, TASK_SUCCESS, TASK_FAIL, END",
+						+ "TASK_START, TASK_SUCCESS, TASK_FAIL, END, " + String.join(", ", MissionEvent.FAULT_EVENTS),
 				"[3:57-3:64] " + org.eclipse.xtext.diagnostics.Diagnostic.LINKING_DIAGNOSTIC
 						+ " Couldn't resolve reference to Event 'farLost'."),
 				diagnostics(uri));
@@ -178,8 +179,11 @@ class VeplLanguageServerTest extends AbstractLanguageServerTest {
 	void aMissionEventIsCompletedWithTheMissionTopicsEvents() throws Exception {
 		String text = "atomicEvent b as mission TASK_S\natomicEvent a as mission \n";
 		String uri = openFile("p.vepl", text);
-		Assertions.assertEquals(List.of("BEGIN", "END", "TASK_FAIL", "TASK_START", "TASK_SUCCESS"),
-				labels(uri, after(text, "atomicEvent a as mission ")));
+		List<String> events = new java.util.ArrayList<>(List.of("BEGIN", "END", "TASK_FAIL", "TASK_START",
+				"TASK_SUCCESS"));
+		events.addAll(MissionEvent.FAULT_EVENTS); // the fault window edges (FAULT_LASER_BLACKOUT_BEGIN, ...)
+		java.util.Collections.sort(events);
+		Assertions.assertEquals(events, labels(uri, after(text, "atomicEvent a as mission ")));
 		Assertions.assertEquals(List.of("TASK_START", "TASK_SUCCESS"), labels(uri, after(text, "mission TASK_S")));
 	}
 
