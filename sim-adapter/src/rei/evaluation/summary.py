@@ -56,6 +56,7 @@ class Summary:
     files: Mapping[str, str] = field(default_factory=dict)
     metrics: Mapping[str, Any] = field(default_factory=dict)
     metrics_error: str | None = None
+    faults: tuple[Any, ...] = ()  # rei.evaluation.faults.FaultWindow: the run's fault windows, from its signals
 
     @property
     def tasks_started(self) -> int:
@@ -105,6 +106,8 @@ class Summary:
             "metrics_error": self.metrics_error,
             "problems": [p.to_dict() for p in self.problems],
             "files": dict(self.files),
+            # only when a fault had a window: runs without faults keep the summary they always had
+            **({"faults": [f.to_dict() for f in self.faults]} if self.faults else {}),
         }
 
     def write(self, path: str | os.PathLike[str]) -> Path:
