@@ -177,9 +177,9 @@ def load_description(path: Path | str, args: Mapping[str, str] | None = None,
         raise DescriptionError(path, "no such file" if not path.exists() else "not a file")
     warnings: list[str] = []
     text = _expand(path.resolve(), dict(args or {}), warnings)
-    robot = _parse_urdf(path, text, warnings)
+    robot = _parse_urdf(path, text, warnings, args or {})
     links = {link.name: link for link in robot.links}
-    frames = _link_frames(path, robot)
+    frames = _link_frames(path, robot, args or {})
     base = next(iter(frames))
     resolver = _MeshResolver(path.resolve().parent)
     for link in robot.links:
@@ -195,18 +195,19 @@ def load_description(path: Path | str, args: Mapping[str, str] | None = None,
             if part is not None:
                 parts.append(part)
     if not parts:
+        left_out = [w for w in warnings if "collision" in w and "left out" in w]
         raise DescriptionError(path, "the robot has no collision shape (its links' <collision> elements are "
-                                     "what REI takes as its body and footprint)")
+                                     "what REI takes as its body and footprint)"
+                               + (f"; left out: {'; '.join(left_out)}" if left_out else ""))
     missing: list[str] = []
     lidar_pose = None
     if lidar is None:
         hint = [name for name in links if re.search(r"scan|laser|lidar", name, re.IGNORECASE)]
         missing.append("lidar: no link named as the lidar" + (f" (candidates: {', '.join(hint)})" if hint else ""))
     elif lidar not in links:
-        close = difflib.get_close_matches(lidar, list(links), n=3, cutoff=0.5)
+        close = difflib.get_close_matches(lidar, list(links), n=1, cutoff=0.6)
         raise DescriptionError(path, f"no link named '{lidar}' for the lidar"
-                                     + (f"; did you mean {' or '.join(repr(c) for c in close)}?" if close
-                                        else f" (links: {', '.join(links)})"))
+                                     + (f"; did you mean '{close[0]}'?" if close else f" (links: {', '.join(links)})"))
     else:
         lidar_pose = _lidar_pose(lidar, frames[lidar])
     drive, why = _drive(robot, frames, links)
@@ -248,14 +249,38 @@ def _expand(path: Path, args: dict[str, str], warnings: list[str]) -> str:
         if isinstance(error, ModuleNotFoundError):
             detail = f"$(find ...) needs a ROS installation ({detail})"
         included = f" (included from {', '.join(reversed(stack[:-1]))})" if len(stack) > 1 else ""
-        raise DescriptionError(where, f"xacro error: {detail}{included}") from None
+        detail = " ".join(detail.split())
+        expression = re.search(r"when evaluating expression '(.*)'", detail)
+        line = _line_of(where, re.escape(expression.group(1))) if expression else None
+        raise DescriptionError(where, f"xacro error: {detail}{included}", line) from None
     finally:
         xacro.init_stacks(None)
     warnings.extend(line.strip() for line in captured.getvalue().splitlines() if line.strip())
     return doc.toxml()
 
 
-def _parse_urdf(path: Path, text: str, warnings: list[str]) -> Any:
+def _line_of(path: Path, pattern: str) -> int | None:
+    """The first line of ``path`` matching ``pattern``: xacro's and the URDF parser's errors name an expression or
+    an element, not a line."""
+    try:
+        lines = path.read_text(encoding="utf-8", errors="replace").splitlines()
+    except OSError:
+        return None
+    return next((number for number, text in enumerate(lines, 1) if re.search(pattern, text)), None)
+
+
+def _line_of_name(path: Path, name: str, args: Mapping[str, str]) -> int | None:
+    """The line of the element named ``name``, also when the file writes it with a prefix from a xacro argument
+    (``${namespace}base_link``)."""
+    candidates = [name, *(name[len(v):] for v in args.values() if v and name.startswith(v))]
+    for candidate in candidates:
+        line = _line_of(path, rf"name\s*=\s*[\"'](?:[^\"']*\}})?{re.escape(candidate)}[\"']")
+        if line is not None:
+            return line
+    return None
+
+
+def _parse_urdf(path: Path, text: str, warnings: list[str], args: Mapping[str, str]) -> Any:
     from urdf_parser_py import urdf
     from urdf_parser_py.xml_reflection import core
 
@@ -265,7 +290,9 @@ def _parse_urdf(path: Path, text: str, warnings: list[str]) -> Any:
     try:
         robot = urdf.URDF.from_xml_string(text.encode("utf-8"))
     except core.ParseError as error:
-        raise DescriptionError(path, f"not a valid URDF: {error.e} (at {error.path})") from None
+        names = re.findall(r"\[@name='([^']*)'\]", str(error.path))
+        line = _line_of_name(path, names[-1], args) if names else None
+        raise DescriptionError(path, f"not a valid URDF: {error.e} (at {error.path})", line) from None
     except Exception as error:  # noqa: BLE001 - the parser raises plain Exception and ValueError for bad values
         raise DescriptionError(path, f"not a valid URDF: {error}") from None
     finally:
@@ -275,7 +302,7 @@ def _parse_urdf(path: Path, text: str, warnings: list[str]) -> Any:
     return robot
 
 
-def _link_frames(path: Path, robot: Any) -> dict[str, np.ndarray]:
+def _link_frames(path: Path, robot: Any, args: Mapping[str, str]) -> dict[str, np.ndarray]:
     """Each link's frame relative to the root link, at the zero configuration; the root first."""
     names = {link.name for link in robot.links}
     children: dict[str, list[Any]] = {}
@@ -284,9 +311,10 @@ def _link_frames(path: Path, robot: Any) -> dict[str, np.ndarray]:
         for role, link in (("parent", joint.parent), ("child", joint.child)):
             if link not in names:
                 raise DescriptionError(path, f"not a valid URDF: joint '{joint.name}' names {role} link '{link}', "
-                                             "which does not exist")
+                                             "which does not exist", _line_of_name(path, joint.name, args))
         if joint.child in child_of:
-            raise DescriptionError(path, f"not a valid URDF: link '{joint.child}' is the child of two joints")
+            raise DescriptionError(path, f"not a valid URDF: link '{joint.child}' is the child of two joints",
+                                   _line_of_name(path, joint.name, args))
         child_of[joint.child] = joint.name
         children.setdefault(joint.parent, []).append(joint)
     roots = [link.name for link in robot.links if link.name not in child_of]

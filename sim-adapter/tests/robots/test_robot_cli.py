@@ -1,0 +1,68 @@
+# SPDX-License-Identifier: EPL-2.0
+"""`rei robot FILE`: the text and JSON a user reads, and exit 1 with the file named for bad input."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from rei.cli import main
+
+TURTLEBOT3 = Path(__file__).resolve().parents[3].parent / "shared" / "data" / "robots" / "turtlebot3"
+BURGER = TURTLEBOT3 / "turtlebot3_burger.urdf"
+
+
+def test_text_shows_footprint_bounds_lidar_and_drive(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["robot", str(BURGER), "--arg", "namespace:=tb3/", "--lidar", "tb3/base_scan"]) == 0
+    out, err = capsys.readouterr()
+    assert "poses relative to tb3/base_footprint" in out
+    assert "footprint: convex polygon of " in out
+    assert "bounding box: x -0.1020 .. 0.0380, y -0.0890 .. 0.0890" in out
+    assert "lidar: tb3/base_scan at x -0.0320, y 0.0000, z 0.1820 m, yaw 0.0 deg" in out
+    assert "drive: differential, wheel separation 0.1600 m, wheel radius 0.0330 m" in out
+    assert "not in the description: lidar beams, range and rate" in out
+    assert "rei: warning: link tb3/base_link: visual mesh package://turtlebot3_description/meshes/bases/" in err
+
+
+def test_json(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["robot", str(BURGER), "--arg", "namespace:=", "--lidar", "base_scan", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["footprint"]["type"] == "polygon"
+    assert data["bounds"]["xmin"] == pytest.approx(-0.102)
+    assert data["lidar"]["z"] == pytest.approx(0.182)
+    assert data["drive"] == {"type": "differential", "left_joint": "wheel_left_joint",
+                             "right_joint": "wheel_right_joint", "wheel_separation": pytest.approx(0.16),
+                             "wheel_radius": 0.033}
+    assert len(data["parts"]) == 5
+
+
+def test_undeclared_xacro_argument_is_warned_about(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["robot", str(BURGER), "--arg", "namespce:=tb3/"]) == 0
+    err = capsys.readouterr().err
+    assert "rei: warning: xacro argument 'namespce' is not declared by the file (it declares: namespace)" in err
+
+
+def test_bad_argument_syntax_is_a_usage_error(capsys: pytest.CaptureFixture[str]) -> None:
+    with pytest.raises(SystemExit) as caught:
+        main(["robot", str(BURGER), "--arg", "namespace=tb3/"])
+    assert caught.value.code == 2
+    assert "'namespace=tb3/': write NAME:=VALUE" in capsys.readouterr().err
+
+
+def test_bad_input_exits_1_naming_the_file(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.urdf"
+    bad.write_text('<robot name="r">\n  <link name="a">\n</robot>\n', encoding="utf-8")
+    rei = Path(sys.executable).parent / "rei"
+    done = subprocess.run([str(rei), "robot", str(bad)], capture_output=True, text=True, check=False)
+    assert done.returncode == 1
+    # expat points at the closing tag's name: line 3, column 3.
+    assert done.stderr == f"rei: error: {bad}:3:3: XML does not parse: mismatched tag\n"
+    done = subprocess.run([str(rei), "robot", str(BURGER), "--lidar", "base_scn"], capture_output=True, text=True,
+                          check=False)
+    assert done.returncode == 1
+    assert done.stderr.endswith(f"rei: error: {BURGER}: no link named 'base_scn' for the lidar; did you mean "
+                                "'base_scan'?\n")
