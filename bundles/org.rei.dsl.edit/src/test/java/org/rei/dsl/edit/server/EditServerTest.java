@@ -230,7 +230,7 @@ class EditServerTest {
 		assertRefused(apply(13, "{\"op\": \"fly\", \"name\": \"table1\"}"), 13,
 				"operation 0: unknown op 'fly', expected one of moveObject, rotateObject, addObject, deleteObject, "
 						+ "addHuman, addDynamic, addFloor, removeFloor, addWall, removeWall, setTrajectory, setRoute, "
-						+ "addGoal, removeGoal, moveGoal");
+						+ "addCrowd, setCrowd, addGoal, removeGoal, moveGoal");
 		assertRefused(apply(14, "{\"name\": \"table1\"}"), 14, "operation 0 has no 'op'");
 		assertRefused(apply(15, "{\"op\": \"moveObject\", \"name\": \"table1\"}"), 15,
 				"operation 0 (moveObject): missing field 'floor' (a string)");
@@ -337,8 +337,8 @@ class EditServerTest {
 		JsonNode opened = open();
 		assertEquals(List.of("id", "ok", "text", "diagram", "issues", "palette", "canUndo", "canRedo"),
 				fieldNames(opened));
-		assertEquals(List.of("testCase", "room", "objects", "robot", "movers", "mission", "monitor"),
-				fieldNames(opened.get("diagram")));
+		assertEquals(List.of("testCase", "room", "objects", "robot", "movers", "mission", "monitor", "crowds",
+				"groups"), fieldNames(opened.get("diagram")));
 		assertEquals(List.of("name", "kind", "floor", "yaw", "x", "y", "footprint"),
 				fieldNames(opened.at("/diagram/robot")));
 		assertEquals(List.of("name", "category", "shape", "sizeX", "sizeY", "colour"),
