@@ -203,6 +203,16 @@ def test_xacro_include_that_is_missing(tmp_path: Path) -> None:
         load_description(path)
 
 
+def test_xml_error_in_an_included_file_names_that_file(tmp_path: Path) -> None:
+    parts = _write(tmp_path, "parts.xacro", '<robot xmlns:xacro="http://www.ros.org/wiki/xacro">\n<link name="a">\n'
+                                            "</robot>\n")
+    path = _write(tmp_path, "inc.xacro", '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                                         '  <xacro:include filename="parts.xacro"/>\n</robot>\n')
+    with pytest.raises(DescriptionError) as caught:
+        load_description(path)
+    assert str(caught.value) == f"{parts}:3:3: XML does not parse: mismatched tag"
+
+
 def test_urdf_the_parser_refuses_names_the_line_of_the_element(tmp_path: Path) -> None:
     path = _write(tmp_path, "bad.urdf", '<robot name="r">\n\n  <link name="a"><collision><geometry>'
                                         '<box size="1 1"/></geometry></collision></link>\n</robot>\n')
