@@ -62,6 +62,33 @@ def test_a_search_over_a_crowd_finds_the_robot_driving_into_a_person(tmp_path: P
         assert abs(starts[1] - starts[0] - 1 / float(options[1])) < 0.01, starts
 
 
+def test_shrinking_a_robot_at_fault_collision_leaves_fewer_people(tmp_path: Path, run_cli: Any) -> None:
+    # seed 3's first candidate fails: four people who step into the robot's way, one of them run into
+    shutil.copy(EXAMPLE / "crowd.rei", tmp_path / "crowd.rei")
+    spec = (EXAMPLE / "crowd.yaml").read_text(encoding="utf-8").replace("seed: 1", "seed: 3").replace(
+        "shrink: {budget: 3}", "shrink: {budget: 1}")
+    (tmp_path / "crowd.yaml").write_text(spec, encoding="utf-8")
+    out = tmp_path / "out"
+    result = run_cli("search", tmp_path / "crowd.yaml", "-o", out, "--workers", "1", "--budget", "1", timeout=600)
+    assert result.returncode == 1, result.stdout + result.stderr
+    document = json.loads((out / "search.json").read_text(encoding="utf-8"))
+    [evaluation] = document["evaluations"]
+    shrunk = json.loads((out / "shrunk.json").read_text(encoding="utf-8"))
+    at_fault = [f for f in document["failures"] if AT_FAULT in f["requirements"]]
+    assert at_fault, document["failures"]
+    counts = []
+    for failure in at_fault:
+        entry = shrunk[failure["signature"]]
+        count = entry["values"]["oncoming.count"]
+        # never fewer than the person it ran into, never more than it started from, written in the shrunk case
+        assert int(failure["element"].rsplit("_", 1)[1]) <= count <= evaluation["params"]["oncoming.count"]
+        assert f"crowd oncoming {count} from" in Path(entry["case"]).read_text(encoding="utf-8")
+        summary = json.loads((Path(entry["run"]) / "summary.json").read_text(encoding="utf-8"))
+        assert next(v["status"] for v in summary["verdicts"] if v["requirement"] == AT_FAULT) == "fail"
+        counts.append(count)
+    assert min(counts) < evaluation["params"]["oncoming.count"], (counts, evaluation["params"])
+
+
 BAD = """\
 case: crowd.rei
 parameters:

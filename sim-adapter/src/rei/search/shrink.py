@@ -5,8 +5,8 @@ least the requirements it did.
 
 Steps, in order: remove each object, human, crowd and group the failure does not name (a crowd's person names its
 crowd), then the extra pieces of furniture (the last first), then move each parameter back to the base case's
-value, but a crowd's or a group's count towards its fewest people (as many as the failure's person needs; then
-halfway) and a crowd's rate towards its slowest. Each step is one candidate (validated and checked like any other) and, when valid, one
+value, but a crowd's or a group's count (first of them) towards its fewest people (as many as the failure's
+person needs; then halfway) and a crowd's rate towards its slowest. Each step is one candidate (validated and checked like any other) and, when valid, one
 simulation; ``budget`` caps the simulations per failure. The shrunk case is written to
 ``OUT/shrunk/<id>.rei`` with its runs in ``OUT/shrunk/runs/<id>-<step>/``, ``<id>`` the failure's (``failure_id``):
 named by what failed, not by its rank, which a resumed search with a larger budget may change.
@@ -130,7 +130,8 @@ def shrink(failure: Failure, values: Mapping[str, Any], space: Space, maker: Can
     while int(current.get(EXTRA_COUNT) or 0) > 0 and steps < budget:  # extra furniture, the last piece first
         if not keep({**current, EXTRA_COUNT: int(current[EXTRA_COUNT]) - 1}, removed):
             break
-    for name in list(current):
+    # the crowds' and groups' counts first: fewer people is the largest reduction of what is left
+    for name in sorted(current, key=lambda key: key not in space.people_counts()):
         # towards the base case's value; a crowd's or a group's count towards fewer people, a crowd's rate slower
         for value in space.smaller(name, current[name], failure.element):
             if value == current[name]:

@@ -375,6 +375,10 @@ class Space:
             return True
         return name in self._gatherings and re.fullmatch(rf"{re.escape(name)}_[0-9]+", element) is not None
 
+    def people_counts(self) -> set[str]:
+        """The keys of the crowds' and groups' counts (``shoppers.count``)."""
+        return {p.key for p in self.parameters if p.target in ("crowd", "group") and p.prop == "count"}
+
     def smaller(self, key: str, value: Any, element: str) -> list[Any]:
         """The values shrinking tries for ``key``, in order, after ``value`` failed: towards the base case's value,
         but a crowd's or a group's count towards its fewest people (never fewer than the failure's own person,
