@@ -196,6 +196,22 @@ def test_xacro_error_names_the_line_of_the_expression(tmp_path: Path) -> None:
     assert str(caught.value).startswith(f"{path}:3: xacro error: name 'width' is not defined")
 
 
+def test_xacro_argument_not_given_and_find_without_ros(tmp_path: Path) -> None:
+    path = _write(tmp_path, "arg.xacro", '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                                         '  <link name="$(arg prefix)a"><collision><geometry><box size="1 1 1"/>'
+                                         "</geometry></collision></link>\n</robot>\n")
+    with pytest.raises(DescriptionError) as caught:
+        load_description(path)
+    assert str(caught.value) == (f"{path}:2: xacro error: Undefined substitution argument prefix "
+                                 "(give it: --arg prefix:=VALUE)")
+    assert load_description(path, {"prefix": "left_"}).base_link == "left_a"
+    path = _write(tmp_path, "find.xacro", '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                                          '  <xacro:include filename="$(find my_robot)/urdf/common.xacro"/>\n'
+                                          "</robot>\n")
+    with pytest.raises(DescriptionError, match=r"find\.xacro:2: xacro error: \$\(find PKG\) needs a ROS installation"):
+        load_description(path)
+
+
 def test_xacro_include_that_is_missing(tmp_path: Path) -> None:
     path = _write(tmp_path, "inc.xacro", '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
                                          '  <xacro:include filename="parts.xacro"/>\n</robot>\n')

@@ -233,7 +233,9 @@ def _expand(path: Path, args: dict[str, str], warnings: list[str]) -> str:
     try:
         with contextlib.redirect_stderr(captured):
             doc = xacro.parse(None, str(path))
-            declared = {e.getAttribute("name") for e in doc.getElementsByTagName("xacro:arg")}
+            # Declared, or used without a declaration (then an error when not given).
+            declared = {e.getAttribute("name") for e in doc.getElementsByTagName("xacro:arg")} | set(
+                re.findall(r"\$\(arg\s+([^)\s]+)\s*\)", path.read_text(encoding="utf-8", errors="replace")))
             for name in sorted(set(args) - declared):
                 warnings.append(f"xacro argument '{name}' is not declared by the file"
                                 + (f" (it declares: {', '.join(sorted(declared))})" if declared else ""))
@@ -246,12 +248,20 @@ def _expand(path: Path, args: dict[str, str], warnings: list[str]) -> str:
         stack = [f for f in (xacro.filestack or []) if f]
         where = Path(stack[-1]) if stack else path
         detail = str(error) or type(error).__name__
-        if isinstance(error, ModuleNotFoundError):
-            detail = f"$(find ...) needs a ROS installation ({detail})"
         included = f" (included from {', '.join(reversed(stack[:-1]))})" if len(stack) > 1 else ""
         detail = " ".join(detail.split())
         expression = re.search(r"when evaluating expression '(.*)'", detail)
-        line = _line_of(where, re.escape(expression.group(1))) if expression else None
+        argument = re.search(r"Undefined substitution argument (\S+)", detail)
+        line = None
+        if expression:
+            line = _line_of(where, re.escape(expression.group(1)))
+        elif argument:
+            line = _line_of(where, rf"\$\(arg\s+{re.escape(argument.group(1))}\s*\)")
+            detail += f" (give it: --arg {argument.group(1)}:=VALUE)"
+        elif "ament_index_python" in detail or "rospkg" in detail:
+            # $(find PKG) asks a ROS installation where a package is; REI looks up no ROS packages.
+            line = _line_of(where, r"\$\(find\s")
+            detail = f"$(find PKG) needs a ROS installation: write the path relative to the file ({detail})"
         raise DescriptionError(where, f"xacro error: {detail}{included}", line) from None
     finally:
         xacro.init_stacks(None)
