@@ -66,3 +66,17 @@ def test_bad_input_exits_1_naming_the_file(tmp_path: Path) -> None:
     assert done.returncode == 1
     assert done.stderr.endswith(f"rei: error: {BURGER}: no link named 'base_scn' for the lidar; did you mean "
                                 "'base_scan'?\n")
+
+
+def test_a_reader_that_goes_away_ends_the_command_without_a_traceback() -> None:
+    """`rei robot X --json | head -c 1`: the pipe closes before the output is written."""
+    import subprocess
+    import sys
+
+    process = subprocess.Popen([sys.executable, "-m", "rei.cli", "robot", str(TURTLEBOT3 / "turtlebot3_burger.urdf"),
+                                "--json"], stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    assert process.stdout is not None and process.stderr is not None
+    process.stdout.close()  # before the interpreter has even started: the first write meets a closed pipe
+    err = process.stderr.read().decode()
+    assert process.wait(timeout=60) == 141, err
+    assert "Traceback" not in err, err

@@ -12,11 +12,12 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import os
 import sys
 from collections.abc import Sequence
 
 from rei import __version__
-from rei.cli.errors import EXIT_TOOLCHAIN, CommandError
+from rei.cli.errors import EXIT_BROKEN_PIPE, EXIT_TOOLCHAIN, CommandError
 from rei.toolchain import ToolchainError
 
 #: Subcommand modules under `rei.cli`, in the order `rei --help` lists them.
@@ -67,6 +68,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("rei: interrupted", file=sys.stderr)
         return 130
+    except BrokenPipeError:
+        # the reader went away (`rei robot X --json | head`): no traceback; stdout to /dev/null so the
+        # interpreter's own flush at exit does not fail again
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return EXIT_BROKEN_PIPE
 
 
 __all__ = ["COMMANDS", "CommandError", "build_parser", "main"]

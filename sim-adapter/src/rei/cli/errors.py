@@ -17,6 +17,8 @@ EXIT_USAGE = 2
 EXIT_RUN_ERROR = 2
 #: The environment cannot run REI: no Java, an old Java, jars not built.
 EXIT_TOOLCHAIN = 3
+#: The reader of the output went away (a pipe closed early): what a shell reports for a writer killed by SIGPIPE.
+EXIT_BROKEN_PIPE = 141
 
 
 class CommandError(Exception):
