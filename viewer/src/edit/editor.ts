@@ -6,14 +6,15 @@ import type { Api } from "./api";
 import { ApiError } from "./api";
 import type { Chrome } from "./chrome";
 import type { DiagramView } from "./draw/diagram";
-import type { Selection, Tool } from "./model";
+import type { CrowdDraft, Selection, Tool } from "./model";
 import { goalKey, issuesByKey, KINDS, nameKey } from "./model";
 import type { Actions } from "./panels";
 import { layoutHint, Panels } from "./panels";
 import { RoomIndex } from "./room";
 import { draftOf, finishOperation, newDynamicDraft, newHumanDraft } from "./tools/path";
-import { crowdDraftOf, crowdOperation, crowdProblem, newCrowdDraft, routeDraftOf, routeOperation } from "./tools/people";
-import type { CrowdDraft } from "./model";
+import {
+  crowdDraftOf, crowdOperation, crowdProblem, newCrowdDraft, routeDraftOf, routeOperation,
+} from "./tools/people";
 import type { Issue, Operation, PaletteType, PointSpec, State, Status, StopSpec } from "./types";
 
 export const POLL_MS = 1000;

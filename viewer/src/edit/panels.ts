@@ -139,8 +139,8 @@ export class Panels {
     const d = index.diagram;
     if (tool.kind === "route") {
       el("p", { text: `Route of ${tool.draft.name}`, class: "title" }, box);
-      el("p", { class: "hint", text: "Click floors to add stops; set a stop's wait here. Finish (Enter) saves the route, "
-        + "Escape cancels." }, box);
+      el("p", { class: "hint", text: "Click floors to add stops; set a stop's wait here. Finish (Enter) saves the "
+        + "route, Escape cancels." }, box);
       this.renderStops(box, tool.draft.stops, tool.draft.loop, true);
       this.draftButtons(box, tool.draft.stops.length === 0, () => this.actions.editStops([], tool.draft.loop));
       return;
@@ -204,7 +204,8 @@ export class Panels {
       fact("people", String(group.count));
       fact("route", (group.route?.stops ?? []).map((s) => s.floor + (s.waitSeconds > 0
         ? ` wait ${formatSeconds(s.waitSeconds)}s` : "")).join(", "));
-      el("p", { class: "hint", text: "A group's route and size are changed in the text; Delete removes its line." }, box);
+      el("p", { class: "hint", text: "A group's route and size are changed in the text; Delete removes its line." },
+        box);
     } else if ((selection.kind === "human") && d.movers.some((m) => m.name === selection.name && m.route != null)) {
       const mover = d.movers.find((m) => m.name === selection.name) as Mover;
       fact("type", mover.footprint?.type ?? "Human");

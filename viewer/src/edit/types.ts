@@ -103,7 +103,8 @@ export interface Area {
   y: number | null;
 }
 
-/** A crowd: `count` people spread over the `from` floors who walk to the `to` floors, `rate` a second (null: at once). */
+/** A crowd: `count` people spread over the `from` floors who walk to the `to` floors, `rate` a second (null: all
+ * at once). */
 export interface CrowdAreas {
   name: string;
   count: number;
@@ -236,7 +237,8 @@ export type Operation =
   | { op: "removeWall"; name: string }
   | { op: "setTrajectory"; name: string; points: PointSpec[]; loop: boolean }
   | { op: "setRoute"; name: string; stops: StopSpec[]; speed: number; start: number; loop: boolean; behaviour: string }
-  | { op: "addCrowd"; name: string; type: string | null; count: number; from: string[]; to: string[]; rate: number | null }
+  | { op: "addCrowd"; name: string; type: string | null; count: number; from: string[]; to: string[];
+      rate: number | null }
   | { op: "setCrowd"; name: string; count: number; from: string[]; to: string[]; rate: number | null }
   | { op: "addGoal"; floor: string; index: number; timeoutSeconds: number | null }
   | { op: "removeGoal"; index: number }

@@ -92,13 +92,15 @@ export class DiagramView {
     this.drawMap(index);
     if (this.floorLayer.update(index)) this.labelledFloors = index.placed.length;
     const registry: Registry = new Map();
-    for (const group of [this.walls, this.crowds, this.route, this.objects, this.movers, this.robot, this.goals, this.labels,
-      this.overlay, this.overlayLabels, this.preview]) clear(group);
+    for (const group of [this.walls, this.crowds, this.route, this.objects, this.movers, this.robot, this.goals,
+      this.labels, this.overlay, this.overlayLabels, this.preview]) clear(group);
     drawWalls(this.walls, index, registry);
     drawObjects(this.objects, this.labels, index.diagram.objects, registry);
     const d = index.diagram;
     drawMovers(this.movers, this.labels, d.movers.filter((m) => m.route == null), registry);
-    for (const mover of d.movers) if (mover.route != null) drawRoutedHuman(this.movers, this.labels, index, mover, registry);
+    for (const mover of d.movers) {
+      if (mover.route != null) drawRoutedHuman(this.movers, this.labels, index, mover, registry);
+    }
     for (const group of d.groups ?? []) drawGroup(this.movers, this.labels, index, group, registry);
     for (const crowd of d.crowds ?? []) drawCrowd(this.crowds, this.labels, index, crowd, registry);
     drawRobot(this.robot, this.labels, index.diagram.robot, registry);

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: EPL-2.0
 // What a click or a drag on the diagram means with the active tool: place furniture, add a goal, add a point to
-// the path being drawn, add a floor on a ghost cell or a wall on a side strip, select, or move furniture and the
-// robot to the floor they are dropped on. Floors are found from the pointer's world position (RoomIndex), not
+// the path or a stop to the route being drawn, add a floor to a crowd's area (or, dragged, a rectangle of floors),
+// add a floor on a ghost cell or a wall on a side strip, select, or move furniture and the robot to the floor
+// they are dropped on. Floors are found from the pointer's world position (RoomIndex), not
 // from the element under it, so a click on a table still finds the table's floor.
 import type { Editor } from "../editor";
 import type { Selection } from "../model";
