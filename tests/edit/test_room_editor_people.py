@@ -63,6 +63,8 @@ def test_draw_a_route_place_a_crowd_move_its_area_and_save(open_editor, page: Pa
     # a crowd from the palette: a rectangle of floors for its from area, two clicked floors for its to area
     page.click("#new-crowd")
     drag_floors(page, "F_6_1", "F_7_2")
+    page.keyboard.press("Enter")  # no to area yet: the page says so and sends nothing
+    page.locator("#toast").get_by_text("Choose the crowd's to area").wait_for()
     page.click("#crowd-to")
     click_floor(page, "F_0_2")
     click_floor(page, "F_0_3")
@@ -130,6 +132,14 @@ def test_crowds_and_groups_are_drawn_and_a_crowd_is_resized_in_place(open_editor
 
     family.locator(".stop").first.click()
     page.locator("#selection").get_by_text("changed in the text").wait_for()
+
+    # a crowd begun and dropped with Escape leaves the text as it was
+    text = editor.session.text
+    page.click("#new-crowd")
+    drag_floors(page, "F_6_6", "F_7_7")
+    page.keyboard.press("Escape")
+    assert page.locator(".crowd-draft").count() == 0
+    assert editor.session.text == text and editor.session.status()["canUndo"]
 
 
 def test_a_crowd_edit_with_a_floor_that_is_not_there_is_refused_with_its_place(open_editor) -> None:

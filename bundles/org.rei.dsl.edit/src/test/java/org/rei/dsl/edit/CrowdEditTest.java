@@ -29,7 +29,7 @@ import org.rei.dsl.validation.ReiIssueCodes;
 
 /**
  * A room with a crowd and a group (examples/people/crowds.rei): the room editor keeps their lines as written when
- * it saves another edit, leaves them out of the diagram and refuses what only the text can say about them.
+ * it saves another edit, draws neither as objects nor movers and refuses what only the text can say about them.
  */
 class CrowdEditTest {
 
@@ -86,8 +86,9 @@ class CrowdEditTest {
 		Texts.assertReadsBackAsEdited(text, document.uri(), result.text(), new MoveObject("crate", "F_2_3"));
 	}
 
+	/** Their people are not drawn one by one: a crowd's areas and a group's route are (CrowdAreaEditTest). */
 	@Test
-	void theDiagramDrawsNeitherCrowdsNorGroups() {
+	void crowdsAndGroupsAreNeitherObjectsNorMovers() {
 		Diagram diagram = Texts.open(EXAMPLE).diagram();
 
 		assertEquals(List.of("shelf1", "table1"), diagram.objects().stream().map(Diagram.Item::name).toList());
