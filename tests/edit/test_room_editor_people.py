@@ -120,6 +120,7 @@ def test_crowds_and_groups_are_drawn_and_a_crowd_is_resized_in_place(open_editor
     family = element(page, "group", "family")
     assert family.locator(".stop").count() == 2
     assert "family ×3" in (page.locator(".labels").first.text_content() or "")
+    page.screenshot(path=str(SHOTS / "crowds.png"))  # docs/images/room-editor-people.png comes from here
 
     shoppers.locator('.area.from rect[data-floor="F_0_2"]').click()
     page.locator("#crowd-count").fill("10")
