@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: EPL-2.0
-"""Crowds and groups in a search: their lines read and rewritten in the text (rei.search.gatherings), their counts,
+"""Crowds and groups in a search: their lines read and rewritten in the text (rei.edit.gatherings), their counts,
 rates and behaviours as parameters checked against the base case (rei.search.space), the spec's own checks, and
 shrinking towards fewer and slower people. The real room editor engine, generator and runs are in
 tests/search/test_search_crowd_e2e.py."""
@@ -16,9 +16,9 @@ from spec_helpers import error_of, parse
 from test_search_space import DIAGRAM, p
 
 from rei.campaign.spec import SpecError
+from rei.edit.gatherings import gatherings, number, with_values
 from rei.search.candidates import VALID, Candidate
 from rei.search.failures import Failure
-from rei.search.gatherings import gatherings, number, with_values
 from rei.search.shrink import shrink
 from rei.search.space import Edit, Space
 from rei.search.spec import Range

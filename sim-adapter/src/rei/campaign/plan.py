@@ -7,7 +7,7 @@ stays the same across resumes.
 
 A variant with a ``behaviour`` runs the group's cases with every person who sees the robot behaving so: a generated
 room is generated again with that behaviour (the same room: the people's draws do not depend on it, only the word
-after their route), a .rei file is rewritten (rei.search.gatherings.with_behaviour); each is a case of its own
+after their route), a .rei file is rewritten (rei.edit.gatherings.with_behaviour); each is a case of its own
 (``OUT/cases/<its key>``), while its runs keep the room's name as their ``case``, so reports and `rei compare`
 pair and group them by room and by variant.
 """
@@ -87,8 +87,8 @@ class Plan:
 def _sources(group: Group, out: Path, behaviour: str | None = None) -> list[CaseSource]:
     """The group's cases, with every person who sees the robot behaving ``behaviour`` (None: as written)."""
     from rei.campaign.prepare import relocated_imports
+    from rei.edit.gatherings import with_behaviour
     from rei.rooms import render
-    from rei.search.gatherings import with_behaviour
 
     sources: list[CaseSource] = []
     if group.rooms is not None:

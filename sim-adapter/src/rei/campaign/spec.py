@@ -424,7 +424,7 @@ def _check_behaviours(r: _Reader, variants: tuple[Variant, ...], cases: tuple[Pa
     """A variant that sets the people's behaviour needs people who see the robot in every case of the group: rooms
     generated with ``people: reactive``, or .rei files with a person on a route, a crowd or a group (``mixed`` is
     drawn per person by the room generator: generated rooms only). Placed at the group's rooms or cases."""
-    from rei.search.gatherings import gatherings
+    from rei.edit.gatherings import gatherings
 
     varied = [v for v in variants if v.behaviour is not None]
     if not varied:

@@ -11,7 +11,7 @@ editor's ``setTrajectory``) or a route (a person who sees the robot: its ``start
 and the floors of its ``stop``s, ``setRoute``). A key of the other kind is refused at the key.
 
 A crowd or a group (``shoppers.count``, ``shoppers.rate``, ``shoppers.behaviour``, ``family.count``) is a line of
-the text the room editor does not edit: its values are set in the base case's text (rei.search.gatherings) before
+the text the room editor does not edit: its values are set in the base case's text (rei.edit.gatherings) before
 the engine validates it, and a count larger than the line's floors hold is refused when the spec is checked, with
 the language's own message.
 """
@@ -30,7 +30,7 @@ from optuna.distributions import BaseDistribution, CategoricalDistribution, Floa
 
 from rei import located_yaml
 from rei.campaign.spec import SpecError
-from rei.search.gatherings import gatherings, with_values
+from rei.edit.gatherings import gatherings, with_values
 from rei.search.spec import UNREAD, Parameter, Range
 
 Values = Mapping[str, Any]
@@ -46,7 +46,7 @@ MAX_ROUTE_SPEED = 3.0
 @dataclass(frozen=True, slots=True)
 class Edit:
     """A point of the space as what to do to the base case: edit operations, the run's seed and fault, and the
-    crowds' and groups' values to set in the base case's text first (rei.search.gatherings.with_values)."""
+    crowds' and groups' values to set in the base case's text first (rei.edit.gatherings.with_values)."""
 
     operations: tuple[dict[str, Any], ...]
     seed: int

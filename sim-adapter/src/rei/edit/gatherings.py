@@ -2,10 +2,10 @@
 """Crowds and groups in a test case's text: where each line's count, rate and behaviour are, and the text with
 other values.
 
-The room editor's engine does not draw a crowd or a group (a line stands for many people placed by the generator)
-and refuses to edit one (docs/room-editor.md), so `rei search` sets their numbers in the base case's text itself,
-before the engine's ``reset`` validates it with the language's own checks (a crowd larger than its floors hold is
-the language's error, as in a case written by hand). The statements are read token by token with the grammar's
+Text-level edits beside the room editor's engine: `rei search` sets a crowd's or group's numbers and behaviour, and
+a campaign variant every person's behaviour, in a case's text, before the engine's ``reset`` validates it with the
+language's own checks (a crowd larger than its floors hold is the language's error, as in a case written by hand).
+The statements are read token by token with the grammar's
 shape (``crowd NAME N [: Type] from [...] to [...] options``, ``group NAME N [: Type] route [...] options``, the
 options in any order), comments masked, so a change touches the value's own token and nothing else.
 """
