@@ -24,7 +24,7 @@ from rei.edit.server import ROUTES
 from rei.evaluation import DEFAULT_UTILITIES, load_declared_transitions, load_declared_utilities
 from rei.evaluation.signals import DEFAULT_TRANSITIONS, SIGNAL_RECORD, Signal
 from rei.maps import MAX_BLOCKS, MAX_CELLS
-from rei.mission.executor import MissionEventKind
+from rei.mission.executor import FAULT_EVENTS, FAULT_KINDS, MissionEventKind
 from rei.run import jvm
 from rei.sut.external import protocol
 from rei.sut.external.process import Connection
@@ -71,7 +71,9 @@ def test_java_copies(contract: dict, java_facts: dict) -> None:
     assert java_facts["run_id_pattern"] == contract["run_id_pattern"]
     assert java_facts["topic_template"] == contract["topic_template"].removesuffix("{name}")
     assert java_facts["max_message_size"] == java_facts["sut_max_message_size"] == contract["max_message_size"]
-    assert java_facts["mission_events"] == java_facts["vepl_mission_events"] == contract["mission_events"]
+    assert java_facts["mission_events"] == contract["mission_events"]
+    assert java_facts["fault_events"] == _fault_events(contract)
+    assert java_facts["vepl_mission_events"] == contract["mission_events"] + _fault_events(contract)
     assert java_facts["signal_record"] == java_facts["signal_payload"] == contract["signal_record"]
     sut = contract["sut"]
     assert java_facts["sut_uri_template"] == sut["uri_template"]
@@ -87,6 +89,37 @@ def test_java_copies(contract: dict, java_facts: dict) -> None:
     assert java_facts["room_editor_operations"] == editor["operations"]
     assert java_facts["room_editor_point"] == editor["point"]
     assert java_facts["room_editor_sides"] == editor["sides"]
+
+
+def _fault_events(contract: dict) -> list[str]:
+    faults = contract["faults"]
+    return [faults["event_template"].format(sensor=sensor, kind=kind, edge=edge).upper()
+            for sensor, kinds in faults["kinds"].items() for kind in kinds for edge in faults["edges"]]
+
+
+def test_fault_copies(contract: dict, repo_root: Path) -> None:
+    """The fault kinds: the simulator's (its events and its spec reader), the language's keywords, the default
+    patterns' events and signals."""
+    from rei.sim.faults import EDGES, KIND_KEYS, SENSORS, event_name
+
+    faults = contract["faults"]
+    assert {k: list(v) for k, v in FAULT_KINDS.items()} == faults["kinds"]
+    assert list(FAULT_EVENTS) == _fault_events(contract)
+    assert list(SENSORS) == list(faults["kinds"]) and list(EDGES) == faults["edges"]
+    assert list(KIND_KEYS) == faults["kinds"]["laser"]
+    assert event_name("laser", "blackout", True) == "FAULT_LASER_BLACKOUT_BEGIN" in FAULT_EVENTS
+    grammar = (repo_root / "bundles" / "org.rei.dsl" / "src" / "main" / "java" / "org" / "rei" / "dsl"
+               / "Rei.xtext").read_text(encoding="utf-8")
+    for rule, words in (("FaultSensor", list(faults["kinds"])), ("FaultKind", faults["kinds"]["laser"])):
+        enum = re.search(rf"enum {rule} returns ctx::{rule}:([^;]+);", grammar)
+        assert enum is not None, f"Rei.xtext: no enum {rule}"
+        assert re.findall(r"='(\w+)'", enum[1]) == words
+    patterns = (repo_root / "cep" / "patterns" / "faults.vepl").read_text(encoding="utf-8")
+    events = re.findall(r"^atomicEvent \w+\(\) as mission (\w+)$", patterns, re.M)
+    signals = re.findall(r"^signal (\w+)$", patterns, re.M)
+    emitted = re.findall(r"^rule \"[^\"]+\" on \w+ emits (\w+)$", patterns, re.M)
+    assert events == _fault_events(contract)
+    assert signals == emitted == [faults["signal_prefix"] + e for e in _fault_events(contract)]
 
 
 def test_the_map_limits_are_one_fact_of_both_readers_and_of_the_language_page(contract: dict, java_facts: dict,

@@ -117,6 +117,23 @@ def test_mission_errors(room_copy: Path) -> None:
     assert "mission.xml: robot 'other' is not the world's robot 'tb3'" in _error(lambda: read_case(room_copy))
 
 
+def test_mission_faults_are_read_and_a_bad_one_is_named(room_copy: Path) -> None:
+    path = room_copy / "mission.xml"
+    text = path.read_text(encoding="utf-8")
+    faults = ('<faults><fault sensor="laser" kind="blackout" from="5.0" to="7.0"/>'
+              '<fault sensor="laser" kind="impulse" period="10.0" duty="10.0%" gain="0.2@0.0/0.8@30.0"/></faults>')
+    path.write_text(text.replace("</mission>", faults + "</mission>"), encoding="utf-8")
+    blackout, impulse = read_mission(path).faults
+    assert blackout.describe() == "laser blackout, from 5 s to 7 s"
+    assert impulse.timing.pulse == 1.0 and impulse.effect.gain.value(15.0) == pytest.approx(0.5)
+    path.write_text(text.replace("</mission>", faults.replace('to="7.0"', 'to="4.0"') + "</mission>"),
+                    encoding="utf-8")
+    assert "mission.xml: fault #0: 'to' (4 s) must be after 'from' (5 s)" in _error(lambda: read_mission(path))
+    path.write_text(text.replace("</mission>", '<faults><fault sensor="laser" kind="smoke"/></faults></mission>'),
+                    encoding="utf-8")
+    assert "fault #0: unknown fault laser smoke" in _error(lambda: read_mission(path))
+
+
 def test_monitor_topic_needs_run_id(room_copy: Path, edit_json: Edit) -> None:
     edit_json(room_copy / "monitor.json", lambda d: d["topics"].update(state="rei.run.state"))
     assert "topics.state: must contain {run_id}" in _error(lambda: read_monitor(room_copy / "monitor.json"))

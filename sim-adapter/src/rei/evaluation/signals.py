@@ -15,6 +15,8 @@ from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Any
 
+from rei.mission.executor import FAULT_EVENTS
+
 SIG_MISSION_BEGIN = "SIG_MISSION_BEGIN"
 SIG_MISSION_END = "SIG_MISSION_END"
 SIG_MISSION_TASK_START = "SIG_MISSION_TASK_START"
@@ -78,7 +80,11 @@ DEFAULT_TRANSITIONS: Mapping[str, Transition] = MappingProxyType({
     SIG_OBJECT_COLLISION_END: Transition(Source.GEOM, Zone.COLLISION, Zone.CLOSE, per_object=True),
 })
 TRANSITION_SIGNALS = tuple(DEFAULT_TRANSITIONS)
-KNOWN_SIGNALS: frozenset[str] = frozenset((*MISSION_SIGNALS, *TRANSITION_SIGNALS, SIG_MONITOR_DATA_GAP))
+#: The default patterns' fault signals (cep/patterns/faults.vepl): SIG_ + each fault window edge of the mission
+#: topic (rei.mission.executor.FAULT_EVENTS, contract/vocabulary.json "faults").
+FAULT_SIGNALS = tuple(f"SIG_{event}" for event in FAULT_EVENTS)
+KNOWN_SIGNALS: frozenset[str] = frozenset((*MISSION_SIGNALS, *TRANSITION_SIGNALS, SIG_MONITOR_DATA_GAP,
+                                           *FAULT_SIGNALS))
 _TASK_OBJECT = re.compile(r"task_(\d+)")
 
 

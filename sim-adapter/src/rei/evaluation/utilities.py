@@ -13,6 +13,8 @@ signals out; their defaults are chosen here (docs/evaluation.md, "Utilities"):
   scores the laser only at the collision boundary, where the sensor's own view is a presage of damage.
 - ``SIG_MONITOR_DATA_GAP``: 0. A lost message is a fault of the test harness, not behaviour of the robot; it
   makes the affected verdicts ``error`` instead (rei.evaluation.verdicts).
+- ``SIG_FAULT_...`` (a fault window's edges, docs/faults.md): 0. A fault is what the test does to the robot, not
+  behaviour to score; requirements relative to a fault score what the robot does.
 - ``SIG_OBJECT_COLLISION_BEGIN`` / ``_END``: 0. Collisions per object are counted for the human requirement; the
   score stays that of Table 2's robot-level transitions.
 
@@ -34,7 +36,7 @@ from typing import Any
 
 import yaml
 
-from rei.evaluation.signals import DEFAULT_TRANSITIONS, KNOWN_SIGNALS, Transition
+from rei.evaluation.signals import DEFAULT_TRANSITIONS, FAULT_SIGNALS, KNOWN_SIGNALS, Transition
 
 #: Table 3 of the thesis, plus the documented defaults for the signals it does not list.
 DEFAULT_UTILITIES: Mapping[str, float] = MappingProxyType({
@@ -54,6 +56,7 @@ DEFAULT_UTILITIES: Mapping[str, float] = MappingProxyType({
     "SIG_MONITOR_DATA_GAP": 0.0,
     "SIG_OBJECT_COLLISION_BEGIN": 0.0,
     "SIG_OBJECT_COLLISION_END": 0.0,
+    **dict.fromkeys(FAULT_SIGNALS, 0.0),
 })
 assert set(DEFAULT_UTILITIES) == KNOWN_SIGNALS
 

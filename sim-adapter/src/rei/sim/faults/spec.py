@@ -98,9 +98,6 @@ def _one(item: str) -> Fault:
     if head not in KIND_KEYS:
         raise ValueError(f"unknown laser fault {head!r}: known kinds {', '.join(KIND_KEYS)}, presets "
                          f"{', '.join([*PRESETS, *GATED])}")
-    if head == "impulse":
-        base = PRESETS["10%"]
-        values = {"rate": f"{base.rate!r}", "gain": f"{base.gain!r}", "width": str(base.width), **values}
     return fault_from_fields("laser", head, values)
 
 
@@ -148,13 +145,16 @@ def _effect(kind: str, fields: Mapping[str, str]) -> LaserKind:
         if not dots:
             raise ValueError(f"angles {text!r}: expected FROM..TO in degrees, e.g. -30..30")
         return Occlusion(_number(low, "angle"), _number(high, "angle"), _required(fields, "range", kind))
-    gain = parse_ramp(fields["gain"]) if "gain" in fields else Ramp.constant(PRESETS["10%"].gain)
-    width_text = fields.get("width", "1")
+    # what is not given is the "10%" preset's (docs/faults.md)
+    base = PRESETS["10%"]
+    gain = parse_ramp(fields["gain"]) if "gain" in fields else Ramp.constant(base.gain)
+    width_text = fields.get("width", str(base.width))
     try:
         width = int(width_text)
     except ValueError:
         raise ValueError(f"width {width_text!r} is not a whole number of beams") from None
-    return Impulse(_required(fields, "rate", kind), gain, width)
+    rate = _number(fields["rate"], "rate") if "rate" in fields else base.rate
+    return Impulse(rate, gain, width)
 
 
 def _required(fields: Mapping[str, str], key: str, kind: str) -> float:

@@ -127,7 +127,8 @@ public final class ArtifactGenerator {
 				Variable.createReadOnlyVariable("animated", model.animated()),
 				Variable.createReadOnlyVariable("people", model.people()),
 				Variable.createReadOnlyVariable("types", model.types()),
-				Variable.createReadOnlyVariable("monitor", monitor) };
+				Variable.createReadOnlyVariable("monitor", monitor),
+				Variable.createReadOnlyVariable("faults", Faults.of(testCase)) };
 	}
 
 	private static String run(String artifact, EglModule module, List<InMemoryEmfModel> models, Variable[] variables)

@@ -36,4 +36,6 @@ public interface ReiIssueCodes {
 	String CYLINDER_SIZE = PREFIX + "cylinderSize";
 	String COLOUR = PREFIX + "colour";
 	String OUT_OF_RANGE = PREFIX + "outOfRange";
+	String FAULT_TIME_ORDER = PREFIX + "faultTimeOrder";
+	String FAULT_PARAMETER = PREFIX + "faultParameter";
 }

@@ -21,7 +21,7 @@ import org.rei.context.ContextPackage;
  */
 @ComposedChecks(validators = { NamingValidator.class, RoomValidator.class, MapRoomValidator.class,
 		PlacementValidator.class,
-		TrajectoryValidator.class, RouteValidator.class, PeopleValidator.class, MissionValidator.class, MonitorValidator.class, CatalogueValidator.class })
+		TrajectoryValidator.class, RouteValidator.class, PeopleValidator.class, MissionValidator.class, MonitorValidator.class, FaultValidator.class, CatalogueValidator.class })
 public class ReiValidator extends AbstractReiValidator {
 
 	/** Rules judge a model that parsed; after a syntax error they would only report the parser's guesses. */
