@@ -63,6 +63,10 @@ class NavConfig:
     recovery_after_blocked: float = 4.0
     backup_distance: float = 0.15
 
+    # Sensor loss: stand while the latest scan has no return at all (a lidar gone dark, docs/faults.md) instead
+    # of taking it for free space; off by default, as the reference navigation always drove on.
+    stop_when_blind: bool = False
+
     # Cancellation (thesis 7.4.4): abort when the robot only oscillates or makes no progress.
     oscillation_distance: float = 0.3
     oscillation_timeout: float = 20.0

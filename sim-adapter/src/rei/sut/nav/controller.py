@@ -135,6 +135,8 @@ class NavController(Controller):
             return self._send(0.0, 0.0)
         if self._grid is None:
             return self._abort("reset() was not called: no static map")
+        if self.config.stop_when_blind and scan is not None and not np.isfinite(scan.ranges).any():
+            return self._send(0.0, 0.0)
         return self._navigate(t, dt, pose)
 
     # -- navigation ----------------------------------------------------------------------------------------
