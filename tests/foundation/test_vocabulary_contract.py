@@ -115,9 +115,9 @@ def test_fault_copies(contract: dict, repo_root: Path) -> None:
         assert enum is not None, f"Rei.xtext: no enum {rule}"
         assert re.findall(r"='(\w+)'", enum[1]) == words
     patterns = (repo_root / "cep" / "patterns" / "faults.vepl").read_text(encoding="utf-8")
-    events = re.findall(r"^atomicEvent \w+\(\) as mission (\w+)$", patterns, re.M)
-    signals = re.findall(r"^signal (\w+)$", patterns, re.M)
-    emitted = re.findall(r"^rule \"[^\"]+\" on \w+ emits (\w+)$", patterns, re.M)
+    events = re.findall(r"^atomicEvent \w+\(\) as mission (\w+)$", patterns, re.MULTILINE)
+    signals = re.findall(r"^signal (\w+)$", patterns, re.MULTILINE)
+    emitted = re.findall(r"^rule \"[^\"]+\" on \w+ emits (\w+)$", patterns, re.MULTILINE)
     assert events == _fault_events(contract)
     assert signals == emitted == [faults["signal_prefix"] + e for e in _fault_events(contract)]
 

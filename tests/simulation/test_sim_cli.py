@@ -37,6 +37,16 @@ def test_a_failing_mission_exits_one_with_the_reason(run_cli, repo_root: Path, t
     assert "FAIL" in result.stdout and "false success" in result.stdout
 
 
+def test_a_bad_faults_block_is_refused_with_its_position(run_cli, tmp_path: Path) -> None:
+    case = tmp_path / "blind.rei"
+    case.write_text("testcase T {\n  room R size 3 x 2 {\n    robot r : Waffle on F_0_0\n  }\n"
+                    "  mission M { goto F_1_1 goto F_2_1 }\n  faults {\n    laser noise from 2s to 1s\n  }\n}\n")
+    result = run_cli("sim", case, "-o", tmp_path / "out")
+    assert result.returncode == 1 and not (tmp_path / "out" / "streams").exists()  # as for any invalid case
+    assert f"{case}:7:11: error: A laser noise fault needs 'sigma' (metres) [org.rei.dsl.faultParameter]" in result.stderr
+    assert f"{case}:7:28: error: 'to' must be after 'from' (2.0 s) [org.rei.dsl.faultTimeOrder]" in result.stderr
+
+
 def test_bad_arguments_exit_two_before_anything_runs(run_cli, repo_root: Path, tmp_path: Path) -> None:
     example = repo_root / "examples" / "simple_navigation.rei"
     unknown = run_cli("sim", example, "-o", tmp_path / "a", "--controller", "teleport")
@@ -44,6 +54,9 @@ def test_bad_arguments_exit_two_before_anything_runs(run_cli, repo_root: Path, t
     assert "teleport" in unknown.stderr and "nav" in unknown.stderr
     fault = run_cli("sim", example, "-o", tmp_path / "b", "--fault", "laser:rate=lots")
     assert fault.returncode == 2 and "laser:rate=lots" in fault.stderr
+    order = run_cli("sim", example, "-o", tmp_path / "c", "--fault", "laser:freeze,from=1,to=2;laser:blackout,from=7,to=5")
+    assert order.returncode == 2 and not (tmp_path / "c").exists()
+    assert "bad fault spec 'laser:blackout,from=7,to=5': 'to' (5 s) must be after 'from' (7 s)" in order.stderr
     animation = run_cli("sim", example, "-o", tmp_path / "d", "--animation", "sideways")
     assert animation.returncode == 2 and "--animation" in animation.stderr and "force" in animation.stderr
     settings = tmp_path / "collector.yaml"
