@@ -137,7 +137,8 @@ def test_the_spec_reads_crowds_and_groups_and_checks_their_ranges(tmp_path: Path
     message = error_of("case: c.rei\nparameters:\n"
                        "  - {crowd: shoppers, count: [0, 12], rate: [0, 2], speed: [1, 2], behaviour: [shy]}\n"
                        "  - {group: family, count: [1, 4], rate: [1, 2]}\n"
-                       "  - {crowd: shoppers, count: [2.5, 4]}\nobjectives: [utility]\n", tmp_path)
+                       "  - {crowd: shoppers, count: [2.5, 4]}\n"
+                       "  - {crowd: q, rate: [0.0001, 0.0004]}\nobjectives: [utility]\n", tmp_path)
     assert message.splitlines() == [
         "s.yaml:3:30: a crowd has 1 person or more (the language's least), got [0, 12]",
         "s.yaml:3:45: a crowd's rate (people a second) must be positive, got [0, 2]",
@@ -145,7 +146,10 @@ def test_the_spec_reads_crowds_and_groups_and_checks_their_ranges(tmp_path: Path
         "s.yaml:3:79: 'shy' is not a behaviour; expected avoids, ignores, curious, scared, blocks",
         "s.yaml:4:28: a group has 2 people or more (the language's least), got [1, 4]",
         "s.yaml:4:36: 'rate' is not a property of a group; expected count, behaviour",
-        "s.yaml:5:30: expected a range [low, high] of two integers, got [2.5, 4]"]
+        "s.yaml:5:30: expected a range [low, high] of two integers, got [2.5, 4]",
+        # a rate the text would write as 0
+        ("s.yaml:6:22: a crowd's rate is written with three decimals: 0.001 people a second at least, got "
+         "[0.0001, 0.0004]")]
 
 
 class TextMaker(FakeMaker):

@@ -398,6 +398,8 @@ _PROPS = {"object": ("floor", "yaw"), "robot": ("floor",),
           "crowd": ("count", "rate", "behaviour"), "group": ("count", "behaviour")}
 #: The fewest people of a crowd and of a group (the language's tooFewPeople: a group's leader and one more).
 LEAST_PEOPLE = {"crowd": 1, "group": 2}
+#: The slowest crowd rate a case's text can hold (rei.edit.gatherings.number writes three decimals).
+LEAST_RATE = 0.001
 
 
 def _parameters(node: yaml.Node, loc: _Located, problems: located_yaml.Collector) -> tuple[Parameter, ...]:
@@ -568,6 +570,9 @@ def _domain(prop: str, node: yaml.Node, loc: _Located, target: str = "") -> Any:
         if domain.low <= 0:
             raise SpecError(f"{loc.at(node)}: a crowd's rate (people a second) must be positive, got "
                             f"[{domain.low:g}, {domain.high:g}]")
+        if domain.low < LEAST_RATE:  # a smaller one is written 0 in the case's text, which the language refuses
+            raise SpecError(f"{loc.at(node)}: a crowd's rate is written with three decimals: {LEAST_RATE:g} "
+                            f"people a second at least, got [{domain.low:g}, {domain.high:g}]")
         return domain
     if prop == "floor":
         return _floors(value, node, loc)
