@@ -71,7 +71,7 @@ groups:
     variants: [{name: m, behaviour: mixed}]
   - name: shy
     cases: [alone.rei]
-    variants: [{name: s, behaviour: shy}]
+    variants: [{name: s, behaviour: shy}, {name: h, behaviour: blocks, humans: false}]
 """
 
 
@@ -90,4 +90,7 @@ def test_a_behaviour_without_people_who_see_the_robot_is_refused_at_the_group(tm
         (f"{spec}:6:13: groups[1]: variant 'm' sets the people's behaviour (mixed): alone.rei has no person who "
         "sees the robot (a human on a route, a crowd or a group)"),
         (f"{spec}:10:37: groups[2]: variants[0]: 'behaviour' must be one of avoids, ignores, curious, scared, "
-        "blocks, mixed, got 'shy'")]
+        "blocks, mixed, got 'shy'"),
+        # a behaviour for runs without people
+        (f"{spec}:10:64: groups[2]: variants[1]: 'behaviour' sets how the people behave and 'humans: false' leaves "
+         "them out of the runs; remove one of the two")]

@@ -402,6 +402,9 @@ def _variant(v: _Reader, controller: str, base: Path, sut: ExternalSut | None) -
             problems.add(f"{v.at('fault')}: fault: {error}")
     spec = problems.read(lambda: v.controller("controller", controller), controller)
     behaviour = problems.read(lambda: _behaviour(v), None)
+    if behaviour is not None and humans is False:  # its runs have no people to behave so: a mistake, not a no-op
+        problems.add(f"{v.at('behaviour')}: 'behaviour' sets how the people behave and 'humans: false' leaves them "
+                     f"out of the runs; remove one of the two")
     own_sut = problems.read(lambda: _sut(v, base), None)
     if v.get("sut") is not None and v.get("controller") is not None:
         problems.add(f"{v.key_at('sut')}: give either 'controller' (in-process) or 'sut' (external), not both")
