@@ -48,6 +48,8 @@ def test_rooms_variants_and_repetitions_expand_in_a_stable_order(tmp_path: Path)
     (spec(groups=[{"name": "g/x", "rooms": {"size": "small"}}]), r"'name' 'g/x': use letters"),
     (spec(groups=[{"name": "g", "rooms": {"size": "tiny"}}]), r"groups\[0\]: rooms: size must be one of"),
     (spec(variants=[{"name": "v", "fault": "laser:200%"}]), r"variants\[0\]: fault:"),
+    (spec(variants=[{"name": "v", "fault": "laser:blackout,from=7,to=5"}]),
+     r"variants\[0\]: fault: bad fault spec 'laser:blackout,from=7,to=5': 'to' \(5 s\) must be after"),
     (spec(variants=[{"name": "v", "controller": "warp"}]), r"unknown controller 'warp'"),
     (spec(variants=[{"name": "v"}, {"name": "v"}]), r"two variants have the same name"),
 ])
@@ -63,6 +65,9 @@ def test_the_example_campaigns_are_valid(tmp_path: Path) -> None:
     groups = [r.group for r in thesis.runs]
     assert (groups.count("small"), groups.count("medium"), groups.count("large")) == (14, 8, 1)
     assert plan_campaign(load_spec(EXAMPLES / "campaigns" / "faults.yaml"), tmp_path).runs
+    gated = load_spec(EXAMPLES / "campaigns" / "faults_gated.yaml")
+    runs = plan_campaign(gated, tmp_path).runs
+    assert sorted({r.fault or "" for r in runs}) == ["", "laser:gated-1%", "laser:gated-10%"]
 
 
 def test_an_external_sut_is_a_variant_setting_with_the_spec_s_folder_as_its_working_folder(tmp_path: Path) -> None:
