@@ -80,3 +80,15 @@ def test_a_reader_that_goes_away_ends_the_command_without_a_traceback() -> None:
     err = process.stderr.read().decode()
     assert process.wait(timeout=60) == 141, err
     assert "Traceback" not in err, err
+
+
+def test_a_broken_pipe_that_is_not_the_output_keeps_its_traceback(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A socket or a process's pipe that broke is a failure to see, not a reader that went away: not exit 141."""
+    import rei.cli.robot
+
+    def broken(args: object) -> int:
+        raise BrokenPipeError(32, "Broken pipe")  # as a send to a process that died raises it
+
+    monkeypatch.setattr(rei.cli.robot, "run", broken)
+    with pytest.raises(BrokenPipeError):
+        main(["robot", str(BURGER)])

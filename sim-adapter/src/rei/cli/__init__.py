@@ -13,6 +13,7 @@ from __future__ import annotations
 import argparse
 import importlib
 import os
+import select
 import sys
 from collections.abc import Sequence
 
@@ -69,10 +70,23 @@ def main(argv: Sequence[str] | None = None) -> int:
         print("rei: interrupted", file=sys.stderr)
         return 130
     except BrokenPipeError:
+        if not _stdout_closed():  # another pipe or socket (a process that died): a bug's, it keeps its traceback
+            raise
         # the reader went away (`rei robot X --json | head`): no traceback; stdout to /dev/null so the
         # interpreter's own flush at exit does not fail again
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return EXIT_BROKEN_PIPE
+
+
+def _stdout_closed() -> bool:
+    """Whether stdout's reader went away: its pipe or socket polls as an error or a hang-up (nothing is written)."""
+    try:
+        fd = sys.stdout.fileno()
+    except (AttributeError, OSError, ValueError):  # not a file (captured): not the pipe that broke
+        return False
+    poll = select.poll()
+    poll.register(fd, select.POLLOUT)
+    return any(events & (select.POLLERR | select.POLLHUP) for _, events in poll.poll(0))
 
 
 __all__ = ["COMMANDS", "CommandError", "build_parser", "main"]
