@@ -243,6 +243,14 @@ def test_urdf_the_parser_refuses_names_the_line_of_the_element(tmp_path: Path) -
     assert str(caught.value) == (f"{path}:3: not a valid URDF: joint 'j' names child link 'b', which does not exist")
 
 
+def test_an_xml_file_that_is_not_a_urdf_says_its_root_element(tmp_path: Path) -> None:
+    path = _write(tmp_path, "package.xml", '<?xml version="1.0"?>\n<!-- a ROS package -->\n'
+                                           '<package format="3">\n  <name>r</name>\n</package>\n')
+    with pytest.raises(DescriptionError) as caught:
+        load_description(path)
+    assert str(caught.value) == f"{path}:3: not a URDF: its root element is <package>, a URDF's is <robot>"
+
+
 def test_lidar_link_that_does_not_exist_says_did_you_mean() -> None:
     with pytest.raises(DescriptionError) as caught:
         load_description(BURGER, {"namespace": "tb3/"}, lidar="base_scan")

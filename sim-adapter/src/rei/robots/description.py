@@ -294,6 +294,11 @@ def _parse_urdf(path: Path, text: str, warnings: list[str], args: Mapping[str, s
     from urdf_parser_py import urdf
     from urdf_parser_py.xml_reflection import core
 
+    # a ROS package.xml or a launch file says only "name not set (at /robot)" to the parser
+    root = re.search(r"<([A-Za-z_][\w.:-]*)", re.sub(r"<\?.*?\?>|<!--.*?-->", "", text, flags=re.DOTALL))
+    if root is not None and root.group(1) != "robot":
+        raise DescriptionError(path, f"not a URDF: its root element is <{root.group(1)}>, a URDF's is <robot>",
+                               _line_of(path, rf"<{re.escape(root.group(1))}[\s>/]"))
     # The parser prints unknown elements and attributes (Gazebo tags, ...) to stderr by default: keep them.
     previous = core.on_error
     core.on_error = lambda message: warnings.append(f"URDF: {message}")
