@@ -187,6 +187,17 @@ def test_xml_that_does_not_parse_names_line_and_column(tmp_path: Path) -> None:
     assert str(caught.value) == f"{path}:4:5: XML does not parse: mismatched tag"
 
 
+def test_errors_name_the_file_as_it_was_given(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    _write(tmp_path, "bad.urdf", '<robot name="r">\n  <link name="a">\n  </lnk>\n</robot>\n')
+    _write(tmp_path, "bad.xacro", '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                                  '  <link name="${wide}"/>\n</robot>\n')
+    monkeypatch.chdir(tmp_path)
+    for name, message in (("bad.urdf", "bad.urdf:3:5: XML does not parse"), ("bad.xacro", "bad.xacro:2: xacro error")):
+        with pytest.raises(DescriptionError) as caught:
+            load_description(Path(name))
+        assert str(caught.value).startswith(message), caught.value
+
+
 def test_xacro_error_names_the_line_of_the_expression(tmp_path: Path) -> None:
     path = _write(tmp_path, "bad.xacro", '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
                                          '  <link name="a"><collision><geometry>\n'

@@ -176,7 +176,7 @@ def load_description(path: Path | str, args: Mapping[str, str] | None = None,
     if not path.is_file():
         raise DescriptionError(path, "no such file" if not path.exists() else "not a file")
     warnings: list[str] = []
-    text = _expand(path.resolve(), dict(args or {}), warnings)
+    text = _expand(path.resolve(), dict(args or {}), warnings, shown=path)
     robot = _parse_urdf(path, text, warnings, args or {})
     links = {link.name: link for link in robot.links}
     frames = _link_frames(path, robot, args or {})
@@ -222,8 +222,9 @@ def load_description(path: Path | str, args: Mapping[str, str] | None = None,
 # --- xacro and URDF -------------------------------------------------------------------------------------------
 
 
-def _expand(path: Path, args: dict[str, str], warnings: list[str]) -> str:
-    """The file after xacro, as XML text."""
+def _expand(path: Path, args: dict[str, str], warnings: list[str], shown: Path | None = None) -> str:
+    """The file after xacro, as XML text; ``shown``: ``path`` as the user wrote it, for its errors (xacro knows it
+    resolved, as its includes need)."""
     import xacro
 
     # xacro keeps its state in module globals (file stack, includes): start each file afresh.
@@ -242,7 +243,7 @@ def _expand(path: Path, args: dict[str, str], warnings: list[str]) -> str:
             xacro.process_doc(doc, mappings=dict(args))
     except xml.parsers.expat.ExpatError as error:
         where = Path(xacro.filestack[-1]) if xacro.filestack and xacro.filestack[-1] else path
-        raise DescriptionError(where, f"XML does not parse: {xml.parsers.expat.ErrorString(error.code)}",
+        raise DescriptionError(shown if shown is not None and where == path else where, f"XML does not parse: {xml.parsers.expat.ErrorString(error.code)}",
                                error.lineno, error.offset + 1) from None
     except Exception as error:  # noqa: BLE001 - xacro wraps some errors, not all (an expression's NameError)
         stack = [f for f in (xacro.filestack or []) if f]
@@ -262,7 +263,8 @@ def _expand(path: Path, args: dict[str, str], warnings: list[str]) -> str:
             # $(find PKG) asks a ROS installation where a package is; REI looks up no ROS packages.
             line = _line_of(where, r"\$\(find\s")
             detail = f"$(find PKG) needs a ROS installation: write the path relative to the file ({detail})"
-        raise DescriptionError(where, f"xacro error: {detail}{included}", line) from None
+        raise DescriptionError(shown if shown is not None and where == path else where,
+                               f"xacro error: {detail}{included}", line) from None
     finally:
         xacro.init_stacks(None)
     warnings.extend(line.strip() for line in captured.getvalue().splitlines() if line.strip())
