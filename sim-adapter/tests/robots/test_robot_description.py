@@ -205,6 +205,12 @@ def test_xacro_error_names_the_line_of_the_expression(tmp_path: Path) -> None:
     with pytest.raises(DescriptionError) as caught:
         load_description(path)
     assert str(caught.value).startswith(f"{path}:3: xacro error: name 'width' is not defined")
+    # an expression whose text stands earlier in a name or a word: the line of the ${...}
+    path = _write(tmp_path, "short.xacro", '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                                           '  <link name="${a}"/>\n</robot>\n')
+    with pytest.raises(DescriptionError) as caught:
+        load_description(path)
+    assert str(caught.value).startswith(f"{path}:2: xacro error: name 'a' is not defined"), caught.value
 
 
 def test_xacro_argument_not_given_and_find_without_ros(tmp_path: Path) -> None:

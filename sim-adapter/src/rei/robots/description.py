@@ -255,7 +255,9 @@ def _expand(path: Path, args: dict[str, str], warnings: list[str], shown: Path |
         argument = re.search(r"Undefined substitution argument (\S+)", detail)
         line = None
         if expression:
-            line = _line_of(where, re.escape(expression.group(1)))
+            # inside its ${...} first: the bare text ('a', 'width') may stand in any name or word before it
+            line = _line_of(where, rf"\$\{{\s*{re.escape(expression.group(1))}\s*\}}") or _line_of(
+                where, re.escape(expression.group(1)))
         elif argument:
             line = _line_of(where, rf"\$\(arg\s+{re.escape(argument.group(1))}\s*\)")
             detail += f" (give it: --arg {argument.group(1)}:=VALUE)"
