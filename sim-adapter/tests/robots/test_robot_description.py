@@ -229,6 +229,18 @@ def test_xacro_argument_not_given_and_find_without_ros(tmp_path: Path) -> None:
         load_description(path)
 
 
+def test_an_argument_declared_by_an_included_file_is_declared(tmp_path: Path) -> None:
+    _write(tmp_path, "parts.xacro", '<robot xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                                    '  <xacro:arg name="w" default="1"/>\n  <link name="a"><collision><geometry>'
+                                    '<box size="$(arg w) 1 1"/></geometry></collision></link>\n</robot>\n')
+    path = _write(tmp_path, "top.xacro", '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                                         '  <xacro:include filename="parts.xacro"/>\n</robot>\n')
+    robot = load_description(path, {"w": "2"})
+    assert robot.warnings == () and robot.footprint.bounds == (-1.0, -0.5, 1.0, 0.5)
+    warning = "xacro argument 'v' is not declared by the file (it declares: w)"
+    assert load_description(path, {"v": "2"}).warnings == (warning,)
+
+
 def test_xacro_include_that_is_missing(tmp_path: Path) -> None:
     path = _write(tmp_path, "inc.xacro", '<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
                                          '  <xacro:include filename="parts.xacro"/>\n</robot>\n')

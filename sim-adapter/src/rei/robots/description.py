@@ -234,16 +234,12 @@ def _expand(path: Path, args: dict[str, str], warnings: list[str], shown: Path |
     try:
         with contextlib.redirect_stderr(captured):
             doc = xacro.parse(None, str(path))
-            # Declared, or used without a declaration (then an error when not given).
-            declared = {e.getAttribute("name") for e in doc.getElementsByTagName("xacro:arg")} | set(
-                re.findall(r"\$\(arg\s+([^)\s]+)\s*\)", path.read_text(encoding="utf-8", errors="replace")))
-            for name in sorted(set(args) - declared):
-                warnings.append(f"xacro argument '{name}' is not declared by the file"
-                                + (f" (it declares: {', '.join(sorted(declared))})" if declared else ""))
             xacro.process_doc(doc, mappings=dict(args))
+        included_files = [Path(f) for f in xacro.all_includes]
     except xml.parsers.expat.ExpatError as error:
         where = Path(xacro.filestack[-1]) if xacro.filestack and xacro.filestack[-1] else path
-        raise DescriptionError(shown if shown is not None and where == path else where, f"XML does not parse: {xml.parsers.expat.ErrorString(error.code)}",
+        raise DescriptionError(shown if shown is not None and where == path else where,
+                               f"XML does not parse: {xml.parsers.expat.ErrorString(error.code)}",
                                error.lineno, error.offset + 1) from None
     except Exception as error:  # noqa: BLE001 - xacro wraps some errors, not all (an expression's NameError)
         stack = [f for f in (xacro.filestack or []) if f]
@@ -269,6 +265,16 @@ def _expand(path: Path, args: dict[str, str], warnings: list[str], shown: Path |
                                f"xacro error: {detail}{included}", line) from None
     finally:
         xacro.init_stacks(None)
+    # Declared, or used without a declaration (then an error when not given), by the file or one it includes.
+    declared: set[str] = set()
+    for source in (path, *included_files):
+        with contextlib.suppress(OSError):
+            text = source.read_text(encoding="utf-8", errors="replace")
+            declared |= set(re.findall(r"<xacro:arg\s[^>]*?name\s*=\s*[\"']([^\"']+)[\"']", text))
+            declared |= set(re.findall(r"\$\(arg\s+([^)\s]+)\s*\)", text))
+    for name in sorted(set(args) - declared):
+        warnings.append(f"xacro argument '{name}' is not declared by the file"
+                        + (f" (it declares: {', '.join(sorted(declared))})" if declared else ""))
     warnings.extend(line.strip() for line in captured.getvalue().splitlines() if line.strip())
     return doc.toxml()
 
