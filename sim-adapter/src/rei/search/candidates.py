@@ -123,7 +123,8 @@ class CandidateMaker:
                                 f"restart: {error}") from None
 
     def _apply(self, edit: Edit) -> dict[str, Any]:
-        # the crowds' and groups' values are the text's (the engine does not edit them), so validated with the rest
+        # the crowds' and groups' values are set in the text (no operation sets a behaviour or a group's count),
+        # so validated with the rest
         answer = self._engine.request("reset", text=edit.text(self.base_text))
         # a point that only sets the run's seed or fault edits nothing: the engine refuses an empty apply
         return self._engine.request("apply", operations=list(edit.operations)) if edit.operations else answer

@@ -11,7 +11,8 @@ editor's ``setTrajectory``) or a route (a person who sees the robot: its ``start
 and the floors of its ``stop``s, ``setRoute``). A key of the other kind is refused at the key.
 
 A crowd or a group (``shoppers.count``, ``shoppers.rate``, ``shoppers.behaviour``, ``family.count``) is a line of
-the text the room editor does not edit: its values are set in the base case's text (rei.edit.gatherings) before
+the text whose behaviour, and a group's count, no room editor operation sets (setCrowd sets a crowd's count and
+rate and areas, not its behaviour): its values are set in the base case's text (rei.edit.gatherings) before
 the engine validates it, and a count larger than the line's floors hold is refused when the spec is checked, with
 the language's own message.
 """
