@@ -17,9 +17,11 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
+from rei.artifacts.animation import Behaviour
+
 #: A group's and a crowd's behaviours towards the robot (the language's Behaviour); avoids when none is written.
-BEHAVIOURS = ("avoids", "ignores", "curious", "scared", "blocks")
-DEFAULT_BEHAVIOUR = "avoids"
+BEHAVIOURS = tuple(b.value for b in Behaviour)
+DEFAULT_BEHAVIOUR = Behaviour.AVOIDS.value
 
 _COMMENT = re.compile(r"//[^\n]*|/\*.*?\*/", re.DOTALL)
 _STRING = re.compile(r'"(?:[^"\\\n]|\\.)*"')
