@@ -135,6 +135,21 @@ def test_mission_without_collision_passes_simple() -> None:
     assert verdict.status == Status.PASS and verdict.message == "no collision in 20.0 s"
 
 
+def test_a_collision_during_a_fault_is_reported_with_it() -> None:
+    b = TraceBuilder().begin().task(10.0, 0).at(11.0, "FAULT_LASER_BLACKOUT_BEGIN", "mission")
+    b.at(11.5, "FAULT_LASER_NOISE_BEGIN", "mission").geom(12.0, "FAR_TRANSIT_CLOSE")
+    b.geom(12.5, "CLOSE_TRANSIT_COLLISION").at(13.0, "FAULT_LASER_BLACKOUT_END", "mission")
+    b.geom(14.0, "COLLISION_TRANSIT_CLOSE").geom(14.5, "CLOSE_TRANSIT_COLLISION").end(20.0)
+    verdict = judge_trace(b.messages)["MISSION_SIMPLE"]
+    assert verdict.status == Status.FAIL
+    first, second = verdict.evidence
+    assert first.text == ("collision with table1 at t=12.500 during task 1, while laser blackout and laser noise "
+                          "were active")
+    assert second.text == "collision with table1 at t=14.500 during task 1, while laser noise was active"
+    assert judge_trace(nominal(collision_with="table1").messages)["MISSION_SIMPLE"].evidence[0].text.endswith(
+        "during task 1")
+
+
 def test_collision_fails_simple_with_time_object_and_task() -> None:
     verdict = judge_trace(nominal(collision_with="table1").messages)["MISSION_SIMPLE"]
     assert verdict.status == Status.FAIL

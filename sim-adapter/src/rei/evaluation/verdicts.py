@@ -32,6 +32,7 @@ from dataclasses import dataclass
 
 from rei.evaluation.context import CaseContext
 from rei.evaluation.episodes import Episode, Timeline, build_timeline
+from rei.evaluation.faults import FAULT_SIGNAL
 from rei.evaluation.metrics.social import AT_FAULT_SPEED, PersonCollision
 from rei.evaluation.outcome import Evidence, Status, Verdict
 from rei.evaluation.signals import (
@@ -196,10 +197,13 @@ def _span(episode: Episode, end: float) -> str:
 class _Collision:
     signal: Signal
     task: int | None
+    faults: tuple[str, ...] = ()  # the fault windows open then ("laser blackout"), from the SIG_FAULT_ signals
 
     @property
     def during(self) -> str:
-        return f"during task {self.task}" if self.task is not None else "outside any task"
+        when = f"during task {self.task}" if self.task is not None else "outside any task"
+        verb = "was" if len(self.faults) == 1 else "were"
+        return when + (f", while {' and '.join(self.faults)} {verb} active" if self.faults else "")
 
     def evidence(self, what: str = "collision") -> Evidence:
         return self.fact(f"{what} with {self.signal.object} at t={self.signal.t:.3f} {self.during}")
@@ -217,17 +221,24 @@ def _collisions(signals: tuple[Signal, ...], transitions: Mapping[str, Transitio
     found: list[_Collision] = []
     task: int | None = None
     colliding: set[str] = set()
+    active: list[str] = []  # a collision during a fault is reported with it (docs/faults.md)
     for s in signals:
         if s.signal == SIG_MISSION_TASK_START:
             task = s.task_index
         elif s.signal in (SIG_MISSION_TASK_SUCCESS, SIG_MISSION_TASK_FAIL):
             task = None
+        elif (fault := FAULT_SIGNAL.match(s.signal)) is not None:
+            name = f"{fault[1].lower()} {fault[2].lower()}"
+            if fault[3] == "BEGIN":
+                active.append(name)
+            elif name in active:
+                active.remove(name)
         step = transitions.get(s.signal)
         if step is None or step.per_object != per_object or step.source != Source.GEOM:
             continue
         if step.after == Zone.COLLISION and not (per_object and s.object in colliding):
             colliding.add(s.object)
-            found.append(_Collision(s, task))
+            found.append(_Collision(s, task, tuple(dict.fromkeys(active))))
         elif step.after < Zone.COLLISION:
             colliding.discard(s.object)
     return found
