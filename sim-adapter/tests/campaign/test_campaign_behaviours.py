@@ -94,3 +94,15 @@ def test_a_behaviour_without_people_who_see_the_robot_is_refused_at_the_group(tm
         # a behaviour for runs without people
         (f"{spec}:10:64: groups[2]: variants[1]: 'behaviour' sets how the people behave and 'humans: false' leaves "
          "them out of the runs; remove one of the two")]
+
+
+def test_rewriting_behaviours_imports_no_room_editor_server() -> None:
+    """rei.edit.gatherings is text edits that campaigns and searches use: importing it leaves the room editor's
+    server and the live view beneath it (rei.view, rei.evaluation, rei.report) unimported."""
+    import subprocess
+    import sys
+
+    code = ("import sys, rei.edit.gatherings, rei.search.space; "
+            "print(sorted(m for m in sys.modules if m in ('rei.view', 'rei.edit.server', 'rei.report')))")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert done.stdout.strip() == "[]", done.stdout
