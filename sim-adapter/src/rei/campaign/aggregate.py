@@ -177,7 +177,7 @@ def summary_csv(results: Sequence[RunResult]) -> str:
 
 RUN_COLUMNS = ("key", "group", "case", "variant", "repetition", "seed", "humans", "fault", "status", "error",
                "sim_duration", "total_utility", "mission_succeeded", "tasks_started", "tasks_succeeded",
-               "tasks_failed", "wall_time", "cpu_time", "host")
+               "tasks_failed", "wall_time", "cpu_time", "host", "attempt")
 
 
 def runs_csv(results: Sequence[RunResult]) -> str:

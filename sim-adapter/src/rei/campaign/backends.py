@@ -22,6 +22,7 @@ from typing import Any
 from rei.campaign.forkserver import ForkServer, ForkServerError
 from rei.campaign.plan import RunTask
 from rei.campaign.supervise import Outcome, supervise
+from rei.campaign.transfer import folder_bundle, inputs, receive, run_shipped
 from rei.campaign.worker import MONITOR_SERVER_ENV
 from rei.run.jvm import JarServer, JarServerError
 
@@ -135,18 +136,29 @@ class RayBackend:
     machine's shared Ray folder, nor in ``~/.ray`` (where Ray would save a new token, which every later
     ``ray start`` of the user would then require).
 
-    The run folders must be on a file system every node sees at the same path (the workers read the case and
-    write the run there); the case folders are prepared on this machine first.
+    Nodes share nothing with this machine but Ray (rei.campaign.transfer): a run's case and inputs travel as
+    bytes, it runs in a temporary folder of the node's, its run folder comes back into OUT. A task lost with its
+    node (or its Ray worker, or the chunks of its files) is tried again, up to ``attempts`` tries, by REI rather
+    than by Ray, so the try that gave a run's result is known (``attempt`` in result.json and runs.csv) and a run
+    is recorded once: only after its files arrived. A run that crashes or times out in its worker is a result,
+    not a lost task, and is not tried again.
     """
 
     name = "ray"
 
-    def __init__(self, address: str, workers: int | None = None) -> None:
+    def __init__(self, address: str, workers: int | None = None, attempts: int = 3,
+                 log: Callable[[str], None] = print) -> None:
         import ray
 
+        if attempts < 1:
+            raise ValueError(f"attempts must be >= 1, got {attempts}")
         self._ray = ray
         self._temp_dir: Path | None = None
         self._saved_env: dict[str, str | None] = {}
+        self.attempts = attempts
+        self._log = log
+        #: bytes that came back from the nodes (run files), for the campaign's metrics and the benchmark
+        self.received = 0
         init: dict[str, Any] = {"include_dashboard": False, "log_to_driver": False, "logging_level": "WARNING"}
         if address == "local":
             # short, in the system's temporary directory: Ray's unix sockets live below it (108-byte limit)
@@ -164,31 +176,59 @@ class RayBackend:
                 raise
         else:
             ray.init(address=address, **init)
-        self.workers = int(ray.cluster_resources().get("CPU", 1))
-        self._remote = ray.remote(num_cpus=1, max_retries=0)(_ray_supervise)
+        self.workers = max(1, int(ray.cluster_resources().get("CPU", 1)))
+        # max_retries=0: REI tries a lost task again itself (above); Ray's own retry would hide the attempt
+        self._remote = ray.remote(num_cpus=1, max_retries=0)(run_shipped)
 
     def warm_up(self) -> None:
         pass
 
     def run(self, tasks: Sequence[RunTask], on_outcome: OnOutcome, stop: threading.Event) -> None:
         ray = self._ray
-        refs = {self._remote.remote(task.to_dict()): task for task in tasks}
+        cases: dict[str, Any] = {}  # case folder -> its bundle in the object store, put once for its runs
+        refs: dict[Any, tuple[RunTask, int, dict[str, Any]]] = {}
+
+        def submit(task: RunTask, attempt: int) -> None:
+            try:
+                if task.case_dir not in cases:
+                    cases[task.case_dir] = ray.put(folder_bundle(Path(task.case_dir)))
+                extra, fields = inputs(task)
+            except (OSError, ValueError) as error:  # an input that cannot be read is the run's ERROR
+                on_outcome(task, Outcome(task.key, None, False, False, 0.0, 0.0,
+                                         f"cannot ship the run's inputs: {error}", "-", attempt))
+                return
+            ref = self._remote.remote(task.to_dict(), cases[task.case_dir], extra, fields, attempt)
+            refs[ref] = (task, attempt, fields)
+
+        for task in tasks:
+            submit(task, 1)
         try:
-            while refs:
+            while refs and not stop.is_set():
                 ready, _ = ray.wait(list(refs), num_returns=1, timeout=0.5)
                 for ref in ready:
-                    task = refs.pop(ref)
+                    task, attempt, fields = refs.pop(ref)
                     try:
-                        outcome = Outcome(**ray.get(ref))
-                    except Exception as error:  # noqa: BLE001 - the task itself died (its node, its worker)
+                        shipped = ray.get(ref)
+                        self.received += receive(task, shipped["files"], ray.get, shipped["work"], fields)
+                        outcome = Outcome(**shipped["outcome"])
+                    except ray.exceptions.TaskCancelledError:
+                        continue
+                    except Exception as error:  # noqa: BLE001 - lost: its node, its Ray worker, its files' chunks
+                        why = f"{type(error).__name__}: {str(error).strip().splitlines()[0] if str(error) else ''}"
+                        if attempt < self.attempts and not stop.is_set():
+                            self._log(f"{task.key}: try {attempt} lost ({why}); trying again")
+                            submit(task, attempt + 1)
+                            continue
                         outcome = Outcome(task.key, None, False, False, 0.0, 0.0,
-                                          f"ray task failed: {type(error).__name__}: {error}", "?")
+                                          f"ray task lost on each of {attempt} tries: {why}", "?", attempt)
                     on_outcome(task, outcome)
         except BaseException:
             stop.set()
-            for ref in refs:
-                ray.cancel(ref)  # not forced: KeyboardInterrupt in the task, whose supervisor stops the worker
             raise
+        finally:
+            if refs:  # stopped: this campaign's tasks only; not forced: the task's supervisor stops its worker
+                for ref in refs:
+                    ray.cancel(ref)
 
     def _set_env(self, values: dict[str, str]) -> None:
         for key, value in values.items():
@@ -204,10 +244,6 @@ class RayBackend:
                 os.environ[key] = value
         if self._temp_dir is not None:
             shutil.rmtree(self._temp_dir, ignore_errors=True)
-
-
-def _ray_supervise(task: dict[str, Any]) -> dict[str, Any]:
-    return supervise(RunTask.from_dict(task)).to_dict()
 
 
 class RayUnavailableError(RuntimeError):

@@ -48,6 +48,7 @@ class RunResult:
     verdicts: dict[str, str] = field(default_factory=dict)
     timing: dict[str, Any] = field(default_factory=dict)
     metrics: dict[str, Any] = field(default_factory=dict)  # summary.json's navigation metrics (docs/metrics.md)
+    attempt: int = 1  # which try gave this result (a Ray task lost with its node is tried again: rei.campaign.backends)
 
     def to_dict(self) -> dict[str, Any]:
         return {"format": FORMAT, **asdict(self)}
@@ -71,7 +72,7 @@ def make_result(task: RunTask, outcome: Outcome) -> RunResult:
         "key": task.key, "group": task.group, "case": task.case, "variant": task.variant,
         "repetition": task.repetition, "seed": task.seed, "humans": task.humans, "fault": task.fault,
         "wall_time": round(outcome.wall, 3), "cpu_time": round(outcome.cpu + served, 3), "host": outcome.host,
-        "timing": timing}
+        "timing": timing, "attempt": outcome.attempt}
     if error is not None or summary is None:
         return RunResult(status="ERROR", error=error, **base)
     tasks = summary.get("tasks") or {}

@@ -42,6 +42,7 @@ class Outcome:
     cpu: float
     log_tail: str
     host: str
+    attempt: int = 1  # the try this outcome is of (a Ray task lost with its node is tried again)
 
     @property
     def error(self) -> str | None:

@@ -1,0 +1,260 @@
+# SPDX-License-Identifier: EPL-2.0
+"""`rei campaign --ray` on a real multi-node Ray cluster on this machine whose worker nodes share nothing with the
+driver but Ray: a node in a mount namespace of its own, where the driver's folder (spec, OUT) is hidden under an
+empty tmpfs, runs every run and the campaign's files arrive in OUT through Ray, its streams byte for byte those
+of a local campaign; and a worker node whose raylet is killed in the middle of a campaign loses nothing (its runs
+are tried again on the other node, each recorded once, with the try that gave it). The head has no CPU, so every
+run goes to a worker node. Real simulation, monitor jar and evaluator."""
+
+from __future__ import annotations
+
+import contextlib
+import csv
+import json
+import os
+import re
+import secrets
+import shutil
+import signal
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+REPO_ROOT = Path(__file__).resolve().parents[2]
+EXAMPLE = REPO_ROOT / "examples" / "simple_navigation.rei"
+RAY = Path(sys.executable).parent / "ray"
+
+USER_PATTERN = """\
+atomicEvent userTaskStarts() as mission TASK_START
+signal SIG_USER_TASK_STARTED utility 7
+rule "User: a task starts" on userTaskStarts emits SIG_USER_TASK_STARTED
+"""
+
+
+@dataclass
+class Cluster:
+    root: Path  # RAY_TMPDIR of every process of the cluster, and the nodes' own TMPDIRs below it
+    env: dict[str, str]  # what a client needs, RAY_ADDRESS among it
+    log: Path
+    processes: dict[str, subprocess.Popen[bytes]] = field(default_factory=dict)
+
+    def add_node(self, name: str, *, hide: Path | None = None) -> Path:
+        """A worker node of 1 CPU whose processes' temporary folder is a folder of its own (returned); ``hide``: the
+        node runs in a mount namespace of its own where that folder is an empty tmpfs."""
+        tmp = self.root / name
+        tmp.mkdir()
+        command = [str(RAY), "start", "--block", f"--address={self.env['RAY_ADDRESS']}", "--num-cpus=1",
+                   "--node-ip-address=127.0.0.1", "--disable-usage-stats", "--object-store-memory=80000000"]
+        if hide is not None:  # unshare execs sh, sh execs ray: the process is the node's `ray start`
+            command = ["unshare", "-m", "sh", "-c", 'mount -t tmpfs tmpfs "$0" && exec "$@"', str(hide), *command]
+        self.processes[name] = _start(command, self.log, {**os.environ, **self.env, "TMPDIR": str(tmp)})
+        return tmp
+
+    def wait_for_cpus(self, cpus: int, timeout: float = 120) -> None:
+        script = "import ray; ray.init(logging_level='ERROR'); print(int(ray.cluster_resources().get('CPU', 0)))"
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            probe = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120,
+                                   env={**os.environ, **self.env}, check=False)
+            if probe.returncode == 0 and probe.stdout.strip().splitlines()[-1:] == [str(cpus)]:
+                return
+            time.sleep(2)
+        raise AssertionError(f"the cluster never had {cpus} CPUs: {self.log.read_text(errors='replace')[-3000:]}")
+
+    def raylet(self, name: str) -> int:
+        """The pid of the node's raylet (a child of its `ray start`)."""
+        parent = self.processes[name].pid
+        for stat in Path("/proc").glob("[0-9]*/stat"):
+            with contextlib.suppress(OSError):
+                text = stat.read_text()
+                comm, fields = text[text.index("(") + 1:text.rindex(")")], text[text.rindex(")") + 2:].split()
+                if comm == "raylet" and int(fields[1]) == parent:
+                    return int(stat.parent.name)
+        raise AssertionError(f"no raylet under node {name}")
+
+
+def _start(command: list[str], log: Path, env: dict[str, str]) -> subprocess.Popen[bytes]:
+    with open(log, "ab") as out:
+        return subprocess.Popen(command, stdout=out, stderr=subprocess.STDOUT, start_new_session=True, env=env)
+
+
+def _stop(process: subprocess.Popen[bytes]) -> None:
+    """As Ray stops a blocking `ray start`: SIGTERM, on which it stops its own processes; then whatever of its
+    process group outlived it is killed (`ray stop` would stop every Ray of this user)."""
+    with contextlib.suppress(ProcessLookupError):
+        process.send_signal(signal.SIGTERM)
+    with contextlib.suppress(subprocess.TimeoutExpired):
+        process.wait(60)
+    with contextlib.suppress(ProcessLookupError):
+        os.killpg(process.pid, signal.SIGKILL)
+    process.wait()
+
+
+def _leftovers(root: Path) -> list[str]:
+    """Processes that still name the cluster's folder in their command line or environment."""
+    found = []
+    for proc in Path("/proc").glob("[0-9]*"):
+        with contextlib.suppress(OSError):
+            if str(root).encode() in (proc / "cmdline").read_bytes() + (proc / "environ").read_bytes():
+                command = (proc / "cmdline").read_bytes().replace(b"\0", b" ")[:200]
+                found.append(f"{proc.name}: {command!r}")
+    return found
+
+
+@pytest.fixture
+def cluster(tmp_path: Path) -> Iterator[Cluster]:
+    """A Ray head on loopback with no CPU (so runs go to worker nodes only), its files in a folder of the test's
+    own (short: Ray's unix sockets live below it), with a token of its own; every process it and its nodes
+    started is stopped afterwards, none is left naming that folder, and the folder is removed."""
+    root = Path(tempfile.mkdtemp(prefix="rei-rc-"))
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    token = root / "auth_token"
+    token.write_text(secrets.token_hex(32), encoding="ascii")
+    env = {"RAY_TMPDIR": str(root), "RAY_AUTH_MODE": "token", "RAY_AUTH_TOKEN_PATH": str(token),
+           # a lost node is noticed within seconds rather than Ray's default half minute
+           "RAY_health_check_period_ms": "1000", "RAY_health_check_failure_threshold": "3"}
+    cluster = Cluster(root, {**env, "RAY_ADDRESS": f"127.0.0.1:{port}"}, tmp_path / "ray.log")
+    try:
+        cluster.processes["head"] = _start(
+            [str(RAY), "start", "--head", "--block", f"--port={port}", "--node-ip-address=127.0.0.1",
+             "--num-cpus=0", "--include-dashboard=false", "--disable-usage-stats",
+             "--object-store-memory=80000000", f"--temp-dir={root / 'ray'}"],
+            cluster.log, {**os.environ, **env})
+        yield cluster
+    finally:
+        for name in sorted(cluster.processes, key=lambda n: n == "head"):  # worker nodes first
+            _stop(cluster.processes[name])
+        left = _leftovers(root)
+        for line in left:
+            with contextlib.suppress(ProcessLookupError, ValueError):
+                os.kill(int(line.split(":")[0]), signal.SIGKILL)
+        shutil.rmtree(root, ignore_errors=True)
+        assert not left, f"Ray processes outlived the test: {left}"
+
+
+def _spec(folder: Path, repetitions: int, script: str) -> Path:
+    (folder / "short.txt").write_text(script, encoding="utf-8")
+    (folder / "mine").mkdir(exist_ok=True)
+    (folder / "mine" / "tasks.vepl").write_text(USER_PATTERN, encoding="utf-8")
+    (folder / "utilities.yaml").write_text("SIG_USER_TASK_STARTED: 9\n", encoding="utf-8")
+    spec = folder / "spec.yaml"
+    spec.write_text(f"""
+name: shared-nothing
+patterns: mine
+utilities: utilities.yaml
+groups:
+  - name: example
+    cases: [{EXAMPLE}]
+    repetitions: {repetitions}
+    variants: [{{name: short, humans: false, controller: "script:{folder / 'short.txt'}"}}]
+""", encoding="utf-8")
+    return spec
+
+
+def _runs(out: Path) -> list[dict[str, str]]:
+    with open(out / "runs.csv", newline="", encoding="utf-8") as f:
+        return list(csv.DictReader(f))
+
+
+def _campaign(run_cli: Any, spec: Path, out: Path, cluster: Cluster, timeout: float = 300) -> Any:
+    return run_cli("campaign", spec, "-o", out, "--ray", cluster.env["RAY_ADDRESS"], timeout=timeout,
+                   env=cluster.env)
+
+
+def test_a_node_that_cannot_see_out_runs_the_campaign_as_a_local_one(tmp_path: Path, cluster: Cluster,
+                                                                    run_cli: Any) -> None:
+    started = time.monotonic()
+    work = tmp_path / "driver"  # the spec, its patterns, utilities and script, and OUT: hidden from the node
+    work.mkdir()
+    spec = _spec(work, 2, "1.0 0.1 0.0\n")
+    node_tmp = cluster.add_node("node1", hide=work)
+    cluster.wait_for_cpus(1)
+    node_root = Path(f"/proc/{cluster.processes['node1'].pid}/root")  # the node's view of the file system
+    assert (work / "spec.yaml").is_file() and not (node_root / (work / "spec.yaml").relative_to("/")).exists()
+    out = work / "out"
+    result = _campaign(run_cli, spec, out, cluster)
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "on 1 ray worker(s)" in result.stdout
+    assert not (node_root / out.relative_to("/")).exists()  # OUT never was the node's to see
+    rows = _runs(out)
+    assert [(r["status"], r["attempt"]) for r in rows] == [("COMPLETED", "1")] * 2, rows
+    assert list(node_tmp.glob("rei-run-*")) == []  # the node's temporary run folders are gone
+    cluster_time = time.monotonic() - started
+
+    local = tmp_path / "local"
+    shutil.copytree(work, local, ignore=shutil.ignore_patterns("out"))
+    result = run_cli("campaign", local / "spec.yaml", "-o", local / "out", "--workers", "1", "--no-service",
+                     timeout=300)
+    assert result.returncode == 0, result.stdout + result.stderr
+    for row in rows:
+        shipped, here = out / "runs" / row["key"], local / "out" / "runs" / row["key"]
+        names = sorted(p.relative_to(shipped).as_posix() for p in shipped.rglob("*") if p.is_file())
+        assert names == sorted(p.relative_to(here).as_posix() for p in here.rglob("*") if p.is_file())
+        for name in ("streams/state.msgpack", "streams/mission.msgpack", "streams/signal.msgpack",
+                     "signals.jsonl", "events.csv", "patterns/tasks.vepl"):
+            assert (shipped / name).read_bytes() == (here / name).read_bytes(), name
+        # the same but for the wall seconds the evaluation took, and the same paths: the driver's, not the node's
+        verdicts = [re.sub(r' time="[0-9.]+"', "", (run / "verdicts.xml").read_text(encoding="utf-8"))
+                    for run in (shipped, here)]
+        assert verdicts[0] == verdicts[1]
+        summary, local_summary = (json.loads((run / "summary.json").read_text(encoding="utf-8"))
+                                  for run in (shipped, here))
+        assert summary.pop("wall_time") > 0 and local_summary.pop("wall_time") > 0
+        assert str(shipped / "patterns") in summary["utilities"], summary["utilities"]
+        assert summary == {**local_summary, "utilities": local_summary["utilities"].replace(str(local), str(work))}
+        assert summary["counts"]["SIG_USER_TASK_STARTED"] == 2  # the user's pattern ran on the node
+        task = json.loads((shipped / "task.json").read_text(encoding="utf-8"))
+        assert task["run_dir"] == str(shipped) and task["patterns"] == str(work / "mine")  # the driver's task
+    print(f"shared-nothing campaign of 2 runs (cluster start included): {cluster_time:.1f} s")
+
+
+def test_a_node_lost_in_the_middle_of_a_campaign_loses_no_run_and_repeats_none(tmp_path: Path, cluster: Cluster,
+                                                                             run_cli: Any) -> None:
+    started = time.monotonic()
+    spec = _spec(tmp_path, 4, "1.0 0.1 0.0\n")
+    doomed = cluster.add_node("doomed")
+    cluster.wait_for_cpus(1)  # one node at a time: two joining at once on one machine time out now and then
+    cluster.add_node("survivor")
+    cluster.wait_for_cpus(2)
+    out = tmp_path / "out"
+    argv = [str(Path(sys.executable).parent / "rei"), "campaign", str(spec), "-o", str(out), "--ray",
+            cluster.env["RAY_ADDRESS"]]
+    with open(tmp_path / "campaign.log", "wb") as log:
+        campaign = subprocess.Popen(argv, stdout=log, stderr=subprocess.STDOUT, start_new_session=True,
+                                    env={**os.environ, "REI_HOME": str(REPO_ROOT), **cluster.env})
+    try:
+        deadline = time.monotonic() + 180
+        # a run in flight on the doomed node: its temporary run folder holds the run's streams
+        while not any(doomed.glob("rei-run-*/run/streams")):
+            assert campaign.poll() is None, (tmp_path / "campaign.log").read_text(errors="replace")
+            assert time.monotonic() < deadline, "no run ever started on the doomed node"
+            time.sleep(0.1)
+        os.kill(cluster.raylet("doomed"), signal.SIGKILL)
+        code = campaign.wait(240)
+    finally:
+        if campaign.poll() is None:
+            os.killpg(campaign.pid, signal.SIGKILL)
+            campaign.wait()
+    text = (tmp_path / "campaign.log").read_text(errors="replace")
+    assert code == 0, text
+    assert "lost" in text and "trying again" in text, text
+    rows = _runs(out)
+    keys = [r["key"] for r in rows]
+    assert sorted(keys) == sorted(set(keys)) and len(keys) == 4, rows  # every run, once
+    assert all(r["status"] == "COMPLETED" for r in rows), rows
+    assert any(r["attempt"] == "2" for r in rows), rows  # the lost one, tried again
+    for row in rows:
+        result = json.loads((out / "runs" / row["key"] / "result.json").read_text(encoding="utf-8"))
+        assert result["attempt"] == int(row["attempt"])
+    assert not list(out.glob("runs/.*.incoming"))
+    print(f"campaign of 4 runs with a node lost (cluster start included): {time.monotonic() - started:.1f} s")
