@@ -122,6 +122,25 @@ def test_fault_copies(contract: dict, repo_root: Path) -> None:
     assert signals == emitted == [faults["signal_prefix"] + e for e in _fault_events(contract)]
 
 
+def test_behaviour_copies(contract: dict, repo_root: Path) -> None:
+    """The behaviours of people who see the robot: the language's enum (its first literal is EMF's default, what a
+    line without one gets), animation.json's, the room generator's, the text edits' and the VS Code keywords."""
+    from rei.artifacts.animation import Behaviour
+    from rei.edit import gatherings
+    from rei.rooms.model import BEHAVIOURS
+
+    behaviours = contract["behaviours"]
+    assert behaviours["default"] == behaviours["values"][0] == gatherings.DEFAULT_BEHAVIOUR
+    assert [b.value for b in Behaviour] == list(BEHAVIOURS) == list(gatherings.BEHAVIOURS) == behaviours["values"]
+    grammar = (repo_root / "bundles" / "org.rei.dsl" / "src" / "main" / "java" / "org" / "rei" / "dsl"
+               / "Rei.xtext").read_text(encoding="utf-8")
+    enum = re.search(r"enum Behaviour returns ctx::Behaviour:([^;]+);", grammar)
+    assert enum is not None, "Rei.xtext: no enum Behaviour"
+    assert re.findall(r"='(\w+)'", enum[1]) == behaviours["values"]
+    keywords = (repo_root / "editors" / "vscode" / "syntaxes" / "rei.tmLanguage.json").read_text(encoding="utf-8")
+    assert f"\\\\b(?:{'|'.join(behaviours['values'])})\\\\b" in keywords
+
+
 def test_the_map_limits_are_one_fact_of_both_readers_and_of_the_language_page(contract: dict, java_facts: dict,
                                                                              repo_root: Path) -> None:
     """The most cells a map may have and the most blocks a floor size may cut it into: Python's rei.maps and Java's
