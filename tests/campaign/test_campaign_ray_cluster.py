@@ -258,3 +258,44 @@ def test_a_node_lost_in_the_middle_of_a_campaign_loses_no_run_and_repeats_none(t
         assert result["attempt"] == int(row["attempt"])
     assert not list(out.glob("runs/.*.incoming"))
     print(f"campaign of 4 runs with a node lost (cluster start included): {time.monotonic() - started:.1f} s")
+
+
+def test_a_search_on_a_node_that_cannot_see_out_finds_what_a_local_search_finds(tmp_path: Path, cluster: Cluster,
+                                                                               run_cli: Any) -> None:
+    """`rei search --ray` uses the same backend: its candidates' cases go to the node as bytes, their runs come
+    back, and the study's journal stays on the driver; the same candidates and values as a local search."""
+    started = time.monotonic()
+    work = tmp_path / "driver"
+    work.mkdir()
+    for name in ("crossing.rei", "crossing.yaml"):
+        shutil.copy(REPO_ROOT / "examples" / "search" / name, work / name)
+    node_tmp = cluster.add_node("node1", hide=work)
+    cluster.wait_for_cpus(1)
+    node_root = Path(f"/proc/{cluster.processes['node1'].pid}/root")
+    out = work / "out"
+    result = run_cli("search", work / "crossing.yaml", "-o", out, "--ray", cluster.env["RAY_ADDRESS"], "--budget",
+                     "2", "--no-shrink", timeout=300, env=cluster.env)
+    assert result.returncode in (0, 1), result.stdout + result.stderr
+    assert "on 1 ray worker(s)" in result.stdout, result.stdout
+    assert (out / "study.journal").is_file() and not (node_root / out.relative_to("/")).exists()
+    assert list(node_tmp.glob("rei-run-*")) == []
+    searched = json.loads((out / "search.json").read_text(encoding="utf-8"))
+    cluster_time = time.monotonic() - started
+
+    local = tmp_path / "local"
+    shutil.copytree(work, local, ignore=shutil.ignore_patterns("out"))
+    result = run_cli("search", local / "crossing.yaml", "-o", local / "out", "--workers", "1", "--budget", "2",
+                     "--no-shrink", timeout=300)
+    assert result.returncode in (0, 1), result.stdout + result.stderr
+    here = json.loads((local / "out" / "search.json").read_text(encoding="utf-8"))
+
+    def evaluations(document: dict[str, Any]) -> list[tuple[Any, ...]]:
+        return [(e["key"], e["status"], e.get("values")) for e in document["evaluations"]]
+
+    assert evaluations(searched) == evaluations(here) and searched["counts"]["simulated"] == 2, searched
+    for evaluation in searched["evaluations"]:
+        if evaluation["status"] == "COMPLETED":
+            for name in ("streams/state.msgpack", "streams/signal.msgpack", "events.csv"):
+                shipped = out / "runs" / evaluation["key"] / name
+                assert shipped.read_bytes() == (local / "out" / "runs" / evaluation["key"] / name).read_bytes()
+    print(f"shared-nothing search of 2 evaluations (cluster start included): {cluster_time:.1f} s")
