@@ -124,3 +124,20 @@ def test_command_prints_both_files_and_rejects_a_non_run(tmp_path: Path, capsys:
     (tmp_path / "empty").mkdir()
     assert main(tmp_path / "empty") == 2
     assert "not a run folder" in capsys.readouterr().err
+
+
+def test_fault_windows_are_shaded_behind_the_utility_line() -> None:
+    from rei.report.charts import render_utility
+    from rei.report.run_data import EventRow
+
+    events = [EventRow(0.0, "SIG_MISSION_BEGIN", 20, 20, "tb3", "mission"),
+              EventRow(4.0, "SIG_FAULT_LASER_BLACKOUT_BEGIN", 0, 20, "tb3", "mission")]
+    svg = ET.fromstring(render_utility(events, 10.0, [("laser blackout", 4.0, 7.0), ("laser noise", 8.0, None)]))
+    ns = {"s": "http://www.w3.org/2000/svg"}
+    rects = svg.findall("s:g[@id='fault-windows']/s:rect", ns)
+    assert [r.findtext("s:title", namespaces=ns) for r in rects] == [
+        "laser blackout: 4 s to 7 s", "laser noise: 8 s to the end"]
+    blackout, noise = (float(r.get("width", "0")) for r in rects)
+    assert blackout == pytest.approx(1.5 * noise, rel=0.01)  # 3 s against the 2 s left of the run
+    assert svg.find("s:g[@id='fault-windows']", ns) is not None
+    assert ET.fromstring(render_utility(events, 10.0)).find("s:g[@id='fault-windows']", ns) is None

@@ -38,8 +38,10 @@ def step_points(events: Sequence[EventRow], end_t: float) -> list[tuple[float, f
     return points
 
 
-def render_utility(events: Sequence[EventRow], end_t: float) -> str:
-    """`<svg id="utility">`: the running total of events.csv over simulation time."""
+def render_utility(events: Sequence[EventRow], end_t: float,
+                   faults: Sequence[tuple[str, float, float | None]] = ()) -> str:
+    """`<svg id="utility">`: the running total of events.csv over simulation time; ``faults`` (name, begin, end or
+    None while open at the end) are shaded behind it (docs/faults.md)."""
     points = step_points(events, end_t)
     t_max = max(p[0] for p in points) or 1.0
     values = [p[1] for p in points]
@@ -75,6 +77,15 @@ def render_utility(events: Sequence[EventRow], end_t: float) -> str:
     out.append(f'<text transform="translate(12 {num(_TOP + plot_h / 2)}) rotate(-90)" text-anchor="middle">'
                f'total utility</text>')
     out.append("</g>")
+    if faults:
+        out.append('<g id="fault-windows">')
+        for name, begin, end in faults:
+            stop = min(end if end is not None else t_max, t_max)
+            out.append(f'<rect class="fault-window" x="{num(px(begin))}" y="{num(_TOP)}" '
+                       f'width="{num(max(px(stop) - px(begin), 1.0))}" height="{num(plot_h)}" fill="#f5a623" '
+                       f'fill-opacity="0.18"><title>{esc(name)}: {begin:g} s to '
+                       f'{f"{end:g} s" if end is not None else "the end"}</title></rect>')
+        out.append("</g>")
     drawn = decimate(points, MAX_STEP_POINTS)
     line = " ".join(f"{num(px(t))},{num(py(v))}" for t, v in drawn)
     out.append(f'<polyline id="utility-line" data-points="{len(drawn)}" points="{line}" fill="none" '

@@ -208,9 +208,25 @@ def _utility_section(data: RunData, tracks: Tracks) -> str:
         return ('<section><h2>Utility over time</h2><p class="missing" id="utility-missing">no events.csv: the '
                 'run was not evaluated, so there is no utility to plot</p></section>')
     end_t = finite_or(data.fact("sim_duration", "sim_time"), tracks.last_t or 0.0)
-    return (f'<section id="utility-section"><h2>Utility over time</h2>{render_utility(data.events, end_t)}'
+    faults = _fault_windows(data)
+    shaded = " Shaded: the fault windows (summary.json's faults)." if faults else ""
+    return (f'<section id="utility-section"><h2>Utility over time</h2>'
+            f'{render_utility(data.events, end_t, faults)}'
             '<p style="color:#666;font-size:12px">Running total of the evaluator\'s events.csv (thesis Fig. 33); '
-            'each dot is a signal, coloured by kind.</p></section>')
+            f'each dot is a signal, coloured by kind.{shaded}</p></section>')
+
+
+def _fault_windows(data: RunData) -> list[tuple[str, float, float | None]]:
+    """The evaluator's fault windows (docs/faults.md), those that read as such."""
+    windows = []
+    for w in (data.summary or {}).get("faults") or ():
+        if not isinstance(w, Mapping):
+            continue
+        begin, end = w.get("begin"), w.get("end")
+        if isinstance(begin, int | float) and math.isfinite(begin) and (
+                end is None or isinstance(end, int | float) and math.isfinite(end)):
+            windows.append((str(w.get("fault", "fault")), float(begin), None if end is None else float(end)))
+    return windows
 
 
 def _signals_section(data: RunData) -> str:
