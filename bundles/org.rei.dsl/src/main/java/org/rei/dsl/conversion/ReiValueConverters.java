@@ -4,6 +4,8 @@
  */
 package org.rei.dsl.conversion;
 
+import java.math.BigDecimal;
+
 import org.eclipse.xtext.common.services.DefaultTerminalConverters;
 import org.eclipse.xtext.conversion.IValueConverter;
 import org.eclipse.xtext.conversion.ValueConverter;
@@ -56,9 +58,11 @@ public class ReiValueConverters extends DefaultTerminalConverters {
 
 		@Override
 		protected String internalToString(Double value) {
+			// never Double.toString: below 0.001 or from 10^7 on it writes an exponent (1.0E-4), which the
+			// language does not read, so an editor's edit would not read back
 			String text = value == Math.rint(value) && !Double.isInfinite(value)
 					? Long.toString(value.longValue())
-					: Double.toString(value);
+					: BigDecimal.valueOf(value).toPlainString();
 			return unit.isEmpty() ? text : text + unit;
 		}
 	}
