@@ -299,3 +299,50 @@ def test_a_search_on_a_node_that_cannot_see_out_finds_what_a_local_search_finds(
                 shipped = out / "runs" / evaluation["key"] / name
                 assert shipped.read_bytes() == (local / "out" / "runs" / evaluation["key"] / name).read_bytes()
     print(f"shared-nothing search of 2 evaluations (cluster start included): {cluster_time:.1f} s")
+
+
+OTHER_JOB = """
+import time, ray
+ray.init(logging_level="ERROR")
+@ray.remote(num_cpus=0)
+def other():
+    time.sleep(25)
+    return "the other job's task finished"
+print(ray.get(other.remote()), flush=True)
+"""
+
+
+def test_sigterm_stops_this_campaigns_runs_on_the_cluster_and_nothing_else(tmp_path: Path, cluster: Cluster) -> None:
+    started = time.monotonic()
+    spec = _spec(tmp_path, 3, "1.0 0.1 0.0\n")
+    node_tmp = cluster.add_node("node1")
+    cluster.wait_for_cpus(1)
+    env = {**os.environ, "REI_HOME": str(REPO_ROOT), **cluster.env}
+    other = subprocess.Popen([sys.executable, "-c", OTHER_JOB], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                             env=env, start_new_session=True)
+    out = tmp_path / "out"
+    with open(tmp_path / "campaign.log", "wb") as log:
+        campaign = subprocess.Popen([str(Path(sys.executable).parent / "rei"), "campaign", str(spec), "-o", str(out),
+                                     "--ray", cluster.env["RAY_ADDRESS"]], stdout=log, stderr=subprocess.STDOUT,
+                                    env=env, start_new_session=True)
+    try:
+        deadline = time.monotonic() + 180
+        while not any(node_tmp.glob("rei-run-*/run/streams")):
+            assert campaign.poll() is None, (tmp_path / "campaign.log").read_text(errors="replace")
+            assert time.monotonic() < deadline, "no run ever started on the node"
+            time.sleep(0.1)
+        campaign.send_signal(signal.SIGTERM)
+        code = campaign.wait(60)
+        said, _ = other.communicate(timeout=120)
+    finally:
+        for process in (campaign, other):
+            if process.poll() is None:
+                os.killpg(process.pid, signal.SIGKILL)
+                process.wait()
+    text = (tmp_path / "campaign.log").read_text(errors="replace")
+    assert code == 130 and "campaign interrupted" in text, text
+    assert list(out.glob("runs/*/result.json")) == []  # the run stopped is not finished: a resume runs it
+    assert list(node_tmp.glob("rei-run-*")) == []  # its worker stopped and its folder removed on the node
+    assert not [line for line in _leftovers(node_tmp) if "rei.campaign.worker" in line]
+    assert other.returncode == 0 and "the other job's task finished" in said.decode(), said
+    print(f"campaign stopped on the cluster (cluster start included): {time.monotonic() - started:.1f} s")

@@ -21,7 +21,7 @@ from typing import Any
 
 from rei.campaign.forkserver import ForkServer, ForkServerError
 from rei.campaign.plan import RunTask
-from rei.campaign.supervise import Outcome, supervise
+from rei.campaign.supervise import KILL_GRACE, Outcome, supervise
 from rei.campaign.transfer import folder_bundle, inputs, receive, run_shipped
 from rei.campaign.worker import MONITOR_SERVER_ENV
 from rei.run.jvm import JarServer, JarServerError
@@ -229,6 +229,9 @@ class RayBackend:
             if refs:  # stopped: this campaign's tasks only; not forced: the task's supervisor stops its worker
                 for ref in refs:
                     ray.cancel(ref)
+                # and removes its folder before the driver disconnects (which ends the job's Ray workers at once)
+                with contextlib.suppress(Exception):
+                    ray.wait(list(refs), num_returns=len(refs), timeout=KILL_GRACE + 3.0)
 
     def _set_env(self, values: dict[str, str]) -> None:
         for key, value in values.items():
