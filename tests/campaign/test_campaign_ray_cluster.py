@@ -190,6 +190,14 @@ def test_a_node_that_cannot_see_out_runs_the_campaign_as_a_local_one(tmp_path: P
     assert [(r["status"], r["attempt"]) for r in rows] == [("COMPLETED", "1")] * 2, rows
     assert list(node_tmp.glob("rei-run-*")) == []  # the node's temporary run folders are gone
     cluster_time = time.monotonic() - started
+    moved = json.loads((out / "campaign.json").read_text(encoding="utf-8"))["metrics"]["transfer"]
+    case = sum(p.stat().st_size for p in (out / "cases" / "simple_navigation").rglob("*") if p.is_file())
+    runs = sum(p.stat().st_size for p in (out / "runs").rglob("*") if p.is_file() and p.name not in (
+        "task.json", "result.json"))
+    # the case once for its two runs, the user's files with each; the run folders back (their summaries then name
+    # the driver's paths instead of the node's)
+    assert case < moved["sent"] < case + 4096 and abs(moved["received"] - runs) < 1024, (moved, case, runs)
+    print(f"moved: {moved['sent']} bytes to the node (case {case}), {moved['received'] // 2} back per run")
 
     local = tmp_path / "local"
     shutil.copytree(work, local, ignore=shutil.ignore_patterns("out"))

@@ -157,8 +157,9 @@ class RayBackend:
         self._saved_env: dict[str, str | None] = {}
         self.attempts = attempts
         self._log = log
-        #: bytes that came back from the nodes (run files), for the campaign's metrics and the benchmark
-        self.received = 0
+        #: bytes sent to the nodes (case bundles once each, the tasks' other inputs) and received from them (run
+        #: files): the campaign's metrics (campaign.json: transfer)
+        self.moved = {"sent": 0, "received": 0}
         init: dict[str, Any] = {"include_dashboard": False, "log_to_driver": False, "logging_level": "WARNING"}
         if address == "local":
             # short, in the system's temporary directory: Ray's unix sockets live below it (108-byte limit)
@@ -191,8 +192,11 @@ class RayBackend:
         def submit(task: RunTask, attempt: int) -> None:
             try:
                 if task.case_dir not in cases:
-                    cases[task.case_dir] = ray.put(folder_bundle(Path(task.case_dir)))
+                    bundle = folder_bundle(Path(task.case_dir))
+                    cases[task.case_dir] = ray.put(bundle)
+                    self.moved["sent"] += sum(map(len, bundle.values()))
                 extra, fields = inputs(task)
+                self.moved["sent"] += sum(map(len, extra.values()))
             except (OSError, ValueError) as error:  # an input that cannot be read is the run's ERROR
                 on_outcome(task, Outcome(task.key, None, False, False, 0.0, 0.0,
                                          f"cannot ship the run's inputs: {error}", "-", attempt))
@@ -209,7 +213,7 @@ class RayBackend:
                     task, attempt, fields = refs.pop(ref)
                     try:
                         shipped = ray.get(ref)
-                        self.received += receive(task, shipped["files"], ray.get, shipped["work"], fields)
+                        self.moved["received"] += receive(task, shipped["files"], ray.get, shipped["work"], fields)
                         outcome = Outcome(**shipped["outcome"])
                     except ray.exceptions.TaskCancelledError:
                         continue

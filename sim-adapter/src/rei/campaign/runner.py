@@ -115,6 +115,9 @@ def run_campaign(spec: Spec, out: Path, backend: Backend, *, retry_errors: bool 
         interrupted = True
         stop.set()
         log("campaign interrupted: finished runs are kept; run the same command to resume")
+    moved = getattr(backend, "moved", None)  # a Ray backend's bytes to and from the nodes
+    if moved is not None:
+        metrics["transfer"] = dict(moved)
     results = tuple(r for r in (finished_result(t) for t in plan.runs) if r is not None)
     metrics["campaign"] = usage(start, Sample.now(helpers))
     metrics["runs"] = _run_metrics(results)
