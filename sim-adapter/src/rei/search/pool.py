@@ -5,7 +5,9 @@ A search asks for the next candidate as soon as a worker is free (Optuna's ask/t
 it can wait on, where a campaign hands its backend the whole plan. Both pools run the campaign's ``supervise``
 (a process per run, its timeout, its process group stopped with it): locally forked from one
 rei.campaign.forkserver with one warm monitor JVM for the replays, as the local campaign backend does; on Ray
-through the campaign's Ray backend, one task per run.
+through the campaign's Ray backend, one task per run: the candidate's case goes to a node as bytes and its run
+folder comes back into OUT (rei.campaign.transfer), a task lost with its node is tried again, and the study's
+journal never leaves this machine.
 """
 
 from __future__ import annotations
