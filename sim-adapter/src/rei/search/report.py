@@ -205,7 +205,9 @@ def _failures(out: Path, document: Mapping[str, Any]) -> str:
         parts.append(f"<div class=\"failure\"><h3>{_e(failure['signature'])}</h3>"
                      f"<p class=\"requirements\">fails {_e(requirements)}: {_e(failure.get('what') or '')}</p>"
                      f"<p>{_e(failure['message'])}; worst utility {failure['worst_utility']:g}; found in {len(failure['evaluations'])} "
-                     f"evaluation(s), first {_e(failure['first'])} (seed {failure.get('seed')}). "
+                     f"evaluation(s), first {_e(failure['first'])} (seed {failure.get('seed')}"
+                     + (f", fault {_e(failure['fault'])}" if failure.get("fault") else "")
+                     + (f"; shrunk to fault {_e(shrunk['fault'])}" if shrunk.get("fault") else "") + "). "
                      + " · ".join(links) + "</p>" + _map(Path(failure["run"]), f"failure-{n}") + "</div>")
     parts.append("</section>")
     return "\n".join(parts)

@@ -133,7 +133,8 @@ def _shrink_all(search: Search, shrunk: dict[str, Any], log: Callable[[str], Non
         shrunk[signature] = result.to_dict()
         _write_shrunk(search.out, shrunk)
         log(f"  shrunk: {result.kept} reduction(s) kept in {result.steps} simulation(s), removed "
-            f"{', '.join(result.removed) or 'nothing'}: {result.case}")
+            f"{', '.join(result.removed) or 'nothing'}{f', fault {result.fault}' if result.fault else ''}: "
+            f"{result.case}")
     return shrunk
 
 

@@ -6,7 +6,8 @@ least the requirements it did.
 Steps, in order: remove each object, human, crowd and group the failure does not name (a crowd's person names its
 crowd), then the extra pieces of furniture (the last first), then move each parameter back to the base case's
 value, but a crowd's or a group's count (first of them) towards its fewest people (as many as the failure's
-person needs; then halfway) and a crowd's rate towards its slowest. Each step is one candidate (validated and checked like any other) and, when valid, one
+person needs; then halfway), a crowd's rate towards its slowest, and a fault on a timeline towards a shorter
+duration, then a later start (rei.search.space.SHRINK_STEPS of the way to the spec's range's end, boldest first). Each step is one candidate (validated and checked like any other) and, when valid, one
 simulation; ``budget`` caps the simulations per failure. The shrunk case is written to
 ``OUT/shrunk/<id>.rei`` with its runs in ``OUT/shrunk/runs/<id>-<step>/``, ``<id>`` the failure's (``failure_id``):
 named by what failed, not by its rank, which a resumed search with a larger budget may change.
@@ -55,10 +56,11 @@ class Shrunk:
     steps: int  # simulations spent
     kept: int  # reductions kept (each still fails the same way)
     run: str | None
+    fault: str | None = None  # the shrunk case's --fault (its reproduce line has it too)
 
     def to_dict(self) -> dict[str, Any]:
         return {"case": self.case, "values": self.values, "removed": self.removed, "steps": self.steps,
-                "kept": self.kept, "run": self.run}
+                "kept": self.kept, "run": self.run, "fault": self.fault}
 
 
 def shrink(failure: Failure, values: Mapping[str, Any], space: Space, maker: CandidateMaker, pool: Pool,
@@ -131,7 +133,7 @@ def shrink(failure: Failure, values: Mapping[str, Any], space: Space, maker: Can
         if not keep({**current, EXTRA_COUNT: int(current[EXTRA_COUNT]) - 1}, removed):
             break
     # the crowds' and groups' counts first: fewer people is the largest reduction of what is left
-    for name in sorted(current, key=lambda key: key not in space.people_counts()):
+    for name in space.shrink_order(list(current)):
         # towards the base case's value; a crowd's or a group's count towards fewer people, a crowd's rate slower
         for value in space.smaller(name, current[name], failure.element):
             if value == current[name]:
@@ -145,4 +147,5 @@ def shrink(failure: Failure, values: Mapping[str, Any], space: Space, maker: Can
         maker.write(final, path)
     else:  # every kept step was valid, and so was the start: only a changed engine gets here
         path = None
-    return Shrunk(None if path is None else str(path), dict(current), removed, steps, kept, current_run)
+    return Shrunk(None if path is None else str(path), dict(current), removed, steps, kept, current_run,
+                  final.edit.fault)

@@ -33,6 +33,7 @@ from rei import located_yaml
 from rei.campaign.spec import SpecError
 from rei.edit.gatherings import gatherings, with_values
 from rei.search.spec import UNREAD, Parameter, Range
+from rei.sim.faults import KIND_KEYS, fault_from_fields, format_fault
 
 Values = Mapping[str, Any]
 #: The names of extra pieces of furniture: ``search_extra_0``, ...
@@ -128,6 +129,12 @@ class Space:
                             f"{p.prop} would change nothing; remove its parameters or set humans: true")
         if p.target == "furniture":
             self._add_furniture(p, taken)
+            return
+        if p.target == "fault" and p.prop == "kind":
+            self._categorical(p.key, list(p.domain), None, p.where)  # base None: the base case runs no such fault
+            return
+        if p.target == "fault":  # a fault's values (its start and speed are no person's)
+            self._float(p.key, p.domain, None)
             return
         route = self._route(p.name) if p.target == "human" else None
         if route is not None:
@@ -359,9 +366,45 @@ class Space:
         faults = [p for p in self.parameters if p.target == "fault"]
         if not faults or all(values.get(p.key) is None for p in faults):
             return None
+        if faults[0].base is None:  # a fault on a timeline
+            return self._scheduled_fault(faults[0].name, values)
         settings = ",".join(f"{p.prop}={int(values[p.key]) if p.prop == 'width' else round(values[p.key], 6)}"
                             for p in faults if values.get(p.key) is not None)
         return f"{faults[0].base},{settings}"
+
+    @staticmethod
+    def _scheduled_fault(sensor: str, values: Values) -> str | None:
+        """The point's fault on a timeline as its ``--fault`` spec, written by the fault model's own writer
+        (rei.sim.faults.format_fault): times to the millisecond, the other values to six digits, only the keys of
+        the point's kind; a pulse longer than its period is the whole period (a range of pulses and one of periods
+        may cross)."""
+        kind = values.get("fault.kind")
+        if kind is None:
+            return None
+
+        def number(key: str) -> float | None:
+            value = values.get(f"fault.{key}")
+            return None if value is None else float(value)
+
+        fields: dict[str, str] = {}
+        start, duration = number("start"), number("duration")
+        if start is not None or duration is not None:
+            fields["from"] = repr(round(start or 0.0, 3))
+        if duration is not None:
+            fields["to"] = repr(round((start or 0.0) + duration, 3))
+        for key in KIND_KEYS[kind]:
+            value = number(key)
+            if value is not None:
+                fields[key] = str(int(value)) if key == "width" else repr(round(value, 6))
+        period = number("period")
+        if period is not None:
+            fields["period"] = repr(round(period, 3))
+            pulse, duty = number("pulse"), number("duty")
+            if pulse is not None:
+                fields["pulse"] = repr(round(min(pulse, period), 3))
+            elif duty is not None:
+                fields["duty"] = repr(round(duty, 6))
+        return format_fault(fault_from_fields(sensor, kind, fields))
 
     def removable(self) -> list[str]:
         """The objects, humans, crowds and groups of the base case: what shrinking may try to remove (never the
@@ -385,6 +428,8 @@ class Space:
         but a crowd's or a group's count towards its fewest people (never fewer than the failure's own person,
         ``shoppers_7`` needs 7; then halfway) and a crowd's rate towards its slowest."""
         p = next((p for p in self.parameters if p.key == key), None)
+        if p is not None and p.target == "fault" and p.base is None:
+            return _shorter_or_later(p, value)
         if p is None or p.target not in ("crowd", "group") or p.prop == "behaviour":
             return [self._base.get(key)]
         if p.prop == "rate":
@@ -396,6 +441,30 @@ class Space:
         halfway = (least + int(value)) // 2
         return [least] + ([halfway] if least < halfway < int(value) else [])
 
+    def shrink_order(self, keys: Sequence[str]) -> list[str]:
+        """The order in which shrinking moves values: the crowds' and groups' counts first (fewer people is the
+        largest reduction), a fault's duration before its start (shorter first, then later), then the rest."""
+        counts = self.people_counts()
+        return sorted(keys, key=lambda key: (key not in counts, key != "fault.duration"))
+
     def floor_at(self, x: float, y: float) -> str:
         """The floor whose centre is nearest to (x, y): where something happened, as the test case names it."""
         return min(self._floors, key=lambda name: math.dist(self._floors[name], (x, y)))
+
+
+#: The shares of the way to a fault's shortest duration (or latest start) shrinking tries, boldest first.
+SHRINK_STEPS = (1.0, 0.75, 0.5, 0.25)
+
+
+def _shorter_or_later(p: Parameter, value: Any) -> list[Any]:
+    """A fault on a timeline shrinks towards a shorter fault and a later start, within the spec's ranges: its
+    duration towards the range's low end, its start towards the high end, each by the shares ``SHRINK_STEPS`` of the
+    way (the first that still fails is kept); its kind and other values stay (a fault the failure needs is not
+    removed: shrinking says how little of it does)."""
+    if value is None or p.prop not in ("duration", "start"):
+        return []
+    value = float(value)
+    target = p.domain.low if p.prop == "duration" else p.domain.high
+    if abs(target - value) < 1e-3:  # the times are written to the millisecond
+        return []
+    return [value + share * (target - value) for share in SHRINK_STEPS]

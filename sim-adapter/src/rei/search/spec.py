@@ -27,7 +27,9 @@ of elements the base case does not have with them: rei.search.base.with_base_cas
       - {robot: tb3, floor: [F_0_1, F_1_1]}
       - {goal: 1, floor: any}
       - {seed: [0, 1000]}
-      - {fault: "laser:1%", rate: [0.0, 0.05]}  # and gain, width
+      - {fault: "laser:1%", rate: [0.0, 0.05]}  # and gain, width: the run-long impulse noise around a preset
+      - {fault: laser, kind: [blackout, freeze], start: [2, 20], duration: [0.2, 5]}  # a fault on a timeline
+      #   and a kind's own values (impulse: rate, gain, width; noise: sigma), a pulse train's period, pulse or duty
       - {furniture: [Chair, Box], count: [0, 3], floor: any}  # extra pieces from the catalogues
       - {crowd: shoppers, count: [2, 12], rate: [0.2, 2], behaviour: [avoids, ignores, blocks]}  # a crowd's line
       - {group: family, count: [2, 4], behaviour: [avoids, curious]}  # a group's line
@@ -58,6 +60,7 @@ from rei.artifacts.animation import Behaviour
 from rei.campaign.spec import ExternalSut, RoomSettings, SpecError, _Reader, _rooms, _sut, check_user_patterns
 from rei.evaluation.metrics import BY_NAME, NAMES, Better
 from rei.search import SAMPLERS
+from rei.sim.faults import KIND_KEYS, SENSORS, fault_from_fields
 
 DIRECTIONS = ("minimize", "maximize")
 #: Samplers that search one objective only (Optuna's CmaEsSampler refuses a multi-objective study at its first ask).
@@ -78,8 +81,10 @@ class Parameter:
     """One searched property of one element. ``target``: object, human, robot, goal, seed, fault, furniture
     (extra pieces: ``domain`` is (types, count Range, floors or None)), crowd or group (``count``, ``rate``,
     ``behaviour`` of its line);
-    ``name``: the element (a goal's index as text; empty for seed and fault); ``prop``: floor, yaw, points,
-    start, speed, loop, behaviour, stop (a route's stop ``index``: its floor), value (seed), rate, gain, width;
+    ``name``: the element (a goal's index as text; empty for seed and a preset's fault, the sensor for a fault on
+    a timeline); ``prop``: floor, yaw, points, start, speed, loop, behaviour, stop (a route's stop ``index``: its
+    floor), value (seed), rate, gain, width, and a fault on a timeline's kind, start, duration, sigma, period,
+    pulse, duty;
     ``domain``: a Range, a tuple of choices, or for ``points`` a tuple with one tuple of floors (or None: any
     floor) per control point; None for 'any'."""
 
@@ -394,7 +399,8 @@ def _check_controller(controller: str, where: str) -> None:
 #: person is known from the base case (rei.search.space).
 _PROPS = {"object": ("floor", "yaw"), "robot": ("floor",),
           "human": ("points", "start", "speed", "loop", "behaviour", "stop", "floor"),
-          "goal": ("floor",), "seed": (), "fault": ("rate", "gain", "width"), "furniture": ("count", "floor"),
+          "goal": ("floor",), "seed": (), "fault": ("rate", "gain", "width", "kind", "start", "duration", "sigma",
+                                                   "period", "pulse", "duty"), "furniture": ("count", "floor"),
           "crowd": ("count", "rate", "behaviour"), "group": ("count", "behaviour")}
 #: The fewest people of a crowd and of a group (the language's tooFewPeople: a group's leader and one more).
 LEAST_PEOPLE = {"crowd": 1, "group": 2}
@@ -520,6 +526,8 @@ def _fault(name_value: Any, name_node: yaml.Node, props: list[str], entry: dict[
     range is checked against the fault only when the fault reads."""
     from rei.sim.faults import parse_fault
 
+    if isinstance(name_value, str) and name_value in SENSORS:
+        return _scheduled_fault(name_value, name_node, props, entry, item, loc, problems)
     base_fault = None
     if not isinstance(name_value, str):
         problems.add(f"{loc.at(name_node)}: 'fault' is the fault the values change, such as \"laser:1%\"")
@@ -535,7 +543,10 @@ def _fault(name_value: Any, name_node: yaml.Node, props: list[str], entry: dict[
     if not any_key:
         problems.add(f"{loc.at(item)}: give at least one of rate, gain, width")
     parameters = []
-    for prop in props:
+    for prop in [p for p in props if p not in PRESET_KEYS]:
+        problems.add(f"{loc.at(entry[prop][0])}: '{prop}' is a key of a fault on a timeline ({{fault: laser, kind: "
+                     f"[...], {prop}: ...}}); a preset's values are {', '.join(PRESET_KEYS)}")
+    for prop in [p for p in props if p in PRESET_KEYS]:
         with problems.check():
             value_node = entry[prop][1]
             domain = _range(loc.value(value_node), value_node, loc, integer=prop == "width")
@@ -543,6 +554,105 @@ def _fault(name_value: Any, name_node: yaml.Node, props: list[str], entry: dict[
                 _check_fault_range(base_fault, prop, domain, loc.at(value_node))
                 parameters.append(Parameter("fault", "", prop, domain, loc.at(value_node), base=name_value))
     return parameters
+
+
+#: The values of the run-long impulse noise searched around a preset (``{fault: "laser:1%", rate: [...]}``).
+PRESET_KEYS = ("rate", "gain", "width")
+#: The keys of a fault on a timeline the search varies besides its kind: ``start`` and ``duration`` (seconds) make
+#: its ``from`` and ``to``; the others are the fault's own keys (rei.sim.faults.spec), a kind's (``KIND_KEYS``) or
+#: the pulse train's (``period`` with ``pulse`` or ``duty``).
+SCHEDULE_KEYS = ("start", "duration", "period", "pulse", "duty")
+#: Kinds whose every key is a number searched in a range (an occlusion's sector is two angles, not searched yet).
+SEARCHABLE_KINDS = ("impulse", "freeze", "blackout", "noise")
+
+
+def _scheduled_fault(sensor: str, name_node: yaml.Node, props: list[str],
+                     entry: dict[str, tuple[yaml.Node, yaml.Node]], item: yaml.Node, loc: _Located,
+                     problems: located_yaml.Collector) -> list[Parameter]:
+    """``{fault: laser, kind: [blackout, freeze], start: [2, 20], duration: [0.2, 5]}``: a fault on a timeline,
+    its kind one of a list and each other key a range; every key must be one a listed kind has, every range's ends
+    values the fault model accepts (its own checks, rei.sim.faults, say why not)."""
+    name_at = loc.at(name_node)
+    kinds: tuple[str, ...] = ()
+    if "kind" not in entry:
+        problems.add(f"{loc.at(item)}: give 'kind': the {sensor} fault's kinds to choose from, such as [blackout, "
+                     f"freeze] (of {', '.join(SEARCHABLE_KINDS)})")
+    else:
+        kinds = problems.read(lambda: _fault_kinds(sensor, entry["kind"][1], loc), ())
+    domains: dict[str, Any] = {}
+    for prop in props:
+        if prop == "kind":
+            continue
+        value_node = entry[prop][1]
+        with problems.check():
+            domains[prop] = _range(loc.value(value_node), value_node, loc, integer=prop == "width")
+            owners = [k for k in kinds if prop in KIND_KEYS[k]]
+            if prop not in SCHEDULE_KEYS and kinds and not owners:
+                listed = " or ".join(f"{sensor} {k}" for k in kinds)
+                raise SpecError(f"{loc.at(entry[prop][0])}: {_article(listed)} {listed} fault has no '{prop}' "
+                                f"(its keys: {', '.join(_kind_keys(kinds))})")
+            _check_schedule_range(sensor, prop, domains[prop], owners, loc.at(value_node))
+    for kind in kinds:
+        needed = [key for key in ("sigma",) if key in KIND_KEYS[kind] and key not in entry]
+        if needed:
+            problems.add(f"{loc.at(entry['kind'][1])}: a {sensor} {kind} fault needs '{needed[0]}': give its range")
+    if "pulse" in entry and "duty" in entry:
+        problems.add(f"{loc.at(entry['duty'][0])}: give the pulse width as 'pulse' (seconds) or 'duty' (a share of "
+                     "the period), not both")
+    elif ("pulse" in entry or "duty" in entry) != ("period" in entry):
+        what = "period" if "period" in entry else "pulse" if "pulse" in entry else "duty"
+        problems.add(f"{loc.at(entry[what][0])}: a pulse train needs 'period' and 'pulse' (or 'duty')")
+    if not kinds:
+        return []
+    parameters = [Parameter("fault", sensor, "kind", kinds, loc.at(entry["kind"][1]), name_at=name_at,
+                            prop_at=loc.at(entry["kind"][0]))]
+    parameters += [Parameter("fault", sensor, prop, domain, loc.at(entry[prop][1]), name_at=name_at,
+                             prop_at=loc.at(entry[prop][0])) for prop, domain in domains.items()]
+    return parameters
+
+
+def _kind_keys(kinds: tuple[str, ...]) -> list[str]:
+    return list(dict.fromkeys([*(key for k in kinds for key in KIND_KEYS[k]), *SCHEDULE_KEYS]))
+
+
+def _fault_kinds(sensor: str, node: yaml.Node, loc: _Located) -> tuple[str, ...]:
+    value = loc.value(node)
+    listed = [value] if isinstance(value, str) else value
+    if not isinstance(listed, list) or not listed or not all(isinstance(k, str) for k in listed):
+        raise SpecError(f"{loc.at(node)}: 'kind' is a {sensor} fault's kind or a list of them, such as [blackout, "
+                        f"freeze] (of {', '.join(SEARCHABLE_KINDS)})")
+    for kind in listed:
+        if kind in KIND_KEYS and kind not in SEARCHABLE_KINDS:
+            raise SpecError(f"{loc.at(node)}: an {kind}'s sector is not searched yet: search "
+                            f"{', '.join(SEARCHABLE_KINDS)}, or give the {kind} in the base case's faults block")
+        if kind not in KIND_KEYS:
+            close = difflib.get_close_matches(kind, list(KIND_KEYS), n=1)
+            hint = f" (did you mean {close[0]}?)" if close else ""
+            raise SpecError(f"{loc.at(node)}: unknown {sensor} fault kind {kind!r}{hint}; known: "
+                            f"{', '.join(SEARCHABLE_KINDS)}")
+    return tuple(dict.fromkeys(listed))
+
+
+def _check_schedule_range(sensor: str, prop: str, domain: Range, kinds: list[str], where: str) -> None:
+    """Both ends of a searched key are values the fault model accepts (its own checks, rei.sim.faults, say the
+    allowed interval; they are intervals, so every value between the ends is one too)."""
+    if prop == "start" and domain.low < 0:
+        raise SpecError(f"{where}: a fault's start must be a time >= 0 s, got [{domain.low:g}, {domain.high:g}]")
+    if prop == "duration" and domain.low <= 0:
+        raise SpecError(f"{where}: a fault's duration must be > 0 s, got [{domain.low:g}, {domain.high:g}]")
+    if prop in ("start", "duration"):
+        return
+    for end in (domain.low, domain.high):
+        text = str(int(end)) if domain.integer else repr(end)
+        fields = {"period": text, "pulse": text} if prop == "period" else \
+            {"period": "1", "duty": text} if prop == "duty" else \
+            {"period": repr(max(end, 1.0)), "pulse": text} if prop == "pulse" else {prop: text}
+        for kind in kinds or ("blackout",):
+            try:
+                fault_from_fields(sensor, kind, {**({"sigma": "1"} if kind == "noise" else {}), **fields})
+            except ValueError as error:
+                raise SpecError(f"{where}: {prop} [{domain.low:g}, {domain.high:g}] reaches outside what a {sensor} "
+                                f"{kind} fault accepts: {error}") from None
 
 
 def _check_fault_range(fault: Any, prop: str, domain: Range, where: str) -> None:

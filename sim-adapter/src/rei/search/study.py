@@ -349,7 +349,7 @@ class Search:
             self.study.tell(trial, state=TrialState.FAIL)
         else:
             self.study.tell(trial, told if len(told) > 1 else told[0])
-        self.log(self._line(trial.number, result.status, values, attrs))
+        self.log(self._line(trial.number, result.status, values, {**attrs, "fault": task.fault}))
         if told is not None and not new and self._refine:
             self._refined(trial, task)
 
@@ -384,6 +384,8 @@ class Search:
                                for f in attrs.get("failures") or []) or "no failure"
             how = f"{_figures(self.spec, values)}; {failed}"
         best = self.best_text()
+        if attrs.get("fault"):  # the run's fault as `rei run --fault` takes it (a searched fault's values)
+            how = f"fault {attrs['fault']}; {how}"
         return (f"[{p.simulated}/{self.spec.budget}] {self.key(number)}: {how} | failing {p.failing}, "
                 f"invalid {p.invalid}, errors {p.errors}{', best ' + best if best else ''}")
 

@@ -20,7 +20,14 @@ from rei.sim.faults.schedule import (
     event_name,
     fault_generators,
 )
-from rei.sim.faults.spec import KIND_KEYS, as_schedule, fault_fields, fault_from_fields, parse_faults
+from rei.sim.faults.spec import (
+    KIND_KEYS,
+    as_schedule,
+    fault_fields,
+    fault_from_fields,
+    format_fault,
+    parse_faults,
+)
 from rei.sim.faults.timing import Ramp, Timing
 
 __all__ = [
@@ -42,6 +49,7 @@ __all__ = [
     "fault_fields",
     "fault_from_fields",
     "fault_generators",
+    "format_fault",
     "parse_fault",
     "parse_faults",
 ]

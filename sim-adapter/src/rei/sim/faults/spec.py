@@ -188,6 +188,13 @@ def _number(text: str, what: str) -> float:
     return value
 
 
+def format_fault(fault: Fault) -> str:
+    """The ``--fault`` spec of one fault, ``SENSOR:KIND,key=value,...``: what :func:`parse_faults` reads back as
+    ``fault`` (the one writer of fault specs: a search's candidates carry their fault to the run as this text)."""
+    fields = fault_fields(fault)
+    return ",".join([f"{fault.sensor}:{fault.kind}", *(f"{key}={value}" for key, value in fields.items())])
+
+
 def fault_fields(fault: Fault) -> dict[str, str]:
     """The keys of a fault as text, the inverse of :func:`fault_from_fields` (for writing a schedule back)."""
     out: dict[str, str] = {}

@@ -1,0 +1,89 @@
+# SPDX-License-Identifier: EPL-2.0
+"""A search spec's fault on a timeline (#39, "Searchable"): ``{fault: laser, kind: [...], start: [...], ...}`` read
+into parameters, a point of them written as the ``--fault`` spec the fault model reads back, and each mistake
+placed at the YAML it is about."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from rei.search.space import Space
+from rei.search.spec import SearchSpecError, parse_search_spec
+from rei.sim.faults import parse_faults
+
+DIAGRAM = {"room": {"floors": [{"name": "F_0_0", "centreX": 0.5, "centreY": 0.5}]}}
+
+
+def _spec(tmp_path: Path, parameter: str) -> str:
+    (tmp_path / "c.rei").write_text("testcase C {}\n", encoding="utf-8")
+    return f"case: c.rei\nparameters:\n  - {parameter}\nobjectives: [utility]\n"
+
+
+def _problems(tmp_path: Path, parameter: str) -> list[str]:
+    with pytest.raises(SearchSpecError) as caught:
+        parse_search_spec(_spec(tmp_path, parameter), base=tmp_path, file="s.yaml")
+    return list(caught.value.problems)
+
+
+def test_a_blackout_s_start_and_duration_make_its_from_and_to(tmp_path: Path) -> None:
+    spec = parse_search_spec(_spec(tmp_path, "{fault: laser, kind: [blackout, freeze], start: [2, 20], "
+                                             "duration: [0.2, 5]}"), base=tmp_path, file="s.yaml")
+    assert next((p.key, p.domain) for p in spec.parameters) == ("fault.kind", ("blackout", "freeze"))
+    assert [p.key for p in spec.parameters] == ["fault.kind", "fault.start", "fault.duration"]
+    space = Space(spec.parameters, DIAGRAM)
+    fault = space.edit({"fault.kind": "freeze", "fault.start": 3.25, "fault.duration": 1.5}).fault
+    assert fault == "laser:freeze,from=3.25,to=4.75"
+    [parsed] = parse_faults(fault).faults
+    assert (parsed.kind, parsed.timing.start, parsed.timing.end) == ("freeze", 3.25, 4.75)
+    assert space.edit({}).fault is None  # the base case's own point: no fault
+    # shrinking: a shorter duration first, the boldest step first; then a later start
+    assert space.smaller("fault.duration", 4.2, "walker") == pytest.approx([0.2, 1.2, 2.2, 3.2])
+    assert space.smaller("fault.start", 4.0, "walker") == pytest.approx([20, 16, 12, 8])
+    assert space.smaller("fault.kind", "freeze", "walker") == []
+    assert space.shrink_order(["fault.start", "fault.kind", "fault.duration"])[0] == "fault.duration"
+
+
+def test_a_gated_noise_s_values_and_pulse_train_are_written_for_its_kind_only(tmp_path: Path) -> None:
+    spec = parse_search_spec(_spec(tmp_path, "{fault: laser, kind: [noise, blackout], sigma: [0.01, 0.1], "
+                                             "period: [1, 4], pulse: [0.5, 2]}"), base=tmp_path, file="s.yaml")
+    space = Space(spec.parameters, DIAGRAM)
+    values = {"fault.kind": "noise", "fault.sigma": 0.05, "fault.period": 1.0, "fault.pulse": 1.5}
+    assert space.edit(values).fault == "laser:noise,sigma=0.05,from=0.0,period=1.0,pulse=1.0"  # pulse <= period
+    assert space.edit({**values, "fault.kind": "blackout"}).fault == "laser:blackout,from=0.0,period=1.0,pulse=1.0"
+
+
+@pytest.mark.parametrize(("parameter", "expected"), [
+    ("{fault: laser, kind: [blackot], start: [0, 5]}",
+     ("s.yaml:3:26: unknown laser fault kind 'blackot' (did you mean blackout?); known: impulse, freeze, blackout, "
+     "noise")),
+    ("{fault: laser, kind: [blackout], sigma: [0.1, 0.2]}",
+     "s.yaml:3:38: a laser blackout fault has no 'sigma' (its keys: start, duration, period, pulse, duty)"),
+    ("{fault: laser, kind: [impulse], rate: [0.1, 2]}",
+     ("s.yaml:3:43: rate [0.1, 2] reaches outside what a laser impulse fault accepts: laser fault rate must be in "
+     "[0, 1] impulses per beam per scan, got 2.0")),
+    ("{fault: laser, kind: blackout, start: [-1, 5]}",
+     "s.yaml:3:43: a fault's start must be a time >= 0 s, got [-1, 5]"),
+    ("{fault: laser, kind: blackout, duration: [0, 5]}",
+     "s.yaml:3:46: a fault's duration must be > 0 s, got [0, 5]"),
+    ("{fault: laser, kind: [noise], start: [0, 5]}",
+     "s.yaml:3:26: a laser noise fault needs 'sigma': give its range"),
+    ("{fault: laser, kind: [occlusion]}",
+     ("s.yaml:3:26: an occlusion's sector is not searched yet: search impulse, freeze, blackout, noise, or give the "
+     "occlusion in the base case's faults block")),
+    ("{fault: laser, start: [0, 5]}",
+     ("s.yaml:3:5: give 'kind': the laser fault's kinds to choose from, such as [blackout, freeze] (of impulse, "
+     "freeze, blackout, noise)")),
+    ("{fault: laser, kind: blackout, pulse: [0.1, 1]}",
+     "s.yaml:3:36: a pulse train needs 'period' and 'pulse' (or 'duty')"),
+    ("{fault: laser, kind: blackout, period: [1, 2], duty: [0.1, 1.5]}",
+     ("s.yaml:3:58: duty [0.1, 1.5] reaches outside what a laser blackout fault accepts: duty must be in (0, 1] (or "
+     "(0 %, 100 %]), got 1.5")),
+    ("{fault: \"laser:1%\", start: [0, 5]}",
+     ("s.yaml:3:25: 'start' is a key of a fault on a timeline ({fault: laser, kind: [...], start: ...}); a preset's "
+     "values are rate, gain, width")),
+])
+def test_a_mistake_in_a_searched_fault_is_placed_at_what_is_wrong(tmp_path: Path, parameter: str,
+                                                                  expected: str) -> None:
+    assert _problems(tmp_path, parameter) == [expected]
