@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import re
 import secrets
 import shutil
 import tempfile
@@ -27,6 +28,7 @@ from rei.campaign.worker import MONITOR_SERVER_ENV
 from rei.run.jvm import JarServer, JarServerError
 
 OnOutcome = Callable[[RunTask, Outcome], None]
+_ANSI = re.compile(r"\x1b\[[0-9;]*m")
 
 
 @dataclass(frozen=True)
@@ -218,13 +220,19 @@ class RayBackend:
                     except ray.exceptions.TaskCancelledError:
                         continue
                     except Exception as error:  # noqa: BLE001 - lost: its node, its Ray worker, its files' chunks
-                        why = f"{type(error).__name__}: {str(error).strip().splitlines()[0] if str(error) else ''}"
-                        if attempt < self.attempts and not stop.is_set():
+                        first = (_ANSI.sub("", str(error)).strip().splitlines() or [""])[0]  # Ray colours its errors
+                        why = f"{type(error).__name__}: {first[:160]}{'...' if len(first) > 160 else ''}"
+                        if isinstance(error, OSError) and not isinstance(error, ray.exceptions.RayError):
+                            # writing into OUT here failed (the disk is full): another try would not help
+                            outcome = Outcome(task.key, None, False, False, 0.0, 0.0,
+                                              f"cannot write the run's files into OUT: {error}", "?", attempt)
+                        elif attempt < self.attempts and not stop.is_set():
                             self._log(f"{task.key}: try {attempt} lost ({why}); trying again")
                             submit(task, attempt + 1)
                             continue
-                        outcome = Outcome(task.key, None, False, False, 0.0, 0.0,
-                                          f"ray task lost on each of {attempt} tries: {why}", "?", attempt)
+                        else:
+                            outcome = Outcome(task.key, None, False, False, 0.0, 0.0,
+                                              f"ray task lost on each of {attempt} tries: {why}", "?", attempt)
                     on_outcome(task, outcome)
         except BaseException:
             stop.set()

@@ -51,6 +51,8 @@ class Outcome:
             return f"timeout: stopped after {self.wall:.0f} s"
         if self.exit_code == 0:
             return None
+        if self.exit_code is None:  # no worker process ended: the log tail says why (a Ray task lost on every try)
+            return self.log_tail.strip() or "the run's worker never ran"
         if self.exit_code is not None and self.exit_code < 0:
             how = f"killed by {signal.Signals(-self.exit_code).name}"
         else:
