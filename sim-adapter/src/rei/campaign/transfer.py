@@ -69,7 +69,7 @@ def inputs(task: RunTask) -> tuple[Bundle, dict[str, Any]]:
     name, _, arg = task.controller.partition(":")
     if task.sut is None and name == "script" and arg and Path(arg).is_file():
         files["controller/" + Path(arg).name] = Path(arg).read_bytes()
-        fields["controller"] = "script:{}/controller/" + Path(arg).name
+        fields["controller"] = "controller/" + Path(arg).name  # script:<the node's inputs folder>/controller/NAME
     if task.sut is not None and task.sut.get("cwd"):
         # the command runs in the spec's folder: ship the files its words name there (``python3 my_nav.py``)
         cwd = Path(task.sut["cwd"])
@@ -103,7 +103,7 @@ def rewrite(task: RunTask, work: Path, fields: dict[str, Any], create: bool = Tr
         if name in fields:
             changes[name] = str(inputs_dir / fields[name])
     if "controller" in fields:
-        changes["controller"] = fields["controller"].format(inputs_dir)
+        changes["controller"] = f"script:{inputs_dir / fields['controller']}"
     if task.sut is not None and task.sut.get("cwd"):
         changes["sut"] = {**task.sut, "cwd": str(inputs_dir / fields.get("sut_cwd", "sut"))}
         if create:  # the command's folder, even when no file of it was shipped
