@@ -142,7 +142,7 @@ def cluster(tmp_path: Path) -> Iterator[Cluster]:
         assert not left, f"Ray processes outlived the test: {left}"
 
 
-def _spec(folder: Path, repetitions: int, script: str) -> Path:
+def _spec(folder: Path, repetitions: int, script: str, more: str = "") -> Path:
     (folder / "short.txt").write_text(script, encoding="utf-8")
     (folder / "mine").mkdir(exist_ok=True)
     (folder / "mine" / "tasks.vepl").write_text(USER_PATTERN, encoding="utf-8")
@@ -157,7 +157,7 @@ groups:
     cases: [{EXAMPLE}]
     repetitions: {repetitions}
     variants: [{{name: short, humans: false, controller: "script:{folder / 'short.txt'}"}}]
-""", encoding="utf-8")
+{more}""", encoding="utf-8")
     return spec
 
 
@@ -176,7 +176,11 @@ def test_a_node_that_cannot_see_out_runs_the_campaign_as_a_local_one(tmp_path: P
     started = time.monotonic()
     work = tmp_path / "driver"  # the spec, its patterns, utilities and script, and OUT: hidden from the node
     work.mkdir()
-    spec = _spec(work, 2, "1.0 0.1 0.0\n")
+    # and a room on an occupancy map: its generated case holds the map, which travels with it
+    spec = _spec(work, 2, "1.0 0.1 0.0\n", f"""  - name: map
+    cases: [{REPO_ROOT / "examples" / "maps" / "two_rooms.rei"}]
+    variants: [{{name: short, humans: false, controller: "script:{work / 'short.txt'}"}}]
+""")
     node_tmp = cluster.add_node("node1", hide=work)
     cluster.wait_for_cpus(1)
     node_root = Path(f"/proc/{cluster.processes['node1'].pid}/root")  # the node's view of the file system
@@ -187,20 +191,24 @@ def test_a_node_that_cannot_see_out_runs_the_campaign_as_a_local_one(tmp_path: P
     assert "on 1 ray worker(s)" in result.stdout
     assert not (node_root / out.relative_to("/")).exists()  # OUT never was the node's to see
     rows = _runs(out)
-    assert [(r["status"], r["attempt"]) for r in rows] == [("COMPLETED", "1")] * 2, rows
+    assert [(r["status"], r["attempt"]) for r in rows] == [("COMPLETED", "1")] * 3, rows
+    assert (out / "cases" / "two_rooms" / "map.pgm").is_file()
     assert list(node_tmp.glob("rei-run-*")) == []  # the node's temporary run folders are gone
     cluster_time = time.monotonic() - started
     moved = json.loads((out / "campaign.json").read_text(encoding="utf-8"))["metrics"]["transfer"]
-    case = sum(p.stat().st_size for p in (out / "cases" / "simple_navigation").rglob("*") if p.is_file())
+    case = sum(p.stat().st_size for name in ("simple_navigation", "two_rooms")
+               for p in (out / "cases" / name).rglob("*") if p.is_file())
     runs = sum(p.stat().st_size for p in (out / "runs").rglob("*") if p.is_file() and p.name not in (
         "task.json", "result.json"))
     # the case once for its two runs, the user's files with each; the run folders back (their summaries then name
     # the driver's paths instead of the node's)
-    assert case < moved["sent"] < case + 4096 and abs(moved["received"] - runs) < 1024, (moved, case, runs)
-    print(f"moved: {moved['sent']} bytes to the node (case {case}), {moved['received'] // 2} back per run")
+    assert case < moved["sent"] < case + 8192 and abs(moved["received"] - runs) < 2048, (moved, case, runs)
+    print(f"moved: {moved['sent']} bytes to the node (cases {case}), {moved['received'] // 3} back per run")
 
     local = tmp_path / "local"
     shutil.copytree(work, local, ignore=shutil.ignore_patterns("out"))
+    (local / "spec.yaml").write_text((work / "spec.yaml").read_text(encoding="utf-8").replace(str(work), str(local)),
+                                     encoding="utf-8")
     result = run_cli("campaign", local / "spec.yaml", "-o", local / "out", "--workers", "1", "--no-service",
                      timeout=300)
     assert result.returncode == 0, result.stdout + result.stderr
@@ -223,7 +231,7 @@ def test_a_node_that_cannot_see_out_runs_the_campaign_as_a_local_one(tmp_path: P
         assert summary["counts"]["SIG_USER_TASK_STARTED"] == 2  # the user's pattern ran on the node
         task = json.loads((shipped / "task.json").read_text(encoding="utf-8"))
         assert task["run_dir"] == str(shipped) and task["patterns"] == str(work / "mine")  # the driver's task
-    print(f"shared-nothing campaign of 2 runs (cluster start included): {cluster_time:.1f} s")
+    print(f"shared-nothing campaign of 3 runs (cluster start included): {cluster_time:.1f} s")
 
 
 def test_a_node_lost_in_the_middle_of_a_campaign_loses_no_run_and_repeats_none(tmp_path: Path, cluster: Cluster,
