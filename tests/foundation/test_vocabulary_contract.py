@@ -100,17 +100,20 @@ def _fault_events(contract: dict) -> list[str]:
 def test_fault_copies(contract: dict, repo_root: Path) -> None:
     """The fault kinds: the simulator's (its events and its spec reader), the language's keywords, the default
     patterns' events and signals."""
-    from rei.sim.faults import EDGES, KIND_KEYS, SENSORS, event_name
+    from rei.sim.faults import EDGES, KIND_KEYS, SENSOR_KIND_KEYS, SENSORS, event_name
 
     faults = contract["faults"]
     assert {k: list(v) for k, v in FAULT_KINDS.items()} == faults["kinds"]
     assert list(FAULT_EVENTS) == _fault_events(contract)
     assert list(SENSORS) == list(faults["kinds"]) and list(EDGES) == faults["edges"]
     assert list(KIND_KEYS) == faults["kinds"]["laser"]
+    assert {sensor: list(kinds) for sensor, kinds in SENSOR_KIND_KEYS.items()} == faults["kinds"]
     assert event_name("laser", "blackout", True) == "FAULT_LASER_BLACKOUT_BEGIN" in FAULT_EVENTS
     grammar = (repo_root / "bundles" / "org.rei.dsl" / "src" / "main" / "java" / "org" / "rei" / "dsl"
                / "Rei.xtext").read_text(encoding="utf-8")
-    for rule, words in (("FaultSensor", list(faults["kinds"])), ("FaultKind", faults["kinds"]["laser"])):
+    every_kind = [kind for kinds in faults["kinds"].values() for kind in kinds]  # one enum: kind names are unique
+    assert len(set(every_kind)) == len(every_kind)
+    for rule, words in (("FaultSensor", list(faults["kinds"])), ("FaultKind", every_kind)):
         enum = re.search(rf"enum {rule} returns ctx::{rule}:([^;]+);", grammar)
         assert enum is not None, f"Rei.xtext: no enum {rule}"
         assert re.findall(r"='(\w+)'", enum[1]) == words

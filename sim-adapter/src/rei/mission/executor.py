@@ -34,7 +34,9 @@ class MissionEventKind(enum.Enum):
 
 #: The fault kinds per sensor (contract/vocabulary.json ``faults.kinds``; rei.sim.faults implements them). Each
 #: window edge of a fault is a mission-topic event besides MissionEventKind's: FAULT_<SENSOR>_<KIND>_BEGIN/_END.
-FAULT_KINDS: dict[str, tuple[str, ...]] = {"laser": ("impulse", "freeze", "blackout", "occlusion", "noise")}
+FAULT_KINDS: dict[str, tuple[str, ...]] = {"laser": ("impulse", "freeze", "blackout", "occlusion", "noise"),
+                                            "odometry": ("drift", "jump"), "drive": ("slip", "stuck"),
+                                            "commands": ("latency", "loss"), "pose": ("kidnap",)}
 FAULT_EVENTS: tuple[str, ...] = tuple(f"FAULT_{sensor.upper()}_{kind.upper()}_{edge}"
                                       for sensor, kinds in FAULT_KINDS.items() for kind in kinds
                                       for edge in ("BEGIN", "END"))

@@ -142,6 +142,10 @@ def run_mission(
             command = Twist2D()
             next_progress = 0.0
             faults = FaultClock(sim.faults)
+            # the commands' faults sit between the controller (in-process, an external SUT, a ROS bridge) and the
+            # robot; a latency not a whole number of control periods is refused before the first step
+            commands = sim.faults.commands(sim.fault_generators, options.control_rate) if sim.faults.of(
+                "commands") else None
             while not executor.done and sim.t < time_limit:
                 if sim.steps % control_every == 0:
                     executor.tick(sim.t, sim.robot_pose())
@@ -151,6 +155,8 @@ def run_mission(
                     missions.publish(sim.t, edge.event, reason=edge.fault.describe())
                 if sim.steps % control_every == 0:
                     command = controller.step(sim.observation())
+                    if commands is not None:
+                        command = commands.apply(sim.t, command)
                 sim.step(command)
                 if collector.due(sim.t):  # a snapshot costs; build it only when it will be sent
                     collector.step(sim.state(), controller.status.value)

@@ -43,8 +43,12 @@ class WheelOdometry:
         self._left, self._right = left_angle, right_angle
         self._v = self._w = 0.0
 
-    def update(self, left_angle: float, right_angle: float, left_rate: float, right_rate: float) -> None:
-        """Advance by the wheels' rotation since the last update; rates (rad/s) give the current twist."""
+    def update(self, left_angle: float, right_angle: float, left_rate: float, right_rate: float,
+               scale: float = 1.0, yaw_bias: float = 0.0) -> None:
+        """Advance by the wheels' rotation since the last update; rates (rad/s) give the current twist.
+
+        Odometry faults (rei.sim.faults.motion): the wheels' travel and rates times ``scale``, ``yaw_bias``
+        radians added to this update's heading change."""
         dl = self._r * wrap_angle(left_angle - self._left)
         dr = self._r * wrap_angle(right_angle - self._right)
         self._left, self._right = left_angle, right_angle
@@ -52,14 +56,22 @@ class WheelOdometry:
             e = self._rng.standard_normal(2)
             dl += self._noise * math.sqrt(abs(dl)) * float(e[0])
             dr += self._noise * math.sqrt(abs(dr)) * float(e[1])
+        if scale != 1.0:
+            dl, dr, left_rate, right_rate = scale * dl, scale * dr, scale * left_rate, scale * right_rate
         ds = 0.5 * (dl + dr)
-        dyaw = (dr - dl) / self._b
+        dyaw = (dr - dl) / self._b + yaw_bias
         heading = self._yaw + 0.5 * dyaw
         self._x += ds * math.cos(heading)
         self._y += ds * math.sin(heading)
         self._yaw = wrap_angle(self._yaw + dyaw)
         self._v = 0.5 * self._r * (left_rate + right_rate)
         self._w = self._r * (right_rate - left_rate) / self._b
+
+    def shift(self, dx: float, dy: float, dyaw: float) -> None:
+        """Move the pose by an offset (an odometry jump): world axes, radians."""
+        self._x += dx
+        self._y += dy
+        self._yaw = wrap_angle(self._yaw + dyaw)
 
     @property
     def pose(self) -> Pose2D:

@@ -24,7 +24,7 @@ from rei.sim.animator import AnimatedBody, Animator, DriveMode
 from rei.sim.clearance import FootprintClearance
 from rei.sim.contacts import ContactSensor
 from rei.sim.drive import DiffDrive
-from rei.sim.faults import FaultSchedule, LaserFault, LaserFaults, as_schedule, fault_generators
+from rei.sim.faults import FaultSchedule, LaserFault, LaserFaults, MotionFaults, as_schedule, fault_generators
 from rei.sim.lidar import Lidar
 from rei.sim.native_output import quiet_native_output
 from rei.sim.odometry import WheelOdometry
@@ -146,8 +146,12 @@ class Simulation:
         self._lidar = Lidar(client, body, robot_spec.lidar)
         self._clearance = FootprintClearance(robot_spec.size[0], robot_spec.size[1])
         lidar = robot_spec.lidar
+        # every fault's generator, made once (the commands' faults use them in the mission loop)
+        self.fault_generators = fault_generators(self.faults, fault_seed) if self.faults else []
+        motion = self.faults.motion()
+        self._motion = motion if motion else None
         self._fault = (
-            LaserFaults(self.faults, fault_generators(self.faults, fault_seed), range_min=lidar.range_min,
+            LaserFaults(self.faults, self.fault_generators, range_min=lidar.range_min,
                         range_max=lidar.range_max, angle_min=0.0, angle_increment=self._lidar.angle_increment,
                         beams=lidar.beams)
             if self.faults.of("laser")
@@ -214,6 +218,10 @@ class Simulation:
 
     def step(self, cmd: Twist2D) -> None:
         """Advance one physics step with the velocity command ``cmd`` (clamped to the robot's limits)."""
+        motion = self._motion
+        if motion is not None:
+            self._step_motion(cmd, motion)
+            return
         self._drive.command(cmd)
         client = self._client
         p.stepSimulation(physicsClientId=client)
@@ -222,6 +230,30 @@ class Simulation:
             self._robot.body, self._wheels, physicsClientId=client
         )
         self._odometry.update(la, ra, lr, rr)
+        self._contacts.update()
+        self._update_due()
+
+    def _step_motion(self, cmd: Twist2D, motion: MotionFaults) -> None:
+        """:meth:`step` with drive, odometry and pose faults (rei.sim.faults.motion), those active at the step's
+        start: a kidnap moves the body before the step, a jump the odometry after it."""
+        t = self.t
+        fraction, stuck, travel = motion.drive(t)
+        self._drive.command(cmd, fraction, stuck)
+        client = self._client
+        for kidnap in motion.kidnaps(t):
+            (x, y, z), orientation = p.getBasePositionAndOrientation(self._robot.body, physicsClientId=client)
+            yaw = yaw_of_quaternion(*orientation) + math.radians(kidnap.dyaw)
+            p.resetBasePositionAndOrientation(self._robot.body, (x + kidnap.dx, y + kidnap.dy, z),
+                                              p.getQuaternionFromEuler((0.0, 0.0, yaw)), physicsClientId=client)
+        p.stepSimulation(physicsClientId=client)
+        self._steps += 1
+        (la, lr, _, _), (ra, rr, _, _) = p.getJointStates(
+            self._robot.body, self._wheels, physicsClientId=client
+        )
+        scale, bias = motion.odometry(t, self.dt)
+        self._odometry.update(la, ra, lr, rr, scale * travel, bias)
+        for jump in motion.jumps(t):
+            self._odometry.shift(jump.dx, jump.dy, math.radians(jump.dyaw))
         self._contacts.update()
         self._update_due()
 

@@ -4,11 +4,13 @@
 * :mod:`rei.sim.faults.timing`: windows, pulse trains, ramps;
 * :mod:`rei.sim.faults.impulse`: the thesis's Poisson impulse noise and the run-long ``--fault laser:...``;
 * :mod:`rei.sim.faults.laser`: the laser's kinds and what each does to a scan;
+* :mod:`rei.sim.faults.motion`: the odometry's, drive's, commands' and pose's kinds;
 * :mod:`rei.sim.faults.schedule`: the schedule, its seeds, the scan pipeline and the window edges (events);
 * :mod:`rei.sim.faults.spec`: ``--fault`` specs and mission.xml's ``<fault>`` keys.
 """
 
 from rei.sim.faults.impulse import PRESETS, LaserFault, LaserFaultInjector, parse_fault
+from rei.sim.faults.motion import CommandFaults, MotionFaults
 from rei.sim.faults.schedule import (
     EDGES,
     SENSORS,
@@ -22,6 +24,7 @@ from rei.sim.faults.schedule import (
 )
 from rei.sim.faults.spec import (
     KIND_KEYS,
+    SENSOR_KIND_KEYS,
     as_schedule,
     fault_fields,
     fault_from_fields,
@@ -35,6 +38,8 @@ __all__ = [
     "KIND_KEYS",
     "PRESETS",
     "SENSORS",
+    "SENSOR_KIND_KEYS",
+    "CommandFaults",
     "Fault",
     "FaultClock",
     "FaultEdge",
@@ -42,6 +47,7 @@ __all__ = [
     "LaserFault",
     "LaserFaultInjector",
     "LaserFaults",
+    "MotionFaults",
     "Ramp",
     "Timing",
     "as_schedule",

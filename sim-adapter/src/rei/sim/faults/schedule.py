@@ -7,7 +7,7 @@ fault ``k >= 1`` from that seed's child ``k - 1``. A fault draws only on the sca
 
 Events: every window edge of a fault is a mission-topic event ``FAULT_<SENSOR>_<KIND>_BEGIN``/``_END`` (contract/
 vocabulary.json ``faults``), which the default patterns publish as ``SIG_FAULT_...`` signals (cep/patterns/
-faults.vepl). Other sensors and actuators (odometry, drive, commands, pose) add their kinds beside ``laser``.
+faults.vepl). Besides the laser's kinds, the motion's (rei.sim.faults.motion): odometry, drive, commands, pose.
 """
 
 from __future__ import annotations
@@ -18,9 +18,21 @@ from dataclasses import dataclass
 import numpy as np
 
 from rei.sim.faults.laser import LaserEffect, LaserKind
+from rei.sim.faults.motion import (
+    CommandFaults,
+    Drift,
+    Jump,
+    Kidnap,
+    Latency,
+    Loss,
+    MotionFaults,
+    Slip,
+    Stuck,
+)
 from rei.sim.faults.timing import EPS, Timing
 
-SENSORS = ("laser",)
+SENSORS = ("laser", "odometry", "drive", "commands", "pose")
+"""In the order of contract/vocabulary.json's ``faults.kinds``."""
 EDGES = ("BEGIN", "END")
 
 
@@ -34,7 +46,7 @@ class Fault:
     """One fault: what it does (``effect``, a kind of ``sensor``) and when (``timing``)."""
 
     sensor: str
-    effect: LaserKind
+    effect: LaserKind | Drift | Jump | Slip | Stuck | Latency | Loss | Kidnap
     timing: Timing
 
     @property
@@ -63,6 +75,16 @@ class FaultSchedule:
         """The faults of ``sensor`` with their index in the schedule (which picks their seed)."""
         return tuple((i, f) for i, f in enumerate(self.faults) if f.sensor == sensor)
 
+    def commands(self, generators: list[np.random.Generator | None], control_rate: float) -> CommandFaults:
+        """The commands' faults at ``control_rate`` (raises ``ValueError`` for a latency that is not a whole
+        number of its periods), with their generators from :func:`fault_generators`."""
+        return CommandFaults([(f.timing, f.effect, generators[i]) for i, f in self.of("commands")],  # type: ignore[misc]
+                             control_rate)
+
+    def motion(self) -> MotionFaults:
+        """The drive, odometry and pose faults."""
+        return MotionFaults([(f.timing, f.effect) for f in self.faults if f.sensor in ("drive", "odometry", "pose")])
+
 
 def fault_generators(schedule: FaultSchedule, fault_seed: np.random.SeedSequence
                      ) -> list[np.random.Generator | None]:
@@ -81,8 +103,8 @@ class LaserFaults:
     def __init__(self, schedule: FaultSchedule, generators: list[np.random.Generator | None], *,
                  range_min: float, range_max: float, angle_min: float, angle_increment: float,
                  beams: int) -> None:
-        self._effects = [(fault.timing, LaserEffect(fault.effect, generators[i], range_min, range_max, angle_min,
-                                                    angle_increment, beams))
+        self._effects = [(fault.timing, LaserEffect(fault.effect, generators[i],  # type: ignore[arg-type]
+                                                    range_min, range_max, angle_min, angle_increment, beams))
                          for i, fault in schedule.of("laser")]
         self._was_active = [False] * len(self._effects)
         self._last: np.ndarray | None = None

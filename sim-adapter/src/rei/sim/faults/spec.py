@@ -9,7 +9,10 @@
   or a percentage); without any of them a fault acts for the whole run;
 * the run-long impulse noise as before: ``laser:1%``, ``laser:10%,gain=0.8``, ``laser:rate=R,gain=G,width=W``;
 * the thesis's gated presets ``laser:gated-1%`` and ``laser:gated-10%`` (pulses of 1 % and 10 % of a 10 s period,
-  the ``10%`` preset's noise inside them), which take further keys too (``laser:gated-10%,gain=0.8,from=5``).
+  the ``10%`` preset's noise inside them), which take further keys too (``laser:gated-10%,gain=0.8,from=5``);
+* the motion's: ``commands:latency,delay=0.2``; ``commands:loss,probability=0.3``; ``drive:slip,fraction=0.5``;
+  ``drive:stuck,wheel=left``; ``odometry:drift,scale=1.05,bias=2``; ``odometry:jump,dx=0.5,dy=0,dyaw=10``;
+  ``pose:kidnap,dx=1,dy=-0.5,dyaw=90`` (degrees for angles).
 """
 
 from __future__ import annotations
@@ -19,6 +22,7 @@ from collections.abc import Mapping
 
 from rei.sim.faults.impulse import PRESETS, LaserFault
 from rei.sim.faults.laser import Blackout, Freeze, Impulse, LaserKind, Occlusion, RangeNoise
+from rei.sim.faults.motion import WHEELS, Drift, Jump, Kidnap, Latency, Loss, Slip, Stuck
 from rei.sim.faults.schedule import Fault, FaultSchedule
 from rei.sim.faults.timing import Ramp, Timing, parse_ramp
 
@@ -30,6 +34,14 @@ KIND_KEYS: dict[str, tuple[str, ...]] = {
     "occlusion": ("angles", "range"),
     "noise": ("sigma",),
 }
+MOTION_KIND_KEYS: dict[str, dict[str, tuple[str, ...]]] = {
+    "odometry": {"drift": ("scale", "bias"), "jump": ("dx", "dy", "dyaw")},
+    "drive": {"slip": ("fraction",), "stuck": ("wheel",)},
+    "commands": {"latency": ("delay",), "loss": ("probability",)},
+    "pose": {"kidnap": ("dx", "dy", "dyaw")},
+}
+SENSOR_KIND_KEYS: dict[str, dict[str, tuple[str, ...]]] = {"laser": KIND_KEYS, **MOTION_KIND_KEYS}
+"""Every sensor's kinds and their keys (``KIND_KEYS`` is the laser's), in contract/vocabulary.json's order."""
 GATED_PERIOD = 10.0
 """Seconds per period of the thesis's gated presets: a 1 % pulse is 0.1 s, one scan of a 10 Hz lidar."""
 GATED = {"gated-1%": 0.01, "gated-10%": 0.10}
@@ -63,9 +75,12 @@ def parse_faults(spec: str | None) -> FaultSchedule:
 
 def _one(item: str) -> Fault:
     sensor, sep, body = (s.strip() for s in item.strip().partition(":"))
+    if sep and sensor in MOTION_KIND_KEYS:
+        return _motion(sensor, body)
     if sensor != "laser" or not sep:
-        raise ValueError("expected 'laser:KIND,key=value,...' (KIND one of "
-                         f"{', '.join(KIND_KEYS)}), 'laser:<preset>' or 'laser:rate=R,gain=G,width=W'")
+        raise ValueError("expected 'SENSOR:KIND,key=value,...' (SENSOR one of "
+                         f"{', '.join(SENSOR_KIND_KEYS)}; laser KIND one of {', '.join(KIND_KEYS)}), "
+                         "'laser:<preset>' or 'laser:rate=R,gain=G,width=W'")
     parts = [p.strip() for p in body.split(",") if p.strip()]
     if not parts:
         raise ValueError("nothing after 'laser:'")
@@ -101,11 +116,38 @@ def _one(item: str) -> Fault:
     return fault_from_fields("laser", head, values)
 
 
+def _motion(sensor: str, body: str) -> Fault:
+    kinds = MOTION_KIND_KEYS[sensor]
+    head, *parts = [p.strip() for p in body.split(",")]
+    if head not in kinds:
+        raise ValueError(f"unknown {sensor} fault {head!r}: known kinds {', '.join(kinds)}")
+    values: dict[str, str] = {}
+    for part in filter(None, parts):
+        key, eq, value = (s.strip() for s in part.partition("="))
+        if not eq:
+            raise ValueError(f"{part!r} is not key=value")
+        if key in values:
+            raise ValueError(f"{key} given twice")
+        values[key] = value
+    return fault_from_fields(sensor, head, values)
+
+
 def fault_from_fields(sensor: str, kind: str, fields: Mapping[str, str]) -> Fault:
     """A fault from its keys as text (``--fault`` and mission.xml). Raises ``ValueError`` naming the key."""
+    if sensor in MOTION_KIND_KEYS:
+        motion = MOTION_KIND_KEYS[sensor].get(kind)
+        if motion is None:
+            raise ValueError(f"unknown fault {sensor} {kind}: known {sensor} kinds "
+                             f"{', '.join(MOTION_KIND_KEYS[sensor])}")
+        for key in fields:
+            if key not in motion and key not in TIMING_KEYS:
+                allowed = ", ".join(f"{k}=" for k in (*motion, *TIMING_KEYS))
+                raise ValueError(f"{key!r} is not a key of {_a(sensor)} {kind} fault (keys: {allowed})")
+        return Fault(sensor, _motion_effect(sensor, kind, fields), timing_from_fields(fields))
     known = KIND_KEYS.get(kind)
     if sensor != "laser" or known is None:
-        raise ValueError(f"unknown fault {sensor} {kind}: known laser kinds {', '.join(KIND_KEYS)}")
+        raise ValueError(f"unknown fault {sensor} {kind}: known sensors {', '.join(SENSOR_KIND_KEYS)}, laser "
+                         f"kinds {', '.join(KIND_KEYS)}")
     for key in fields:
         if key not in known and key not in TIMING_KEYS:
             allowed = ", ".join(f"{k}=" for k in (*known, *TIMING_KEYS))
@@ -157,10 +199,34 @@ def _effect(kind: str, fields: Mapping[str, str]) -> LaserKind:
     return Impulse(rate, gain, width)
 
 
-def _required(fields: Mapping[str, str], key: str, kind: str) -> float:
+def _motion_effect(sensor: str, kind: str, fields: Mapping[str, str]
+                   ) -> Drift | Jump | Slip | Stuck | Latency | Loss | Kidnap:
+    if kind == "latency":
+        return Latency(_required(fields, "delay", kind, sensor))
+    if kind == "loss":
+        return Loss(_required(fields, "probability", kind, sensor))
+    if kind == "slip":
+        return Slip(_required(fields, "fraction", kind, sensor))
+    if kind == "stuck":
+        if "wheel" not in fields:
+            raise ValueError(f"a drive stuck fault needs wheel= ({' or '.join(WHEELS)})")
+        return Stuck(fields["wheel"])
+    if kind == "drift":
+        if "scale" not in fields and "bias" not in fields:
+            raise ValueError("an odometry drift fault needs scale= or bias= (or both)")
+        return Drift(_number(fields.get("scale", "1"), "scale"), _number(fields.get("bias", "0"), "bias"))
+    offset = {key: _number(fields.get(key, "0"), key) for key in ("dx", "dy", "dyaw")}
+    return Jump(**offset) if kind == "jump" else Kidnap(**offset)
+
+
+def _required(fields: Mapping[str, str], key: str, kind: str, sensor: str = "laser") -> float:
     if key not in fields:
-        raise ValueError(f"a laser {kind} fault needs {key}=")
+        raise ValueError(f"{_a(sensor)} {kind} fault needs {key}=")
     return _number(fields[key], key)
+
+
+def _a(sensor: str) -> str:
+    return ("an " if sensor[0] in "aeiou" else "a ") + sensor
 
 
 def _seconds(fields: Mapping[str, str], key: str, default: float) -> float:
@@ -205,6 +271,18 @@ def fault_fields(fault: Fault) -> dict[str, str]:
         out.update(angles=f"{effect.angle_from!r}..{effect.angle_to!r}", range=repr(effect.range))
     elif isinstance(effect, RangeNoise):
         out.update(sigma=repr(effect.sigma))
+    elif isinstance(effect, Latency):
+        out.update(delay=repr(effect.delay))
+    elif isinstance(effect, Loss):
+        out.update(probability=repr(effect.probability))
+    elif isinstance(effect, Slip):
+        out.update(fraction=repr(effect.fraction))
+    elif isinstance(effect, Stuck):
+        out.update(wheel=effect.wheel)
+    elif isinstance(effect, Drift):
+        out.update(scale=repr(effect.scale), bias=repr(effect.bias))
+    elif isinstance(effect, Jump | Kidnap):
+        out.update(dx=repr(effect.dx), dy=repr(effect.dy), dyaw=repr(effect.dyaw))
     timing = fault.timing
     if not timing.whole_run:
         out["from"] = repr(timing.start)

@@ -29,8 +29,12 @@ public final class MissionEvent extends SessionEvent {
 	 * Java's one copy of {@code faults} in contract/vocabulary.json (checked by test_vocabulary_contract.py). They
 	 * concern no task; the default patterns (faults.vepl) publish each as the signal {@code SIG_} + its name.
 	 */
-	public static final List<String> FAULT_EVENTS = faultEvents("LASER",
-			List.of("IMPULSE", "FREEZE", "BLACKOUT", "OCCLUSION", "NOISE"));
+	public static final List<String> FAULT_EVENTS = concat(concat(concat(concat(
+			faultEvents("LASER", List.of("IMPULSE", "FREEZE", "BLACKOUT", "OCCLUSION", "NOISE")),
+			faultEvents("ODOMETRY", List.of("DRIFT", "JUMP"))),
+			faultEvents("DRIVE", List.of("SLIP", "STUCK"))),
+			faultEvents("COMMANDS", List.of("LATENCY", "LOSS"))),
+			faultEvents("POSE", List.of("KIDNAP")));
 	/** Every event the mission topic carries: {@link #KINDS} then {@link #FAULT_EVENTS}. */
 	public static final List<String> ALL = concat(KINDS, FAULT_EVENTS);
 
