@@ -65,7 +65,7 @@ def test_an_unknown_signal_is_placed_with_the_known_names_and_a_close_one(folder
 
     message = error_of(SPEC.replace("SIG_OBJECT_COLLISION_BEGIN", "SIG_OBJECT_COLISION_BEGIN"), folder)
     assert message.startswith("s.yaml:8:14: unknown signal 'SIG_OBJECT_COLISION_BEGIN' "
-                              "(did you mean SIG_OBJECT_COLLISION_BEGIN?); known: SIG_GEOM_CLOSE_TRANSIT_COLLISION, ")
+                              "(did you mean SIG_OBJECT_COLLISION_BEGIN?); known: "), message
     assert all(name in message for name in KNOWN_SIGNALS)
     assert message.endswith("; a signal of your own VEPL patterns: give their folder as 'patterns'"), message
     assert "did you mean" not in error_of(SPEC.replace("SIG_OBJECT_COLLISION_BEGIN", "BUMP"), folder)
