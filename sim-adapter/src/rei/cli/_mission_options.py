@@ -60,7 +60,10 @@ def check_mission_options(args: argparse.Namespace) -> None:
     sut_options(args)
     try:
         if args.fault:
-            parse_faults(args.fault)
+            from rei.run.mission_run import MissionRunOptions
+
+            # a command latency must be whole control periods at the rate the run will have
+            parse_faults(args.fault).commands([], MissionRunOptions().control_rate)
         create_controller(args.controller)
     except (ValueError, UnknownControllerError) as error:
         raise CommandError(str(error)) from None

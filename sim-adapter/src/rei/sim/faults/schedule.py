@@ -77,9 +77,10 @@ class FaultSchedule:
 
     def commands(self, generators: list[np.random.Generator | None], control_rate: float) -> CommandFaults:
         """The commands' faults at ``control_rate`` (raises ``ValueError`` for a latency that is not a whole
-        number of its periods), with their generators from :func:`fault_generators`."""
-        return CommandFaults([(f.timing, f.effect, generators[i]) for i, f in self.of("commands")],  # type: ignore[misc]
-                             control_rate)
+        number of its periods), with their generators from :func:`fault_generators` (none given: to check the
+        schedule only)."""
+        return CommandFaults([(f.timing, f.effect, generators[i] if generators else None)  # type: ignore[misc]
+                              for i, f in self.of("commands")], control_rate)
 
     def motion(self) -> MotionFaults:
         """The drive, odometry and pose faults."""

@@ -63,6 +63,33 @@ final class Faults {
 			if (f.isSetRange()) {
 				a.put("range", Numbers.format(f.getRange()));
 			}
+			if (f.isSetDelay()) {
+				a.put("delay", Numbers.format(f.getDelay()));
+			}
+			if (f.isSetProbability()) {
+				a.put("probability", Numbers.format(f.getProbability()));
+			}
+			if (f.isSetFraction()) {
+				a.put("fraction", Numbers.format(f.getFraction()));
+			}
+			if (f.isSetWheel()) {
+				a.put("wheel", f.getWheel().getLiteral());
+			}
+			if (f.isSetScale()) {
+				a.put("scale", Numbers.format(f.getScale()));
+			}
+			if (f.isSetBias()) {
+				a.put("bias", Numbers.format(f.getBias()));
+			}
+			if (f.isSetDx()) {
+				a.put("dx", Numbers.format(f.getDx()));
+			}
+			if (f.isSetDy()) {
+				a.put("dy", Numbers.format(f.getDy()));
+			}
+			if (f.isSetDyaw()) {
+				a.put("dyaw", Numbers.format(f.getDyaw()));
+			}
 			out.add(a);
 		}
 		return out;

@@ -7,10 +7,12 @@ package org.rei.dsl.validation;
 import java.util.List;
 
 import org.eclipse.emf.ecore.EAttribute;
+import org.eclipse.emf.ecore.EStructuralFeature;
 import org.eclipse.xtext.validation.Check;
 import org.rei.context.ContextPackage.Literals;
 import org.rei.context.Fault;
 import org.rei.context.FaultKind;
+import org.rei.context.FaultSensor;
 import org.rei.context.GainPoint;
 
 /**
@@ -44,32 +46,73 @@ public class FaultValidator extends ReiCheckBase {
 		}
 	}
 
+	/** The parameters each kind has, in the order they are named in messages. */
+	private static List<EStructuralFeature> own(FaultKind kind) {
+		return switch (kind) {
+		case IMPULSE -> List.of(Literals.FAULT__RATE, Literals.FAULT__WIDTH, Literals.FAULT__OWNED_GAIN);
+		case NOISE -> List.of(Literals.FAULT__SIGMA);
+		case OCCLUSION -> List.of(Literals.FAULT__ANGLE_FROM, Literals.FAULT__RANGE);
+		case DRIFT -> List.of(Literals.FAULT__SCALE, Literals.FAULT__BIAS);
+		case JUMP, KIDNAP -> List.of(Literals.FAULT__DX, Literals.FAULT__DY, Literals.FAULT__DYAW);
+		case SLIP -> List.of(Literals.FAULT__FRACTION);
+		case STUCK -> List.of(Literals.FAULT__WHEEL);
+		case LATENCY -> List.of(Literals.FAULT__DELAY);
+		case LOSS -> List.of(Literals.FAULT__PROBABILITY);
+		default -> List.of();
+		};
+	}
+
+	/** The sensor each kind belongs to (contract/vocabulary.json faults.kinds). */
+	private static FaultSensor sensorOf(FaultKind kind) {
+		return switch (kind) {
+		case DRIFT, JUMP -> FaultSensor.ODOMETRY;
+		case SLIP, STUCK -> FaultSensor.DRIVE;
+		case LATENCY, LOSS -> FaultSensor.COMMANDS;
+		case KIDNAP -> FaultSensor.POSE;
+		default -> FaultSensor.LASER;
+		};
+	}
+
+	private static final List<EAttribute> PARAMETERS = List.of(Literals.FAULT__RATE, Literals.FAULT__WIDTH,
+			Literals.FAULT__SIGMA, Literals.FAULT__ANGLE_FROM, Literals.FAULT__RANGE, Literals.FAULT__DELAY,
+			Literals.FAULT__PROBABILITY, Literals.FAULT__FRACTION, Literals.FAULT__WHEEL, Literals.FAULT__SCALE,
+			Literals.FAULT__BIAS, Literals.FAULT__DX, Literals.FAULT__DY, Literals.FAULT__DYAW);
+
 	@Check
 	public void checkParameters(Fault f) {
 		FaultKind kind = f.getKind();
-		List<EAttribute> own = switch (kind) {
-		case IMPULSE -> List.of(Literals.FAULT__RATE, Literals.FAULT__WIDTH);
-		case NOISE -> List.of(Literals.FAULT__SIGMA);
-		case OCCLUSION -> List.of(Literals.FAULT__ANGLE_FROM, Literals.FAULT__RANGE);
-		default -> List.of();
-		};
-		for (EAttribute a : List.of(Literals.FAULT__RATE, Literals.FAULT__WIDTH, Literals.FAULT__SIGMA,
-				Literals.FAULT__ANGLE_FROM, Literals.FAULT__RANGE)) {
+		String name = f.getSensor().getLiteral() + " " + kind.getLiteral();
+		if (sensorOf(kind) != f.getSensor()) {
+			error("'" + kind.getLiteral() + "' is a fault of the " + sensorOf(kind).getLiteral() + ", not of the "
+					+ f.getSensor().getLiteral(), f, Literals.FAULT__KIND, ReiIssueCodes.FAULT_PARAMETER);
+			return;
+		}
+		List<EStructuralFeature> own = own(kind);
+		for (EAttribute a : PARAMETERS) {
 			if (f.eIsSet(a) && !own.contains(a)) {
-				error("A laser " + kind.getLiteral() + " fault has no '" + keyword(a) + "'" + keysOf(kind), f, a,
+				error(article(name) + " fault has no '" + keyword(a) + "'" + keysOf(own), f, a,
 						ReiIssueCodes.FAULT_PARAMETER);
 			}
 		}
 		if (!f.getOwnedGain().isEmpty() && kind != FaultKind.IMPULSE) {
-			error("A laser " + kind.getLiteral() + " fault has no 'gain'" + keysOf(kind), f, Literals.FAULT__OWNED_GAIN,
-					0, ReiIssueCodes.FAULT_PARAMETER);
+			error(article(name) + " fault has no 'gain'" + keysOf(own), f, Literals.FAULT__OWNED_GAIN, 0,
+					ReiIssueCodes.FAULT_PARAMETER);
 		}
-		if (kind == FaultKind.NOISE && !f.isSetSigma()) {
-			error("A laser noise fault needs 'sigma' (metres)", f, Literals.FAULT__KIND, ReiIssueCodes.FAULT_PARAMETER);
-		}
-		if (kind == FaultKind.OCCLUSION && (!f.isSetAngleFrom() || !f.isSetRange())) {
-			error("A laser occlusion fault needs 'angles FROM to TO' (degrees) and 'range' (metres)", f,
-					Literals.FAULT__KIND, ReiIssueCodes.FAULT_PARAMETER);
+		String needs = switch (kind) {
+		case NOISE -> f.isSetSigma() ? null : "'sigma' (metres)";
+		case OCCLUSION -> f.isSetAngleFrom() && f.isSetRange() ? null
+				: "'angles FROM to TO' (degrees) and 'range' (metres)";
+		case LATENCY -> f.isSetDelay() ? null : "'delay' (seconds)";
+		case LOSS -> f.isSetProbability() ? null : "'probability'";
+		case SLIP -> f.isSetFraction() ? null : "'fraction'";
+		case STUCK -> f.isSetWheel() ? null : "'wheel' (left or right)";
+		case DRIFT -> f.isSetScale() || f.isSetBias() ? null : "'scale' or 'bias' (or both)";
+		case JUMP, KIDNAP -> (f.isSetDx() && f.getDx() != 0) || (f.isSetDy() && f.getDy() != 0)
+				|| (f.isSetDyaw() && f.getDyaw() != 0) ? null : "an offset: 'dx', 'dy' or 'dyaw' other than 0";
+		default -> null;
+		};
+		if (needs != null) {
+			error(article(name) + " fault needs " + needs, f, Literals.FAULT__KIND, ReiIssueCodes.FAULT_PARAMETER);
 		}
 		if (f.isSetRate() && !(f.getRate() >= 0 && f.getRate() <= 1)) {
 			error("The rate is impulses per beam per scan: expected 0 to 1", f, Literals.FAULT__RATE,
@@ -83,6 +126,21 @@ public class FaultValidator extends ReiCheckBase {
 		}
 		if (f.isSetRange() && f.getRange() < 0) {
 			error("The range is a distance: expected 0 m or more", f, Literals.FAULT__RANGE, ReiIssueCodes.OUT_OF_RANGE);
+		}
+		if (f.isSetDelay() && !(f.getDelay() > 0)) {
+			error("The delay must be positive, in seconds (a whole number of control periods)", f,
+					Literals.FAULT__DELAY, ReiIssueCodes.NON_POSITIVE);
+		}
+		if (f.isSetProbability() && !(f.getProbability() > 0 && f.getProbability() <= 1)) {
+			error("The probability that a command is lost: expected more than 0 and at most 1", f,
+					Literals.FAULT__PROBABILITY, ReiIssueCodes.OUT_OF_RANGE);
+		}
+		if (f.isSetFraction() && !(f.getFraction() > 0 && f.getFraction() <= 1)) {
+			error("The fraction of the commanded motion the robot makes: expected more than 0 and at most 1", f,
+					Literals.FAULT__FRACTION, ReiIssueCodes.OUT_OF_RANGE);
+		}
+		if (f.isSetScale() && !(f.getScale() > 0)) {
+			error("The odometry's scale must be positive", f, Literals.FAULT__SCALE, ReiIssueCodes.NON_POSITIVE);
 		}
 	}
 
@@ -110,16 +168,19 @@ public class FaultValidator extends ReiCheckBase {
 		}
 	}
 
-	private static String keyword(EAttribute a) {
-		return a == Literals.FAULT__ANGLE_FROM ? "angles" : a.getName();
+	private static String keyword(EStructuralFeature a) {
+		return a == Literals.FAULT__ANGLE_FROM ? "angles" : a == Literals.FAULT__OWNED_GAIN ? "gain" : a.getName();
 	}
 
-	private static String keysOf(FaultKind kind) {
-		return switch (kind) {
-		case IMPULSE -> " (its parameters: rate, width, gain)";
-		case NOISE -> " (its parameter: sigma)";
-		case OCCLUSION -> " (its parameters: angles, range)";
-		default -> " (it has no parameters besides its times)";
-		};
+	private static String article(String name) {
+		return ("aeiou".indexOf(name.charAt(0)) >= 0 ? "An " : "A ") + name;
+	}
+
+	private static String keysOf(List<EStructuralFeature> own) {
+		if (own.isEmpty()) {
+			return " (it has no parameters besides its times)";
+		}
+		return (own.size() == 1 ? " (its parameter: " : " (its parameters: ")
+				+ String.join(", ", own.stream().map(FaultValidator::keyword).toList()) + ")";
 	}
 }
