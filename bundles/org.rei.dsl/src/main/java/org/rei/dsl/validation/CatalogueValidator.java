@@ -4,10 +4,14 @@
  */
 package org.rei.dsl.validation;
 
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.TreeMap;
 import java.util.regex.Pattern;
 
@@ -24,6 +28,7 @@ import org.rei.catalogue.ObjectType;
 import org.rei.catalogue.RobotType;
 import org.rei.catalogue.Shape;
 import org.rei.catalogue.util.Catalogues;
+import org.rei.catalogue.util.RobotDescriptions;
 import org.rei.context.ContextPackage;
 import org.rei.context.TestCase;
 import org.rei.dsl.catalogue.CatalogueImports;
@@ -101,9 +106,11 @@ public class CatalogueValidator extends ReiCheckBase {
 		if (!(type.eContainer() instanceof Catalogue)) {
 			return;
 		}
-		positive(type, CAT.getObjectType_SizeX(), "x size");
-		positive(type, CAT.getObjectType_SizeY(), "y size");
-		positive(type, CAT.getObjectType_SizeZ(), "height");
+		if (!(type instanceof RobotType robot && robot.getDescription() != null)) { // a description gives the sizes
+			positive(type, CAT.getObjectType_SizeX(), "x size");
+			positive(type, CAT.getObjectType_SizeY(), "y size");
+			positive(type, CAT.getObjectType_SizeZ(), "height");
+		}
 		if (type.getShape() == Shape.CYLINDER && type.getSizeX() > 0 && type.getSizeY() != type.getSizeX()) {
 			error("A cylinder stands on a circle: its x and y sizes are the diameter, expected " + type.getSizeX()
 					+ " twice", type, CAT.getObjectType_SizeY(), ReiIssueCodes.CYLINDER_SIZE);
@@ -151,7 +158,7 @@ public class CatalogueValidator extends ReiCheckBase {
 
 	@Check
 	public void checkRobot(RobotType robot) {
-		if (robot.getSizeZ() > 0 && robot.getSizeZ() < MIN_ROBOT_HEIGHT) {
+		if (robot.getDescription() == null && robot.getSizeZ() > 0 && robot.getSizeZ() < MIN_ROBOT_HEIGHT) {
 			error("A robot's body must be at least " + MIN_ROBOT_HEIGHT + " m high (its chassis sits above the wheels' "
 					+ "ground clearance)", robot, CAT.getObjectType_SizeZ(), ReiIssueCodes.OUT_OF_RANGE);
 		}
@@ -159,6 +166,46 @@ public class CatalogueValidator extends ReiCheckBase {
 		positive(robot, CAT.getRobotType_WheelSeparation(), "distance between the wheels");
 		positive(robot, CAT.getRobotType_MaxLinearVelocity(), "top speed");
 		positive(robot, CAT.getRobotType_MaxAngularVelocity(), "top turn rate");
+	}
+
+	/**
+	 * A robot read from its URDF or xacro description: what Java can check here, the file being there and the
+	 * catalogue entry saying what the description cannot (which link is the lidar). Whether the description reads
+	 * (xacro, the URDF parser, the lidar's link existing) is the Python reader's to say, which {@code rei generate}
+	 * runs and reports at this entry (docs/language.md#robots-from-descriptions).
+	 */
+	@Check
+	public void checkDescription(RobotType robot) {
+		if (robot.getDescription() == null) {
+			if (robot.getLidar() != null && robot.getLidar().getLink() != null) {
+				error("Only a robot read from a description has links: a box robot's lidar is placed by 'height'",
+						robot.getLidar(), CAT.getLidar_Link(), ReiIssueCodes.ROBOT_DESCRIPTION);
+			}
+			return;
+		}
+		Path file = RobotDescriptions.file(robot);
+		if (robot.getDescription().isBlank()) {
+			error("The robot's description names no file: expected a URDF or xacro file's path", robot,
+					CAT.getRobotType_Description(), ReiIssueCodes.ROBOT_DESCRIPTION);
+		} else if (file == null || !Files.isRegularFile(file)) {
+			error("Cannot read the robot's description '" + robot.getDescription() + "': no such file (paths are "
+					+ "relative to this catalogue)", robot, CAT.getRobotType_Description(),
+					ReiIssueCodes.ROBOT_DESCRIPTION);
+		}
+		Set<String> names = new HashSet<>();
+		for (int i = 0; i < robot.getDescriptionArgNames().size(); i++) {
+			if (!names.add(robot.getDescriptionArgNames().get(i))) {
+				error("The xacro argument '" + robot.getDescriptionArgNames().get(i) + "' is given twice", robot,
+						CAT.getRobotType_DescriptionArgNames(), i, ReiIssueCodes.ROBOT_DESCRIPTION);
+			}
+		}
+		if (robot.getLidar() == null || robot.getLidar().getLink() == null) {
+			error("A robot read from a description names its lidar's link: lidar link \"LINK\" (e.g. \"base_scan\")",
+					robot, CAT.getRobotType_Description(), ReiIssueCodes.ROBOT_DESCRIPTION);
+		} else if (!NodeModelUtils.findNodesForFeature(robot.getLidar(), CAT.getLidar_MountHeight()).isEmpty()) {
+			error("The lidar's height comes from its link in the description: leave 'height' out", robot.getLidar(),
+					CAT.getLidar_MountHeight(), ReiIssueCodes.ROBOT_DESCRIPTION);
+		}
 	}
 
 	@Check

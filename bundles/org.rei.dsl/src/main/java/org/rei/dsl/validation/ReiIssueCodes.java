@@ -33,6 +33,7 @@ public interface ReiIssueCodes {
 	String THRESHOLD_ORDER = PREFIX + "thresholdOrder";
 	String CATALOGUE_IMPORT = PREFIX + "catalogueImport";
 	String CATALOGUE_INVALID = PREFIX + "catalogueInvalid";
+	String ROBOT_DESCRIPTION = PREFIX + "robotDescription";
 	String CYLINDER_SIZE = PREFIX + "cylinderSize";
 	String COLOUR = PREFIX + "colour";
 	String OUT_OF_RANGE = PREFIX + "outOfRange";
