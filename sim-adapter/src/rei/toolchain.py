@@ -14,6 +14,7 @@ import re
 import shutil
 import signal
 import subprocess
+import sys
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -30,6 +31,10 @@ JARS: Mapping[str, str] = {
 }
 
 BUILD_HINT = "run ./rei once to build the Java parts"
+
+# The Java generator reads a robot's URDF or xacro description through REI's Python reader (xacro and ROS's URDF
+# parser are Python packages): every JVM started from here inherits this interpreter, the one REI is installed in.
+os.environ.setdefault("REI_PYTHON", sys.executable)
 
 _VERSION_RE = re.compile(r'version "(\d+)(?:\.(\d+))?[^"]*"')
 _RELEASE_RE = re.compile(r'^JAVA_VERSION="(\d+)(?:\.(\d+))?[^"]*"', re.MULTILINE)

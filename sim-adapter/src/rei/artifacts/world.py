@@ -92,16 +92,46 @@ class DriveSpec:
 
 @dataclass(frozen=True, slots=True)
 class LidarSpec:
+    """The planar lidar; ``x``, ``y``, ``yaw`` its place on the robot (a description's lidar link, else the
+    robot's origin) and ``mount_height`` its height above the floor."""
+
     beams: int
     range_min: float
     range_max: float
     rate: float
     mount_height: float
+    x: float = 0.0
+    y: float = 0.0
+    yaw: float = 0.0
+
+
+@dataclass(frozen=True, slots=True)
+class CircleFootprint:
+    """A round robot's outline on the floor, in the robot's frame (its centre need not be the robot's origin)."""
+
+    x: float
+    y: float
+    radius: float
+
+
+@dataclass(frozen=True, slots=True)
+class PolygonFootprint:
+    """A robot's outline on the floor in the robot's frame: a convex polygon, counter-clockwise."""
+
+    points: tuple[tuple[float, float], ...]
+
+
+Footprint = CircleFootprint | PolygonFootprint
 
 
 @dataclass(frozen=True, slots=True)
 class RobotSpec:
-    """The robot is built by the simulator from these parameters; its ``pose`` is on the ground (z = 0)."""
+    """The robot is built by the simulator from these parameters; its ``pose`` is on the ground (z = 0).
+
+    A robot read from a URDF or xacro description (docs/robots.md) also has its ``footprint`` (the collision shapes'
+    outline on the floor, relative to ``pose``), its lidar's ``lidar_pose`` ``(x, y, z, yaw)`` in the robot's frame
+    and the expanded ``description`` in the case folder; ``size`` is then the footprint's bounding box (and the
+    lidar's height). A box robot has none of these: its footprint is the ``size`` rectangle centred on ``pose``."""
 
     name: str
     type: str
@@ -112,6 +142,17 @@ class RobotSpec:
     floor: str | None
     drive: DriveSpec
     lidar: LidarSpec
+    footprint: Footprint | None = None
+    lidar_pose: tuple[float, float, float, float] | None = None
+    description: Path | None = None
+
+    @property
+    def outline(self) -> Footprint:
+        """The footprint, a box robot's as the rectangle of its ``size``."""
+        if self.footprint is not None:
+            return self.footprint
+        hx, hy = self.size[0] / 2, self.size[1] / 2
+        return PolygonFootprint(((-hx, -hy), (hx, -hy), (hx, hy), (-hx, hy)))
 
 
 @dataclass(frozen=True, slots=True)
@@ -179,7 +220,7 @@ def read_world(path: Path | str) -> WorldSpec:
     objects = tuple(_object(o) for o in root.items("objects"))
     _unique(root, "objects", [o.name for o in objects])
     _unique(root, "floors", [f.name for f in floors])
-    robot = _robot(root.child("robot"))
+    robot = _robot(root.child("robot"), path.parent)
     if robot.name in {o.name for o in objects}:
         raise root.error(f"robot name {robot.name!r} is also an object name", "robot.name")
     occupancy = _map(root.child("map"), path.parent) if root.has("map") else None
@@ -293,7 +334,22 @@ def _object(o: Fields) -> ObjectSpec:
     )
 
 
-def _robot(r: Fields) -> RobotSpec:
+def _footprint(f: Fields) -> Footprint:
+    kind = f.text("type")
+    if kind == "circle":
+        radius = f.number("radius", positive=True)
+        return CircleFootprint(f.number("x"), f.number("y"), radius)
+    if kind != "polygon":
+        raise f.error(f"unknown value {kind!r}, expected one of polygon, circle", "type")
+    points = f.value.get("points") if isinstance(f.value, dict) else None
+    if not (isinstance(points, list) and len(points) >= 3 and all(
+            isinstance(p, list) and len(p) == 2 and all(isinstance(c, int | float) and not isinstance(c, bool)
+                                                        for c in p) for p in points)):
+        raise f.error("expected a list of at least 3 [x, y] points", "points")
+    return PolygonFootprint(tuple((float(x), float(y)) for x, y in points))
+
+
+def _robot(r: Fields, folder: Path) -> RobotSpec:
     size = r.vector("size", 3)
     if min(size) <= 0:
         raise r.error(f"all sizes must be > 0, got {list(size)}", "size")
@@ -307,6 +363,11 @@ def _robot(r: Fields) -> RobotSpec:
     range_max = lidar.number("rangeMax", positive=True)
     if range_max <= range_min:
         raise lidar.error(f"must be > rangeMin ({range_min}), got {range_max}", "rangeMax")
+    lidar_pose = _pose4(r, "lidarPose") if r.has("lidarPose") else None
+    if lidar_pose is not None and not math.isclose(lidar_pose[2], lidar.number("mountHeight"), abs_tol=1e-9):
+        raise r.error(f"must be at lidar.mountHeight {lidar.number('mountHeight')} m high, got {lidar_pose[2]}",
+                      "lidarPose")
+    lx, ly, _, lyaw = lidar_pose or (0.0, 0.0, 0.0, 0.0)
     return RobotSpec(
         name=r.text("name"),
         type=r.text("type"),
@@ -327,5 +388,25 @@ def _robot(r: Fields) -> RobotSpec:
             range_max=range_max,
             rate=lidar.number("rate", positive=True),
             mount_height=lidar.number("mountHeight", non_negative=True),
+            x=lx,
+            y=ly,
+            yaw=lyaw,
         ),
+        footprint=_footprint(r.child("footprint")) if r.has("footprint") else None,
+        lidar_pose=lidar_pose,
+        description=_description(r, folder) if r.has("description") else None,
     )
+
+
+def _pose4(r: Fields, key: str) -> tuple[float, float, float, float]:
+    v = r.vector(key, 4)
+    return v[0], v[1], v[2], v[3]
+
+
+def _description(r: Fields, folder: Path) -> Path:
+    """The expanded URDF, a file of the case folder (a case folder is self-contained)."""
+    name = r.text("description")
+    resolved = (folder / name).resolve()
+    if Path(name).is_absolute() or not resolved.is_relative_to(folder.resolve()):
+        raise r.error(f"expected a file of the case folder, got {name!r}", "description")
+    return folder / name

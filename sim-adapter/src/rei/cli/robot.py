@@ -30,6 +30,10 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
                         help="a xacro argument, as on xacro's command line (repeatable); VALUE may be empty")
     parser.add_argument("--lidar", metavar="LINK", help="the lidar's link (e.g. base_scan)")
     parser.add_argument("--json", action="store_true", help="print one JSON object instead of text")
+    parser.add_argument("--for-generator", metavar="URDF_OUT", type=Path,
+                        help="what the generator of world.json reads (lines 'footprint JSON', 'bounds XMIN YMIN XMAX "
+                        "YMAX', 'lidar X Y Z YAW', 'drive SEPARATION RADIUS' or 'drive none'), and the expanded URDF "
+                        "written to URDF_OUT (the simulator's body)")
     parser.set_defaults(handler=run)
 
 
@@ -50,6 +54,8 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         print(json.dumps(robot.to_json(), indent=2))
         return EXIT_OK
+    if args.for_generator is not None:
+        return _for_generator(robot, args.for_generator)
     for warning in robot.warnings:
         print(f"rei: warning: {warning}", file=sys.stderr)
     footprint = robot.footprint
@@ -75,4 +81,23 @@ def run(args: argparse.Namespace) -> int:
               f"{drive.wheel_radius:.4f} m ({drive.left_joint} left, {drive.right_joint} right)")
     for missing in robot.missing:
         print(f"not in the description: {missing}")
+    return EXIT_OK
+
+
+def _for_generator(robot: Any, urdf_out: Path) -> int:
+    """Lines of numbers rather than JSON: the Java generator reads them without a JSON library. ``repr`` keeps
+    every float exact; the footprint is JSON the generator writes into world.json as it is."""
+    if robot.lidar is None:
+        raise CommandError(f"{robot.path}: the lidar's link is not named", exit_code=EXIT_INVALID)
+    try:
+        urdf_out.write_text(robot.urdf, encoding="utf-8")
+    except OSError as error:
+        raise CommandError(f"cannot write {urdf_out}: {error.strerror}", exit_code=EXIT_INVALID) from None
+    lidar, drive = robot.lidar, robot.drive
+    print("footprint " + json.dumps(robot.footprint.to_json(), separators=(", ", ": ")))
+    print("bounds " + " ".join(repr(float(v)) for v in robot.footprint.bounds))
+    print("lidar " + " ".join(repr(float(v)) for v in (lidar.x, lidar.y, lidar.z, lidar.yaw)))
+    print("drive none" if drive is None else f"drive {float(drive.wheel_separation)!r} {float(drive.wheel_radius)!r}")
+    for warning in robot.warnings:
+        print(f"rei: warning: {warning}", file=sys.stderr)
     return EXIT_OK

@@ -192,7 +192,10 @@ public class HeadlessGenerator {
 			String text = node.getRootNode().getText();
 			column = node.getOffset() - text.lastIndexOf('\n', node.getOffset() - 1);
 		}
-		return new Diagnostic(file, line, column, Diagnostic.Severity.ERROR, message, code);
+		// a problem of an imported catalogue's entry (a robot's description) is that file's, at its line
+		org.eclipse.emf.common.util.URI uri = element.eResource() == null ? null : element.eResource().getURI();
+		Path where = uri != null && uri.isFile() ? Path.of(uri.toFileString()) : file;
+		return new Diagnostic(where, line, column, Diagnostic.Severity.ERROR, message, code);
 	}
 
 	private static int orOne(Integer value) {

@@ -22,6 +22,7 @@ import org.eclipse.epsilon.eol.exceptions.EolRuntimeException;
 import org.eclipse.epsilon.eol.execute.context.FrameStack;
 import org.eclipse.epsilon.eol.execute.context.Variable;
 import org.eclipse.epsilon.eol.models.ModelRepository;
+import org.rei.catalogue.RobotType;
 import org.rei.catalogue.util.Catalogues;
 import org.rei.context.ContextFactory;
 import org.rei.context.TestCase;
@@ -41,6 +42,9 @@ public final class ArtifactGenerator {
 	/** The artifacts in the order they are written; each has a template named {@code <artifact>.egl}. */
 	public static final List<String> ARTIFACTS = List.of("world.sdf", "world.json", "mission.xml", "animation.json",
 			"monitor.json");
+
+	/** The expanded URDF of a robot read from a description, in the case folder (world.json's robot.description). */
+	public static final String ROBOT_URDF = "robot.urdf";
 
 	private static final String TEMPLATE_FOLDER = "/org/rei/generator/templates/";
 
@@ -89,7 +93,16 @@ public final class ArtifactGenerator {
 					layout.problems());
 		}
 		ConcreteMapping.Result model = mapping.map(testCase, layout, mapRoom);
-		TemplateSupport support = new TemplateSupport(layout, model, outputDir, mapRoom);
+		RobotDescription description = null;
+		if (model.robot() != null && model.robot().getType() instanceof RobotType type
+				&& type.getDescription() != null) {
+			description = RobotDescription.read(type);
+			// the box a description's robot fits in, for what still reads a size (its footprint is in world.json)
+			model.robot().setSizeX(description.xmax() - description.xmin());
+			model.robot().setSizeY(description.ymax() - description.ymin());
+			model.robot().setSizeZ(description.lidarZ());
+		}
+		TemplateSupport support = new TemplateSupport(layout, model, outputDir, mapRoom, description);
 		try {
 			Files.createDirectories(outputDir);
 		} catch (IOException e) {
@@ -110,6 +123,15 @@ public final class ArtifactGenerator {
 		}
 		if (mapRoom != null) {
 			written.addAll(mapRoom.copyInto(outputDir));
+		}
+		if (description != null) { // the simulator's body: the expanded description, as the case folder's own file
+			Path urdf = outputDir.resolve(ROBOT_URDF);
+			try {
+				Files.writeString(urdf, description.urdf(), StandardCharsets.UTF_8);
+			} catch (IOException e) {
+				throw new GenerationException("cannot write " + urdf, e);
+			}
+			written.add(urdf);
 		}
 		return written;
 	}

@@ -42,9 +42,11 @@ public final class TemplateSupport {
 	private final Map<String, String> meshes = new HashMap<>();
 	private final Path outputDir;
 	private final MapRoom mapRoom;
+	private final RobotDescription description;
 
-	TemplateSupport(FloorLayout layout, ConcreteMapping.Result model, Path outputDir, MapRoom mapRoom)
-			throws GenerationException {
+	TemplateSupport(FloorLayout layout, ConcreteMapping.Result model, Path outputDir, MapRoom mapRoom,
+			RobotDescription description) throws GenerationException {
+		this.description = description;
 		this.layout = layout;
 		this.mapRoom = mapRoom;
 		this.concrete = model.concrete();
@@ -252,6 +254,33 @@ public final class TemplateSupport {
 	/** The body an abstract object became. */
 	public ConcreteObject concrete(PhysicalObject object) {
 		return concrete.get(object);
+	}
+
+	/** What the robot's URDF or xacro description gives, {@code null} for a box robot. */
+	public RobotDescription description() {
+		return description;
+	}
+
+	/** The expanded description's file in the case folder. */
+	public String descriptionFile() {
+		return str(ArtifactGenerator.ROBOT_URDF);
+	}
+
+	/** The wheel radius: the description's wheel joints', else the catalogue entry's (or its default). */
+	public double wheelRadius(ConcreteObject robot) {
+		return description != null && description.wheelRadius() != null ? description.wheelRadius()
+				: drive(robot).getWheelRadius();
+	}
+
+	/** The wheel separation: the description's wheel joints', else the catalogue entry's (or its default). */
+	public double wheelSeparation(ConcreteObject robot) {
+		return description != null && description.wheelSeparation() != null ? description.wheelSeparation()
+				: drive(robot).getWheelSeparation();
+	}
+
+	/** The lidar's height: its link's in a description, else the catalogue entry's. */
+	public double lidarHeight(ConcreteObject robot) {
+		return description != null ? description.lidarZ() : lidar(robot).getMountHeight();
 	}
 
 	/** The robot's lidar: its type's, else the defaults of the catalogue metamodel. */
