@@ -12,6 +12,8 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
+import org.rei.monitor.geometry.Shape;
+
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 
@@ -55,9 +57,31 @@ public final class CaseReader {
 		World.WorldRobot robot = new World.WorldRobot(r.path("name").asText(), r.path("type").asText(),
 				r.path("shape").asText("BOX"), doubles(r.path("size"), 3), doubles(r.path("pose"), 4), text(r, "floor"),
 				r.path("lidar").path("rangeMin").asDouble(0), r.path("lidar").path("rangeMax").asDouble(
-						Double.POSITIVE_INFINITY));
+						Double.POSITIVE_INFINITY), footprint(r.path("footprint")));
 		return new World(text(n, "testcase"), text(n, "environment"), n.path("floorSize").asDouble(1.0), floors,
 				objects, robot);
+	}
+
+	/**
+	 * world.json's robot footprint of a robot read from its description: a convex polygon or a circle in the robot's
+	 * frame (rei.artifacts.world); {@code null} for a box robot.
+	 */
+	static Shape footprint(JsonNode f) {
+		if (f.isMissingNode() || f.isNull()) {
+			return null;
+		}
+		String type = f.path("type").asText();
+		if ("circle".equals(type)) {
+			return Shape.circle(f.path("x").asDouble(), f.path("y").asDouble(), f.path("radius").asDouble());
+		}
+		if (!"polygon".equals(type)) {
+			throw new IllegalArgumentException("world.json robot.footprint.type must be polygon or circle, got " + type);
+		}
+		List<double[]> points = new ArrayList<>();
+		for (JsonNode p : f.path("points")) {
+			points.add(new double[] { p.path(0).asDouble(), p.path(1).asDouble() });
+		}
+		return Shape.polygon(points.toArray(double[][]::new));
 	}
 
 	public static MonitorSpec monitor(JsonNode n) {

@@ -27,8 +27,15 @@ public record World(String testcase, String environment, double floorSize, List<
 		}
 	}
 
-	/** The robot: footprint {@code size}, start pose, lidar range limits. */
+	/** The robot: footprint ({@code footprint} read from its description, else the {@code size} box), start pose,
+	 * lidar range limits. */
 	public record WorldRobot(String name, String type, String shape, double[] size, double[] pose, String floor,
-			double lidarRangeMin, double lidarRangeMax) {
+			double lidarRangeMin, double lidarRangeMax, org.rei.monitor.geometry.Shape footprint) {
+
+		/** A box robot: its footprint is the {@code size} rectangle centred on its pose. */
+		public WorldRobot(String name, String type, String shape, double[] size, double[] pose, String floor,
+				double lidarRangeMin, double lidarRangeMax) {
+			this(name, type, shape, size, pose, floor, lidarRangeMin, lidarRangeMax, null);
+		}
 	}
 }

@@ -10,7 +10,7 @@ import org.locationtech.jts.geom.Geometry;
 import org.locationtech.jts.geom.GeometryFactory;
 
 /**
- * A shape placed at a planar pose: the JTS geometry (polygon of a rectangle, centre point of a circle) and its
+ * A shape placed at a planar pose: the JTS geometry (polygon of a rectangle or polygon, centre point of a circle) and its
  * envelope. Immutable; a moved body gets a new footprint.
  */
 public final class Footprint {
@@ -33,13 +33,43 @@ public final class Footprint {
 		this.yaw = yaw;
 		if (shape.kind() == Shape.Kind.CIRCLE) {
 			// a circle stays exact: its distance is the centre's distance minus the radius (no polygonised buffer)
-			geometry = GEOMETRY.createPoint(new Coordinate(x, y));
+			double c = Math.cos(yaw);
+			double s = Math.sin(yaw);
+			double cx = x + c * shape.centreX() - s * shape.centreY();
+			double cy = y + s * shape.centreX() + c * shape.centreY();
+			geometry = GEOMETRY.createPoint(new Coordinate(cx, cy));
 			double r = shape.radius();
-			envelope = new Envelope(x - r, x + r, y - r, y + r);
+			envelope = new Envelope(cx - r, cx + r, cy - r, cy + r);
+		} else if (shape.kind() == Shape.Kind.POLYGON) {
+			geometry = polygon(shape.points(), x, y, yaw);
+			envelope = geometry.getEnvelopeInternal();
 		} else {
 			geometry = rectangle(shape.sizeX() / 2, shape.sizeY() / 2, x, y, yaw);
 			envelope = geometry.getEnvelopeInternal();
 		}
+	}
+
+	private static Geometry polygon(double[][] points, double x, double y, double yaw) {
+		double c = Math.cos(yaw);
+		double s = Math.sin(yaw);
+		Coordinate[] ring = new Coordinate[points.length + 1];
+		for (int i = 0; i < points.length; i++) {
+			double u = points[i][0];
+			double v = points[i][1];
+			ring[i] = new Coordinate(x + c * u - s * v, y + s * u + c * v);
+		}
+		ring[points.length] = ring[0].copy();
+		return GEOMETRY.createPolygon(ring);
+	}
+
+	/** A circle's centre in the world (a round robot's need not be its origin). */
+	public double circleX() {
+		return geometry.getCoordinate().x;
+	}
+
+	/** A circle's centre in the world. */
+	public double circleY() {
+		return geometry.getCoordinate().y;
 	}
 
 	/** The footprint of {@code shape} at {@code (x, y)} turned by {@code yaw} radians. */

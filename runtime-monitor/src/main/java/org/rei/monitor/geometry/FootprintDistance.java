@@ -16,7 +16,8 @@ public final class FootprintDistance {
 	/** Shortest distance in metres between the two footprints, 0 if they intersect. */
 	public static double between(Footprint a, Footprint b) {
 		if (a.isCircle() && b.isCircle()) {
-			return Math.max(0, Math.hypot(a.x() - b.x(), a.y() - b.y()) - a.shape().radius() - b.shape().radius());
+			return Math.max(0, Math.hypot(a.circleX() - b.circleX(), a.circleY() - b.circleY()) - a.shape().radius()
+					- b.shape().radius());
 		}
 		double d = a.geometry().distance(b.geometry());
 		if (a.isCircle()) {

@@ -74,7 +74,8 @@ public final class Monitor implements AutoCloseable {
 	public Monitor(String runId, World world, MonitorSpec spec, List<DrlSources.Source> rules, SignalPublisher signals,
 			Consumer<String> log, List<QueryEvent> queryEventLog) {
 		this.robotName = world.robot().name();
-		this.robotShape = shape(world.robot().shape(), world.robot().size());
+		this.robotShape = world.robot().footprint() != null ? world.robot().footprint()
+				: shape(world.robot().shape(), world.robot().size());
 		// the thesis's radius pre-filter: only obstacles within this distance of the footprint become facts; wider
 		// than eps_close so the obstacle that just left the close zone is still known when the robot turns FAR
 		this.prefilter = Math.max(2 * spec.epsClose(), 0.5);
