@@ -80,6 +80,9 @@ def test_a_gated_noise_s_values_and_pulse_train_are_written_for_its_kind_only(tm
     ("{fault: laser, kind: blackout, period: [1, 2], duty: [0.1, 1.5]}",
      ("s.yaml:3:58: duty [0.1, 1.5] reaches outside what a laser blackout fault accepts: duty must be in (0, 1] (or "
      "(0 %, 100 %]), got 1.5")),
+    ("{fault: drive, kind: slip, start: [0, 5]}",
+     ("s.yaml:3:13: drive faults are not searched yet (the laser's are): give them in the base case's faults block "
+      "or the run's --fault")),
     ("{fault: \"laser:1%\", start: [0, 5]}",
      ("s.yaml:3:25: 'start' is a key of a fault on a timeline ({fault: laser, kind: [...], start: ...}); a preset's "
      "values are rate, gain, width")),

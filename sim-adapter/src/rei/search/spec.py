@@ -527,6 +527,10 @@ def _fault(name_value: Any, name_node: yaml.Node, props: list[str], entry: dict[
     from rei.sim.faults import parse_fault
 
     if isinstance(name_value, str) and name_value in SENSORS:
+        if name_value != "laser":
+            problems.add(f"{loc.at(name_node)}: {name_value} faults are not searched yet (the laser's are): give "
+                         f"them in the base case's faults block or the run's --fault")
+            return []
         return _scheduled_fault(name_value, name_node, props, entry, item, loc, problems)
     base_fault = None
     if not isinstance(name_value, str):
