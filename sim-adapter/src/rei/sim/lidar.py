@@ -32,12 +32,16 @@ class Lidar:
         self._body = body
         self.spec = spec
         self.angle_increment = 2.0 * math.pi / spec.beams
-        angles = np.arange(spec.beams) * self.angle_increment
+        # beam angles are the lidar's own (its link's yaw in a robot read from a description), from its place
+        angles = np.arange(spec.beams) * self.angle_increment + spec.yaw
         z = spec.mount_height
         self._from = np.zeros((spec.beams, 3))
+        self._from[:, 0] = spec.x
+        self._from[:, 1] = spec.y
         self._from[:, 2] = z
         self._to = np.column_stack(
-            [spec.range_max * np.cos(angles), spec.range_max * np.sin(angles), np.full(spec.beams, z)]
+            [spec.x + spec.range_max * np.cos(angles), spec.y + spec.range_max * np.sin(angles),
+             np.full(spec.beams, z)]
         )
 
     def scan(self) -> np.ndarray:

@@ -2,11 +2,15 @@
 """Builds the robot's URDF from world.json's ``robot`` and loads it into pybullet.
 
 The robot is not part of world.sdf: its dimensions come from the test case, its structure (two driven wheels on
-the footprint's centre line, two frictionless casters) from the template ``robots/diffdrive.urdf``.
+the footprint's centre line, two frictionless casters) from the template ``robots/diffdrive.urdf``. A robot read
+from a URDF description is built the same way around its footprint extruded to the lidar's height, not from the
+description's own links: their meshes are often absent (package:// paths), and the extruded hull is exactly the
+outline the monitor and the metrics judge, so a contact in pybullet is a collision in the monitor (docs/robots.md).
 """
 
 from __future__ import annotations
 
+import math
 import tempfile
 from dataclasses import dataclass
 from importlib import resources
@@ -15,7 +19,7 @@ from string import Template
 
 import pybullet as p
 
-from rei.artifacts.world import RobotSpec
+from rei.artifacts.world import Footprint, PolygonFootprint, RobotSpec
 
 GROUND_CLEARANCE = 0.01
 WHEEL_WIDTH = 0.018
@@ -36,8 +40,37 @@ class RobotBody:
     links: tuple[int, ...]
 
 
+CHASSIS_MESH = "chassis.obj"
+"""The extruded footprint of a robot read from a description, written beside its URDF."""
+CIRCLE_SIDES = 64
+
+
+def footprint_points(footprint: Footprint) -> list[tuple[float, float]]:
+    """The footprint as a convex polygon, counter-clockwise; a circle as a 64-gon whose sides touch it (never
+    inside the true shape, as the reader draws round shapes: docs/robots.md)."""
+    if isinstance(footprint, PolygonFootprint):
+        return list(footprint.points)
+    reach = footprint.radius / math.cos(math.pi / CIRCLE_SIDES)
+    return [(footprint.x + reach * math.cos(2 * math.pi * (i + 0.5) / CIRCLE_SIDES),
+             footprint.y + reach * math.sin(2 * math.pi * (i + 0.5) / CIRCLE_SIDES)) for i in range(CIRCLE_SIDES)]
+
+
+def chassis_obj(points: list[tuple[float, float]], height: float) -> str:
+    """An OBJ prism of ``points`` from ``-height/2`` to ``height/2`` (the chassis link's origin is its middle);
+    pybullet takes a mesh's convex hull as its collision shape, which for a convex footprint is the prism."""
+    n = len(points)
+    lines = [f"v {x!r} {y!r} {z!r}" for z in (-height / 2, height / 2) for x, y in points]
+    lines.append("f " + " ".join(str(i) for i in range(n, 0, -1)))  # bottom, facing down
+    lines.append("f " + " ".join(str(n + i) for i in range(1, n + 1)))  # top, facing up
+    lines += [f"f {i + 1} {(i + 1) % n + 1} {n + (i + 1) % n + 1} {n + i + 1}" for i in range(n)]
+    return "\n".join(lines) + "\n"
+
+
 def render_urdf(spec: RobotSpec) -> str:
-    """The URDF text for ``spec``; masses are split so the whole robot weighs ``spec.mass``."""
+    """The URDF text for ``spec``; masses are split so the whole robot weighs ``spec.mass``. A robot read from a
+    description gets its footprint extruded as its chassis (:data:`CHASSIS_MESH`, see :func:`load_robot`): the
+    body pybullet collides is the outline the monitor and the metrics measure, and the drive stays the template's
+    (two wheels on the origin's axle, as a description's differential drive has them, and two casters)."""
     sx, sy, sz = spec.size
     r = spec.drive.wheel_radius
     if sz <= GROUND_CLEARANCE + 0.01:
@@ -49,18 +82,24 @@ def render_urdf(spec: RobotSpec) -> str:
     footprint_mass = min(0.05, 0.05 * spec.mass)
     chassis_mass = spec.mass - 2 * wheel_mass - 2 * caster_mass - footprint_mass
     chassis_h = sz - GROUND_CLEARANCE
+    if spec.footprint is None:
+        xmin, xmax = -sx / 2, sx / 2
+        chassis_geometry = f'<box size="{float(sx)!r} {float(sy)!r} {float(chassis_h)!r}"/>'
+    else:
+        xs = [x for x, _ in footprint_points(spec.footprint)]
+        xmin, xmax = min(xs), max(xs)
+        chassis_geometry = f'<mesh filename="{CHASSIS_MESH}"/>'
     values = {
         "name": spec.name,
         "footprint_mass": footprint_mass,
         "chassis_mass": chassis_mass,
-        "com_x": -0.05 * sx,
+        "com_x": (xmin + xmax) / 2 - 0.05 * sx,
         "chassis_z": GROUND_CLEARANCE + chassis_h / 2,
         "chassis_h": chassis_h,
         "chassis_ixx": chassis_mass * (sy**2 + chassis_h**2) / 12,
         "chassis_iyy": chassis_mass * (sx**2 + chassis_h**2) / 12,
         "chassis_izz": chassis_mass * (sx**2 + sy**2) / 12,
-        "size_x": sx,
-        "size_y": sy,
+        "chassis_geometry": chassis_geometry,
         "wheel_mass": wheel_mass,
         "wheel_r": r,
         "wheel_w": WHEEL_WIDTH,
@@ -69,7 +108,9 @@ def render_urdf(spec: RobotSpec) -> str:
         "half_track": spec.drive.wheel_separation / 2,
         "caster_mass": caster_mass,
         "caster_r": CASTER_RADIUS,
-        "caster_x": sx / 2 - CASTER_RADIUS - 0.02,
+        # a box robot's casters as they always were (the same floats: its runs record what they recorded before)
+        "caster_rear_x": -(sx / 2 - CASTER_RADIUS - 0.02) if spec.footprint is None else xmin + CASTER_RADIUS + 0.02,
+        "caster_front_x": xmax - CASTER_RADIUS - 0.02,
         "caster_front_z": CASTER_RADIUS + FRONT_CASTER_LIFT,
     }
     template = resources.files("rei.sim").joinpath("robots/diffdrive.urdf").read_text(encoding="utf-8")
@@ -83,6 +124,9 @@ def load_robot(client: int, spec: RobotSpec, wheel_friction: float = 1.0) -> Rob
     with tempfile.TemporaryDirectory(prefix="rei-robot-") as folder:
         urdf = Path(folder) / f"{spec.name}.urdf"
         urdf.write_text(render_urdf(spec), encoding="utf-8")
+        if spec.footprint is not None:
+            (Path(folder) / CHASSIS_MESH).write_text(
+                chassis_obj(footprint_points(spec.footprint), spec.size[2] - GROUND_CLEARANCE), encoding="utf-8")
         x, y, _, yaw = spec.pose
         body = p.loadURDF(
             str(urdf),
