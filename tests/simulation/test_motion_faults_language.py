@@ -79,3 +79,12 @@ def test_a_latency_off_the_control_periods_exits_two_before_anything_runs(run_cl
     kind = run_cli("sim", repo_root / "examples" / "simple_navigation.rei", "-o", tmp_path / "out",
                    "--fault", "drive:skid,fraction=0.5")
     assert kind.returncode == 2 and "unknown drive fault 'skid': known kinds slip, stuck" in kind.stderr
+
+
+def test_a_case_s_latency_off_the_control_periods_is_refused_before_the_run(run_cli, tmp_path: Path) -> None:
+    case = tmp_path / "late.rei"
+    case.write_text(CASE.replace("delay 0.2s", "delay 0.15s"))
+    result = run_cli("sim", case, "-o", tmp_path / "out", "--no-router")
+    assert result.returncode == 2 and not (tmp_path / "out" / "streams").exists()
+    assert ("mission.xml: faults: a command latency of 0.15 s is not a whole number of control periods at 10 Hz "
+            "(periods of 0.1 s)") in result.stderr

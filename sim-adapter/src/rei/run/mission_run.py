@@ -18,10 +18,10 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from rei.artifacts import read_case
+from rei.artifacts import ArtifactError, read_case
 from rei.geometry import Twist2D
 from rei.mission import MissionEvent, MissionExecutor, TaskResult, mission_info
-from rei.sim.faults import FaultClock, fault_fields
+from rei.sim.faults import FaultClock, FaultSchedule, fault_fields
 from rei.sim.people.cost import people_cost
 from rei.sim.simulation import Simulation
 from rei.sut.api import Controller
@@ -111,6 +111,10 @@ def run_mission(
     An external SUT that breaks the run (``SutError``) ends it early: the result carries the error, and everything
     published until then is recorded."""
     case = read_case(case_dir)
+    try:  # the case's command latencies must be whole control periods at this run's rate (--fault's are checked)
+        FaultSchedule(case.mission.faults).commands([], options.control_rate)
+    except ValueError as error:
+        raise ArtifactError(case_dir / "mission.xml", f"faults: {error}") from None
     time_limit = sum(goal.timeout for goal in case.mission.goals) + TIME_LIMIT_MARGIN
     control_every = max(1, round(options.physics_rate / options.control_rate))
     wall_start = time.perf_counter()
