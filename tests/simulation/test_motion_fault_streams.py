@@ -210,3 +210,15 @@ def test_bad_specs_are_refused_naming_what_is_wrong(case: Path, tmp_path: Path, 
     with pytest.raises(ValueError, match=None) as error:
         _run(case, tmp_path / "bad", Blind(still), spec) if "delay" in spec else parse_faults(spec)
     assert message in str(error.value)
+
+
+@pytest.mark.parametrize("spec", [
+    "commands:latency,delay=0.2,from=2,to=5", "commands:loss,probability=0.4,from=1,period=2,pulse=0.5",
+    "drive:slip,fraction=0.5", "drive:stuck,wheel=right,from=3", "odometry:drift,scale=1.2,bias=-2.5,from=1,to=4",
+    "odometry:jump,dx=-0.3,dy=0.2,dyaw=0.0,from=4.5", "pose:kidnap,dx=1.0,dy=0.0,dyaw=90.0,from=3",
+])
+def test_format_fault_writes_what_parse_faults_reads_back(spec: str) -> None:
+    from rei.sim.faults import format_fault
+
+    (fault,) = parse_faults(spec).faults
+    assert parse_faults(format_fault(fault)).faults == (fault,)
