@@ -50,11 +50,12 @@ def quaternion_of_yaw(yaw: float) -> tuple[float, float, float, float]:
 # penetration depth: a search that minimises clearance still has a slope inside a collision.
 
 
-def footprint_gaps(robot: np.ndarray, robot_size: tuple[float, float], obstacles: np.ndarray,
+def footprint_gaps(robot: np.ndarray, robot_size: tuple[float, float] | np.ndarray, obstacles: np.ndarray,
                    circle: np.ndarray) -> np.ndarray:
     """Signed gaps ``(T, N)`` between the robot's rectangle footprint at ``T`` poses and ``N`` obstacles.
 
-    ``robot``: ``(T, 3)`` of ``x, y, yaw``; ``robot_size``: the footprint's full ``size_x, size_y``.
+    ``robot``: ``(T, 3)`` of ``x, y, yaw``; ``robot_size``: the footprint's full ``size_x, size_y``, or for a
+    robot read from its description its outline, an ``(M, 2)`` array (:func:`outline_gaps`).
     ``obstacles``: ``(N, 5)`` of ``x, y, yaw, size_x, size_y`` (a circle's diameter in ``size_x``), or
     ``(T, N, 5)`` for obstacles that move (their place at each robot pose; NaN gives a NaN gap), ``circle``:
     ``(N,)`` booleans. A gap is the footprints' distance when they are apart, and minus the depth
@@ -65,6 +66,8 @@ def footprint_gaps(robot: np.ndarray, robot_size: tuple[float, float], obstacles
     obstacles = np.asarray(obstacles, dtype=float)
     obstacles = obstacles.reshape(1, 5) if obstacles.ndim == 1 else obstacles
     circle = np.asarray(circle, dtype=bool).reshape(-1)
+    if isinstance(robot_size, np.ndarray) and robot_size.ndim == 2:
+        return outline_gaps(robot, robot_size, obstacles, circle)
     hx, hy = robot_size[0] / 2, robot_size[1] / 2
     rx, ry, ryaw = (robot[:, k, None] for k in range(3))  # (T, 1)
     ox, oy, oyaw = obstacles[..., 0], obstacles[..., 1], obstacles[..., 2]  # (N,) or (T, N)
@@ -100,3 +103,54 @@ def _point_in_box(u: np.ndarray, v: np.ndarray, hx: float | np.ndarray, hy: floa
     du, dv = np.abs(u) - hx, np.abs(v) - hy
     outside = np.hypot(np.maximum(du, 0.0), np.maximum(dv, 0.0))
     return np.where((du > 0) | (dv > 0), outside, np.maximum(du, dv))
+
+
+def outline_gaps(robot: np.ndarray, outline: np.ndarray, obstacles: np.ndarray, circle: np.ndarray) -> np.ndarray:
+    """:func:`footprint_gaps` for a robot whose footprint is a convex polygon ``outline`` ``(M, 2)`` in its own
+    frame, counter-clockwise (world.json's footprint of a robot read from its description; a round robot's circle
+    as a polygon around it), placed and turned about the robot's origin as the monitor places it."""
+    outline = np.asarray(outline, dtype=float)
+    rx, ry, ryaw = (robot[:, k, None, None] for k in range(3))  # (T, 1, 1)
+    rc, rs = np.cos(ryaw), np.sin(ryaw)
+    vx = rx + rc * outline[:, 0] - rs * outline[:, 1]  # (T, 1, M): the outline in the world
+    vy = ry + rs * outline[:, 0] + rc * outline[:, 1]
+    ex, ey = np.roll(vx, -1, axis=-1) - vx, np.roll(vy, -1, axis=-1) - vy  # edges i -> i + 1
+    length = np.hypot(ex, ey)
+    nx, ny = ey / length, -ex / length  # outward normals of a counter-clockwise polygon
+    ox, oy, oyaw = (obstacles[..., k, None] for k in range(3))  # (N, 1) or (T, N, 1)
+    ohx, ohy = obstacles[..., 3, None] / 2, obstacles[..., 4, None] / 2
+
+    def to_outline(px: np.ndarray, py: np.ndarray) -> np.ndarray:
+        """Signed distance of points ``(..., K)`` to the outline ``(..., K)`` -> ``(...)``: < 0 inside."""
+        px, py = px[..., None], py[..., None]  # (..., K, 1) against the edges (..., 1, M)
+        a_x, a_y, e_x, e_y = vx[..., None, :], vy[..., None, :], ex[..., None, :], ey[..., None, :]
+        side = ((px - a_x) * nx[..., None, :] + (py - a_y) * ny[..., None, :]).max(axis=-1)
+        t = np.clip(((px - a_x) * e_x + (py - a_y) * e_y) / (e_x * e_x + e_y * e_y), 0.0, 1.0)
+        edge = np.hypot(px - a_x - t * e_x, py - a_y - t * e_y).min(axis=-1)
+        return np.where(side > 0, edge, side)
+
+    circles = to_outline(ox, oy)[..., 0] - ohx[..., 0]
+    oc, os_ = np.cos(oyaw), np.sin(oyaw)
+    # separating axes: the outline's edge normals and the obstacle's two axes; apart on one -> the least
+    # vertex-to-shape distance either way, else minus the least overlap
+    overlap = np.full(np.broadcast_shapes(rx.shape, ox.shape)[:-1], np.inf)
+    axes = [(nx[..., m], ny[..., m]) for m in range(outline.shape[0])] + [(oc[..., 0], os_[..., 0]),
+                                                                          (-os_[..., 0], oc[..., 0])]
+    for ax, ay in axes:
+        ax, ay = ax[..., None], ay[..., None]
+        robot_side = vx * ax + vy * ay
+        centre = ox * ax + oy * ay
+        reach = ohx * np.abs(ax * oc + ay * os_) + ohy * np.abs(-ax * os_ + ay * oc)
+        # the least push that separates them along this axis (negative: apart along it)
+        push = np.minimum(robot_side.max(axis=-1, keepdims=True) - (centre - reach),
+                          centre + reach - robot_side.min(axis=-1, keepdims=True))
+        overlap = np.minimum(overlap, push[..., 0])
+    px, py = vx - ox, vy - oy  # the outline's vertices in each obstacle's frame
+    apart = _point_in_box(oc * px + os_ * py, -os_ * px + oc * py, ohx, ohy).min(axis=-1)
+    corners = [(ox + oc * sx * ohx - os_ * sy * ohy, oy + os_ * sx * ohx + oc * sy * ohy)
+               for sx, sy in ((1, 1), (-1, 1), (-1, -1), (1, -1))]
+    cx = np.concatenate(np.broadcast_arrays(*[c[0] for c in corners]), axis=-1)
+    cy = np.concatenate(np.broadcast_arrays(*[c[1] for c in corners]), axis=-1)
+    apart = np.minimum(apart, to_outline(cx, cy).min(axis=-1))
+    rectangles = np.where(overlap < 0, apart, -overlap)
+    return np.where(circle, circles, rectangles)

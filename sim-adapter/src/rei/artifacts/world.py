@@ -123,6 +123,18 @@ class PolygonFootprint:
 
 Footprint = CircleFootprint | PolygonFootprint
 
+CIRCLE_SIDES = 64
+
+
+def footprint_polygon(footprint: Footprint) -> tuple[tuple[float, float], ...]:
+    """The footprint as a convex polygon, counter-clockwise; a circle as a 64-gon whose sides touch it (never
+    inside the true shape, as the description reader draws round shapes: docs/robots.md)."""
+    if isinstance(footprint, PolygonFootprint):
+        return footprint.points
+    reach = footprint.radius / math.cos(math.pi / CIRCLE_SIDES)
+    return tuple((footprint.x + reach * math.cos(2 * math.pi * (i + 0.5) / CIRCLE_SIDES),
+                  footprint.y + reach * math.sin(2 * math.pi * (i + 0.5) / CIRCLE_SIDES)) for i in range(CIRCLE_SIDES))
+
 
 @dataclass(frozen=True, slots=True)
 class RobotSpec:

@@ -10,7 +10,6 @@ outline the monitor and the metrics judge, so a contact in pybullet is a collisi
 
 from __future__ import annotations
 
-import math
 import tempfile
 from dataclasses import dataclass
 from importlib import resources
@@ -19,7 +18,7 @@ from string import Template
 
 import pybullet as p
 
-from rei.artifacts.world import Footprint, PolygonFootprint, RobotSpec
+from rei.artifacts.world import RobotSpec, footprint_polygon
 
 GROUND_CLEARANCE = 0.01
 WHEEL_WIDTH = 0.018
@@ -42,17 +41,6 @@ class RobotBody:
 
 CHASSIS_MESH = "chassis.obj"
 """The extruded footprint of a robot read from a description, written beside its URDF."""
-CIRCLE_SIDES = 64
-
-
-def footprint_points(footprint: Footprint) -> list[tuple[float, float]]:
-    """The footprint as a convex polygon, counter-clockwise; a circle as a 64-gon whose sides touch it (never
-    inside the true shape, as the reader draws round shapes: docs/robots.md)."""
-    if isinstance(footprint, PolygonFootprint):
-        return list(footprint.points)
-    reach = footprint.radius / math.cos(math.pi / CIRCLE_SIDES)
-    return [(footprint.x + reach * math.cos(2 * math.pi * (i + 0.5) / CIRCLE_SIDES),
-             footprint.y + reach * math.sin(2 * math.pi * (i + 0.5) / CIRCLE_SIDES)) for i in range(CIRCLE_SIDES)]
 
 
 def chassis_obj(points: list[tuple[float, float]], height: float) -> str:
@@ -86,7 +74,7 @@ def render_urdf(spec: RobotSpec) -> str:
         xmin, xmax = -sx / 2, sx / 2
         chassis_geometry = f'<box size="{float(sx)!r} {float(sy)!r} {float(chassis_h)!r}"/>'
     else:
-        xs = [x for x, _ in footprint_points(spec.footprint)]
+        xs = [x for x, _ in footprint_polygon(spec.footprint)]
         xmin, xmax = min(xs), max(xs)
         chassis_geometry = f'<mesh filename="{CHASSIS_MESH}"/>'
     values = {
@@ -126,7 +114,7 @@ def load_robot(client: int, spec: RobotSpec, wheel_friction: float = 1.0) -> Rob
         urdf.write_text(render_urdf(spec), encoding="utf-8")
         if spec.footprint is not None:
             (Path(folder) / CHASSIS_MESH).write_text(
-                chassis_obj(footprint_points(spec.footprint), spec.size[2] - GROUND_CLEARANCE), encoding="utf-8")
+                chassis_obj(list(footprint_polygon(spec.footprint)), spec.size[2] - GROUND_CLEARANCE), encoding="utf-8")
         x, y, _, yaw = spec.pose
         body = p.loadURDF(
             str(urdf),

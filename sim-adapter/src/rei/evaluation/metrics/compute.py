@@ -31,6 +31,7 @@ from rei.artifacts import (
     read_world,
 )
 from rei.artifacts.case import case_of_run
+from rei.artifacts.world import footprint_polygon
 from rei.evaluation.metrics.definitions import NAMES
 from rei.evaluation.metrics.encounter import Encounter, encounters, footprints_of
 from rei.evaluation.metrics.social import (
@@ -117,10 +118,10 @@ def compute_metrics(run_dir: Path, case_dir: Path | None = None) -> dict[str, An
 def measure(run_dir: Path, case_dir: Path | None = None) -> Measured:
     """:func:`compute_metrics`, with notes on what it had to leave out."""
     run = _read_run(run_dir, case_dir)
-    s, spec, robot_size = run.states, run.spec, run.robot_size
-    statics, static_gaps = _static_gaps(run.statics, s.pose, robot_size,
+    s, spec, robot_shape = run.states, run.spec, run.robot_shape
+    statics, static_gaps = _static_gaps(run.statics, s.pose, robot_shape,
                                         spec.close_threshold if spec is not None else 0.0)
-    moving_gaps = _gaps(s.pose, robot_size, _moving_boxes(s.moving, run.moving.boxes), run.moving.circle)
+    moving_gaps = _gaps(s.pose, robot_shape, _moving_boxes(s.moving, run.moving.boxes), run.moving.circle)
     out: dict[str, Any] = dict.fromkeys(NAMES)
     out.update(_goal_metrics(run.run_dir, run.case_dir, run.world, run.missions, s, run.t0, run.t1))
     out["path_length"] = _path_length(s.pose)
@@ -180,6 +181,12 @@ class _Run:
     @property
     def robot_size(self) -> tuple[float, float]:
         return self.world.robot.size[0], self.world.robot.size[1]
+
+    @property
+    def robot_shape(self) -> tuple[float, float] | np.ndarray:
+        """What the clearances measure, as the monitor: a box robot's size, a described robot's outline (M, 2)."""
+        footprint = self.world.robot.footprint
+        return self.robot_size if footprint is None else np.array(footprint_polygon(footprint))
 
 
 def _read_run(run_dir: Path, case_dir: Path | None) -> _Run:
@@ -407,7 +414,7 @@ def _path_length(pose: np.ndarray) -> float:
     return float(np.hypot(np.diff(pose[:, 0]), np.diff(pose[:, 1])).sum())
 
 
-def _static_gaps(statics: _Obstacles, pose: np.ndarray, robot_size: tuple[float, float],
+def _static_gaps(statics: _Obstacles, pose: np.ndarray, robot_size: tuple[float, float] | np.ndarray,
                  close: float) -> tuple[_Obstacles, np.ndarray]:
     """The gaps to the static obstacles that can matter to the run, and those obstacles: for each sample, its
     nearest one and every one within the close threshold (a contact included) get their gap; any other is +inf,
@@ -421,7 +428,8 @@ def _static_gaps(statics: _Obstacles, pose: np.ndarray, robot_size: tuple[float,
         return statics, _gaps(pose, robot_size, statics.boxes, statics.circle)
     centres = statics.boxes[:, :2]
     radii = np.where(statics.circle, statics.boxes[:, 3] / 2, np.hypot(statics.boxes[:, 3], statics.boxes[:, 4]) / 2)
-    robot_radius = math.hypot(*robot_size) / 2
+    robot_radius = (math.hypot(*robot_size) / 2 if not isinstance(robot_size, np.ndarray)
+                    else float(np.hypot(*robot_size.T).max()))  # an outline's reach from the robot's origin
     blocks = []
     for a in range(0, len(pose), _NEAR_BLOCK):
         xy = pose[a:a + _NEAR_BLOCK, :2]
@@ -444,7 +452,8 @@ def _static_gaps(statics: _Obstacles, pose: np.ndarray, robot_size: tuple[float,
     return kept, gaps
 
 
-def _gaps(pose: np.ndarray, robot_size: tuple[float, float], boxes: np.ndarray, circle: np.ndarray) -> np.ndarray:
+def _gaps(pose: np.ndarray, robot_size: tuple[float, float] | np.ndarray, boxes: np.ndarray,
+          circle: np.ndarray) -> np.ndarray:
     n = boxes.shape[-2] if boxes.ndim >= 2 else 0
     out = np.empty((len(pose), n))
     if n == 0:
