@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from rei.artifacts.world import PolygonFootprint, read_world
+from rei.artifacts.world import CircleFootprint, PolygonFootprint, read_world
 from rei.wamp.recording import read_recording
 
 REPO = Path(__file__).resolve().parents[2]
@@ -153,3 +153,24 @@ def test_driving_the_burger_into_a_table_signals_when_its_outline_gets_close(run
     outline = np.array([[-hx, -hy], [hx, -hy], [hx, hy], [-hx, hy]])
     boxed = next(t for t, m in zip(times, states, strict=True) if gap(m) <= 0.25)
     assert signalled["SIG_GEOM_FAR_TRANSIT_CLOSE"] - boxed > period + 1e-9, (boxed, signalled)
+
+
+def test_the_reference_navigation_completes_the_simple_navigation_example_with_the_burger(run_cli,
+                                                                                          tmp_path: Path) -> None:
+    catalogue(tmp_path)
+    text = (REPO / "examples" / "simple_navigation.rei").read_text()
+    path = tmp_path / "simple_navigation.rei"
+    path.write_text('import "robots.rei"\n' + text.replace("robot tb3 : Waffle", "robot tb3 : Burger"))
+    result = run_cli("sim", path, "-o", tmp_path / "out", "--no-router")
+    assert result.returncode == 0 and "mission succeeded" in result.stdout, result.stdout + result.stderr
+    assert read_world(tmp_path / "out" / "case" / "world.json").robot.footprint is not None
+
+
+def test_the_round_robot_example_is_a_circle_and_completes_its_mission(run_cli, tmp_path: Path) -> None:
+    example = REPO / "examples" / "robots" / "round_bot.rei"
+    result = run_cli("sim", example, "-o", tmp_path / "out", "--no-router")
+    assert result.returncode == 0 and "mission succeeded" in result.stdout, result.stdout + result.stderr
+    robot = read_world(tmp_path / "out" / "case" / "world.json").robot
+    assert robot.footprint == CircleFootprint(0.0, 0.0, 0.17)  # round_bot.urdf's body; its wheels are inside it
+    assert robot.lidar_pose == pytest.approx((0.05, 0.0, 0.18, 0.0))
+    assert (robot.drive.wheel_separation, robot.drive.wheel_radius) == pytest.approx((0.23, 0.035))
