@@ -174,3 +174,29 @@ def test_the_round_robot_example_is_a_circle_and_completes_its_mission(run_cli, 
     assert robot.footprint == CircleFootprint(0.0, 0.0, 0.17)  # round_bot.urdf's body; its wheels are inside it
     assert robot.lidar_pose == pytest.approx((0.05, 0.0, 0.18, 0.0))
     assert (robot.drive.wheel_separation, robot.drive.wheel_radius) == pytest.approx((0.23, 0.035))
+
+
+BAD = {
+    "xml": ('<robot name="r">\n  <link name="a">\n</robot>\n', "XML does not parse"),
+    "xacro": ('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n  <link name="${width}"/>\n</robot>\n',
+              "xacro error: name 'width' is not defined"),
+    "no-collision": (('<robot name="r">\n  <link name="base_footprint"/>\n  <link name="base_scan"/>\n'
+                      '  <joint name="j" type="fixed"><parent link="base_footprint"/><child link="base_scan"/></joint>\n'
+                      '</robot>\n'), "the robot has no collision shape"),
+}
+
+
+@pytest.mark.parametrize("kind", sorted(BAD))
+def test_a_bad_description_is_an_error_at_the_catalogue_entry_and_nothing_is_generated(run_cli, tmp_path: Path,
+                                                                                      kind: str) -> None:
+    text, message = BAD[kind]
+    (tmp_path / "robot.urdf").write_text(text)
+    path = case(tmp_path)
+    robots = tmp_path / "robots.rei"
+    robots.write_text(robots.read_text().replace(str(BURGER), "robot.urdf"))
+    assert run_cli("validate", path).returncode == 0  # the entry itself is sound: the file is there
+    result = run_cli("generate", path, "-o", tmp_path / "out", "--quiet")
+    assert result.returncode == 1
+    assert f"{robots}:2:28: error: The robot's description does not read: " in result.stderr, result.stderr
+    assert message in result.stderr, result.stderr
+    assert not (tmp_path / "out").exists() or not any((tmp_path / "out").iterdir())
