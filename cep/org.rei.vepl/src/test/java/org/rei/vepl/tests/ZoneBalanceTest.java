@@ -58,10 +58,20 @@ class ZoneBalanceTest {
 					assertAlternate(namesOf(cep, "r" + robot), "LASER");
 				}
 				assertEquals(expected.get(0).size() + expected.get(1).size(), cep.signals().size());
-				assertEquals(expected.get(0), namesOf(cep, "r0"), "trace " + trace);
-				assertEquals(expected.get(1), namesOf(cep, "r1"), "trace " + trace);
+				// each family's signals in the order of its changes; between the families, changes at the same time
+				// come in the rule engine's order, which depends on every rule loaded (the fault patterns changed it)
+				for (int robot = 0; robot < 2; robot++) {
+					for (String family : new String[] { "GEOM", "LASER" }) {
+						assertEquals(ofFamily(expected.get(robot), family), ofFamily(namesOf(cep, "r" + robot), family),
+								"trace " + trace + ", r" + robot + ", " + family);
+					}
+				}
 			}
 		}
+	}
+
+	private static List<String> ofFamily(List<String> signals, String family) {
+		return signals.stream().filter(s -> s.startsWith("SIG_" + family + "_")).toList();
 	}
 
 	private static List<String> namesOf(Cep cep, String robot) {
