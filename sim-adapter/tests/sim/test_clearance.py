@@ -8,7 +8,7 @@ import math
 import numpy as np
 import pytest
 
-from rei.sim.clearance import FootprintClearance
+from rei.sim.clearance import FootprintClearance, OutlineClearance
 
 WAFFLE = (0.281, 0.306)
 BEAMS = 360
@@ -63,3 +63,21 @@ def test_a_scan_layout_other_than_rei_lidar_is_measured_with_its_own_angles() ->
     assert FootprintClearance(*WAFFLE)(ranges, -math.pi / 2, math.pi / 2) == pytest.approx(0.5 - WAFFLE[1] / 2)
     with pytest.raises(ValueError, match="positive size"):
         FootprintClearance(0.0, 0.3)
+
+
+def test_a_described_robots_outline_is_measured_from_its_lidar() -> None:
+    rng = np.random.default_rng(41)
+    ranges = rng.uniform(0.05, 2.0, 360)
+    ranges[rng.uniform(size=360) < 0.2] = math.inf
+    increment = 2 * math.pi / 360
+    rectangle = np.array([[-0.15, -0.1], [0.15, -0.1], [0.15, 0.1], [-0.15, 0.1]])
+    # a rectangle centred on the sensor measures what the rectangle footprint does
+    assert OutlineClearance(rectangle)(ranges, 0.0, increment) == pytest.approx(
+        FootprintClearance(0.3, 0.2)(ranges, 0.0, increment))
+    # a Burger's base seen from its lidar 0.032 m behind the robot's origin (lidar frame): 0.070 to its front
+    base = np.array([[-0.102, -0.07], [0.038, -0.07], [0.038, 0.07], [-0.102, 0.07]]) + [0.032, 0.0]
+    ahead = np.full(360, math.inf)
+    ahead[0] = 0.5
+    assert OutlineClearance(base)(ahead, 0.0, increment) == pytest.approx(0.5 - 0.07)
+    ahead[0] = 0.05  # a hit inside the outline
+    assert OutlineClearance(base)(ahead, 0.0, increment) == 0.0

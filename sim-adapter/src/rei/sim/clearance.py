@@ -15,6 +15,8 @@ import math
 
 import numpy as np
 
+from rei.artifacts.world import RobotSpec, footprint_polygon
+
 
 class FootprintClearance:
     """Per-beam distances to a ``size_x`` x ``size_y`` footprint centred on the sensor, for one beam layout.
@@ -47,3 +49,49 @@ class FootprintClearance:
         dx = np.maximum(np.abs(r * self._cos[hit]) - self._half_x, 0.0)
         dy = np.maximum(np.abs(r * self._sin[hit]) - self._half_y, 0.0)
         return float(np.sqrt(dx * dx + dy * dy).min())
+
+
+class OutlineClearance(FootprintClearance):
+    """Per-beam distances to a robot's outline (world.json's footprint of a robot read from its description): the
+    hit points are measured to the convex polygon itself, given in the lidar's frame (the lidar need not be at its
+    centre)."""
+
+    __slots__ = ("_edges", "_normals", "_points")
+
+    def __init__(self, points: np.ndarray) -> None:
+        points = np.asarray(points, dtype=float)
+        xmin, ymin = points.min(axis=0)
+        xmax, ymax = points.max(axis=0)
+        super().__init__(xmax - xmin, ymax - ymin)
+        self._points = points
+        self._edges = np.roll(points, -1, axis=0) - points
+        length = np.hypot(self._edges[:, 0], self._edges[:, 1])
+        self._normals = np.column_stack([self._edges[:, 1], -self._edges[:, 0]]) / length[:, None]  # outward, CCW
+
+    def __call__(self, ranges: np.ndarray, angle_min: float, angle_increment: float) -> float:
+        n = len(ranges)
+        if (n, angle_min, angle_increment) != (self._beams, self._angle_min, self._angle_increment):
+            angles = angle_min + np.arange(n) * angle_increment
+            self._cos, self._sin = np.cos(angles), np.sin(angles)
+            self._beams, self._angle_min, self._angle_increment = n, angle_min, angle_increment
+        hit = np.isfinite(ranges)
+        if not hit.any():
+            return math.inf
+        r = ranges[hit]
+        px, py = (r * self._cos[hit])[:, None], (r * self._sin[hit])[:, None]  # (K, 1) against the edges (M,)
+        ax, ay = self._points[:, 0], self._points[:, 1]
+        inside = ((px - ax) * self._normals[:, 0] + (py - ay) * self._normals[:, 1]).max(axis=1) <= 0
+        ex, ey = self._edges[:, 0], self._edges[:, 1]
+        t = np.clip(((px - ax) * ex + (py - ay) * ey) / (ex * ex + ey * ey), 0.0, 1.0)
+        edge = np.hypot(px - ax - t * ex, py - ay - t * ey).min(axis=1)
+        return float(np.where(inside, 0.0, edge).min())
+
+
+def clearance_for(spec: RobotSpec) -> FootprintClearance:
+    """The laser's clearance for the robot: a box robot's rectangle centred on its sensor, as always; a described
+    robot's outline seen from its lidar's place and yaw."""
+    if spec.footprint is None:
+        return FootprintClearance(spec.size[0], spec.size[1])
+    points = np.array(footprint_polygon(spec.footprint)) - [spec.lidar.x, spec.lidar.y]
+    c, s = math.cos(spec.lidar.yaw), math.sin(spec.lidar.yaw)
+    return OutlineClearance(points @ np.array([[c, -s], [s, c]]))  # into the lidar's frame: turned by -yaw

@@ -21,7 +21,7 @@ from rei.artifacts.case import Case, read_case
 from rei.artifacts.world import Category
 from rei.geometry import Pose2D, Twist2D, yaw_of_quaternion
 from rei.sim.animator import AnimatedBody, Animator, DriveMode
-from rei.sim.clearance import FootprintClearance
+from rei.sim.clearance import clearance_for
 from rei.sim.contacts import ContactSensor
 from rei.sim.drive import DiffDrive
 from rei.sim.faults import FaultSchedule, LaserFault, LaserFaults, MotionFaults, as_schedule, fault_generators
@@ -144,7 +144,7 @@ class Simulation:
             rng=np.random.default_rng(odom_seed) if odom_noise > 0 else None,
         )
         self._lidar = Lidar(client, body, robot_spec.lidar)
-        self._clearance = FootprintClearance(robot_spec.size[0], robot_spec.size[1])
+        self._clearance = clearance_for(robot_spec)
         lidar = robot_spec.lidar
         # every fault's generator, made once (the commands' faults use them in the mission loop)
         self.fault_generators = fault_generators(self.faults, fault_seed) if self.faults else []
