@@ -19,12 +19,14 @@ import pytest
 
 from rei.artifacts import ArtifactError
 from rei.artifacts.monitor import read_monitor
+from rei.artifacts.world import FOOTPRINT_TYPES
 from rei.edit import TOKEN_HEADER, engine
 from rei.edit.server import ROUTES
 from rei.evaluation import DEFAULT_UTILITIES, load_declared_transitions, load_declared_utilities
 from rei.evaluation.signals import DEFAULT_TRANSITIONS, SIGNAL_RECORD, Signal
 from rei.maps import MAX_BLOCKS, MAX_CELLS
 from rei.mission.executor import FAULT_EVENTS, FAULT_KINDS, MissionEventKind
+from rei.robots import Circle, Polygon
 from rei.run import jvm
 from rei.sut.external import protocol
 from rei.sut.external.process import Connection
@@ -289,3 +291,13 @@ def test_the_monitor_page_describes_every_class_and_feature_of_the_runtime_model
         assert name in rows, f"docs/monitor.md has no row for {name}"
         for feature in classifier.findall("eStructuralFeatures"):
             assert f"`{feature.get('name')}`" in rows[name], f"{name}.{feature.get('name')} is not on its row"
+
+
+def test_the_footprint_types_are_one_fact_of_the_reader_and_both_world_readers(contract: dict,
+                                                                                java_facts: dict) -> None:
+    """A robot's footprint in world.json: written by the description reader, read by Python and the monitor."""
+    types = contract["footprints"]["types"]
+    assert list(FOOTPRINT_TYPES) == types
+    assert java_facts["footprint_types"] == types
+    written = [Polygon(((0.0, 0.0), (1.0, 0.0), (0.0, 1.0))).to_json()["type"], Circle(0.0, 0.0, 1.0).to_json()["type"]]
+    assert written == types

@@ -11,6 +11,7 @@ import org.rei.dsl.edit.EditOperation;
 import org.rei.dsl.edit.server.Protocol;
 import org.rei.maps.MapBlocks;
 import org.rei.maps.OccupancyMap;
+import org.rei.monitor.config.CaseReader;
 import org.rei.monitor.config.MonitorSpec;
 import org.rei.monitor.signals.Signal;
 import org.rei.monitor.wamp.LiveMonitor;
@@ -60,6 +61,7 @@ public final class JavaVocabulary {
 				.map(c -> c.getName()).toList());
 		facts.put("map_max_cells", OccupancyMap.MAX_CELLS); // the room editor's jar holds the language and its maps
 		facts.put("map_max_blocks", MapBlocks.MAX_BLOCKS);
+		facts.put("footprint_types", CaseReader.FOOTPRINT_TYPES);
 		System.out.println(new ObjectMapper().writeValueAsString(facts));
 	}
 }

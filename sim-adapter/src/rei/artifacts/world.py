@@ -122,6 +122,7 @@ class PolygonFootprint:
 
 
 Footprint = CircleFootprint | PolygonFootprint
+FOOTPRINT_TYPES = ("polygon", "circle")  # world.json's robot.footprint.type (contract/vocabulary.json footprints)
 
 CIRCLE_SIDES = 64
 
@@ -348,11 +349,12 @@ def _object(o: Fields) -> ObjectSpec:
 
 def _footprint(f: Fields) -> Footprint:
     kind = f.text("type")
-    if kind == "circle":
+    polygon, circle = FOOTPRINT_TYPES
+    if kind == circle:
         radius = f.number("radius", positive=True)
         return CircleFootprint(f.number("x"), f.number("y"), radius)
-    if kind != "polygon":
-        raise f.error(f"unknown value {kind!r}, expected one of polygon, circle", "type")
+    if kind != polygon:
+        raise f.error(f"unknown value {kind!r}, expected one of {', '.join(FOOTPRINT_TYPES)}", "type")
     points = f.value.get("points") if isinstance(f.value, dict) else None
     if not (isinstance(points, list) and len(points) >= 3 and all(
             isinstance(p, list) and len(p) == 2 and all(isinstance(c, int | float) and not isinstance(c, bool)

@@ -62,6 +62,9 @@ public final class CaseReader {
 				objects, robot);
 	}
 
+	/** world.json's robot.footprint.type: polygon, circle (contract/vocabulary.json footprints). */
+	public static final List<String> FOOTPRINT_TYPES = List.of("polygon", "circle");
+
 	/**
 	 * world.json's robot footprint of a robot read from its description: a convex polygon or a circle in the robot's
 	 * frame (rei.artifacts.world); {@code null} for a box robot.
@@ -71,11 +74,12 @@ public final class CaseReader {
 			return null;
 		}
 		String type = f.path("type").asText();
-		if ("circle".equals(type)) {
+		if (FOOTPRINT_TYPES.get(1).equals(type)) {
 			return Shape.circle(f.path("x").asDouble(), f.path("y").asDouble(), f.path("radius").asDouble());
 		}
-		if (!"polygon".equals(type)) {
-			throw new IllegalArgumentException("world.json robot.footprint.type must be polygon or circle, got " + type);
+		if (!FOOTPRINT_TYPES.get(0).equals(type)) {
+			throw new IllegalArgumentException("world.json robot.footprint.type must be one of " + FOOTPRINT_TYPES
+					+ ", got " + type);
 		}
 		List<double[]> points = new ArrayList<>();
 		for (JsonNode p : f.path("points")) {
