@@ -31,14 +31,19 @@ TABLE_3 = {
 }
 
 
+#: The fault kinds per sensor as the contract states them (each window edge a signal worth 0).
+_FAULT_KINDS: dict[str, list[str]] = json.loads(
+    (Path(__file__).resolve().parents[3] / "contract" / "vocabulary.json").read_text(encoding="utf-8"))["faults"]["kinds"]
+
+
 def test_defaults_are_table_3_plus_zero_for_the_signals_it_leaves_out() -> None:
     table = load_utilities(None)
     assert {name: table[name] for name in TABLE_3} == TABLE_3
     assert {name: table[name] for name in set(table) - set(TABLE_3)} == {
         "SIG_LASER_FAR_TRANSIT_CLOSE": 0, "SIG_LASER_CLOSE_TRANSIT_FAR": 0, "SIG_MONITOR_DATA_GAP": 0,
         "SIG_OBJECT_COLLISION_BEGIN": 0, "SIG_OBJECT_COLLISION_END": 0,
-        **{f"SIG_FAULT_LASER_{kind}_{edge}": 0 for kind in ("IMPULSE", "FREEZE", "BLACKOUT", "OCCLUSION", "NOISE")
-           for edge in ("BEGIN", "END")}}
+        **{f"SIG_FAULT_{sensor.upper()}_{kind.upper()}_{edge}": 0 for sensor, kinds in _FAULT_KINDS.items()
+           for kind in kinds for edge in ("BEGIN", "END")}}
     assert set(table) == KNOWN_SIGNALS == set(DEFAULT_UTILITIES)
     assert table.source == "defaults"
 
