@@ -166,4 +166,27 @@ def test_rei_service_status_start_and_stop(run_cli: Any, own_service: Path) -> N
     assert stopped.returncode == 0 and "stopped the service" in stopped.stdout
     assert not Path(f"/proc/{pid}").exists() or "Z" in Path(f"/proc/{pid}/stat").read_text().split(")")[1][:3]
     assert run_cli("service", "status").returncode == 1
-    assert list((own_service / "routers").iterdir()) == []  # the spare router went with it
+    assert list((own_service / "routers").iterdir()) == []  # the spare routers went with it
+
+
+def test_two_runs_back_to_back_each_find_a_spare_router_ready(run_cli: Any, own_service: Path) -> None:
+    """Runs back to back come faster than a router starts (~3.5 s): two spares, so the second need not wait."""
+    from rei.wamp.router import Router
+
+    started = run_cli("service", "start")
+    assert started.returncode == 0, started.stdout + started.stderr
+    service = service_client.connect(folder=own_service)
+    deadline = time.monotonic() + 120
+    while service_client.request(own_service, {"op": "status"})["spares"] < 2:
+        assert time.monotonic() < deadline, service_client.request(own_service, {"op": "status"})
+        time.sleep(0.2)
+    taken = [service.take_router(os.getpid(), 0.0) for _ in range(2)]  # no waiting: each must be ready
+    try:
+        assert all(description is not None for description in taken), taken
+        assert taken[0]["run_id"] != taken[1]["run_id"]
+    finally:
+        for description in taken:
+            if description is not None:
+                Router.adopt(description).stop()
+    status = run_cli("service", "status")
+    assert "spare routers:" in status.stdout, status.stdout

@@ -43,7 +43,7 @@ def run(args: argparse.Namespace) -> int:
     print(f"service: pid {status['pid']} in {folder} (log: {folder / 'service.log'})")
     print(f"  warm monitor JVM:   {'ready' if status['monitor'] else 'starting'}")
     print(f"  warm generator JVM: {'ready' if status['cli'] else 'starting'}")
-    print(f"  spare router:       {'ready, run ' + status['spare'] if status['spare'] else 'starting'}")
+    print(f"  spare routers:      {status['spares']} ready" + (f" (next: run {status['spare']})" if status['spare'] else ""))
     print(f"  routers of runs:    {status['handed']}")
     print(f"  stops when idle for {status['idle_left']:.0f} more s")
     return 0

@@ -4,9 +4,9 @@
 A run needs a router (Crossbar: ~4 s to start), a monitor (a JVM compiling its rules: ~4 s) and its case generated
 (a JVM: ~2 s). The service keeps them ready between runs:
 
-* one **spare router**, started for a run id of its own with fresh secrets, that the next run takes over whole
-  (``rei.wamp.router.Router.adopt``): every run still has its own router, credentials and URIs, and the service
-  starts the next spare at once;
+* two **spare routers** (``daemon.SPARE_ROUTERS``), each started for a run id of its own with fresh secrets, the
+  older of which the next run takes over whole (``rei.wamp.router.Router.adopt``): every run still has its own
+  router, credentials and URIs, and the service starts the next spare at once;
 * a **warm monitor JVM** and a **warm generator JVM** (``rei.run.jvm.JarServer``), in which each run's monitor and
   generation run as commands, with their classes loaded and rule bases built.
 
