@@ -102,7 +102,8 @@ def test_clock_publishes_each_edge_once_in_time_order() -> None:
     ("laser:impulse,gain=0.8@10/0.2@5", "ramp times must increase"),
     ("laser:impulse,gain=0.8@x", "time 'x' is not a number"),
     ("laser:blackout,from=-1", "'from' must be a time >= 0 s"),
-    ("odometry:drift", "expected 'laser:KIND"),
+    ("sonar:blackout", "SENSOR one of laser, odometry, drive, commands, pose"),
+    ("odometry:drift", "needs scale= or bias="),
 ])
 def test_bad_specs_say_what_is_wrong(spec: str, message: str) -> None:
     with pytest.raises(ValueError, match="bad fault spec") as error:
