@@ -147,15 +147,24 @@ def test_a_killed_or_hung_engine_is_replaced_and_keeps_the_edits(open_editor) ->
     assert "object table1 : Table on F_3_2 yaw 90" in again["text"]
 
 
-def test_rei_edit_keeps_unsaved_edits_when_stopped(rei_script: Path, tmp_path: Path) -> None:
+def _start_rei_edit(rei_script: Path, tmp_path: Path) -> tuple[Path, subprocess.Popen[str], str]:
+    """`rei edit` on a copy of CASE, once it printed its URL: the copy, the process and that line."""
     case = tmp_path / "case.rei"
     case.write_text((Path(__file__).parents[2] / CASE).read_text(encoding="utf-8"), encoding="utf-8")
     process = subprocess.Popen([str(rei_script), "edit", str(case)], stdout=subprocess.PIPE,
                                stderr=subprocess.PIPE, text=True)
+    assert process.stdout is not None
+    line = process.stdout.readline()
+    if not line.startswith("edit: http://127.0.0.1:"):
+        process.kill()
+        process.wait()
+    assert line.startswith("edit: http://127.0.0.1:"), line
+    return case, process, line
+
+
+def test_rei_edit_keeps_unsaved_edits_when_stopped(rei_script: Path, tmp_path: Path) -> None:
+    case, process, line = _start_rei_edit(rei_script, tmp_path)
     try:
-        assert process.stdout is not None
-        line = process.stdout.readline()
-        assert line.startswith("edit: http://127.0.0.1:"), line
         url = urlsplit(line.split()[1])
         request = urllib.request.Request(
             f"http://{url.netloc}/api/apply", method="POST", data=json.dumps({"operations": [MOVE]}).encode(),
@@ -178,14 +187,8 @@ def test_rei_edit_keeps_unsaved_edits_when_stopped(rei_script: Path, tmp_path: P
 def test_rei_edit_stops_on_a_ctrl_c_that_lands_on_another_thread(rei_script: Path, tmp_path: Path) -> None:
     """The kernel hands a process's signal to any of its threads; one that lands on a server thread must stop
     the editor too (a main thread blocked in a wait without timeout never saw it: the editor ran on)."""
-    case = tmp_path / "case.rei"
-    case.write_text((Path(__file__).parents[2] / CASE).read_text(encoding="utf-8"), encoding="utf-8")
-    process = subprocess.Popen([str(rei_script), "edit", str(case)], stdout=subprocess.PIPE,
-                               stderr=subprocess.PIPE, text=True)
+    _, process, _ = _start_rei_edit(rei_script, tmp_path)
     try:
-        assert process.stdout is not None
-        line = process.stdout.readline()
-        assert line.startswith("edit: http://127.0.0.1:"), line
         others = [int(tid) for tid in os.listdir(f"/proc/{process.pid}/task") if int(tid) != process.pid]
         assert others, "rei edit runs no thread besides its main one"
         _thread_kill(process.pid, others[0], signal.SIGINT)
