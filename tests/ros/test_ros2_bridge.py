@@ -100,15 +100,17 @@ def test_a_ros2_node_that_never_answers_a_goal_ends_the_run_in_error_naming_the_
 def test_two_ros2_runs_at_once_get_domains_of_their_own_and_both_complete(
     run_cli, repo_root: Path, tmp_path: Path, rust_node: Path, processes_mentioning
 ) -> None:
-    """Run a is paced at wall-clock speed (~30 s); run b starts once a's node has a goal, so b's bridge comes up
-    while a's still runs. On one domain the two bridges' clocks, goals and commands would reach both nodes (each
-    bridge matches every action server it discovers); on their own domains both runs pass."""
+    """Both runs start together and are paced at wall-clock speed (~30 s of mission each), so both bridges hold
+    their domains at once for most of that time, whatever the machine's load does to their start-up (b started once
+    a's node had a goal, and on a loaded machine a ended before b's bridge was up). On one domain the two bridges'
+    clocks, goals and commands would reach both nodes (each bridge matches every action server it discovers); on
+    their own domains both runs pass."""
     a, b = tmp_path / "a", tmp_path / "b"
     results: dict[Path, object] = {}
 
-    def run(out: Path, *extra: str) -> None:
+    def run(out: Path) -> None:
         results[out] = run_cli("run", repo_root / EXAMPLE, "-o", out, "--sut", f"ros2:{rust_node} {out}",
-                               "--sut-map", *extra, timeout=400)
+                               "--sut-map", "--realtime", timeout=400)
 
     def wait_for(condition, thread: threading.Thread, log: Path) -> None:  # type: ignore[no-untyped-def]
         deadline = time.monotonic() + 120
@@ -116,13 +118,13 @@ def test_two_ros2_runs_at_once_get_domains_of_their_own_and_both_complete(
             assert thread.is_alive() and time.monotonic() < deadline, _text(log)
             time.sleep(0.1)
 
-    first = threading.Thread(target=run, args=(a, "--realtime"))
-    first.start()
-    wait_for(lambda: "goal" in _text(a / "ros" / "stack.log"), first, a / "sut.log")
+    first = threading.Thread(target=run, args=(a,))
     second = threading.Thread(target=run, args=(b,))
+    first.start()
     second.start()
-    wait_for(lambda: DOMAIN_LINE.search(_text(b / "sut.log")), second, b / "sut.log")
-    assert not (a / "summary.json").exists()  # both bridges hold their domains now
+    for out, thread in ((a, first), (b, second)):
+        wait_for(lambda out=out: "goal" in _text(out / "ros" / "stack.log"), thread, out / "sut.log")
+    assert not (a / "summary.json").exists() and not (b / "summary.json").exists()  # both nodes have goals now
     for thread in (first, second):
         thread.join()
     for out in (a, b):

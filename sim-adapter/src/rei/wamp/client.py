@@ -75,6 +75,7 @@ _BACKOFF = (0.1, 1.0)
 _RECOVERABLE = frozenset({CloseDetails.REASON_TRANSPORT_LOST, "wamp.close.system_shutdown"})
 _LOST = "connection to the router lost"
 _NO_SUCH_PROCEDURE = "wamp.error.no_such_procedure"
+_ANSWER_GRACE = 5.0  # seconds a call sent just before call_when_registered's deadline may wait for its answer
 
 _log = logging.getLogger(__name__)
 
@@ -328,11 +329,13 @@ class WampClient:
 
     def call_when_registered(self, uri: str, *args: Any, timeout: float = 10.0, interval: float = 0.1) -> Any:
         """``call()``, retried every ``interval`` s while the procedure is not registered (yet, or again after a
-        router restart) or this client is reconnecting; the last error is raised after ``timeout`` seconds."""
+        router restart) or this client is reconnecting; the last error is raised after ``timeout`` seconds. A call
+        sent near the deadline still gets ``_ANSWER_GRACE`` s for the router's answer: on a loaded machine even a
+        refusal can take longer than the little time that was left."""
         deadline = time.monotonic() + timeout
         while True:
             try:
-                return self.call(uri, *args, timeout=max(0.1, deadline - time.monotonic()))
+                return self.call(uri, *args, timeout=max(_ANSWER_GRACE, deadline - time.monotonic()))
             except (ApplicationError, WampError) as error:
                 absent = isinstance(error, ApplicationError) and error.error == _NO_SUCH_PROCEDURE
                 reconnecting = isinstance(error, WampError) and self._failure is None
