@@ -20,19 +20,20 @@ data collector (no streams are recorded or published). Measured over the mission
 its people server and the navigation have started):
 
 - real-time factor: simulated seconds / wall seconds of the loop (navigation included);
-- mean step time: wall time of ``Simulation.step`` (physics, lidar, animators, the crowd) per physics step;
+- mean step time: wall time of ``Simulation.step`` (physics, lidar, animator, the crowd) per physics step;
 - the people's share of a step: the time in ``Crowd.step`` (the walkers' targets, the people server's reply to
-  the step asked for at the previous crowd step, read from its pipe, and the next request) and in the people's animator, over the whole step time; and of it the time
-  waiting for the server, and the server process's CPU seconds;
-- the physics: the time in pybullet's ``stepSimulation`` per step, which grows with the people's bodies in
-  contact (a person is a 0.5 m cylinder, and people who give way to each other walk close).
+  the step asked for at the previous crowd step, read from its pipe, and the next request), in putting the
+  people's bodies where the model put them and in the lidar's meeting their shapes (``Prisms.hits``), over the
+  whole step time; and of it the time waiting for the server, and the server process's CPU seconds;
+- the physics: the time in pybullet's ``stepSimulation`` per step (the people's bodies are fixed and meet only the
+  robot and moving bodies: they cost it their bounds, and a contact when the robot touches one).
 
 Then a short cProfile of the room with the most people (``--profile-seconds`` simulated from ``--profile-from``
 on) says which functions dominate. Printed with the load average before and after; the RATIO lines give both
 sides. Exit code 1 when a goal is missed.
 
     .venv/bin/python benchmarks/people.py [--depot FILE.yaml | --no-depot] [--counts 0,10,50,100]
-        [--depot-people 50] [--seed 1] [--profile-from 80] [--profile-seconds 20]
+        [--depot-people 50] [--seed 1] [--profile-from 30] [--profile-seconds 20]
 """
 
 from __future__ import annotations
@@ -62,10 +63,9 @@ import pybullet
 from rei.artifacts import read_case
 from rei.geometry import Twist2D
 from rei.mission.executor import MissionExecutor
-from rei.sim import animator as animator_module
+from rei.sim.lidar import Prisms
 from rei.sim.people import crowd as crowd_module
 from rei.sim.people import server as server_module
-from rei.sim.people.crowd import CrowdPath
 from rei.sim.simulation import Simulation
 from rei.sut.registry import create_controller
 
@@ -100,7 +100,7 @@ class Measure:
     steps: int
     step_s: float  # wall seconds inside Simulation.step
     crowd_s: float  # of it in Crowd.step
-    animator_s: float  # of it in the people's animator
+    bodies_s: float  # of it putting the people's bodies in place and the lidar's meeting their shapes
     server_s: float  # of crowd_s waiting for the people server's replies
     physics_s: float  # of step_s in pybullet's stepSimulation (every body's contacts, the people's included)
     server_cpu_s: float  # the people server process's CPU seconds (start-up included)
@@ -117,23 +117,24 @@ class Measure:
 
     @property
     def share(self) -> float:
-        return (self.crowd_s + self.animator_s) / self.step_s
+        return (self.crowd_s + self.bodies_s) / self.step_s
 
 
 class _Timers:
-    """Wall time spent in the crowd's advance, the people's animator, the people server's replies and pybullet's
-    physics step, by wrapping the four while a measurement runs."""
+    """Wall time spent in the crowd's advance, the people's bodies (put in place, met by the lidar), the people
+    server's replies and pybullet's physics step, by wrapping them while a measurement runs."""
 
     def __init__(self) -> None:
-        self.crowd = self.animator = self.server = self.physics = 0.0
+        self.crowd = self.bodies = self.server = self.physics = 0.0
 
     def reset(self) -> None:
-        self.crowd = self.animator = self.server = self.physics = 0.0
+        self.crowd = self.bodies = self.server = self.physics = 0.0
 
     @contextlib.contextmanager
     def installed(self) -> Iterator[_Timers]:
-        crowd_cls, animator_cls, server_cls = crowd_module.Crowd, animator_module.Animator, server_module.PeopleServer
-        advance, update, request = crowd_cls.step, animator_cls.update, server_cls.receive
+        crowd_cls, sim_cls, server_cls = crowd_module.Crowd, Simulation, server_module.PeopleServer
+        advance, place, request = crowd_cls.step, sim_cls._place_people, server_cls.receive
+        meet = Prisms.hits
         step_simulation = pybullet.stepSimulation
         timers = self
 
@@ -151,15 +152,19 @@ class _Timers:
             finally:
                 timers.crowd += time.perf_counter() - started
 
-        def timed_update(animator: Any, *args: Any, **kwargs: Any) -> Any:
-            bodies = animator.bodies
-            if not (bodies and isinstance(bodies[0].trajectory, CrowdPath)):  # the rails' animator: not people
-                return update(animator, *args, **kwargs)
+        def timed_place(sim: Any) -> Any:
             started = time.perf_counter()
             try:
-                return update(animator, *args, **kwargs)
+                return place(sim)
             finally:
-                timers.animator += time.perf_counter() - started
+                timers.bodies += time.perf_counter() - started
+
+        def timed_meet(prisms: Any, *args: Any) -> Any:
+            started = time.perf_counter()
+            try:
+                return meet(prisms, *args)
+            finally:
+                timers.bodies += time.perf_counter() - started
 
         def timed_request(server: Any, *args: Any, **kwargs: Any) -> Any:
             started = time.perf_counter()
@@ -168,12 +173,14 @@ class _Timers:
             finally:
                 timers.server += time.perf_counter() - started
 
-        crowd_cls.step, animator_cls.update, server_cls.receive = timed_advance, timed_update, timed_request
+        crowd_cls.step, sim_cls._place_people, server_cls.receive = timed_advance, timed_place, timed_request
+        Prisms.hits = timed_meet
         pybullet.stepSimulation = timed_physics  # the simulation calls it through the module, at each step
         try:
             yield self
         finally:
-            crowd_cls.step, animator_cls.update, server_cls.receive = advance, update, request
+            crowd_cls.step, sim_cls._place_people, server_cls.receive = advance, place, request
+            Prisms.hits = meet
             pybullet.stepSimulation = step_simulation
 
 
@@ -278,19 +285,19 @@ def measure(label: str, case_dir: Path, humans: bool, timers: _Timers, seed: int
         if profiler is not None:
             profiler.disable()
         sim_s, steps = sim.t, sim.steps
-        crowd_s, animator_s, server_s, physics_s = timers.crowd, timers.animator, timers.server, timers.physics
+        crowd_s, bodies_s, server_s, physics_s = timers.crowd, timers.bodies, timers.server, timers.physics
     results = executor.results
     succeeded = executor.done and len(results) == len(case.mission.goals) and all(r.succeeded for r in results)
     outcome = "ok" if succeeded else "; ".join(
         [f"goal {r.index}: {r.reason}" for r in results if not r.succeeded]
         or [f"cut off at {sim_s:.0f} s after {len(results)} of {len(case.mission.goals)} goals"])
-    return Measure(label, people, sim_s, wall, steps, step_s, crowd_s, animator_s, server_s, physics_s,
+    return Measure(label, people, sim_s, wall, steps, step_s, crowd_s, bodies_s, server_s, physics_s,
                    _children_cpu() - cpu_before, succeeded, outcome)
 
 
 def _row(m: Measure) -> None:
     print(f"{m.label:18} {m.people:>6} {m.sim_s:>7.1f} {m.wall_s:>7.2f} {m.rtf:>6.2f} {m.step_ms:>8.3f} "
-          f"{1000 * (m.crowd_s + m.animator_s) / m.steps:>9.3f} {100 * m.share:>6.1f}% "
+          f"{1000 * (m.crowd_s + m.bodies_s) / m.steps:>9.3f} {100 * m.share:>6.1f}% "
           f"{1000 * m.server_s / m.steps:>9.3f} {1000 * m.physics_s / m.steps:>8.3f} {m.server_cpu_s:>7.2f}  "
           f"{m.outcome}"
           f"  (load {_load()})", flush=True)
@@ -315,6 +322,10 @@ def profile(case_dir: Path, seed: int, start: float, seconds: float, top: int) -
     profiler = cProfile.Profile()
     m = measure("profiled", case_dir, True, timers, seed, max_seconds=start + seconds, profiler=profiler,
                 profile_from=start)
+    if m.sim_s < start:
+        print(f"no cProfile: the mission among {m.people} people ended at {m.sim_s:.1f} s simulated, before "
+              f"{start:g} s (--profile-from)", flush=True)
+        return
     print(f"cProfile of the mission loop among {m.people} people, from {start:g} s to {m.sim_s:.1f} s simulated "
           f"(load {_load()}); by own time:")
     text = io.StringIO()
@@ -336,8 +347,8 @@ def main() -> int:
     parser.add_argument("--seed", type=int, default=1, help="the people's placement and the simulation's seed")
     parser.add_argument("--profile-seconds", type=float, default=20.0,
                         help="simulated seconds profiled among the most people (0: no profile)")
-    parser.add_argument("--profile-from", type=float, default=80.0,
-                        help="simulated second the profile starts at (by then the 100 people have met)")
+    parser.add_argument("--profile-from", type=float, default=30.0,
+                        help="simulated second the profile starts at (by then the robot is among the 100 people)")
     parser.add_argument("--top", type=int, default=25, help="functions the profile lists")
     args = parser.parse_args()
     counts = sorted({int(c) for c in args.counts.split(",")})

@@ -96,6 +96,32 @@ def test_people_crossing_in_a_corridor_keep_apart(run_cli, write_rei, tmp_path: 
         assert (end[0] > 8.5) if name.startswith("l") else (end[0] < 1.5), (name, end)
 
 
+def test_the_lidar_sees_a_person_and_the_robot_is_stopped_by_one(run_cli, write_rei, tmp_path: Path) -> None:
+    folder = case(run_cli, write_rei, tmp_path, "human bob route [F_4_2] ignores")  # stands 2 m ahead
+    with Simulation(folder, seed=1) as sim:
+        x, y, _, yaw = sim.state().robot.pose
+        bob = next(o for o in sim.state().objects if o.name == "bob")
+        assert bob.pose[:2] == pytest.approx((4.5, 2.5)) and bob.twist == (0.0, 0.0, 0.0)
+        ranges = sim.observation().scan.ranges  # type: ignore[union-attr]
+        seen = 0
+        for i in range(360):
+            angle = yaw + math.radians(i)
+            dx, dy = math.cos(angle), math.sin(angle)
+            b = (x - 4.5) * dx + (y - 2.5) * dy
+            disc = b * b - ((x - 4.5) ** 2 + (y - 2.5) ** 2 - 0.25**2)
+            if disc >= 0 and -b - math.sqrt(disc) > 0:  # the beam meets bob's cylinder ahead
+                seen += 1
+                assert ranges[i] == pytest.approx(-b - math.sqrt(disc), abs=1e-6), i
+        assert seen >= 10
+        for _ in range(round(10.0 * sim.physics_rate)):  # drive into him: he stands, the robot is stopped
+            sim.step(Twist2D(0.3, 0.0))
+        state = sim.state()
+        assert ("tb3", "bob") in state.contacts
+        assert next(o for o in state.objects if o.name == "bob").pose[:2] == pytest.approx((4.5, 2.5))
+        front = state.robot.pose[0] + sim.case.world.robot.size[0] / 2
+        assert 4.5 - 0.25 - 0.02 < front < 4.5 - 0.25 + 0.01  # touching his body, not through it
+
+
 def test_the_people_see_where_the_robot_really_is(run_cli, write_rei, tmp_path: Path) -> None:
     folder = case(run_cli, write_rei, tmp_path, "human ann route [F_5_2, F_0_2] speed 1.0 avoids", robot="F_0_0")
     with Simulation(folder, seed=3) as sim:

@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 from rei.geometry import Twist2D
+from rei.sim.lidar import Prisms
 from rei.sim.simulation import Simulation
 
 INNER = (
@@ -110,3 +111,53 @@ def test_without_humans_the_beam_reaches_the_wall(room: Path) -> None:
         ranges = sim.observation().scan.ranges  # type: ignore[union-attr]
         assert ranges[74] == pytest.approx(_to_inner_walls(1.0, 1.0, math.radians(74)), abs=0.01)
         assert sim.state().objects == ()
+
+
+def _through_box(origin: tuple[float, ...], ray: tuple[float, ...], centre: tuple[float, float],
+                 half: tuple[float, float], yaw: float, z: tuple[float, float]) -> float:
+    """The least t in [0, 1] at which ``origin + t ray`` is inside the upright box, one slab at a time (inf: never)."""
+    c, s = math.cos(yaw), math.sin(yaw)
+    ox, oy = origin[0] - centre[0], origin[1] - centre[1]
+    low, high = 0.0, 1.0
+    for u0, du, lo, hi in ((c * ox + s * oy, c * ray[0] + s * ray[1], -half[0], half[0]),
+                           (-s * ox + c * oy, -s * ray[0] + c * ray[1], -half[1], half[1]),
+                           (origin[2], ray[2], z[0], z[1])):
+        if du == 0:
+            if not lo <= u0 <= hi:
+                return math.inf
+            continue
+        t0, t1 = sorted(((lo - u0) / du, (hi - u0) / du))
+        low, high = max(low, t0), min(high, t1)
+    return low if low <= high else math.inf
+
+
+def test_prisms_meet_rays_at_their_exact_shape() -> None:
+    # a cylinder (r 0.25, 0 to 1.7 m) and a box turned by 30 degrees (1.0 x 0.4, 0 to 0.8 m)
+    prisms = Prisms(xy=[(2.0, 0.5), (-1.0, 1.5)], z=[(0.0, 1.7), (0.0, 0.8)], radius=[0.25, 0.0],
+                    half=[(0.25, 0.25), (0.5, 0.2)], yaw=[0.0, math.radians(30)])
+    origin = np.array([0.0, 0.0, 0.2])
+    angles = np.radians(np.arange(0.0, 360.0, 0.25))
+    rays = np.column_stack([3.5 * np.cos(angles), 3.5 * np.sin(angles), np.zeros_like(angles)])
+    got = prisms.hits(origin, rays)
+    for k, ray in enumerate(rays):
+        circle = _to_circle(0.0, 0.0, angles[k], 2.0, 0.5, 0.25) / 3.5
+        box = _through_box(tuple(origin), tuple(ray), (-1.0, 1.5), (0.5, 0.2), math.radians(30), (0.0, 0.8))
+        expected = min(circle if circle <= 1.0 else math.inf, box)
+        assert got[k] == pytest.approx(expected, abs=1e-12), k
+    assert np.isfinite(got).sum() > 40  # both bodies were hit
+    # a level ray over the box's top misses it; one going down meets it where it passes into its height
+    above = prisms.hits(np.array([0.0, 0.0, 0.9]), np.array([[-1.0, 1.5, 0.0], [-1.0, 1.5, -0.5]]))
+    assert above[0] == math.inf
+    assert 0.0 < above[1] < 1.0
+    assert above[1] == pytest.approx(_through_box((0.0, 0.0, 0.9), (-1.0, 1.5, -0.5), (-1.0, 1.5), (0.5, 0.2),
+                                                  math.radians(30), (0.0, 0.8)), abs=1e-12)
+    # a ray that starts inside a body meets it at once; one that ends short of it does not
+    assert prisms.hits(np.array([2.1, 0.5, 1.0]), np.array([[1.0, 0.0, 0.0]]))[0] == 0.0
+    assert prisms.hits(origin, np.array([[1.5, 0.375, 0.0]]))[0] == math.inf
+    # cylinders alone (people), the rays level: the same hits
+    people = Prisms(xy=[(2.0, 0.5), (0.0, -1.0)], z=[(0.0, 1.7), (0.0, 1.7)], radius=[0.25, 0.3],
+                    half=[(0.25, 0.25), (0.3, 0.3)], yaw=[0.0, 0.0])
+    got = people.hits(origin, rays)
+    for k in range(len(rays)):
+        expected = min(_to_circle(0.0, 0.0, angles[k], 2.0, 0.5, 0.25), _to_circle(0.0, 0.0, angles[k], 0.0, -1.0, 0.3))
+        assert got[k] == pytest.approx(expected / 3.5 if expected <= 3.5 else math.inf, abs=1e-12), k

@@ -26,7 +26,8 @@ def add_mission_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--animation", choices=("velocity", "force"), default="velocity",
                         help="how humans and moving objects follow their trajectories: velocity (default) sets "
                         "their velocity each step; force pushes them with F = m dv/dt through the contact solver, "
-                        "so what stands in their way (the robot) is pushed and pushes back")
+                        "so what stands in their way (the robot) is pushed and pushes back (people who see the robot "
+                        "are put where their model puts them either way)")
     parser.add_argument("--realtime", action="store_true", help="pace the simulation at wall-clock speed")
     parser.add_argument("--state-rate", type=float, metavar="HZ",
                         help="state messages per simulated second (default 20, or the --collector file's)")

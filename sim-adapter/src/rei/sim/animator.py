@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: EPL-2.0
-"""Moves humans and dynamic objects along their Catmull-Rom trajectories (thesis 4.2.2, 6.2.2), and reactive
-people to where the crowd model puts them.
+"""Moves humans and dynamic objects along their Catmull-Rom trajectories (thesis 4.2.2, 6.2.2). (Reactive people are
+fixed bodies the simulation puts where the crowd model puts them, rei.sim.simulation.)
 
 At each update, at time ``t`` with the next update due at ``t + T``, a body is given the velocity that brings it
 from where it really is to ``r(t + T)`` (the thesis's ``v = (r(t1) - r(t0)) / dt`` with the measured position as
@@ -40,8 +40,7 @@ class DriveMode(enum.StrEnum):
 
 
 class Path(Protocol):
-    """Where a body should be at a time: a trajectory on rails (rei.spline) or a reactive person's place in the
-    crowd model (rei.sim.people)."""
+    """Where a body should be at a time: a trajectory on rails (rei.spline)."""
 
     def position(self, t: float) -> tuple[float, float]: ...
 

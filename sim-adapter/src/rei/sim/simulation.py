@@ -18,26 +18,28 @@ import numpy as np
 import pybullet as p
 
 from rei.artifacts.case import Case, read_case
-from rei.artifacts.world import Category
+from rei.artifacts.world import Category, ObjectSpec, Shape
 from rei.geometry import Pose2D, Twist2D, yaw_of_quaternion
 from rei.sim.animator import AnimatedBody, Animator, DriveMode
 from rei.sim.clearance import clearance_for
 from rei.sim.contacts import ContactSensor
 from rei.sim.drive import DiffDrive
 from rei.sim.faults import FaultSchedule, LaserFault, LaserFaults, MotionFaults, as_schedule, fault_generators
-from rei.sim.lidar import Lidar
+from rei.sim.lidar import Lidar, Prisms
 from rei.sim.native_output import quiet_native_output
 from rei.sim.odometry import WheelOdometry
 from rei.sim.people import DT as CROWD_DT
-from rei.sim.people import Crowd, CrowdPath, Mover, RobotView, footprint_radius
+from rei.sim.people import Crowd, Mover, RobotView, footprint_radius
 from rei.sim.robot_model import ROBOT_COLLISION_GROUP, load_robot, wheel_torque_for
 from rei.sim.state import ObjectState, RobotState, SimState
 from rei.sim.world_loader import GRAVITY, load_world
 from rei.spline import Trajectory
 from rei.sut.api import LaserScan, Observation, StaticMap
 
-#: The collision group of the people who see the robot: their mask is the robot's group alone.
-PEOPLE_COLLISION_GROUP = 0x4000
+#: The collision filter mask of the reactive people's fixed bodies, which are in no collision group: pybullet's other
+#: fixed bodies (walls, floors, furniture, the other people) never meet them, nor do its rays (the lidar meets them
+#: by their shape, rei.sim.lidar.Prisms); the robot and the moving bodies (pybullet's default group 1) do.
+PEOPLE_COLLISION_MASK = ROBOT_COLLISION_GROUP | 0x1
 
 MAX_ACCELERATION = 2.5
 """m/s^2 the wheel motors can give the robot: sets their torque limit (a TurtleBot3 manages about this)."""
@@ -102,6 +104,9 @@ class Simulation:
             self._client = p.connect(p.DIRECT)
         self._closed = False
         self._crowd: Crowd | None = None
+        self._people: list[tuple[int, float, tuple[float, ...]]] = []  # each person's body, height, orientation
+        self._person_of: dict[int, int] = {}  # a person's body -> its index in the crowd
+        self._placed: list[tuple[float, float]] = []  # where each person's body was last put
         try:
             self._build(np.random.SeedSequence(seed), humans, odom_noise, mode)
         except BaseException:
@@ -118,7 +123,15 @@ class Simulation:
         p.setPhysicsEngineParameter(
             fixedTimeStep=self.dt, numSubSteps=0, deterministicOverlappingPairs=1, physicsClientId=client
         )
-        self.world = load_world(client, self.case.sdf_path, world)
+        # the reactive people's bodies are fixed, put where the model puts them at each crowd step (moving, each
+        # cost the physics step its dynamics and its broadphase bounds). The model keeps people apart from each
+        # other, the walls and the furniture, so in the physics they touch only the robot and the moving bodies
+        # (touching all, the model's tight spacing pressed them together: hundreds of contacts a step)
+        people = list(self.case.animation.people) if humans else []
+        self.world = load_world(client, self.case.sdf_path, world, fixed=[person.name for person in people])
+        for person in people:  # before the robot is loaded: a filter set later does not part bodies already paired
+            p.setCollisionFilterGroupMask(self.world.body_of[person.name], -1, 0, PEOPLE_COLLISION_MASK,
+                                          physicsClientId=client)
         removed = {o.name for o in world.objects if o.category is Category.HUMAN and not humans}
         for name in sorted(removed):
             p.removeBody(self.world.body_of[name], physicsClientId=client)
@@ -143,7 +156,9 @@ class Simulation:
             noise=odom_noise,
             rng=np.random.default_rng(odom_seed) if odom_noise > 0 else None,
         )
-        self._lidar = Lidar(client, body, robot_spec.lidar)
+        self._shapes = _shapes(client, [(self.world.body_of[person.name], world.object(person.name))
+                                        for person in people])
+        self._lidar = Lidar(client, body, robot_spec.lidar, self._shapes if people else None)
         self._clearance = clearance_for(robot_spec)
         lidar = robot_spec.lidar
         # every fault's generator, made once (the commands' faults use them in the mission loop)
@@ -176,7 +191,6 @@ class Simulation:
             for a in self.case.animation.objects
             if a.name not in removed
         ]
-        people = [person for person in self.case.animation.people if person.name not in removed]
         if people:
             # the people see the robot and the bodies on rails; a third seed, so the others' draws stay as they were
             (crowd_seed,) = seeds.spawn(1)
@@ -189,18 +203,15 @@ class Simulation:
                       robot=True),
                 *(Mover(o.pose[0], o.pose[1], footprint_radius(o.shape, o.size), robot=False) for o in rails)],
                 seed=int(crowd_seed.generate_state(1)[0]))
-            # the people's bodies are steered once per crowd step, towards the model's next place
-            self._people = Animator(client, [
-                AnimatedBody(name=person.name, body=self.world.body_of[person.name],
-                             mass=world.object(person.name).mass, trajectory=CrowdPath(self._crowd, i))
-                for i, person in enumerate(people)], mode, self.dt, floors, GRAVITY)
-            self._people.place(0.0)
-            # the model keeps people apart from each other, the walls and the furniture; in the physics they touch
-            # only the robot (and the lidar sees them): bodies pressed together by the model's tight spacing made
-            # hundreds of contacts a step, each pair costing the solver and the rays
-            for person in people:
-                p.setCollisionFilterGroupMask(self.world.body_of[person.name], -1, PEOPLE_COLLISION_GROUP,
-                                              ROBOT_COLLISION_GROUP, physicsClientId=client)
+            # each person's body: put at each crowd step at the model's place after its latest step, upright as it
+            # stands in world.sdf; its twist in the state is the model's over that step
+            self._people = []
+            for i, person in enumerate(people):
+                body = self.world.body_of[person.name]
+                (_, _, z), orientation = p.getBasePositionAndOrientation(body, physicsClientId=client)
+                self._people.append((body, z, orientation))
+                self._person_of[body] = i
+            self._placed = [self._crowd.position(i) for i in range(len(people))]
         self._animator = Animator(client, animated, mode, self.dt, floors, GRAVITY)
         self._animator.place(0.0)
         # Bodies loaded but never stepped keep stale broadphase bounds: rays would miss them in the first scan.
@@ -275,7 +286,19 @@ class Simulation:
             self._next_crowd = max(n + 1, math.ceil(self._crowd_steps * self.physics_rate * CROWD_DT - 1e-9))
             robot = self._robot_view()
             self._crowd.step(robot, [(robot.x, robot.y), *(self._pose(b)[:2] for b in self._rails)])
-            self._people.update(self.t, self._next_crowd * self.dt)
+            self._place_people()
+
+    def _place_people(self) -> None:
+        """Put the bodies of the people who moved at their places in the model after its latest step, and the
+        lidar's shapes of them too."""
+        assert self._crowd is not None
+        client = self._client
+        now = self._crowd.positions
+        for (body, z, orientation), (x, y), before in zip(self._people, now, self._placed, strict=True):
+            if (x, y) != before:
+                p.resetBasePositionAndOrientation(body, (x, y, z), orientation, physicsClientId=client)
+        self._placed = list(now)
+        self._shapes.xy[:] = now
 
     def _robot_view(self) -> RobotView:
         x, y, _, yaw = self._pose(self._robot.body)
@@ -344,6 +367,10 @@ class Simulation:
         return (x, y, z, yaw_of_quaternion(*orientation))
 
     def _twist(self, body: int) -> tuple[float, float, float]:
+        person = self._person_of.get(body)
+        if person is not None:  # a fixed body: the model's velocity over its latest step
+            assert self._crowd is not None
+            return (*self._crowd.velocity(person), 0.0)
         (vx, vy, _), (_, _, wz) = p.getBaseVelocity(body, physicsClientId=self._client)
         return (vx, vy, wz)
 
@@ -377,3 +404,17 @@ class Simulation:
         self, exc_type: type[BaseException] | None, exc: BaseException | None, tb: TracebackType | None
     ) -> None:
         self.close()
+
+
+def _shapes(client: int, bodies: list[tuple[int, ObjectSpec]]) -> Prisms:
+    """What the lidar meets of each body: an upright cylinder of its size (a CYLINDER), else a box of its size (a
+    mesh's collision body is one too), standing where its body stands."""
+    places = [p.getBasePositionAndOrientation(body, physicsClientId=client) for body, _ in bodies]
+    specs = [spec for _, spec in bodies]
+    return Prisms(
+        xy=[(x, y) for (x, y, _), _ in places],
+        z=[(z - spec.size[2] / 2, z + spec.size[2] / 2) for ((_, _, z), _), spec in zip(places, specs, strict=True)],
+        radius=[spec.size[0] / 2 if spec.shape is Shape.CYLINDER else 0.0 for spec in specs],
+        half=[(spec.size[0] / 2, spec.size[1] / 2) for spec in specs],
+        yaw=[yaw_of_quaternion(*orientation) for _, orientation in places],
+    )

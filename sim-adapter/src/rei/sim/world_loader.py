@@ -16,6 +16,13 @@ contact point.
 A room from an occupancy map stands on one ground slab under the whole map, so its floors (the free blocks, named
 places only) get no collision body of their own: each floor's name maps to the slab, whose contact points are
 named after the floor block nearest them. Only the models that do become bodies count towards the merge limit.
+
+Models named ``fixed`` (the reactive people, whom the simulation places itself at each crowd step) are loaded as
+fixed rigid bodies, not as pybullet's multibodies: their own models from a copy of world.sdf, with mass 0, in
+maximal coordinates, so their collision shapes are the ones ``loadSDF`` builds for them anyway (a cylinder is a
+convex hull of 32 sides). A fixed rigid body costs a physics step nearly nothing; a moving multibody costs its
+dynamics and, every few steps, its broadphase bounds. Being fixed, they meet no other fixed body (walls, floors,
+furniture, each other) in pybullet's collision filter.
 """
 
 from __future__ import annotations
@@ -23,7 +30,7 @@ from __future__ import annotations
 import math
 import tempfile
 import xml.etree.ElementTree as ET
-from collections.abc import Mapping, Sequence
+from collections.abc import Collection, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from types import MappingProxyType
@@ -87,8 +94,9 @@ class LoadedWorld:
         return boxes.name_at(position[0], position[1]) if boxes is not None else self.name_of.get(body)
 
 
-def load_world(client: int, sdf_path: Path | str, world: WorldSpec) -> LoadedWorld:
-    """Load ``sdf_path``, set gravity, and verify the bodies against ``world``."""
+def load_world(client: int, sdf_path: Path | str, world: WorldSpec, *, fixed: Collection[str] = ()) -> LoadedWorld:
+    """Load ``sdf_path``, set gravity, and verify the bodies against ``world``; the models named in ``fixed`` are
+    fixed rigid bodies (mass 0) whatever their category (module docstring)."""
     sdf_path = Path(sdf_path)
     if not sdf_path.is_file():
         raise ArtifactError(sdf_path, "file is missing")
@@ -96,19 +104,22 @@ def load_world(client: int, sdf_path: Path | str, world: WorldSpec) -> LoadedWor
     expected = [o.name for o in world.objects]
     merged: dict[int, MergedBoxes] = {}
     placed = [o for o in world.objects if world.map is None or o.category is not Category.FLOOR]
-    if len(placed) == len(world.objects) <= MERGE_ABOVE:
+    fixed = frozenset(fixed)
+    if not fixed and len(placed) == len(world.objects) <= MERGE_ABOVE:
         ids = _load_sdf(client, sdf_path, sdf_path)
         names = [p.getBodyInfo(b, physicsClientId=client)[1].decode("utf-8") for b in ids]
         if names != expected:
             raise ArtifactError(sdf_path, _difference(names, expected, world.path.name))
     else:
-        names, ids, merged = _load_large(client, sdf_path, world, merge=len(placed) > MERGE_ABOVE)
+        names, ids, merged = _load_large(client, sdf_path, world, merge=len(placed) > MERGE_ABOVE, fixed=fixed)
     ground = _ground(client, world, merged) if world.map is not None else None
     if ground is not None:
         ids = [ground if body < 0 else body for body in ids]
     single = [(body, obj) for body, obj in zip(ids, world.objects, strict=True) if body not in merged]
     for body, obj in single:
         mass = p.getDynamicsInfo(body, -1, physicsClientId=client)[0]
+        if obj.name in fixed:
+            continue  # made fixed on purpose
         if obj.category.fixed and mass != 0.0:
             raise ArtifactError(
                 sdf_path,
@@ -148,19 +159,20 @@ def _ground(client: int, world: WorldSpec, merged: dict[int, MergedBoxes]) -> in
     return body
 
 
-def _load_sdf(client: int, path: Path, shown: Path) -> list[int]:
+def _load_sdf(client: int, path: Path, shown: Path, *, maximal: bool = False) -> list[int]:
     try:
         with quiet_native_output():
-            return list(p.loadSDF(str(path), physicsClientId=client))
+            return list(p.loadSDF(str(path), useMaximalCoordinates=maximal, physicsClientId=client))
     except p.error as exc:
         raise ArtifactError(shown, f"pybullet could not load it: {exc}") from None
 
 
 def _load_large(
-    client: int, sdf_path: Path, world: WorldSpec, *, merge: bool
+    client: int, sdf_path: Path, world: WorldSpec, *, merge: bool, fixed: frozenset[str] = frozenset()
 ) -> tuple[list[str], list[int], dict[int, MergedBoxes]]:
     """The walls and floors merged per category (when ``merge``), a map room's floors left out (body id -1), the
-    other models loaded from a copy of world.sdf holding only them; names and body ids in world.json's order."""
+    models named in ``fixed`` loaded as fixed rigid bodies from a copy of world.sdf holding only them, the other
+    models from a copy holding only them; names and body ids in world.json's order."""
     root = ET.parse(sdf_path).getroot()
     holder = root.find("world")
     holder = holder if holder is not None else root
@@ -171,33 +183,39 @@ def _load_large(
         raise ArtifactError(sdf_path, _difference([n or "" for n in loaded], expected, world.path.name))
     boxes: dict[Category, list[tuple[str, tuple[float, ...], tuple[float, ...]]]] = {c: [] for c in MERGED_CATEGORIES}
     body_of: dict[str, int] = {}
+    pinned: list[ET.Element] = []
     for model, obj in zip(models, world.objects, strict=True):
         if world.map is not None and obj.category is Category.FLOOR:
             body_of[obj.name] = -1
+            holder.remove(model)
+            continue
+        if obj.name in fixed:
+            pinned.append(model)
             holder.remove(model)
             continue
         box = _fixed_box(model) if merge and obj.category in MERGED_CATEGORIES else None
         if box is not None:
             boxes[obj.category].append((obj.name, *box))
             holder.remove(model)
-    rest = [m.get("name") for m in holder.findall("model")]
+    rest = holder.findall("model")
     if len(rest) > SDF_BODY_LIMIT:
         raise ArtifactError(
             sdf_path,
             f"{len(rest)} models besides walls and floors: pybullet loads at most {SDF_BODY_LIMIT} from one file",
         )
+    for uri in root.iter("uri"):  # mesh files are relative to world.sdf's folder
+        if uri.text and not Path(uri.text.strip()).is_absolute():
+            uri.text = str((sdf_path.parent / uri.text.strip()).resolve())
     if rest:
-        for uri in holder.iter("uri"):  # mesh files are relative to world.sdf's folder
-            if uri.text and not Path(uri.text.strip()).is_absolute():
-                uri.text = str((sdf_path.parent / uri.text.strip()).resolve())
-        with tempfile.TemporaryDirectory(prefix="rei-world-") as folder:
-            part = Path(folder) / sdf_path.name
-            ET.ElementTree(root).write(part, encoding="utf-8", xml_declaration=True)
-            ids = _load_sdf(client, part, sdf_path)
-        names = [p.getBodyInfo(b, physicsClientId=client)[1].decode("utf-8") for b in ids]
-        if names != rest:
-            raise ArtifactError(sdf_path, _difference(names, [n or "" for n in rest], world.path.name))
-        body_of.update(zip(names, ids, strict=True))
+        body_of.update(_load_part(client, root, sdf_path, world))
+    if pinned:
+        for model in rest:
+            holder.remove(model)
+        for model in pinned:
+            for link in model.findall("link"):
+                _massless(link)
+            holder.append(model)
+        body_of.update(_load_part(client, root, sdf_path, world, maximal=True))
     merged: dict[int, MergedBoxes] = {}
     for parts in boxes.values():
         order = sorted(range(len(parts)), key=lambda k: (_z_order(parts[k][1][0], parts[k][1][1]), k))
@@ -206,6 +224,61 @@ def _load_large(
             merged[chunk.body] = chunk
             body_of.update((name, chunk.body) for name in chunk.names)
     return expected, [body_of[n] for n in expected], merged
+
+
+def _load_part(client: int, root: ET.Element, sdf_path: Path, world: WorldSpec, *,
+               maximal: bool = False) -> dict[str, int]:
+    """The models left in ``root`` (a part of world.sdf) loaded from a copy of it; body ids by name. In maximal
+    coordinates pybullet names a body after its (first) link, not its model."""
+    holder = root.find("world")
+    models = (holder if holder is not None else root).findall("model")
+    expected = [m.get("name") or "" for m in models]
+    with tempfile.TemporaryDirectory(prefix="rei-world-") as folder:
+        part = Path(folder) / sdf_path.name
+        ET.ElementTree(root).write(part, encoding="utf-8", xml_declaration=True)
+        ids = _load_sdf(client, part, sdf_path, maximal=maximal)
+    names = [p.getBodyInfo(b, physicsClientId=client)[1].decode("utf-8") for b in ids]
+    if maximal and len(names) == len(models):
+        links = [link.get("name") if (link := m.find("link")) is not None else None for m in models]
+        names = [model if name == link else name for name, model, link in zip(names, expected, links, strict=True)]
+    if names != expected:
+        raise ArtifactError(sdf_path, _difference(names, expected, world.path.name))
+    if maximal:  # pybullet leaves such a body at the origin: put it where its model says
+        for body, model in zip(ids, models, strict=True):
+            link = model.find("link")
+            if link is not None and link.find("pose") is not None:
+                raise ArtifactError(sdf_path, f"model {model.get('name')!r}: a fixed body's link has no pose of its own")
+            position, orientation = _pose_of(model, sdf_path)
+            p.resetBasePositionAndOrientation(body, position, orientation, physicsClientId=client)
+    return dict(zip(names, ids, strict=True))
+
+
+def _pose_of(model: ET.Element, sdf_path: Path) -> tuple[tuple[float, ...], tuple[float, ...]]:
+    """A model's ``<pose>x y z roll pitch yaw</pose>`` as a position and a quaternion (in double precision, as
+    ``loadSDF`` places a model; pybullet's own conversions are single precision)."""
+    text = model.findtext("pose") or "0 0 0 0 0 0"
+    try:
+        x, y, z, roll, pitch, yaw = (float(v) for v in text.split())
+    except ValueError:
+        raise ArtifactError(sdf_path, f"model {model.get('name')!r}: its pose is not six numbers: {text!r}") from None
+    cr, sr, cp, sp = math.cos(roll / 2), math.sin(roll / 2), math.cos(pitch / 2), math.sin(pitch / 2)
+    cy, sy = math.cos(yaw / 2), math.sin(yaw / 2)
+    return (x, y, z), (sr * cp * cy - cr * sp * sy, cr * sp * cy + sr * cp * sy,
+                       cr * cp * sy - sr * sp * cy, cr * cp * cy + sr * sp * sy)
+
+
+def _massless(link: ET.Element) -> None:
+    """Give ``link`` mass 0: pybullet makes a body of massless links fixed."""
+    inertial = link.find("inertial")
+    if inertial is None:  # pybullet refuses an <inertial> without its <inertia>
+        inertial = ET.SubElement(link, "inertial")
+        inertia = ET.SubElement(inertial, "inertia")
+        for name in ("ixx", "ixy", "ixz", "iyy", "iyz", "izz"):
+            ET.SubElement(inertia, name).text = "1" if name[1] == name[2] else "0"
+    mass = inertial.find("mass")
+    if mass is None:
+        mass = ET.SubElement(inertial, "mass")
+    mass.text = "0"
 
 
 def _z_order(x: float, y: float) -> int:

@@ -2,9 +2,8 @@
 """Reactive people: a pedestrian-dynamics model (JuPedSim, in a process of its own) moves the people who see the
 robot, in lockstep with the physics (docs/people.md)."""
 
-from rei.sim.people.crowd import DT, Crowd, CrowdPath, Mover, footprint_radius
+from rei.sim.people.crowd import DT, Crowd, Mover, footprint_radius
 from rei.sim.people.server import PeopleError, PeopleServer
 from rei.sim.people.walkers import RobotView, Walker
 
-__all__ = ["DT", "Crowd", "CrowdPath", "Mover", "PeopleError", "PeopleServer", "RobotView", "Walker",
-           "footprint_radius"]
+__all__ = ["DT", "Crowd", "Mover", "PeopleError", "PeopleServer", "RobotView", "Walker", "footprint_radius"]

@@ -5,9 +5,8 @@ The crowd steps every :data:`DT` seconds of simulated time (JuPedSim's models ar
 tells the model where the robot and the bodies on rails are (their true poses: the people see where the robot
 really is, not where the model last let it be) and where each person wants to go (``walkers``). The model computes
 the step in its own process while the physics runs the next 50 ms (pipelined: on two cores the people cost little
-more than their bodies), and the animator moves each person's body in the physics towards the model's latest
-place, as it moves a body on rails towards its trajectory: one step behind the model, the body is still a solid
-the robot can touch and the lidar sees.
+more than their bodies). The simulation puts each person's body, a fixed solid the robot can touch and the lidar
+sees, at the model's place after each step taken (rei.sim.simulation).
 """
 
 from __future__ import annotations
@@ -115,8 +114,8 @@ class Crowd:
         """One crowd step, at a multiple of DT; ``movers`` in the order given at the start, the robot first.
 
         Pipelined: the model computes the step asked for now while the physics runs the next DT, and its places are
-        taken at the next call. So the people's bodies follow the model one step (50 ms) behind; the model itself is
-        given the robot's true pose of every step."""
+        taken at the next call: the people's places at that call's time, which the model worked out from the
+        robot's true pose at this one."""
         if self._pending:
             self._apply(self._server.receive("step"))
             if self._seen_robot is not None:  # where the people saw the robot, and where it really was then
@@ -133,11 +132,9 @@ class Crowd:
         return reply
 
     def _targets(self, robot: RobotView) -> list[list]:
-        targets = []
-        for walker, at in zip(self.walkers, self._now, strict=True):
-            speed, points = walker.target(self.t, at, robot)
-            targets.append([speed, *(list(q) for q in points)])
-        return targets
+        t = self.t  # (a point's tuple goes over the pipe as a list would)
+        return [[speed, *points] for speed, points in (walker.target(t, at, robot)
+                                                       for walker, at in zip(self.walkers, self._now, strict=True))]
 
     def _apply(self, reply: dict) -> None:
         self._before = self._now
@@ -145,11 +142,12 @@ class Crowd:
         self._seen_robot = (reply["seen"][0][0], reply["seen"][0][1]) if reply["seen"] else None
         self._steps += 1
         self.t = self._steps * DT
-        for i, (walker, (x0, y0), (x1, y1)) in enumerate(zip(self.walkers, self._before, self._now, strict=True)):
+        jitter = 0.01 * DT  # standing jitter is not a heading
+        for i, (walker, walked, (x0, y0), (x1, y1)) in enumerate(zip(self.walkers, self.walked, self._before, self._now,
+                                                                      strict=True)):
             step = math.hypot(x1 - x0, y1 - y0)
-            if step > 0.01 * DT:  # standing jitter is not a heading
+            if step > jitter:
                 self._headings[i] = math.atan2(y1 - y0, x1 - x0)
-            walked = self.walked[i]
             walked.walked += step
             if i in self._trails and step > 0.0:
                 self._trails[i].append((walked.walked, (x1, y1)))
@@ -175,6 +173,16 @@ class Crowd:
     def position(self, index: int) -> Point:
         """Person ``index``'s place in the model after the latest step taken."""
         return self._now[index]
+
+    @property
+    def positions(self) -> Sequence[Point]:
+        """Every person's place in the model after the latest step taken (not to be changed)."""
+        return self._now
+
+    def velocity(self, index: int) -> Point:
+        """Person ``index``'s velocity in the model over the latest step taken (m/s)."""
+        (x0, y0), (x1, y1) = self._before[index], self._now[index]
+        return ((x1 - x0) / DT, (y1 - y0) / DT)
 
     def close(self) -> None:
         if self._pending:
@@ -227,16 +235,3 @@ def _walkers(people: Sequence[PersonSpec], radii: Sequence[float], speeds: Seque
             members[p.group] = 0
         walkers.append(walker)
     return walkers
-
-
-class CrowdPath:
-    """A person's path for the animator: ``position(t)`` as a trajectory on rails gives it."""
-
-    __slots__ = ("_crowd", "_index")
-
-    def __init__(self, crowd: Crowd, index: int) -> None:
-        self._crowd = crowd
-        self._index = index
-
-    def position(self, t: float) -> Point:  # the animator asks for a time; the crowd has one place
-        return self._crowd.position(self._index)

@@ -154,6 +154,11 @@ class Walker:
 
     def _next(self, t: float, at: Point) -> Point:
         """The waypoint to head for, moving on past those reached."""
+        leg = self._legs[self._leg]
+        last = len(leg) - 1
+        point = leg[min(self._waypoint, last)]
+        if math.dist(at, point) >= (ARRIVE if self._waypoint < last else ARRIVE_STOP):
+            return point  # most steps: the same waypoint, not reached yet
         for _ in range(sum(len(leg) for leg in self._legs) + 1):  # a loop of stops all within ARRIVE ends here
             leg = self._legs[self._leg]
             point = leg[min(self._waypoint, len(leg) - 1)]
@@ -181,6 +186,8 @@ class Walker:
 
     def _react(self, t: float, at: Point, robot: RobotView) -> tuple[float, float, float] | None:
         behaviour = self.spec.behaviour
+        if behaviour is Behaviour.AVOIDS or behaviour is Behaviour.IGNORES:
+            return None
         near = math.dist(at, (robot.x, robot.y))
         if behaviour is Behaviour.SCARED:
             if near >= SCARED_DISTANCE:
