@@ -1,13 +1,16 @@
 # SPDX-License-Identifier: EPL-2.0
 """`rei campaign --ray` on a real multi-node Ray cluster on this machine whose worker nodes share nothing with the
-driver but Ray: a node in a mount namespace of its own, where the driver's folder (spec, OUT) is hidden under an
-empty tmpfs, runs every run and the campaign's files arrive in OUT through Ray, its streams byte for byte those
-of a local campaign; and a worker node whose raylet is killed in the middle of a campaign loses nothing (its runs
-are tried again on the other node, each recorded once, with the try that gave it). The head has no CPU, so every
-run goes to a worker node. Real simulation, monitor jar and evaluator."""
+driver but Ray: a node in a mount namespace of its own, where the driver's folder (spec, OUT) and this checkout are
+hidden under empty tmpfs mounts and REI is the one installed from its wheel (scripts/build-wheel.sh, carrying the
+monitor jar) into a virtual environment of the node's, runs every run and the campaign's files arrive in OUT
+through Ray, its streams byte for byte those of a local campaign; a node without Java is named at connect time;
+and a worker node whose raylet is killed in the middle of a campaign loses nothing (its runs are tried again on
+the other node, each recorded once, with the try that gave it). The head has no CPU, so every run goes to a
+worker node. Real simulation, monitor jar and evaluator."""
 
 from __future__ import annotations
 
+import ast
 import contextlib
 import csv
 import json
@@ -19,6 +22,7 @@ import signal
 import socket
 import subprocess
 import sys
+import sysconfig
 import tempfile
 import time
 from collections.abc import Iterator
@@ -39,6 +43,55 @@ rule "User: a task starts" on userTaskStarts emits SIG_USER_TASK_STARTED
 """
 
 
+@dataclass(frozen=True)
+class NodeEnv:
+    """A worker node's own Python environment: a virtual environment with REI installed from its wheel. Its
+    third-party packages (Ray, pybullet, numpy...) are the driver's, read-only: ``deps`` is bind-mounted at
+    ``stash`` in the node's namespace, where the venv's .pth file finds them, for downloading and unpacking ~1 GB
+    of wheels would cost each test run minutes. The driver's editable REI there is never imported: .pth files are
+    processed in site directories only, not in a folder a .pth file adds."""
+
+    python: Path
+    deps: Path
+    stash: Path
+    wheel: Path
+
+
+@pytest.fixture(scope="module")
+def node_env(tmp_path_factory: pytest.TempPathFactory) -> NodeEnv:
+    """REI's wheel, built as a user builds it, installed into a venv of the nodes' (~20 s)."""
+    root = tmp_path_factory.mktemp("node-env")
+    built = subprocess.run(["bash", str(REPO_ROOT / "scripts" / "build-wheel.sh"), "-o", str(root / "dist")],
+                           capture_output=True, text=True, timeout=300, check=False)
+    assert built.returncode == 0, built.stderr
+    wheel = Path(built.stdout.strip().splitlines()[-1])
+    venv = root / "venv"
+    base = Path(sys.executable).resolve()  # the interpreter the driver's venv was made from
+    subprocess.run([str(base), "-m", "venv", "--without-pip", str(venv)], check=True, timeout=120)
+    # pip of the driver's venv installs into the node's interpreter: REI alone (its requirements are the stash's)
+    subprocess.run([sys.executable, "-m", "pip", "--python", str(venv / "bin" / "python"), "install", "--quiet",
+                    "--no-deps", "--no-index", str(wheel)], check=True, timeout=300)
+    stash = root / "deps"
+    stash.mkdir()
+    site = next((venv / "lib").glob("python3*/site-packages"))
+    (site / "driver-deps.pth").write_text(f"{stash}\n", encoding="utf-8")
+    deps = Path(sysconfig.get_paths()["purelib"]).resolve()  # the driver's site-packages
+    return NodeEnv(venv / "bin" / "python", deps, stash, wheel)
+
+
+def _without_java(folder: Path) -> str:
+    """A PATH of one folder: symbolic links to every program of this PATH but java."""
+    folder.mkdir()
+    for directory in os.environ.get("PATH", "").split(os.pathsep):
+        with contextlib.suppress(OSError):
+            for program in Path(directory).iterdir():
+                link = folder / program.name
+                if program.name != "java" and not link.exists() and not link.is_symlink():
+                    link.symlink_to(program)
+    assert shutil.which("java", path=str(folder)) is None
+    return str(folder)
+
+
 @dataclass
 class Cluster:
     root: Path  # RAY_TMPDIR of every process of the cluster, and the nodes' own TMPDIRs below it
@@ -46,17 +99,38 @@ class Cluster:
     log: Path
     processes: dict[str, subprocess.Popen[bytes]] = field(default_factory=dict)
 
-    def add_node(self, name: str, *, hide: Path | None = None) -> Path:
+    def add_node(self, name: str, *, hide: Path | None = None, own: NodeEnv | None = None,
+                 path: str | None = None) -> Path:
         """A worker node of 1 CPU whose processes' temporary folder is a folder of its own (returned); ``hide``: the
-        node runs in a mount namespace of its own where that folder is an empty tmpfs."""
+        node runs in a mount namespace of its own where that folder is an empty tmpfs; ``own``: the node runs the
+        Python environment of REI's wheel, and this checkout is hidden too; ``path``: the node's PATH."""
         tmp = self.root / name
         tmp.mkdir()
-        command = [str(RAY), "start", "--block", f"--address={self.env['RAY_ADDRESS']}", "--num-cpus=1",
+        ray = [str(RAY)] if own is None else [str(own.python), "-m", "ray.scripts.scripts"]
+        command = [*ray, "start", "--block", f"--address={self.env['RAY_ADDRESS']}", "--num-cpus=1",
                    "--node-ip-address=127.0.0.1", "--disable-usage-stats", "--object-store-memory=80000000"]
-        if hide is not None:  # unshare execs sh, sh execs ray: the process is the node's `ray start`
-            command = ["unshare", "-m", "sh", "-c", 'mount -t tmpfs tmpfs "$0" && exec "$@"', str(hide), *command]
-        self.processes[name] = _start(command, self.log, {**os.environ, **self.env, "TMPDIR": str(tmp)})
+        env = {**os.environ, **self.env, "TMPDIR": str(tmp)}
+        if own is not None:  # nothing of the driver's Python but the stash: no REI_HOME, no venv of the checkout's
+            for key in ("REI_HOME", "VIRTUAL_ENV", "PYTHONPATH"):
+                env.pop(key, None)
+            env["PATH"] = os.pathsep.join([str(own.python.parent), *(
+                p for p in env["PATH"].split(os.pathsep) if not p.startswith(str(REPO_ROOT)))])
+        if path is not None:
+            env["PATH"] = os.pathsep.join([str(own.python.parent), path]) if own is not None else path
+        if hide is not None or own is not None:  # unshare execs sh, sh execs ray: the process is the node's `ray start`
+            hidden = [str(p) for p in (hide, REPO_ROOT if own is not None else None) if p is not None]
+            script = 'set -e; for h in "$@"; do [ "$h" = -- ] && break; mount -t tmpfs tmpfs "$h"; done; '
+            if own is not None:  # the driver's packages, read-only, where the node's .pth file names them
+                script = (f'mount --bind "{own.deps}" "{own.stash}"; mount -o remount,bind,ro "{own.stash}"; '
+                          + script)
+            script += 'while [ "$1" != -- ]; do shift; done; shift; exec "$@"'
+            command = ["/usr/bin/unshare", "-m", "/bin/sh", "-c", script, "sh", *hidden, "--", *command]
+        self.processes[name] = _start(command, self.log, env)
         return tmp
+
+    def node_root(self, name: str) -> Path:
+        """The node's view of the file system (its `ray start`'s)."""
+        return Path(f"/proc/{self.processes[name].pid}/root")
 
     def wait_for_cpus(self, cpus: int, timeout: float = 120) -> None:
         script = "import ray; ray.init(logging_level='ERROR'); print(int(ray.cluster_resources().get('CPU', 0)))"
@@ -68,6 +142,14 @@ class Cluster:
                 return
             time.sleep(2)
         raise AssertionError(f"the cluster never had {cpus} CPUs: {self.log.read_text(errors='replace')[-3000:]}")
+
+    def nodes_with_cpu(self) -> list[tuple[str, str]]:
+        """(address, the first 12 digits of the id) of each alive node with a CPU, as Ray has them."""
+        script = ("import ray; ray.init(logging_level='ERROR'); print([(n['NodeManagerAddress'], n['NodeID'][:12]) "
+                  "for n in ray.nodes() if n['Alive'] and n['Resources'].get('CPU')])")
+        probe = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120,
+                               env={**os.environ, **self.env}, check=True)
+        return [tuple(node) for node in ast.literal_eval(probe.stdout.strip().splitlines()[-1])]
 
     def raylet(self, name: str) -> int:
         """The pid of the node's raylet (a child of its `ray start`)."""
@@ -142,6 +224,17 @@ def cluster(tmp_path: Path) -> Iterator[Cluster]:
         assert not left, f"Ray processes outlived the test: {left}"
 
 
+def _runs_reis_wheel(cluster: Cluster, name: str, own: NodeEnv) -> None:
+    """The node is its own venv's Python, and this checkout is nothing to it: REI can only be the wheel's."""
+    node = cluster.processes[name].pid
+    assert Path(f"/proc/{node}/cmdline").read_bytes().split(b"\0")[0] == bytes(own.python)
+    root = cluster.node_root(name)
+    assert (REPO_ROOT / "pom.xml").is_file() and list((root / REPO_ROOT.relative_to("/")).iterdir()) == []
+    assert (root / own.stash.relative_to("/") / "ray").is_dir()  # its third-party packages, read-only
+    mounts = [line.split() for line in Path(f"/proc/{node}/mountinfo").read_text().splitlines()]
+    assert [m[5].split(",")[0] for m in mounts if m[4] == str(own.stash)] == ["ro"], mounts
+
+
 def _spec(folder: Path, repetitions: int, script: str, more: str = "") -> Path:
     (folder / "short.txt").write_text(script, encoding="utf-8")
     (folder / "mine").mkdir(exist_ok=True)
@@ -172,7 +265,7 @@ def _campaign(run_cli: Any, spec: Path, out: Path, cluster: Cluster, timeout: fl
 
 
 def test_a_node_that_cannot_see_out_runs_the_campaign_as_a_local_one(tmp_path: Path, cluster: Cluster,
-                                                                    run_cli: Any) -> None:
+                                                                    run_cli: Any, node_env: NodeEnv) -> None:
     started = time.monotonic()
     work = tmp_path / "driver"  # the spec, its patterns, utilities and script, and OUT: hidden from the node
     work.mkdir()
@@ -181,10 +274,11 @@ def test_a_node_that_cannot_see_out_runs_the_campaign_as_a_local_one(tmp_path: P
     cases: [{REPO_ROOT / "examples" / "maps" / "two_rooms.rei"}]
     variants: [{{name: short, humans: false, controller: "script:{work / 'short.txt'}"}}]
 """)
-    node_tmp = cluster.add_node("node1", hide=work)
+    node_tmp = cluster.add_node("node1", hide=work, own=node_env)
     cluster.wait_for_cpus(1)
-    node_root = Path(f"/proc/{cluster.processes['node1'].pid}/root")  # the node's view of the file system
+    node_root = cluster.node_root("node1")
     assert (work / "spec.yaml").is_file() and not (node_root / (work / "spec.yaml").relative_to("/")).exists()
+    _runs_reis_wheel(cluster, "node1", node_env)
     out = work / "out"
     result = _campaign(run_cli, spec, out, cluster)
     assert result.returncode == 0, result.stdout + result.stderr
@@ -277,7 +371,8 @@ def test_a_node_lost_in_the_middle_of_a_campaign_loses_no_run_and_repeats_none(t
 
 
 def test_a_search_on_a_node_that_cannot_see_out_finds_what_a_local_search_finds(tmp_path: Path, cluster: Cluster,
-                                                                               run_cli: Any) -> None:
+                                                                               run_cli: Any,
+                                                                               node_env: NodeEnv) -> None:
     """`rei search --ray` uses the same backend: its candidates' cases go to the node as bytes, their runs come
     back, and the study's journal stays on the driver; the same candidates and values as a local search."""
     started = time.monotonic()
@@ -285,9 +380,10 @@ def test_a_search_on_a_node_that_cannot_see_out_finds_what_a_local_search_finds(
     work.mkdir()
     for name in ("crossing.rei", "crossing.yaml"):
         shutil.copy(REPO_ROOT / "examples" / "search" / name, work / name)
-    node_tmp = cluster.add_node("node1", hide=work)
+    node_tmp = cluster.add_node("node1", hide=work, own=node_env)
     cluster.wait_for_cpus(1)
-    node_root = Path(f"/proc/{cluster.processes['node1'].pid}/root")
+    node_root = cluster.node_root("node1")
+    _runs_reis_wheel(cluster, "node1", node_env)
     out = work / "out"
     result = run_cli("search", work / "crossing.yaml", "-o", out, "--ray", cluster.env["RAY_ADDRESS"], "--budget",
                      "2", "--no-shrink", timeout=300, env=cluster.env)
@@ -362,3 +458,24 @@ def test_sigterm_stops_this_campaigns_runs_on_the_cluster_and_nothing_else(tmp_p
     assert not [line for line in _leftovers(node_tmp) if "rei.campaign.worker" in line]
     assert other.returncode == 0 and "the other job's task finished" in said.decode(), said
     print(f"campaign stopped on the cluster (cluster start included): {time.monotonic() - started:.1f} s")
+
+
+def test_a_node_without_java_is_named_when_the_campaign_connects(tmp_path: Path, cluster: Cluster, run_cli: Any,
+                                                                 node_env: NodeEnv) -> None:
+    """Checked at connect time, node by node: a node whose PATH has no java fails the campaign before any run,
+    named by its address and id, with what it lacks (not each of its runs with that error)."""
+    started = time.monotonic()
+    spec = _spec(tmp_path, 1, "1.0 0.1 0.0\n")
+    cluster.add_node("nojava", own=node_env, path=_without_java(tmp_path / "bin"))
+    cluster.wait_for_cpus(1)
+    out = tmp_path / "out"
+    result = _campaign(run_cli, spec, out, cluster, timeout=240)
+    assert result.returncode == 2, result.stdout + result.stderr
+    lines = result.stderr.strip().splitlines()
+    assert lines[-2] == "rei: error: 1 of 1 Ray node(s) cannot run REI's runs:", result.stderr
+    named = re.fullmatch(r"rei: error: node (\S+) \(([0-9a-f]{12})\): java not found on PATH; install a Java 17\+ "
+                         r"runtime or set JAVA_HOME", lines[-1])
+    assert named, result.stderr
+    assert named.groups() in cluster.nodes_with_cpu(), (named.groups(), cluster.nodes_with_cpu())
+    assert not (out / "runs.csv").exists()  # no run was tried
+    print(f"a node without java refused (cluster start included): {time.monotonic() - started:.1f} s")

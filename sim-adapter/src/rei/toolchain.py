@@ -31,6 +31,9 @@ JARS: Mapping[str, str] = {
 }
 
 BUILD_HINT = "run ./rei once to build the Java parts"
+#: Where an installed wheel keeps the jars it carries (scripts/build-wheel.sh copies them in, by their file names):
+#: a Ray worker node or a container runs REI without a checkout. Absent in a checkout, whose Maven builds them.
+PACKAGED_JARS = Path(__file__).with_name("jars")
 
 # The Java generator reads a robot's URDF or xacro description through REI's Python reader (xacro and ROS's URDF
 # parser are Python packages): every JVM started from here inherits this interpreter, the one REI is installed in.
@@ -124,9 +127,18 @@ def java_version(executable: Path) -> int:
 
 
 def find_jar(role: str, root: Path | None = None) -> Path:
-    """The built jar for `role` (a key of `JARS`), or an error telling the user to build it."""
+    """The built jar for `role` (a key of `JARS`), or an error telling the user to build it: the checkout's
+    (`root`, else `REI_HOME`'s), else the one an installed wheel carries, else the checkout above this module's."""
     if role not in JARS:
         raise ValueError(f"unknown jar role {role!r}; known: {', '.join(JARS)}")
+    if root is None and not os.environ.get("REI_HOME") and PACKAGED_JARS.is_dir():
+        packaged = PACKAGED_JARS / Path(JARS[role]).name
+        if packaged.is_file():
+            return packaged
+        carried = ", ".join(sorted(p.name for p in PACKAGED_JARS.glob("*.jar"))) or "none"
+        raise ToolchainError(f"this installation of REI carries no {packaged.name} (it has: {carried}); install a "
+                             f"wheel built with it (scripts/build-wheel.sh --jars {role}) or set REI_HOME to a "
+                             "built checkout")
     root = find_repo_root() if root is None else root
     jar = root / JARS[role]
     if not jar.is_file():

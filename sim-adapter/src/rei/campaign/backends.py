@@ -149,8 +149,10 @@ class RayBackend:
     name = "ray"
 
     def __init__(self, address: str, workers: int | None = None, attempts: int = 3,
-                 log: Callable[[str], None] = print) -> None:
+                 log: Callable[[str], None] = print, router: bool = False) -> None:
         import ray
+
+        from rei.campaign.nodes import check_cluster
 
         if attempts < 1:
             raise ValueError(f"attempts must be >= 1, got {attempts}")
@@ -163,6 +165,9 @@ class RayBackend:
         #: files): the campaign's metrics (campaign.json: transfer)
         self.moved = {"sent": 0, "received": 0}
         init: dict[str, Any] = {"include_dashboard": False, "log_to_driver": False, "logging_level": "WARNING"}
+        runtime_env = _runtime_env()
+        if runtime_env is not None:  # else Ray's own: a job's (`ray job submit --runtime-env-json`), or none
+            init["runtime_env"] = runtime_env
         if address == "local":
             # short, in the system's temporary directory: Ray's unix sockets live below it (108-byte limit)
             self._temp_dir = Path(tempfile.mkdtemp(prefix="rei-ray-"))  # mode 0700: the token is ours alone
@@ -179,6 +184,14 @@ class RayBackend:
                 raise
         else:
             ray.init(address=address, **init)
+        # every node runs can go to is asked once whether it can run them (Java, the monitor jar, pybullet, the
+        # router when the runs start one): one that cannot is named now rather than failing its runs one by one
+        problems = check_cluster(ray, router)
+        if problems:
+            nodes = sum(1 for node in ray.nodes() if node.get("Alive") and node.get("Resources", {}).get("CPU", 0))
+            self.close()
+            raise NodesUnfitError(f"{len({name for name, _ in problems})} of {nodes} Ray node(s) cannot run "
+                                  "REI's runs:\n" + "\n".join(f"{name}: {lack}" for name, lack in problems))
         self.workers = max(1, int(ray.cluster_resources().get("CPU", 1)))
         # max_retries=0: REI tries a lost task again itself (above); Ray's own retry would hide the attempt
         self._remote = ray.remote(num_cpus=1, max_retries=0)(run_shipped)
@@ -261,16 +274,45 @@ class RayBackend:
             shutil.rmtree(self._temp_dir, ignore_errors=True)
 
 
-class RayUnavailableError(RuntimeError):
-    """The runs have nowhere to go: Ray is missing or its cluster can not be reached (the message says which)."""
+#: Environment variable naming a Ray runtime environment for the runs' tasks: a JSON file, or the JSON itself
+#: (``{"py_modules": ["dist/rei-0.1.0-py3-none-any.whl"]}`` installs REI's wheel on each node for the job).
+RUNTIME_ENV_ENV = "REI_RAY_RUNTIME_ENV"
 
 
-def connect_ray(address: str, workers: int) -> RayBackend:
-    """The Ray backend for ``--ray ADDRESS`` (``local``: a Ray instance of ``workers`` CPUs started here; a cluster
-    has CPUs of its own), for rei campaign and rei search."""
+def _runtime_env() -> dict[str, Any] | None:
+    import json
+
+    value = os.environ.get(RUNTIME_ENV_ENV, "").strip()
+    if not value:
+        return None
     try:
-        return RayBackend(address, workers if address == "local" else None)
+        text = value if value.startswith("{") else Path(value).read_text(encoding="utf-8")
+        env = json.loads(text)
+    except (OSError, ValueError) as error:
+        raise ValueError(f"${RUNTIME_ENV_ENV}: not a JSON object nor a JSON file: {error}") from None
+    if not isinstance(env, dict):
+        raise TypeError(f"${RUNTIME_ENV_ENV}: a runtime environment is a JSON object, got {type(env).__name__}")
+    return env
+
+
+class NodesUnfitError(RuntimeError):
+    """Some nodes of the cluster cannot run REI's runs; the message names each and what it lacks."""
+
+
+class RayUnavailableError(RuntimeError):
+    """The runs have nowhere to go: Ray is missing, its cluster can not be reached or some of its nodes cannot run
+    REI (the message says which)."""
+
+
+def connect_ray(address: str, workers: int, router: bool = False) -> RayBackend:
+    """The Ray backend for ``--ray ADDRESS`` (``local``: a Ray instance of ``workers`` CPUs started here; a cluster
+    has CPUs of its own), for rei campaign and rei search; ``router``: the runs start a WAMP router (``mode:
+    pipeline``, an external SUT), which the nodes are then checked to have."""
+    try:
+        return RayBackend(address, workers if address == "local" else None, router=router)
     except ImportError:
         raise RayUnavailableError("--ray needs Ray: pip install 'rei[campaign-ray]'") from None
+    except NodesUnfitError as error:
+        raise RayUnavailableError(str(error)) from None
     except Exception as error:  # noqa: BLE001 - any failure to reach the cluster is the user's to fix
         raise RayUnavailableError(f"cannot connect to Ray at {address}: {error}") from None

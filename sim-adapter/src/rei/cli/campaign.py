@@ -78,9 +78,12 @@ def _run(args: argparse.Namespace) -> int:
         from rei.campaign.backends import RayUnavailableError, connect_ray
 
         try:
-            backend: Any = connect_ray(args.ray, workers)
+            # the nodes are checked for a router when the runs start one
+            router = spec.mode == "pipeline" or any(
+                variant.sut is not None for group in spec.groups for variant in group.variants)
+            backend: Any = connect_ray(args.ray, workers, router=router)
         except RayUnavailableError as error:
-            raise CommandError(str(error)) from None
+            raise CommandError(str(error).splitlines()) from None  # a line per node that cannot run REI
     service = None
     if not args.ray:
         from rei.service import SWITCH_ENV

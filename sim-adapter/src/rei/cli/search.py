@@ -74,7 +74,7 @@ def run(args: argparse.Namespace) -> int:
     except SpecError as error:
         raise CommandError(error.problems) from None
     except RayUnavailableError as error:
-        raise CommandError(str(error)) from None
+        raise CommandError(str(error).splitlines()) from None  # a line per node that cannot run REI
     except EngineError as error:
         # the engine broke, not the candidate: no candidate is told invalid for it, and the one it was making is
         # asked again when the search resumes
