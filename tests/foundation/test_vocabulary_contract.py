@@ -146,6 +146,33 @@ def test_behaviour_copies(contract: dict, repo_root: Path) -> None:
     assert f"\\\\b(?:{'|'.join(behaviours['values'])})\\\\b" in keywords
 
 
+def test_drive_copies(contract: dict, repo_root: Path) -> None:
+    """A robot's drive: the language's enum (its first literal is EMF's default, what a robot type that says no
+    drive gets), the catalogue metamodel's literals, world.json's reader, hello's robot.drive as the simulation
+    writes it, and the VS Code keywords."""
+    import xml.etree.ElementTree as ET
+
+    from rei.artifacts.world import DRIVE_KINDS, DriveSpec
+
+    drives = contract["drives"]
+    assert list(DRIVE_KINDS) == drives["types"] and drives["default"] == drives["types"][0]
+    assert DriveSpec(0.033, 0.287, 0.26, 1.82).kind == drives["default"]
+    grammar = (repo_root / "bundles" / "org.rei.dsl" / "src" / "main" / "java" / "org" / "rei" / "dsl"
+               / "Rei.xtext").read_text(encoding="utf-8")
+    enum = re.search(r"enum Drive returns cat::Drive:([^;]+);", grammar)
+    assert enum is not None, "Rei.xtext: no enum Drive"
+    assert re.findall(r"='(\w+)'", enum[1]) == drives["types"]
+    model = ET.parse(repo_root / "metamodels" / "model" / "catalogue.ecore").getroot()
+    literals = [c for c in model.findall("eClassifiers") if c.get("name") == "Drive"]
+    assert len(literals) == 1
+    assert [(literal.get("literal"), literal.get("value")) for literal in literals[0].findall("eLiterals")] == [
+        (kind, str(i)) for i, kind in enumerate(drives["types"])]
+    session = (repo_root / "sim-adapter" / "src" / "rei" / "sut" / "external" / "session.py").read_text(encoding="utf-8")
+    assert '"drive": robot.drive.kind' in session  # hello's robot.drive is world.json's, one of these
+    keywords = (repo_root / "editors" / "vscode" / "syntaxes" / "rei.tmLanguage.json").read_text(encoding="utf-8")
+    assert f"\\\\b(?:{'|'.join(drives['types'])})\\\\b" in keywords
+
+
 def test_the_map_limits_are_one_fact_of_both_readers_and_of_the_language_page(contract: dict, java_facts: dict,
                                                                              repo_root: Path) -> None:
     """The most cells a map may have and the most blocks a floor size may cut it into: Python's rei.maps and Java's

@@ -51,9 +51,12 @@ SECTIONS = {"`hello` call": "hello_call", "`hello` result": "hello", "`tick`": "
 FROM_SIMULATION = ("hello", "tick", "goal", "cancel", "end")
 FROM_SUT = ("hello_call", "command", "status")
 #: A lidar slower than the control rate (ticks without a scan) that cannot span the room (misses read +inf), and a
-#: mission whose first goal times out (cancel) at once.
+#: mission whose first goal times out (cancel) at once. The realtime run's robot is holonomic (hello's drive, the
+#: ticks' [v, w, vy]), the lockstep run's differential.
 CATALOGUE = """catalogue ContractTypes {
   robot type Probe : box 0.281 x 0.306 x 0.141 mass 1.8
+    lidar beams 90 range 0.12 to 3.5 rate 5
+  robot type OmniProbe : box 0.281 x 0.306 x 0.141 mass 1.8 drive holonomic
     lidar beams 90 range 0.12 to 3.5 rate 5
 }
 """
@@ -234,7 +237,9 @@ def test_what_rei_sends_and_takes_is_what_the_document_says(
     lockstep, realtime = tmp_path / "lockstep", tmp_path / "realtime"
     with ThreadPoolExecutor(2) as pool:  # both at once: the realtime run mostly waits for the wall clock
         first = pool.submit(_run, run_cli, map_case, lockstep, _plan(doc, False), "--sut-map")
-        second = pool.submit(_run, run_cli, case, realtime, _plan(doc, True), "--sut-clock", "realtime")
+        holonomic = tmp_path / "contract_holonomic.rei"
+        holonomic.write_text(CASE.replace(": Probe on", ": OmniProbe on"))
+        second = pool.submit(_run, run_cli, holonomic, realtime, _plan(doc, True), "--sut-clock", "realtime")
         runs = {lockstep: first.result(), realtime: second.result()}
     seen: dict[str, set] = {name: set() for name in doc}
     for received, _ in runs.values():
@@ -270,10 +275,19 @@ def test_what_rei_sends_and_takes_is_what_the_document_says(
     assert stats["commands"] == len(ticks) and stats["rejected"] == len(ticks)  # each tick: the float tick
     assert all("tick must be an integer" in r for r in stats["first_rejections"])
     assert stats["stale"] == 1 and stats["statuses"] == 2  # CANCELLED after the cancel is stale
-    assert stats["clamped"] == 0 and set(stats["round_trip_ms"]) == {"p50", "p99", "max"}
+    # the differential robot's vy is clamped to 0: the ticks answered with the example that has one
+    commands = doc["command"].examples
+    sideways = sum(1 for p in ticks if commands[p["tick"] % len(commands)].get("vy", 0) != 0)
+    assert sideways > 0 and stats["clamped"] == sideways and set(stats["round_trip_ms"]) == {"p50", "p99", "max"}
+    assert hello["robot"]["drive"] == "differential" and hello["robot"]["max_lateral"] == 0.0
+    assert all(len(p["odom"]["twist"]) == 2 for p in ticks)
 
     received, sim = runs[realtime]
     assert received[0][1]["map"] is None and received[0][1]["clock"] == "realtime"
+    robot = received[0][1]["robot"]
+    assert robot["drive"] == "holonomic" and robot["max_lateral"] == robot["max_linear"]
+    assert all(len(p["odom"]["twist"]) == 3 for name, p in received if name == "tick")
+    assert sim["sut"]["clamped"] == 0  # its vy is within its limit
     assert sim["sut"]["round_trip_ms"] is None and sim["sut"]["clock"] == "realtime"
     assert sim["sut"]["statuses"] == 2 and sim["sut"]["stale"] == 0
     assert [t["reason"] for t in sim["tasks"]] == ["planner failure: the navigation aborted: no path"] * 2

@@ -22,10 +22,12 @@ class Pose2D:
 
 @dataclass(frozen=True, slots=True)
 class Twist2D:
-    """A planar velocity command or measurement: forward m/s and turn rad/s (robot frame)."""
+    """A planar velocity command or measurement in the robot's frame: forward m/s, turn rad/s and sideways m/s
+    (``vy``, towards the robot's left: only a holonomic drive makes it, a differential one limits it to 0)."""
 
     v: float = 0.0
     w: float = 0.0
+    vy: float = 0.0
 
 
 def wrap_angle(angle: float) -> float:

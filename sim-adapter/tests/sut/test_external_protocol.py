@@ -83,6 +83,30 @@ def test_absurd_velocities_are_clamped_to_the_robot_s_limits() -> None:
     assert _check({"tick": 4, "v": -0.26, "w": 1.82}) == Command(4, Twist2D(-0.26, 1.82), clamped=False)
 
 
+def test_vy_is_a_holonomic_robot_s_and_clamped_to_0_for_a_differential_one() -> None:
+    holonomic = RobotLimits(max_linear=0.26, max_angular=1.82, max_lateral=0.26)
+    assert protocol.check_command({"tick": 4, "v": 0, "w": 0, "vy": -0.2}, current_tick=4, answered=False,
+                                  limits=holonomic) == Command(4, Twist2D(0.0, 0.0, -0.2))
+    assert protocol.check_command({"tick": 4, "v": 0, "w": 0, "vy": 9}, current_tick=4, answered=False,
+                                  limits=holonomic) == Command(4, Twist2D(0.0, 0.0, 0.26), clamped=True)
+    assert _check({"tick": 4, "v": 0.1, "w": 0, "vy": 0.2}) == Command(4, Twist2D(0.1, 0.0, 0.0), clamped=True)
+    assert _check({"tick": 4, "v": 0.1, "w": 0, "vy": 0}) == Command(4, Twist2D(0.1, 0.0), clamped=False)
+    for payload, reason in (({"tick": 4, "v": 0, "w": 0, "vy": "left"}, "vy must be a number"),
+                            ({"tick": 4, "v": 0, "w": 0, "vy": math.inf}, "vy must be finite"),
+                            ({"tick": 4, "v": 0, "vy": 0.1}, "missing w")):
+        result = _check(payload)
+        assert isinstance(result, Rejected) and reason in result.reason, result
+
+
+def test_a_holonomic_robot_s_tick_has_its_sideways_odometry_third() -> None:
+    observation = Observation(t=0.5, odom=Pose2D(1.0, 2.0, 0.1), odom_twist=Twist2D(0.1, 0.2, -0.3), scan=None)
+    differential = protocol.tick_message(5, observation, new_scan=False, scan_time=0.1)
+    holonomic = protocol.tick_message(5, observation, new_scan=False, scan_time=0.1, holonomic=True)
+    assert differential["odom"]["twist"] == [0.1, 0.2] and holonomic["odom"]["twist"] == [0.1, 0.2, -0.3]
+    assert protocol.read_observation(holonomic, None).odom_twist == Twist2D(0.1, 0.2, -0.3)
+    assert protocol.read_observation(differential, None).odom_twist == Twist2D(0.1, 0.2)
+
+
 def test_statuses_follow_the_action_server_s_states() -> None:
     assert protocol.check_status({"goal_id": 1, "status": "SUCCEEDED", "text": "there"}, current_goal=1) == \
         Status(1, NavStatus.SUCCEEDED, "there")

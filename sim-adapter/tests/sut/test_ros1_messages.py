@@ -34,6 +34,15 @@ def test_odometry_and_tf_carry_the_pose_in_their_frames() -> None:
     assert len(m.transforms(1.0, Pose2D(0, 0), FRAMES, with_map=False).transforms) == 1
 
 
+def test_cmd_vel_s_linear_y_is_the_sideways_speed_both_ways() -> None:
+    from geometry_msgs.msg import Twist
+
+    message = Twist()
+    message.linear.x, message.linear.y, message.angular.z = 0.1, -0.2, 0.3
+    assert m.command(message) == Twist2D(0.1, 0.3, -0.2)
+    assert m.odometry(1.0, Pose2D(0.0, 0.0), Twist2D(0.1, 0.3, -0.2), FRAMES).twist.twist.linear.y == -0.2
+
+
 def test_a_scan_keeps_its_beams_and_misses() -> None:
     ranges = np.array([0.5, math.inf, 3.4])
     scan = m.laser_scan(LaserScan(0.2, -1.0, 1.0, 0.12, 3.5, ranges), 0.1, FRAMES)

@@ -215,6 +215,12 @@ def test_a_get_result_reply_of_either_release_reads_as_its_status(release: str) 
     assert t.NavigateToPose_GetResult_Response.deserialize(wire) == ours
 
 
+def test_cmd_vel_s_linear_y_is_the_sideways_speed_both_ways() -> None:
+    assert m.command(t.Twist(linear=t.Vector3(x=0.1, y=-0.2), angular=t.Vector3(z=0.3))) == Twist2D(0.1, 0.3, -0.2)
+    assert m.twist(Twist2D(0.1, 0.3, -0.2)).linear.y == -0.2
+    assert m.odometry(1.0, Pose2D(0.0, 0.0), Twist2D(0.1, 0.3, -0.2), FRAMES).twist.twist.linear.y == -0.2
+
+
 def test_rei_values_map_to_the_ros_fields() -> None:
     assert m.stamp(0.3) == t.Time(sec=1000, nanosec=300_000_000) and m.nanoseconds(m.stamp(0.0)) == 1000 * 10**9
     odom = m.odometry(1.0, Pose2D(1.0, 2.0, math.pi / 2), Twist2D(0.2, -0.5), FRAMES)

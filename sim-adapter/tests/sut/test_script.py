@@ -74,7 +74,9 @@ def test_timeline_starts_at_the_first_step_not_at_time_zero():
 @pytest.mark.parametrize(
     ("text", "message"),
     [
-        ("1.0 0.2 0.0\n2.0 0.1\n", "<script>:2: expected 'duration v w', got 2 field"),
+        ("1.0 0.2 0.0\n2.0 0.1\n", "<script>:2: expected 'duration v w [vy]', got 2 field"),
+        ("1.0 0.2 0.0 0.1 0.5\n", "<script>:1: expected 'duration v w [vy]', got 5 field"),
+        ("1.0 0.2 0.0 inf\n", "<script>:1: values must be finite"),
         ("# header\n\n1.0 fast 0.0\n", "<script>:3: not a number"),
         ("0 0.2 0.0\n", "<script>:1: duration must be > 0"),
         ("1.0 nan 0.0\n", "<script>:1: values must be finite"),
@@ -85,6 +87,10 @@ def test_bad_scripts_name_the_line(text, message):
     with pytest.raises(ScriptError) as info:
         parse_script(text)
     assert message in str(info.value)
+
+
+def test_a_fourth_field_is_the_sideways_speed_of_a_holonomic_robot():
+    assert parse_script("1.0 0 0 0.3\n2.0 0.1 0.2\n") == (Segment(1.0, 0.0, 0.0, 0.3), Segment(2.0, 0.1, 0.2, 0.0))
 
 
 def test_load_script_names_the_file(tmp_path):

@@ -84,10 +84,22 @@ class ObjectSpec:
 
 @dataclass(frozen=True, slots=True)
 class DriveSpec:
+    """The drive's wheels and limits; ``kind`` one of :data:`DRIVE_KINDS`. A holonomic drive's sideways speed
+    has the forward speed's limit; a differential drive's is 0 (it cannot move sideways)."""
+
     wheel_radius: float
     wheel_separation: float
     max_linear_velocity: float
     max_angular_velocity: float
+    kind: str = "differential"
+
+    @property
+    def holonomic(self) -> bool:
+        return self.kind == DRIVE_KINDS[1]
+
+    @property
+    def max_lateral_velocity(self) -> float:
+        return self.max_linear_velocity if self.holonomic else 0.0
 
 
 @dataclass(frozen=True, slots=True)
@@ -122,6 +134,8 @@ class PolygonFootprint:
 
 
 Footprint = CircleFootprint | PolygonFootprint
+DRIVE_KINDS = ("differential", "holonomic")
+"""world.json's robot.drive.kind, the first when it is absent (contract/vocabulary.json drives)."""
 FOOTPRINT_TYPES = ("polygon", "circle")  # world.json's robot.footprint.type (contract/vocabulary.json footprints)
 
 CIRCLE_SIDES = 64
@@ -395,6 +409,7 @@ def _robot(r: Fields, folder: Path) -> RobotSpec:
             wheel_separation=d.number("wheelSeparation", positive=True),
             max_linear_velocity=d.number("maxLinearVelocity", positive=True),
             max_angular_velocity=d.number("maxAngularVelocity", positive=True),
+            kind=_drive_kind(d),
         ),
         lidar=LidarSpec(
             beams=beams,
@@ -410,6 +425,15 @@ def _robot(r: Fields, folder: Path) -> RobotSpec:
         lidar_pose=lidar_pose,
         description=_description(r, folder) if r.has("description") else None,
     )
+
+
+def _drive_kind(d: Fields) -> str:
+    if not d.has("kind"):
+        return DRIVE_KINDS[0]
+    kind = d.text("kind")
+    if kind not in DRIVE_KINDS:
+        raise d.error(f"unknown value {kind!r}, expected one of {', '.join(DRIVE_KINDS)}", "kind")
+    return kind
 
 
 def _pose4(r: Fields, key: str) -> tuple[float, float, float, float]:

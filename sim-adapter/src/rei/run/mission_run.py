@@ -21,7 +21,7 @@ from typing import TYPE_CHECKING, Any
 from rei.artifacts import ArtifactError, read_case
 from rei.geometry import Twist2D
 from rei.mission import MissionEvent, MissionExecutor, TaskResult, mission_info
-from rei.sim.faults import FaultClock, FaultSchedule, fault_fields
+from rei.sim.faults import FaultClock, FaultSchedule, as_schedule, fault_fields
 from rei.sim.people.cost import people_cost
 from rei.sim.simulation import Simulation
 from rei.sut.api import Controller
@@ -115,6 +115,12 @@ def run_mission(
         FaultSchedule(case.mission.faults).commands([], options.control_rate)
     except ValueError as error:
         raise ArtifactError(case_dir / "mission.xml", f"faults: {error}") from None
+    robot = case.world.robot
+    if robot.drive.holonomic and any(f.kind == "stuck" for f in (FaultSchedule(case.mission.faults)
+                                                                + as_schedule(options.fault)).faults):
+        # the language refuses the mission's own; a --fault's is refused here, before anything starts
+        raise ArtifactError(case_dir / "world.json", f"robot: {robot.name} is holonomic, and a stuck wheel is a fault "
+                                                     "of a differential drive (it has no left or right wheel)")
     time_limit = sum(goal.timeout for goal in case.mission.goals) + TIME_LIMIT_MARGIN
     control_every = max(1, round(options.physics_rate / options.control_rate))
     wall_start = time.perf_counter()

@@ -80,3 +80,53 @@ class WheelOdometry:
     @property
     def twist(self) -> Twist2D:
         return Twist2D(self._v, self._w)
+
+
+class BodyOdometry:
+    """A holonomic base's odometry: its wheels (mecanum or omni) measure the body's velocity in its own frame, so
+    this integrates the body's velocity (forward, sideways, turn) turned into the frame of the odometry's own
+    heading, at the midpoint of each step. Noise as :class:`WheelOdometry`'s, on each axis's travel; a bump or a
+    push is measured as the motion it is (a holonomic base's rollers slip sideways by design, so the model has no
+    wheel slip to miss)."""
+
+    __slots__ = ("_noise", "_rng", "_twist", "_x", "_y", "_yaw")
+
+    def __init__(self, start: Pose2D, noise: float = 0.0, rng: np.random.Generator | None = None) -> None:
+        if noise < 0.0:
+            raise ValueError(f"odometry noise must be >= 0, got {noise}")
+        if noise > 0.0 and rng is None:
+            raise ValueError("odometry noise needs a seeded generator")
+        self._noise = noise
+        self._rng = rng
+        self._x, self._y, self._yaw = start.x, start.y, start.yaw
+        self._twist = Twist2D()
+
+    def update(self, v: float, vy: float, w: float, dt: float, scale: float = 1.0, yaw_bias: float = 0.0) -> None:
+        """Advance by the body's velocity ``(v, vy, w)`` in its own frame over ``dt``; odometry faults as
+        :meth:`WheelOdometry.update`'s."""
+        dx, dy, dyaw = scale * v * dt, scale * vy * dt, scale * w * dt
+        if self._noise > 0.0 and self._rng is not None:
+            e = self._rng.standard_normal(2)
+            dx += self._noise * math.sqrt(abs(dx)) * float(e[0])
+            dy += self._noise * math.sqrt(abs(dy)) * float(e[1])
+        dyaw += yaw_bias
+        heading = self._yaw + 0.5 * dyaw
+        c, s = math.cos(heading), math.sin(heading)
+        self._x += c * dx - s * dy
+        self._y += s * dx + c * dy
+        self._yaw = wrap_angle(self._yaw + dyaw)
+        self._twist = Twist2D(scale * v, scale * w, scale * vy)
+
+    def shift(self, dx: float, dy: float, dyaw: float) -> None:
+        """Move the pose by an offset (an odometry jump): world axes, radians."""
+        self._x += dx
+        self._y += dy
+        self._yaw = wrap_angle(self._yaw + dyaw)
+
+    @property
+    def pose(self) -> Pose2D:
+        return Pose2D(self._x, self._y, self._yaw)
+
+    @property
+    def twist(self) -> Twist2D:
+        return Twist2D(self._twist.v, self._twist.w, self._twist.vy)

@@ -18,16 +18,16 @@ import numpy as np
 import pybullet as p
 
 from rei.artifacts.case import Case, read_case
-from rei.artifacts.world import Category, ObjectSpec, Shape
+from rei.artifacts.world import Category, ObjectSpec, RobotSpec, Shape
 from rei.geometry import Pose2D, Twist2D, yaw_of_quaternion
 from rei.sim.animator import AnimatedBody, Animator, DriveMode
 from rei.sim.clearance import clearance_for
 from rei.sim.contacts import ContactSensor
-from rei.sim.drive import DiffDrive
+from rei.sim.drive import DiffDrive, HolonomicDrive
 from rei.sim.faults import FaultSchedule, LaserFault, LaserFaults, MotionFaults, as_schedule, fault_generators
 from rei.sim.lidar import Lidar, Prisms
 from rei.sim.native_output import quiet_native_output
-from rei.sim.odometry import WheelOdometry
+from rei.sim.odometry import BodyOdometry, WheelOdometry
 from rei.sim.people import DT as CROWD_DT
 from rei.sim.people import Crowd, Mover, RobotView, footprint_radius
 from rei.sim.robot_model import ROBOT_COLLISION_GROUP, load_robot, wheel_torque_for
@@ -135,27 +135,12 @@ class Simulation:
         removed = {o.name for o in world.objects if o.category is Category.HUMAN and not humans}
         for name in sorted(removed):
             p.removeBody(self.world.body_of[name], physicsClientId=client)
-        self._robot = load_robot(client, robot_spec)
+        self._holonomic: HolonomicDrive | None = None
+        if robot_spec.drive.holonomic:
+            self._build_holonomic(robot_spec, odom_noise, odom_seed)
+        else:
+            self._build_differential(robot_spec, odom_noise, odom_seed)
         body = self._robot.body
-        self._drive = DiffDrive(
-            client,
-            body,
-            self._robot.left_wheel,
-            self._robot.right_wheel,
-            robot_spec.drive,
-            wheel_torque_for(robot_spec, MAX_ACCELERATION),
-        )
-        self._wheels = [self._robot.left_wheel, self._robot.right_wheel]
-        (la, _, _, _), (ra, _, _, _) = p.getJointStates(body, self._wheels, physicsClientId=client)
-        self._odometry = WheelOdometry(
-            robot_spec.drive.wheel_radius,
-            robot_spec.drive.wheel_separation,
-            Pose2D(robot_spec.pose[0], robot_spec.pose[1], robot_spec.pose[3]),
-            la,
-            ra,
-            noise=odom_noise,
-            rng=np.random.default_rng(odom_seed) if odom_noise > 0 else None,
-        )
         self._shapes = _shapes(client, [(self.world.body_of[person.name], world.object(person.name))
                                         for person in people])
         self._lidar = Lidar(client, body, robot_spec.lidar, self._shapes if people else None)
@@ -217,6 +202,48 @@ class Simulation:
         # Bodies loaded but never stepped keep stale broadphase bounds: rays would miss them in the first scan.
         p.performCollisionDetection(physicsClientId=client)
 
+    def _build_differential(self, robot_spec: RobotSpec, odom_noise: float, odom_seed: np.random.SeedSequence) -> None:
+        """The differential drive: wheel motors, odometry from the wheels' rotation."""
+        client = self._client
+        self._robot = load_robot(client, robot_spec)
+        body = self._robot.body
+        self._drive = DiffDrive(
+            client,
+            body,
+            self._robot.left_wheel,
+            self._robot.right_wheel,
+            robot_spec.drive,
+            wheel_torque_for(robot_spec, MAX_ACCELERATION),
+        )
+        self._wheels = [self._robot.left_wheel, self._robot.right_wheel]
+        (la, _, _, _), (ra, _, _, _) = p.getJointStates(body, self._wheels, physicsClientId=client)
+        self._odometry = WheelOdometry(
+            robot_spec.drive.wheel_radius,
+            robot_spec.drive.wheel_separation,
+            Pose2D(robot_spec.pose[0], robot_spec.pose[1], robot_spec.pose[3]),
+            la,
+            ra,
+            noise=odom_noise,
+            rng=np.random.default_rng(odom_seed) if odom_noise > 0 else None,
+        )
+
+    def _build_holonomic(self, robot_spec: RobotSpec, odom_noise: float, odom_seed: np.random.SeedSequence) -> None:
+        """The holonomic drive (rei.sim.drive.HolonomicDrive): the same body on frictionless wheels, pushed by its
+        drive; odometry from the body's own velocity."""
+        if any(fault.sensor == "drive" and fault.kind == "stuck" for fault in self.faults.faults):
+            raise ValueError("a stuck wheel is a fault of a differential drive: "
+                             f"the robot {robot_spec.name} is holonomic")
+        self._robot = load_robot(self._client, robot_spec, wheel_friction=0.0)
+        self._holonomic = HolonomicDrive(self._client, self._robot.body, robot_spec.drive, MAX_ACCELERATION,
+                                         self.dt)
+        self._drive = self._holonomic
+        self._wheels = [self._robot.left_wheel, self._robot.right_wheel]
+        self._odometry = BodyOdometry(
+            Pose2D(robot_spec.pose[0], robot_spec.pose[1], robot_spec.pose[3]),
+            noise=odom_noise,
+            rng=np.random.default_rng(odom_seed) if odom_noise > 0 else None,
+        )
+
     # --- time -------------------------------------------------------------------------------------------------
     @property
     def t(self) -> float:
@@ -229,6 +256,9 @@ class Simulation:
 
     def step(self, cmd: Twist2D) -> None:
         """Advance one physics step with the velocity command ``cmd`` (clamped to the robot's limits)."""
+        if self._holonomic is not None:
+            self._step_holonomic(self._holonomic, cmd, self._motion)
+            return
         motion = self._motion
         if motion is not None:
             self._step_motion(cmd, motion)
@@ -265,6 +295,36 @@ class Simulation:
         self._odometry.update(la, ra, lr, rr, scale * travel, bias)
         for jump in motion.jumps(t):
             self._odometry.shift(jump.dx, jump.dy, math.radians(jump.dyaw))
+        self._contacts.update()
+        self._update_due()
+
+    def _step_holonomic(self, drive: HolonomicDrive, cmd: Twist2D, motion: MotionFaults | None) -> None:
+        """:meth:`step` for a holonomic drive, its faults as :meth:`_step_motion`'s."""
+        t = self.t
+        fraction, stuck, travel = motion.drive(t) if motion is not None else (1.0, (False, False), 1.0)
+        drive.command(cmd, fraction, stuck)
+        client = self._client
+        body = self._robot.body
+        if motion is not None:
+            for kidnap in motion.kidnaps(t):
+                (x, y, z), orientation = p.getBasePositionAndOrientation(body, physicsClientId=client)
+                yaw = yaw_of_quaternion(*orientation) + math.radians(kidnap.dyaw)
+                p.resetBasePositionAndOrientation(body, (x + kidnap.dx, y + kidnap.dy, z),
+                                                  p.getQuaternionFromEuler((0.0, 0.0, yaw)), physicsClientId=client)
+        drive.push()
+        p.stepSimulation(physicsClientId=client)
+        self._steps += 1
+        _, orientation = p.getBasePositionAndOrientation(body, physicsClientId=client)
+        (vx, vy, _), (_, _, wz) = p.getBaseVelocity(body, physicsClientId=client)
+        yaw = yaw_of_quaternion(*orientation)
+        c, s = math.cos(yaw), math.sin(yaw)
+        scale, bias = motion.odometry(t, self.dt) if motion is not None else (1.0, 0.0)
+        odometry = self._odometry
+        assert isinstance(odometry, BodyOdometry)
+        odometry.update(c * vx + s * vy, -s * vx + c * vy, wz, self.dt, scale * travel, bias)
+        if motion is not None:
+            for jump in motion.jumps(t):
+                odometry.shift(jump.dx, jump.dy, math.radians(jump.dyaw))
         self._contacts.update()
         self._update_due()
 

@@ -293,7 +293,10 @@ def _serve(sut: SystemUnderTest, client: Any, run_id: str, session: Session,
                 sut.on_scan(observation.scan)
             twist = sut.on_tick(Tick(int(payload["tick"]), observation, new_scan))
             send_status()
-            client.publish(command_uri, {"tick": int(payload["tick"]), "v": float(twist.v), "w": float(twist.w)})
+            command = {"tick": int(payload["tick"]), "v": float(twist.v), "w": float(twist.w)}
+            if twist.vy != 0.0:  # only then: a differential robot's SUT sends what it always sent
+                command["vy"] = float(twist.vy)
+            client.publish(command_uri, command)
         elif topic == "goal":
             goal = _read(protocol.read_goal, payload, "goal")
             sut._start_goal(goal)

@@ -5,8 +5,9 @@ It reproduces the thesis's simple scenarios (7.2), where the robot was driven th
 (forwards and backwards for the translation scenario, in circles for the circular one) so that the monitor's
 geometric events could be checked without a planner in the loop.
 
-File format: plain text, one command per line, ``duration v w`` (seconds > 0, m/s, rad/s), whitespace
-separated; ``#`` starts a comment; blank lines are ignored. Example, the translation then circle scenario::
+File format: plain text, one command per line, ``duration v w [vy]`` (seconds > 0, m/s, rad/s, and a sideways
+m/s that only a holonomic robot follows; 0 when left out), whitespace separated; ``#`` starts a comment; blank
+lines are ignored. Example, the translation then circle scenario::
 
     # forwards 2 s, back again, then one circle of radius 0.2 m
     2.0   0.2  0.0
@@ -37,6 +38,7 @@ class Segment:
     duration: float
     v: float
     w: float
+    vy: float = 0.0
 
 
 def parse_script(text: str, source: str = "<script>") -> tuple[Segment, ...]:
@@ -47,17 +49,18 @@ def parse_script(text: str, source: str = "<script>") -> tuple[Segment, ...]:
         if not line:
             continue
         fields = line.split()
-        if len(fields) != 3:
-            raise ScriptError(f"{source}:{number}: expected 'duration v w', got {len(fields)} field(s): {line!r}")
+        if len(fields) not in (3, 4):
+            raise ScriptError(f"{source}:{number}: expected 'duration v w [vy]', got {len(fields)} field(s): {line!r}")
         try:
-            duration, v, w = (float(f) for f in fields)
+            duration, v, w, *rest = (float(f) for f in fields)
         except ValueError:
             raise ScriptError(f"{source}:{number}: not a number in {line!r}") from None
-        if not all(math.isfinite(x) for x in (duration, v, w)):
+        vy = rest[0] if rest else 0.0
+        if not all(math.isfinite(x) for x in (duration, v, w, vy)):
             raise ScriptError(f"{source}:{number}: values must be finite: {line!r}")
         if duration <= 0:
             raise ScriptError(f"{source}:{number}: duration must be > 0, got {fields[0]}")
-        segments.append(Segment(duration, v, w))
+        segments.append(Segment(duration, v, w, vy))
     if not segments:
         raise ScriptError(f"{source}: the script has no commands")
     return tuple(segments)
@@ -123,6 +126,6 @@ class ScriptController(Controller):
         elapsed = observation.t - self._t0
         for end, segment in zip(self.ends, self.segments, strict=True):
             if elapsed < end - 1e-9:
-                return Twist2D(segment.v, segment.w)
+                return Twist2D(segment.v, segment.w, segment.vy)
         self._status, self._text = NavStatus.SUCCEEDED, f"script finished after {self.duration:g} s"
         return Twist2D()

@@ -168,7 +168,7 @@ class ExternalController(Controller):
         sent = time.monotonic()
         self._client.publish(protocol.uri(self._run_id, "tick"),
                              protocol.tick_message(self._tick, observation, new_scan=new_scan,
-                                                   scan_time=self._scan_time))
+                                                   scan_time=self._scan_time, holonomic=self._limits.holonomic))
         if self.clock == "realtime":
             self._take_arrived()
             return self._command

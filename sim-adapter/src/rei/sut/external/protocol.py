@@ -34,6 +34,7 @@ PROCEDURES = ("hello",)
 REPORTABLE = frozenset({NavStatus.ACTIVE, NavStatus.SUCCEEDED, NavStatus.ABORTED, NavStatus.CANCELLED})
 MAX_TEXT = 1000
 _COMMAND_FIELDS = frozenset({"tick", "v", "w"})
+_COMMAND_OPTIONAL = frozenset({"vy"})  # a holonomic robot's sideways speed; 0 when left out
 _STATUS_FIELDS = frozenset({"goal_id", "status", "text"})
 _SHORT = reprlib.Repr()
 _SHORT.maxstring = _SHORT.maxother = 40
@@ -50,10 +51,16 @@ def uri(run_id: str, name: str) -> str:
 
 @dataclass(frozen=True, slots=True)
 class RobotLimits:
-    """What clamping uses: the robot's drive limits (m/s, rad/s)."""
+    """What clamping uses: the robot's drive limits (m/s, rad/s); ``max_lateral`` is a holonomic drive's sideways
+    limit, 0 for a differential drive (which cannot move sideways: its ``vy`` is clamped to 0)."""
 
     max_linear: float
     max_angular: float
+    max_lateral: float = 0.0
+
+    @property
+    def holonomic(self) -> bool:
+        return self.max_lateral > 0
 
 
 # -- simulation -> SUT -----------------------------------------------------------------------------------------
@@ -77,13 +84,17 @@ def hello_answer(*, run_id: str, clock: str, control_rate: float, deadline: floa
     return answer
 
 
-def tick_message(tick: int, observation: Observation, *, new_scan: bool, scan_time: float) -> dict[str, Any]:
-    """One control period: clock, odometry and (when taken since the previous tick) the newest scan."""
+def tick_message(tick: int, observation: Observation, *, new_scan: bool, scan_time: float,
+                 holonomic: bool = False) -> dict[str, Any]:
+    """One control period: clock, odometry and (when taken since the previous tick) the newest scan. A holonomic
+    robot's odometry twist has its sideways speed third."""
     scan = observation.scan
+    twist = observation.odom_twist
     return {
         "tick": tick, "t": float(observation.t),
-        "odom": {"pose": _pose(observation.odom), "twist": [float(observation.odom_twist.v),
-                                                            float(observation.odom_twist.w)]},
+        "odom": {"pose": _pose(observation.odom),
+                 "twist": [float(twist.v), float(twist.w), float(twist.vy)] if holonomic else [float(twist.v),
+                                                                                               float(twist.w)]},
         "scan": _scan(scan, scan_time) if new_scan and scan is not None else None,
     }
 
@@ -156,10 +167,10 @@ def read_goal(data: Mapping[str, Any]) -> NavGoal:
 def read_observation(data: Mapping[str, Any], last_scan: LaserScan | None) -> Observation:
     """The tick as an in-process controller's Observation; ``last_scan`` stands in when the tick has none."""
     odom = data["odom"]
-    v, w = odom["twist"]
+    v, w, *lateral = odom["twist"]  # a holonomic robot's [v, w, vy]
     scan = read_scan(data["scan"]) if data.get("scan") is not None else last_scan
-    return Observation(t=float(data["t"]), odom=read_pose(odom["pose"]), odom_twist=Twist2D(float(v), float(w)),
-                       scan=scan)
+    return Observation(t=float(data["t"]), odom=read_pose(odom["pose"]),
+                       odom_twist=Twist2D(float(v), float(w), float(lateral[0]) if lateral else 0.0), scan=scan)
 
 
 # -- SUT -> simulation: the rules of docs/sut.md, "What happens to bad input" ---------------------------------
@@ -192,19 +203,20 @@ class Rejected:
 def check_command(payload: Any, *, current_tick: int, answered: bool, limits: RobotLimits) -> Command | Rejected:
     """A ``command`` against the tick the simulation last published (``answered``: a command for it was taken)."""
     if not isinstance(payload, Mapping):
-        return Rejected(f"a command must be a map {{tick, v, w}}, got {_kind(payload)}")
+        return Rejected(f"a command must be a map {{tick, v, w, vy?}}, got {_kind(payload)}")
     keys = set(payload)
-    if keys != _COMMAND_FIELDS:
-        missing, extra = sorted(_COMMAND_FIELDS - keys), sorted(map(str, keys - _COMMAND_FIELDS))
-        return Rejected("a command has exactly the fields tick, v, w"
+    if not _COMMAND_FIELDS <= keys <= _COMMAND_FIELDS | _COMMAND_OPTIONAL:
+        missing = sorted(_COMMAND_FIELDS - keys)
+        extra = sorted(map(str, keys - _COMMAND_FIELDS - _COMMAND_OPTIONAL))
+        return Rejected("a command has the fields tick, v, w and optionally vy"
                         + (f"; missing {', '.join(missing)}" if missing else "")
                         + (f"; unknown {', '.join(extra)}" if extra else ""))
     tick = payload["tick"]
     if not is_int(tick) or tick < 0:
         return Rejected(f"tick must be an integer >= 0, got {tick!r}")
     values = []
-    for name in ("v", "w"):
-        value = payload[name]
+    for name in ("v", "w", "vy"):
+        value = payload.get(name, 0.0)
         if not _is_number(value):
             return Rejected(f"{name} must be a number, got {_kind(value)}")
         if not math.isfinite(value):
@@ -214,10 +226,13 @@ def check_command(payload: Any, *, current_tick: int, answered: bool, limits: Ro
         return Rejected(f"tick {tick} was not published yet (the last is {current_tick})")
     if tick < current_tick or answered:
         return Rejected(f"tick {tick} is already answered", stale=True)
-    v, w = values
+    v, w, vy = values
     clamped_v = max(-limits.max_linear, min(limits.max_linear, v))
     clamped_w = max(-limits.max_angular, min(limits.max_angular, w))
-    return Command(tick, Twist2D(clamped_v, clamped_w), clamped=(clamped_v, clamped_w) != (v, w))
+    # a differential drive's sideways limit is 0: its vy is clamped to nothing, and counted as clamped
+    clamped_vy = max(-limits.max_lateral, min(limits.max_lateral, vy))
+    return Command(tick, Twist2D(clamped_v, clamped_w, clamped_vy),
+                   clamped=(clamped_v, clamped_w, clamped_vy) != (v, w, vy))
 
 
 def check_status(payload: Any, *, current_goal: int | None) -> Status | Rejected:

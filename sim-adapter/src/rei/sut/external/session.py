@@ -25,7 +25,8 @@ def external_sut(options: SutOptions, client: WampClient, run_id: str, out_dir: 
                  log: Callable[[str], None] = print) -> Iterator[ExternalController]:
     """The connected SUT as a controller; on leaving, ``end`` is published and a started SUT is stopped."""
     robot = case.world.robot
-    limits = protocol.RobotLimits(robot.drive.max_linear_velocity, robot.drive.max_angular_velocity)
+    limits = protocol.RobotLimits(robot.drive.max_linear_velocity, robot.drive.max_angular_velocity,
+                                  robot.drive.max_lateral_velocity)
     controller = ExternalController(client, run_id, clock=options.clock, deadline=options.deadline, limits=limits,
                                     scan_time=1.0 / robot.lidar.rate, first_deadline=options.join_timeout, now=now,
                                     log=log)
@@ -36,6 +37,7 @@ def external_sut(options: SutOptions, client: WampClient, run_id: str, out_dir: 
         occupancy=_in_case(case.world.map.yaml, case.folder) if case.world.map is not None else None,
         robot={"name": robot.name, "footprint": [float(robot.size[0]), float(robot.size[1])],
                "max_linear": limits.max_linear, "max_angular": limits.max_angular,
+               "drive": robot.drive.kind, "max_lateral": limits.max_lateral,
                "lidar": {"beams": robot.lidar.beams, "range_min": float(robot.lidar.range_min),
                          "range_max": float(robot.lidar.range_max), "rate": float(robot.lidar.rate)}}))
     url = options.router_url or client.url

@@ -48,6 +48,7 @@ def odometry(t: float, pose: Pose2D, twist: Twist2D, frames: Frames) -> Odometry
     message.pose.pose.position.x, message.pose.pose.position.y = pose.x, pose.y
     message.pose.pose.orientation = quaternion(pose.yaw)
     message.twist.twist.linear.x, message.twist.twist.angular.z = twist.v, twist.w
+    message.twist.twist.linear.y = twist.vy  # a holonomic robot's sideways speed, else 0 (the default)
     return message
 
 
@@ -100,8 +101,9 @@ def move_base_goal(t: float, goal: NavGoal, frames: Frames) -> MoveBaseGoal:
 
 
 def command(message: Twist) -> Twist2D:
-    """A /cmd_vel as REI's command: forward and yaw rate (the planar robot ignores the rest)."""
-    return Twist2D(float(message.linear.x), float(message.angular.z))
+    """A /cmd_vel as REI's command: forward, yaw rate and sideways (linear.y, which a holonomic robot follows and a
+    differential one ignores, as ROS's diff_drive_controller does); the planar robot ignores the rest."""
+    return Twist2D(float(message.linear.x), float(message.angular.z), float(message.linear.y))
 
 
 def _header(t: float, frame: str) -> Header:

@@ -57,7 +57,7 @@ def odometry(t_sim: float, pose: Pose2D, twist: Twist2D, frames: Frames) -> t.Od
         pose=t.PoseWithCovariance(pose=t.Pose(
             position=t.Point(x=float(pose.x), y=float(pose.y), z=0.0), orientation=quaternion(pose.yaw))),
         twist=t.TwistWithCovariance(twist=t.Twist(
-            linear=t.Vector3(x=float(twist.v)), angular=t.Vector3(z=float(twist.w)))))
+            linear=t.Vector3(x=float(twist.v), y=float(twist.vy)), angular=t.Vector3(z=float(twist.w)))))
 
 
 def transforms(t_sim: float, odom: Pose2D, frames: Frames, *, with_map: bool) -> t.TFMessage:
@@ -107,13 +107,14 @@ def navigate_goal(t_sim: float, goal: NavGoal, frames: Frames) -> t.NavigateToPo
 
 
 def twist(command: Twist2D) -> t.Twist:
-    """REI's command as a /cmd_vel (forward speed and yaw rate)."""
-    return t.Twist(linear=t.Vector3(x=float(command.v)), angular=t.Vector3(z=float(command.w)))
+    """REI's command as a /cmd_vel (forward speed, sideways speed and yaw rate)."""
+    return t.Twist(linear=t.Vector3(x=float(command.v), y=float(command.vy)), angular=t.Vector3(z=float(command.w)))
 
 
 def command(message: t.Twist) -> Twist2D:
-    """A /cmd_vel as REI's command: forward and yaw rate (the planar robot ignores the rest)."""
-    return Twist2D(float(message.linear.x), float(message.angular.z))
+    """A /cmd_vel as REI's command: forward, yaw rate and sideways (linear.y, which a holonomic robot follows and a
+    differential one ignores, as ROS's diff_drive_controller does); the planar robot ignores the rest."""
+    return Twist2D(float(message.linear.x), float(message.angular.z), float(message.linear.y))
 
 
 def _qos(*, transient_local: bool = False, depth: int = 10) -> Qos:

@@ -288,6 +288,15 @@ public final class TemplateSupport {
 		return robot.getType() instanceof RobotType r && r.getLidar() != null ? r.getLidar() : DEFAULT_LIDAR;
 	}
 
+	/**
+	 * world.json's {@code drive.kind} member, with its leading comma, for a robot whose drive is not the default
+	 * (differential) one; empty otherwise, so a differential robot's world.json stays as it always was.
+	 */
+	public String driveKind(ConcreteObject robot) {
+		org.rei.catalogue.Drive kind = drive(robot).getDrive();
+		return kind == org.rei.catalogue.Drive.DIFFERENTIAL ? "" : ", \"kind\": " + str(kind.getLiteral());
+	}
+
 	/** The robot's type as a robot type (drive parameters), or a default one. */
 	public RobotType drive(ConcreteObject robot) {
 		return robot.getType() instanceof RobotType r ? r : DefaultRobot.TYPE;

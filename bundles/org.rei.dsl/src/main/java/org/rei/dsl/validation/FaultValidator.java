@@ -9,11 +9,15 @@ import java.util.List;
 import org.eclipse.emf.ecore.EAttribute;
 import org.eclipse.emf.ecore.EStructuralFeature;
 import org.eclipse.xtext.validation.Check;
+import org.rei.catalogue.Drive;
+import org.rei.catalogue.RobotType;
 import org.rei.context.ContextPackage.Literals;
 import org.rei.context.Fault;
 import org.rei.context.FaultKind;
 import org.rei.context.FaultSensor;
 import org.rei.context.GainPoint;
+import org.rei.context.Robot;
+import org.rei.context.TestCase;
 
 /**
  * A scheduled fault (docs/faults.md): its times in order, its pulse train inside its period, and only the
@@ -141,6 +145,23 @@ public class FaultValidator extends ReiCheckBase {
 		}
 		if (f.isSetScale() && !(f.getScale() > 0)) {
 			error("The odometry's scale must be positive", f, Literals.FAULT__SCALE, ReiIssueCodes.NON_POSITIVE);
+		}
+	}
+
+	/**
+	 * A stuck wheel is one of a differential drive's two: the simulator's holonomic drive has no left or right
+	 * wheel to stop (docs/robots.md#drives), so the fault would mean nothing there.
+	 */
+	@Check
+	public void checkDriveOfRobot(Fault f) {
+		if (f.getKind() != FaultKind.STUCK || !(f.eContainer() instanceof TestCase testCase)
+				|| testCase.getOwnedEnvironment() == null) {
+			return;
+		}
+		Robot robot = testCase.getOwnedEnvironment().getOwnedRobot();
+		if (robot != null && robot.getType() instanceof RobotType type && type.getDrive() == Drive.HOLONOMIC) {
+			error("A stuck wheel is a fault of a differential drive: the robot " + robot.getName() + " ("
+					+ type.getName() + ") is holonomic", f, Literals.FAULT__KIND, ReiIssueCodes.FAULT_PARAMETER);
 		}
 	}
 

@@ -36,10 +36,14 @@ final class Messages {
 		JsonNode robot = object(m, "robot", what);
 		JsonNode lidar = object(robot, "lidar", what + ": robot");
 		double[] footprint = numbers(robot, "footprint", 2, what + ": robot");
+		// drive and max_lateral came with holonomic robots: a simulation without them has a differential one
+		JsonNode drive = robot.get("drive");
 		Session.Robot r = new Session.Robot(text(robot, "name", what), footprint[0], footprint[1],
 				number(robot, "max_linear", what), number(robot, "max_angular", what),
 				new Session.Lidar((int) integer(lidar, "beams", what), number(lidar, "range_min", what),
-						number(lidar, "range_max", what), number(lidar, "rate", what)));
+						number(lidar, "range_max", what), number(lidar, "rate", what)),
+				drive == null ? "differential" : text(robot, "drive", what),
+				robot.has("max_lateral") ? number(robot, "max_lateral", what) : 0.0);
 		String clock = text(m, "clock", what);
 		Session.Clock c = switch (clock) {
 		case "lockstep" -> Session.Clock.LOCKSTEP;
@@ -94,10 +98,13 @@ final class Messages {
 	static TickMessage tick(JsonNode m) {
 		String what = "tick";
 		JsonNode odom = object(m, "odom", what);
-		double[] twist = numbers(odom, "twist", 2, what + ": odom");
+		JsonNode list = field(odom, "twist", what + ": odom");
+		// [v, w], or a holonomic robot's [v, w, vy]
+		double[] twist = numbers(list, list.isArray() && list.size() == 3 ? 3 : 2, what + ": odom: twist");
 		JsonNode scan = m.get("scan");
 		return new TickMessage(integer(m, "tick", what), number(m, "t", what), pose(odom, "pose", what + ": odom"),
-				new Twist(twist[0], twist[1]), scan == null || scan.isNull() ? null : scan(scan));
+				new Twist(twist[0], twist[1], twist.length == 3 ? twist[2] : 0.0),
+				scan == null || scan.isNull() ? null : scan(scan));
 	}
 
 	static Scan scan(JsonNode m) {
@@ -122,12 +129,15 @@ final class Messages {
 				number(m, "range_max", what), ranges);
 	}
 
-	/** {@code {tick, v, w}}: exactly these three fields, an integer and two floats. */
+	/** {@code {tick, v, w, vy?}}: an integer and floats; vy only when it is not 0 (a holonomic robot's). */
 	static ObjectNode command(long tick, Command c) {
 		ObjectNode m = JsonNodeFactory.instance.objectNode();
 		m.put("tick", tick);
 		m.put("v", c.v());
 		m.put("w", c.w());
+		if (c.vy() != 0.0) {
+			m.put("vy", c.vy());
+		}
 		return m;
 	}
 

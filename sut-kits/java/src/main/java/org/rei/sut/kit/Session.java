@@ -21,8 +21,21 @@ public record Session(int protocol, String runId, Clock clock, double controlRat
 		LOCKSTEP, REALTIME
 	}
 
-	/** The robot: footprint sizes (m), velocity limits (m/s, rad/s) and laser. */
-	public record Robot(String name, double sizeX, double sizeY, double maxLinear, double maxAngular, Lidar lidar) {
+	/**
+	 * The robot: footprint sizes (m), velocity limits (m/s, rad/s), laser, its drive ("differential" or
+	 * "holonomic") and its sideways speed limit (m/s; 0 for a differential drive).
+	 */
+	public record Robot(String name, double sizeX, double sizeY, double maxLinear, double maxAngular, Lidar lidar,
+			String drive, double maxLateral) {
+
+		/** A differential robot. */
+		public Robot(String name, double sizeX, double sizeY, double maxLinear, double maxAngular, Lidar lidar) {
+			this(name, sizeX, sizeY, maxLinear, maxAngular, lidar, "differential", 0.0);
+		}
+
+		public boolean holonomic() {
+			return "holonomic".equals(drive);
+		}
 	}
 
 	/** The laser: beams per scan, ranges (m), scans per second. */

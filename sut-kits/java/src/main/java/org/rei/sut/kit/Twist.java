@@ -4,6 +4,11 @@
  */
 package org.rei.sut.kit;
 
-/** A planar velocity: forward speed {@code v} (m/s) and turn rate {@code w} (rad/s). */
-public record Twist(double v, double w) {
+/** A planar velocity: forward speed {@code v} (m/s), turn rate {@code w} (rad/s), sideways speed {@code vy} (m/s). */
+public record Twist(double v, double w, double vy) {
+
+	/** A differential robot's twist: no sideways speed. */
+	public Twist(double v, double w) {
+		this(v, w, 0.0);
+	}
 }

@@ -163,6 +163,23 @@ class MessagesTest {
 	}
 
 	@Test
+	void aHolonomicRobotsDriveTwistAndCommandCarryVy() throws Exception {
+		Session.Robot holonomic = Messages.session(msgpack(HELLO.replace("\"max_angular\": 1.82,",
+				"\"max_angular\": 1.82, \"drive\": \"holonomic\", \"max_lateral\": 0.26,"))).robot();
+		assertTrue(holonomic.holonomic());
+		assertEquals(0.26, holonomic.maxLateral());
+		Session.Robot differential = Messages.session(msgpack(HELLO)).robot(); // a simulation before drives
+		assertEquals("differential", differential.drive());
+		assertEquals(0.0, differential.maxLateral());
+		assertEquals(new Twist(0.2, 0.0, 0.15), Messages.tick(msgpack(tick(1, "null").replace("[0.2, 0]",
+				"[0.2, 0, 0.15]"))).twist());
+		assertEquals(new Command(0.26, 0, 0), new Command(1, 0, 0.5).clamp(differential));
+		assertEquals(new Command(0.26, 0, -0.26), new Command(1, 0, -0.5).clamp(holonomic));
+		assertEquals(0.15, Messages.command(3, new Command(0, 0, 0.15)).get("vy").asDouble());
+		assertFalse(Messages.command(3, new Command(0.1, 0)).has("vy")); // a differential robot's, as always
+	}
+
+	@Test
 	void statusHasTextOnlyWhenGiven() {
 		assertEquals("{\"goal_id\":1,\"status\":\"ACTIVE\"}", Messages.status(1, GoalStatus.ACTIVE, null).toString());
 		assertEquals("{\"goal_id\":1,\"status\":\"ABORTED\",\"text\":\"stuck\"}",
