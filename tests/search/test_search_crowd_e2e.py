@@ -1,10 +1,11 @@
 # SPDX-License-Identifier: EPL-2.0
 """`rei search` finds a collision with a crowd in which the robot was at fault (issue #38), end to end with the real
-room editor engine, generator, people server, simulation, monitor jar, evaluator and the reference navigation:
-examples/search/crowd.yaml at a budget of 4. In its base case three people who see the robot pass it; the search
-changes how many come, how often and how they behave towards the robot, and each candidate's crowd line and
-generated people are what it sampled. Found with seeds 1, 2 and 3 within the first two evaluations, each
-through a person who ignored the robot or stepped into its way (36-55 s a search of 4 on the 2-core machine)."""
+room editor engine, generator, people server, simulation, monitor jar, evaluator and the weakened reference navigation
+(``nav:moving_horizon=0``, examples/search/crowd.yaml): in its base case three people who see the robot pass it; the
+search changes how many come, how often and how they behave towards the robot, and each candidate's crowd line and
+generated people are what it sampled. With seeds 1 and 2 it found the robot driving into a person at the third and
+second of four evaluations, each time into one who ignored the robot (seed 3: none in four; 24-90 s a search of 4 on
+the 2-core machine, with the load)."""
 
 from __future__ import annotations
 
@@ -63,21 +64,22 @@ def test_a_search_over_a_crowd_finds_the_robot_driving_into_a_person(tmp_path: P
 
 
 def test_shrinking_a_robot_at_fault_collision_leaves_fewer_people(tmp_path: Path, run_cli: Any) -> None:
-    # seed 3's first candidate fails: four people who step into the robot's way, one of them run into
+    # seed 2's second candidate fails: nine people who ignore the robot, the fourth run into
     shutil.copy(EXAMPLE / "crowd.rei", tmp_path / "crowd.rei")
-    spec = (EXAMPLE / "crowd.yaml").read_text(encoding="utf-8").replace("seed: 1", "seed: 3").replace(
+    spec = (EXAMPLE / "crowd.yaml").read_text(encoding="utf-8").replace("seed: 1", "seed: 2").replace(
         "shrink: {budget: 3}", "shrink: {budget: 1}")
     (tmp_path / "crowd.yaml").write_text(spec, encoding="utf-8")
     out = tmp_path / "out"
-    result = run_cli("search", tmp_path / "crowd.yaml", "-o", out, "--workers", "1", "--budget", "1", timeout=600)
+    result = run_cli("search", tmp_path / "crowd.yaml", "-o", out, "--workers", "1", "--budget", "2", timeout=600)
     assert result.returncode == 1, result.stdout + result.stderr
     document = json.loads((out / "search.json").read_text(encoding="utf-8"))
-    [evaluation] = document["evaluations"]
+    evaluations = {e["key"]: e for e in document["evaluations"]}
     shrunk = json.loads((out / "shrunk.json").read_text(encoding="utf-8"))
     at_fault = [f for f in document["failures"] if AT_FAULT in f["requirements"]]
     assert at_fault, document["failures"]
     counts = []
     for failure in at_fault:
+        evaluation = evaluations[failure["first"]]
         entry = shrunk[failure["signature"]]
         count = entry["values"]["oncoming.count"]
         # never fewer than the person it ran into, never more than it started from, written in the shrunk case
@@ -85,8 +87,8 @@ def test_shrinking_a_robot_at_fault_collision_leaves_fewer_people(tmp_path: Path
         assert f"crowd oncoming {count} from" in Path(entry["case"]).read_text(encoding="utf-8")
         summary = json.loads((Path(entry["run"]) / "summary.json").read_text(encoding="utf-8"))
         assert next(v["status"] for v in summary["verdicts"] if v["requirement"] == AT_FAULT) == "fail"
-        counts.append(count)
-    assert min(counts) < evaluation["params"]["oncoming.count"], (counts, evaluation["params"])
+        counts.append((count, evaluation["params"]["oncoming.count"]))
+    assert any(count < started for count, started in counts), counts  # at least one case lost people
 
 
 BAD = """\
