@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import itertools
 import math
 
 import numpy as np
@@ -23,6 +24,7 @@ from rei.sim.faults import (
     parse_faults,
 )
 from rei.sim.faults.laser import Blackout, Impulse, Occlusion, RangeNoise
+from rei.sim.faults.timing import Window
 
 RANGE_MIN, RANGE_MAX, BEAMS = 0.12, 3.5, 360
 INC = 2 * math.pi / BEAMS
@@ -209,3 +211,28 @@ def test_a_laser_fault_object_is_a_run_long_schedule() -> None:
     assert only.timing.whole_run
     assert isinstance(parse_faults("laser:blackout").faults[0].effect, Blackout)
     assert isinstance(parse_faults("laser:occlusion,angles=0..1,range=1").faults[0].effect, Occlusion)
+
+
+@pytest.mark.parametrize("timing", [
+    Timing.always(),
+    Timing(5.0),
+    Timing(5.0, 7.0),
+    Timing(0.0, math.inf, 10.0, 0.1),  # the thesis's 1 % pulse: one step wide at 240 Hz is 0.0042 s
+    Timing(1.0, 30.0, 3.0, 3.0),  # pulses as wide as their period: an END and a BEGIN at each period
+    Timing(0.3, 22.7, 1 / 3, 1 / 7),  # periods and pulses no step falls on
+    Timing(2.0, 9.0, 4.0, 1.0),
+])
+def test_a_window_answers_between_edges_as_its_timing_does_at_every_step(timing: Timing) -> None:
+    """Window works its state out only near edges; stepped at 240 Hz it must answer active/began exactly as asking
+    the timing at every step does (a window that began: active now, not at the step before)."""
+    window, was = Window(timing), False
+    for n in range(240 * 40):
+        t = n / 240
+        window.at(t)
+        active = timing.active(t)
+        assert (window.active, window.began) == (active, active and not was), (n, t)
+        was = active
+    edges = [e for e, _ in itertools.takewhile(lambda edge: edge[0] < 60.0, timing.edges())]
+    for t in [*np.linspace(0.0, 40.0, 997), *(e + d for e in edges if e < 40.0 for d in (0.0, -1e-12))]:
+        following = min((e for e in edges if e > t), default=math.inf)
+        assert timing.next_edge(t) == pytest.approx(following, abs=1e-9), t

@@ -15,18 +15,18 @@ the lidar reports them.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import ClassVar
 
 import numpy as np
 
 from rei.sim.faults.impulse import LaserFault, LaserFaultInjector
+from rei.sim.faults.kind import Kind, finite, within
 from rei.sim.faults.timing import Ramp
 
 
 @dataclass(frozen=True, slots=True)
-class Impulse:
+class Impulse(Kind):
     kind: ClassVar[str] = "impulse"
     draws: ClassVar[bool] = True
     rate: float
@@ -35,8 +35,7 @@ class Impulse:
 
     def __post_init__(self) -> None:
         LaserFault(self.rate, max(self.gain.low, 0.0), self.width)  # the same checks as the run-long fault's
-        if self.gain.low < 0:
-            raise ValueError(f"laser fault gain must be >= 0, got {self.gain.low:g}")
+        within(self.gain.low, "laser fault gain", 0.0, closed=True)
 
     @property
     def base(self) -> LaserFault:
@@ -47,54 +46,38 @@ class Impulse:
 
 
 @dataclass(frozen=True, slots=True)
-class Freeze:
+class Freeze(Kind):
     kind: ClassVar[str] = "freeze"
-    draws: ClassVar[bool] = False
-
-    def describe(self) -> str:
-        return ""
 
 
 @dataclass(frozen=True, slots=True)
-class Blackout:
+class Blackout(Kind):
     kind: ClassVar[str] = "blackout"
-    draws: ClassVar[bool] = False
-
-    def describe(self) -> str:
-        return ""
 
 
 @dataclass(frozen=True, slots=True)
-class Occlusion:
+class Occlusion(Kind):
     kind: ClassVar[str] = "occlusion"
-    draws: ClassVar[bool] = False
+    text: ClassVar[str] = "angles {angle_from:g}..{angle_to:g} deg at {range:g} m"
     angle_from: float
     angle_to: float
     range: float
 
     def __post_init__(self) -> None:
-        for name, value in (("angle", self.angle_from), ("angle", self.angle_to)):
-            if not math.isfinite(value):
-                raise ValueError(f"occlusion {name} must be a finite number of degrees, got {value}")
-        if not (math.isfinite(self.range) and self.range >= 0.0):
-            raise ValueError(f"occlusion range must be >= 0 m, got {self.range:g}")
-
-    def describe(self) -> str:
-        return f"angles {self.angle_from:g}..{self.angle_to:g} deg at {self.range:g} m"
+        for value in (self.angle_from, self.angle_to):
+            finite(value, "occlusion angle", "of degrees")
+        within(self.range, "occlusion range", 0.0, closed=True, unit="m")
 
 
 @dataclass(frozen=True, slots=True)
-class RangeNoise:
+class RangeNoise(Kind):
     kind: ClassVar[str] = "noise"
     draws: ClassVar[bool] = True
+    text: ClassVar[str] = "sigma {sigma:g} m"
     sigma: float
 
     def __post_init__(self) -> None:
-        if not (math.isfinite(self.sigma) and self.sigma > 0.0):
-            raise ValueError(f"noise sigma must be > 0 m, got {self.sigma:g}")
-
-    def describe(self) -> str:
-        return f"sigma {self.sigma:g} m"
+        within(self.sigma, "noise sigma", 0.0, unit="m")
 
 
 LaserKind = Impulse | Freeze | Blackout | Occlusion | RangeNoise

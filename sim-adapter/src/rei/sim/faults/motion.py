@@ -22,23 +22,18 @@ from typing import ClassVar
 import numpy as np
 
 from rei.geometry import Twist2D
-from rei.sim.faults.timing import Timing
-
-
-def _finite(value: float, what: str) -> None:
-    if not math.isfinite(value):
-        raise ValueError(f"{what} must be a finite number, got {value}")
+from rei.sim.faults.kind import Kind, finite, within
+from rei.sim.faults.timing import AHEAD, Timing, Window
 
 
 @dataclass(frozen=True, slots=True)
-class Latency:
+class Latency(Kind):
     kind: ClassVar[str] = "latency"
-    draws: ClassVar[bool] = False
+    text: ClassVar[str] = "delay {delay:g} s"
     delay: float  # seconds
 
     def __post_init__(self) -> None:
-        if not (math.isfinite(self.delay) and self.delay > 0.0):
-            raise ValueError(f"latency delay must be > 0 s, got {self.delay:g}")
+        within(self.delay, "latency delay", 0.0, unit="s")
 
     def periods(self, control_rate: float) -> int:
         """The delay in control periods; it must be a whole number of them at ``control_rate``."""
@@ -49,120 +44,80 @@ class Latency:
                              f"{control_rate:g} Hz (periods of {1.0 / control_rate:g} s)")
         return n
 
-    def describe(self) -> str:
-        return f"delay {self.delay:g} s"
-
 
 @dataclass(frozen=True, slots=True)
-class Loss:
+class Loss(Kind):
     kind: ClassVar[str] = "loss"
     draws: ClassVar[bool] = True
+    text: ClassVar[str] = "probability {probability:g}"
     probability: float
 
     def __post_init__(self) -> None:
-        if not (math.isfinite(self.probability) and 0.0 < self.probability <= 1.0):
-            raise ValueError(f"loss probability must be in (0, 1], got {self.probability:g}")
-
-    def describe(self) -> str:
-        return f"probability {self.probability:g}"
+        within(self.probability, "loss probability", 0.0, 1.0)
 
 
 @dataclass(frozen=True, slots=True)
-class Slip:
+class Slip(Kind):
     kind: ClassVar[str] = "slip"
-    draws: ClassVar[bool] = False
+    text: ClassVar[str] = "fraction {fraction:g}"
     fraction: float
 
     def __post_init__(self) -> None:
-        if not (math.isfinite(self.fraction) and 0.0 < self.fraction <= 1.0):
-            raise ValueError(f"slip fraction must be in (0, 1], got {self.fraction:g}")
-
-    def describe(self) -> str:
-        return f"fraction {self.fraction:g}"
+        within(self.fraction, "slip fraction", 0.0, 1.0)
 
 
 WHEELS = ("left", "right")
 
 
 @dataclass(frozen=True, slots=True)
-class Stuck:
+class Stuck(Kind):
     kind: ClassVar[str] = "stuck"
-    draws: ClassVar[bool] = False
+    text: ClassVar[str] = "{wheel} wheel"
     wheel: str
 
     def __post_init__(self) -> None:
         if self.wheel not in WHEELS:
             raise ValueError(f"a stuck wheel is 'left' or 'right', got {self.wheel!r}")
 
-    def describe(self) -> str:
-        return f"{self.wheel} wheel"
-
 
 @dataclass(frozen=True, slots=True)
-class Drift:
+class Drift(Kind):
     kind: ClassVar[str] = "drift"
-    draws: ClassVar[bool] = False
+    text: ClassVar[str] = "scale {scale:g}, bias {bias:g} deg/s"
     scale: float = 1.0
     bias: float = 0.0  # degrees per second
 
     def __post_init__(self) -> None:
-        _finite(self.bias, "drift bias")
-        if not (math.isfinite(self.scale) and self.scale > 0.0):
-            raise ValueError(f"drift scale must be > 0, got {self.scale:g}")
+        finite(self.bias, "drift bias")
+        within(self.scale, "drift scale", 0.0)
         if self.scale == 1.0 and self.bias == 0.0:
             raise ValueError("a drift needs a scale other than 1 or a bias other than 0")
 
-    def describe(self) -> str:
-        return f"scale {self.scale:g}, bias {self.bias:g} deg/s"
-
 
 @dataclass(frozen=True, slots=True)
-class Offset:
+class Offset(Kind):
     """A jump of the odometry or a kidnap of the robot: ``dx``, ``dy`` (m, world axes), ``dyaw`` (degrees)."""
 
+    text: ClassVar[str] = "dx {dx:g} m, dy {dy:g} m, dyaw {dyaw:g} deg"
     dx: float = 0.0
     dy: float = 0.0
     dyaw: float = 0.0
 
     def __post_init__(self) -> None:
         for name in ("dx", "dy", "dyaw"):
-            _finite(getattr(self, name), name)
+            finite(getattr(self, name), name)
         if self.dx == 0.0 and self.dy == 0.0 and self.dyaw == 0.0:
-            raise ValueError(f"a {self.kind} needs an offset: dx, dy or dyaw other than 0")  # type: ignore[attr-defined]
-
-    def describe(self) -> str:
-        return f"dx {self.dx:g} m, dy {self.dy:g} m, dyaw {self.dyaw:g} deg"
+            raise ValueError(f"a {self.kind} needs an offset: dx, dy or dyaw other than 0")
 
 
 @dataclass(frozen=True, slots=True)
 class Jump(Offset):
     kind: ClassVar[str] = "jump"
-    draws: ClassVar[bool] = False
 
 
 @dataclass(frozen=True, slots=True)
 class Kidnap(Offset):
     kind: ClassVar[str] = "kidnap"
-    draws: ClassVar[bool] = False
-
-
-class Edges:
-    """Whether a window started since the last call (for faults that act once per window: jumps, kidnaps)."""
-
-    __slots__ = ("_timing", "_was")
-
-    def __init__(self, timing: Timing) -> None:
-        self._timing = timing
-        self._was = False
-
-    def active(self, t: float) -> bool:
-        return self._timing.active(t)
-
-    def starts(self, t: float) -> bool:
-        active = self._timing.active(t)
-        starts = active and not self._was
-        self._was = active
-        return starts
 
 
 class CommandFaults:
@@ -173,8 +128,8 @@ class CommandFaults:
 
     def __init__(self, stages: list[tuple[Timing, Latency | Loss, np.random.Generator | None]],
                  control_rate: float) -> None:
-        self._stages = [(timing, kind, rng, kind.periods(control_rate) if isinstance(kind, Latency) else 0)
-                        for timing, kind, rng in stages]
+        self._stages = [(Window(timing), kind, rng, kind.periods(control_rate) if isinstance(kind, Latency)
+                         else 0) for timing, kind, rng in stages]
         # per stage: the commands it received, newest last (a latency's N + 1 of them)
         self._history: list[deque[Twist2D]] = [deque([Twist2D()] * (n + 1), maxlen=n + 1)
                                                for _, _, _, n in self._stages]
@@ -184,9 +139,10 @@ class CommandFaults:
         return bool(self._stages)
 
     def apply(self, t: float, command: Twist2D) -> Twist2D:
-        for i, (timing, kind, rng, _) in enumerate(self._stages):
+        for i, (window, kind, rng, _) in enumerate(self._stages):
             self._history[i].append(command)
-            if timing.active(t):
+            window.at(t)
+            if window.active:
                 if isinstance(kind, Latency):
                     command = self._history[i][0]  # the command received N ticks ago
                 else:
@@ -199,42 +155,75 @@ class CommandFaults:
 
 class MotionFaults:
     """The drive, odometry and pose faults of a schedule, as the simulation asks for them at each physics step
-    (at the step's start time ``t``)."""
+    (at the step's start time ``t``, each method once a step, in any order). What they answer is worked out anew
+    only where a window's edge is near: between edges a step costs a comparison (benchmarks/faults.py)."""
 
-    __slots__ = ("_drive", "_jumps", "_kidnaps", "_odometry")
+    __slots__ = ("_drive", "_drive_now", "_jumps", "_jumps_now", "_kidnaps", "_kidnaps_now", "_odometry",
+                 "_odometry_now", "_t", "_until", "_windows")
 
     def __init__(self, faults: list[tuple[Timing, object]]) -> None:
-        self._drive = [(timing, kind) for timing, kind in faults if isinstance(kind, Slip | Stuck)]
-        self._odometry = [(timing, kind) for timing, kind in faults if isinstance(kind, Drift)]
-        self._jumps = [(Edges(timing), kind) for timing, kind in faults if isinstance(kind, Jump)]
-        self._kidnaps = [(Edges(timing), kind) for timing, kind in faults if isinstance(kind, Kidnap)]
+        windows = [(Window(timing), kind) for timing, kind in faults]
+        self._windows = [window for window, _ in windows]
+        self._drive = [(window, kind) for window, kind in windows if isinstance(kind, Slip | Stuck)]
+        self._odometry = [(window, kind) for window, kind in windows if isinstance(kind, Drift)]
+        self._jumps = [(window, kind) for window, kind in windows if isinstance(kind, Jump)]
+        self._kidnaps = [(window, kind) for window, kind in windows if isinstance(kind, Kidnap)]
+        self._t = -math.inf
+        self._until = -math.inf
+        self._drive_now: tuple[float, tuple[bool, bool], float] = (1.0, (False, False), 1.0)
+        self._odometry_now: tuple[float, float, float] | None = None  # dt, scale, bias
+        self._jumps_now: list[Jump] = []
+        self._kidnaps_now: list[Kidnap] = []
 
     def __bool__(self) -> bool:
-        return bool(self._drive or self._odometry or self._jumps or self._kidnaps)
+        return bool(self._windows)
 
-    def drive(self, t: float) -> tuple[float, tuple[bool, bool], float]:
-        """The wheels' speed factor (the slips' fractions multiplied), which wheels are stuck, and the factor by
-        which the odometry counts the wheels' travel against the robot's (a slipping wheel turns as commanded)."""
+    def _at(self, t: float) -> None:
+        if t == self._t:
+            return
+        self._t = t
+        if t < self._until - AHEAD:
+            if self._jumps_now or self._kidnaps_now:
+                self._jumps_now, self._kidnaps_now = [], []  # they act at a window's first step only
+            return
+        for window in self._windows:
+            window.at(t)
+        self._until = min((window.until for window in self._windows), default=math.inf)
         fraction, left, right = 1.0, False, False
-        for timing, kind in self._drive:
-            if timing.active(t):
+        for window, kind in self._drive:
+            if window.active:
                 if isinstance(kind, Slip):
                     fraction *= kind.fraction
                 else:
                     left, right = left or kind.wheel == "left", right or kind.wheel == "right"
-        return fraction, (left, right), 1.0 / fraction
+        self._drive_now = (fraction, (left, right), 1.0 / fraction)
+        self._odometry_now = None
+        self._jumps_now = [kind for window, kind in self._jumps if window.began]
+        self._kidnaps_now = [kind for window, kind in self._kidnaps if window.began]
+
+    def drive(self, t: float) -> tuple[float, tuple[bool, bool], float]:
+        """The wheels' speed factor (the slips' fractions multiplied), which wheels are stuck, and the factor by
+        which the odometry counts the wheels' travel against the robot's (a slipping wheel turns as commanded)."""
+        self._at(t)
+        return self._drive_now
 
     def odometry(self, t: float, dt: float) -> tuple[float, float]:
         """The odometry's travel factor and the heading (rad) it gains over a step of ``dt`` from ``t``."""
-        scale, bias = 1.0, 0.0
-        for timing, kind in self._odometry:
-            if timing.active(t):
-                scale *= kind.scale
-                bias += math.radians(kind.bias) * dt
-        return scale, bias
+        self._at(t)
+        now = self._odometry_now
+        if now is None or now[0] != dt:
+            scale, bias = 1.0, 0.0
+            for window, kind in self._odometry:
+                if window.active:
+                    scale *= kind.scale
+                    bias += math.radians(kind.bias) * dt
+            now = self._odometry_now = (dt, scale, bias)
+        return now[1], now[2]
 
     def jumps(self, t: float) -> list[Jump]:
-        return [kind for edges, kind in self._jumps if edges.starts(t)]
+        self._at(t)
+        return self._jumps_now
 
     def kidnaps(self, t: float) -> list[Kidnap]:
-        return [kind for edges, kind in self._kidnaps if edges.starts(t)]
+        self._at(t)
+        return self._kidnaps_now

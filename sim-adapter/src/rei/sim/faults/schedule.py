@@ -29,7 +29,7 @@ from rei.sim.faults.motion import (
     Slip,
     Stuck,
 )
-from rei.sim.faults.timing import EPS, Timing
+from rei.sim.faults.timing import EPS, Timing, Window
 
 SENSORS = ("laser", "odometry", "drive", "commands", "pose")
 """In the order of contract/vocabulary.json's ``faults.kinds``."""
@@ -99,15 +99,14 @@ def fault_generators(schedule: FaultSchedule, fault_seed: np.random.SeedSequence
 class LaserFaults:
     """Applies a schedule's laser faults to each scan, in the order written, those active at the scan's time."""
 
-    __slots__ = ("_effects", "_last", "_was_active")
+    __slots__ = ("_effects", "_last")
 
     def __init__(self, schedule: FaultSchedule, generators: list[np.random.Generator | None], *,
                  range_min: float, range_max: float, angle_min: float, angle_increment: float,
                  beams: int) -> None:
-        self._effects = [(fault.timing, LaserEffect(fault.effect, generators[i],  # type: ignore[arg-type]
+        self._effects = [(Window(fault.timing), LaserEffect(fault.effect, generators[i],  # type: ignore[arg-type]
                                                     range_min, range_max, angle_min, angle_increment, beams))
                          for i, fault in schedule.of("laser")]
-        self._was_active = [False] * len(self._effects)
         self._last: np.ndarray | None = None
 
     def __bool__(self) -> bool:
@@ -116,11 +115,10 @@ class LaserFaults:
     def apply(self, t: float, ranges: np.ndarray) -> np.ndarray:
         """The scan the robot gets at ``t`` (``ranges`` itself when no fault is active)."""
         last = self._last
-        for i, (timing, effect) in enumerate(self._effects):
-            active = timing.active(t)
-            if active:
-                ranges = effect.apply(t, ranges, not self._was_active[i], last)
-            self._was_active[i] = active
+        for window, effect in self._effects:
+            window.at(t)
+            if window.active:
+                ranges = effect.apply(t, ranges, window.began, last)
         self._last = ranges
         return ranges
 

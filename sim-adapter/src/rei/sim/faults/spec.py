@@ -18,9 +18,10 @@
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 
 from rei.sim.faults.impulse import PRESETS, LaserFault
+from rei.sim.faults.kind import number
 from rei.sim.faults.laser import Blackout, Freeze, Impulse, LaserKind, Occlusion, RangeNoise
 from rei.sim.faults.motion import WHEELS, Drift, Jump, Kidnap, Latency, Loss, Slip, Stuck
 from rei.sim.faults.schedule import Fault, FaultSchedule
@@ -84,15 +85,8 @@ def _one(item: str) -> Fault:
     parts = [p.strip() for p in body.split(",") if p.strip()]
     if not parts:
         raise ValueError("nothing after 'laser:'")
-    values: dict[str, str] = {}
     head = parts[0] if "=" not in parts[0] else None
-    for part in parts[1:] if head is not None else parts:
-        key, eq, value = (s.strip() for s in part.partition("="))
-        if not eq:
-            raise ValueError(f"{part!r} is not key=value")
-        if key in values:
-            raise ValueError(f"{key} given twice")
-        values[key] = value
+    values = _keys(parts[1:] if head is not None else parts)
     if head is None or head in PRESETS:
         # today's run-long impulse noise, written as it always was
         base = PRESETS.get(head or "")
@@ -121,38 +115,35 @@ def _motion(sensor: str, body: str) -> Fault:
     head, *parts = [p.strip() for p in body.split(",")]
     if head not in kinds:
         raise ValueError(f"unknown {sensor} fault {head!r}: known kinds {', '.join(kinds)}")
+    return fault_from_fields(sensor, head, _keys(filter(None, parts)))
+
+
+def _keys(parts: Iterable[str]) -> dict[str, str]:
+    """``key=value`` parts as a mapping; each key once."""
     values: dict[str, str] = {}
-    for part in filter(None, parts):
+    for part in parts:
         key, eq, value = (s.strip() for s in part.partition("="))
         if not eq:
             raise ValueError(f"{part!r} is not key=value")
         if key in values:
             raise ValueError(f"{key} given twice")
         values[key] = value
-    return fault_from_fields(sensor, head, values)
+    return values
 
 
 def fault_from_fields(sensor: str, kind: str, fields: Mapping[str, str]) -> Fault:
     """A fault from its keys as text (``--fault`` and mission.xml). Raises ``ValueError`` naming the key."""
-    if sensor in MOTION_KIND_KEYS:
-        motion = MOTION_KIND_KEYS[sensor].get(kind)
-        if motion is None:
-            raise ValueError(f"unknown fault {sensor} {kind}: known {sensor} kinds "
-                             f"{', '.join(MOTION_KIND_KEYS[sensor])}")
-        for key in fields:
-            if key not in motion and key not in TIMING_KEYS:
-                allowed = ", ".join(f"{k}=" for k in (*motion, *TIMING_KEYS))
-                raise ValueError(f"{key!r} is not a key of {_a(sensor)} {kind} fault (keys: {allowed})")
-        return Fault(sensor, _motion_effect(sensor, kind, fields), timing_from_fields(fields))
-    known = KIND_KEYS.get(kind)
-    if sensor != "laser" or known is None:
-        raise ValueError(f"unknown fault {sensor} {kind}: known sensors {', '.join(SENSOR_KIND_KEYS)}, laser "
-                         f"kinds {', '.join(KIND_KEYS)}")
+    known = SENSOR_KIND_KEYS.get(sensor, {}).get(kind)
+    if known is None:
+        others = (f"known {sensor} kinds {', '.join(MOTION_KIND_KEYS[sensor])}" if sensor in MOTION_KIND_KEYS
+                  else f"known sensors {', '.join(SENSOR_KIND_KEYS)}, laser kinds {', '.join(KIND_KEYS)}")
+        raise ValueError(f"unknown fault {sensor} {kind}: {others}")
     for key in fields:
         if key not in known and key not in TIMING_KEYS:
             allowed = ", ".join(f"{k}=" for k in (*known, *TIMING_KEYS))
-            raise ValueError(f"{key!r} is not a key of a laser {kind} fault (keys: {allowed})")
-    return Fault(sensor, _effect(kind, fields), timing_from_fields(fields))
+            raise ValueError(f"{key!r} is not a key of {_a(sensor)} {kind} fault (keys: {allowed})")
+    effect = _motion_effect(sensor, kind, fields) if sensor in MOTION_KIND_KEYS else _effect(kind, fields)
+    return Fault(sensor, effect, timing_from_fields(fields))
 
 
 def timing_from_fields(fields: Mapping[str, str]) -> Timing:
@@ -186,7 +177,7 @@ def _effect(kind: str, fields: Mapping[str, str]) -> LaserKind:
         low, dots, high = text.partition("..")
         if not dots:
             raise ValueError(f"angles {text!r}: expected FROM..TO in degrees, e.g. -30..30")
-        return Occlusion(_number(low, "angle"), _number(high, "angle"), _required(fields, "range", kind))
+        return Occlusion(number(low, "angle"), number(high, "angle"), _required(fields, "range", kind))
     # what is not given is the "10%" preset's (docs/faults.md)
     base = PRESETS["10%"]
     gain = parse_ramp(fields["gain"]) if "gain" in fields else Ramp.constant(base.gain)
@@ -195,7 +186,7 @@ def _effect(kind: str, fields: Mapping[str, str]) -> LaserKind:
         width = int(width_text)
     except ValueError:
         raise ValueError(f"width {width_text!r} is not a whole number of beams") from None
-    rate = _number(fields["rate"], "rate") if "rate" in fields else base.rate
+    rate = number(fields["rate"], "rate") if "rate" in fields else base.rate
     return Impulse(rate, gain, width)
 
 
@@ -214,15 +205,15 @@ def _motion_effect(sensor: str, kind: str, fields: Mapping[str, str]
     if kind == "drift":
         if "scale" not in fields and "bias" not in fields:
             raise ValueError("an odometry drift fault needs scale= or bias= (or both)")
-        return Drift(_number(fields.get("scale", "1"), "scale"), _number(fields.get("bias", "0"), "bias"))
-    offset = {key: _number(fields.get(key, "0"), key) for key in ("dx", "dy", "dyaw")}
+        return Drift(number(fields.get("scale", "1"), "scale"), number(fields.get("bias", "0"), "bias"))
+    offset = {key: number(fields.get(key, "0"), key) for key in ("dx", "dy", "dyaw")}
     return Jump(**offset) if kind == "jump" else Kidnap(**offset)
 
 
 def _required(fields: Mapping[str, str], key: str, kind: str, sensor: str = "laser") -> float:
     if key not in fields:
         raise ValueError(f"{_a(sensor)} {kind} fault needs {key}=")
-    return _number(fields[key], key)
+    return number(fields[key], key)
 
 
 def _a(sensor: str) -> str:
@@ -230,28 +221,18 @@ def _a(sensor: str) -> str:
 
 
 def _seconds(fields: Mapping[str, str], key: str, default: float) -> float:
-    return _number(fields[key].removesuffix("s"), key) if key in fields else default
+    return number(fields[key].removesuffix("s"), key) if key in fields else default
 
 
 def _maybe_seconds(fields: Mapping[str, str], key: str) -> float | None:
-    return _number(fields[key].removesuffix("s"), key) if key in fields else None
+    return number(fields[key].removesuffix("s"), key) if key in fields else None
 
 
 def _duty(text: str) -> float:
-    share = _number(text[:-1], "duty") / 100.0 if text.endswith("%") else _number(text, "duty")
+    share = number(text[:-1], "duty") / 100.0 if text.endswith("%") else number(text, "duty")
     if not 0.0 < share <= 1.0:
         raise ValueError(f"duty must be in (0, 1] (or (0 %, 100 %]), got {text}")
     return share
-
-
-def _number(text: str, what: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        raise ValueError(f"{what} {text!r} is not a number") from None
-    if not math.isfinite(value):
-        raise ValueError(f"{what} {text!r} is not a finite number")
-    return value
 
 
 def format_fault(fault: Fault) -> str:

@@ -16,8 +16,13 @@ import math
 from collections.abc import Iterator
 from dataclasses import dataclass
 
+from rei.sim.faults.kind import number, within
+
 EPS = 1e-9
 """Seconds by which a computed time may miss a scheduled edge and still count as on it."""
+AHEAD = 1e-6
+"""Seconds before a window's next edge at which :class:`Window` works its state out again: far more than ``EPS``
+and the rounding of an edge's time, far less than a physics step."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -40,8 +45,7 @@ class Timing:
         if (self.period is None) != (self.pulse is None):
             raise ValueError("a pulse train needs both a period and a pulse width (pulse= or duty=)")
         if self.period is not None and self.pulse is not None:
-            if not (math.isfinite(self.period) and self.period > 0.0):
-                raise ValueError(f"period must be > 0 s, got {self.period:g}")
+            within(self.period, "period", 0.0, unit="s")
             if not (0.0 < self.pulse <= self.period):
                 raise ValueError(f"pulse width must be in (0, period = {self.period:g} s], got {self.pulse:g}")
 
@@ -83,6 +87,25 @@ class Timing:
             yield end, False
             k += 1
 
+    def next_edge(self, t: float) -> float:
+        """The first of :meth:`edges` after ``t`` (``inf`` when none is left): until just before it, :meth:`active`
+        answers as it does at ``t``."""
+        if self.whole_run or t >= self.end:
+            return math.inf
+        if t < self.start:
+            return self.start
+        if self.period is None or self.pulse is None:
+            return self.end
+        k = math.floor((t - self.start) / self.period)
+        # the pulse t is in (or, where the division rounded, the one before or after it) and the next one, their
+        # times computed as edges() does; each edge with 0 for an END, 1 for a BEGIN (an END first where they meet)
+        ahead = [(begin, 1) for begin in (self.start + k * self.period, self.start + (k + 1) * self.period)]
+        ahead += [(begin + self.pulse, 0) for begin, _ in ahead]
+        edge, begins = min(e for e in ahead if e[0] > t)
+        if edge < self.end:
+            return edge
+        return math.inf if begins else self.end  # the window ends inside a pulse, or between two
+
     def describe(self) -> str:
         if self.whole_run:
             return "the whole run"
@@ -90,6 +113,35 @@ class Timing:
         if self.period is not None and self.pulse is not None:
             text += f", pulses of {self.pulse:g} s every {self.period:g} s"
         return text
+
+
+class Window:
+    """A timing as a run's time passes (asked at times that never decrease): whether it is ``active`` and whether it
+    ``began`` at the time last asked, for the kinds that act once a window (a freeze's held scan, a jump, a
+    kidnap). Between edges it answers from what it worked out last: the motion's faults ask at every physics
+    step."""
+
+    __slots__ = ("_t", "active", "began", "timing", "until")
+
+    def __init__(self, timing: Timing) -> None:
+        self.timing = timing
+        self.active = False
+        self.began = False
+        self.until = -math.inf  # from AHEAD before this time on, the state is worked out again
+        self._t = -math.inf
+
+    def at(self, t: float) -> None:
+        """Move to ``t``: ``active`` and ``began`` then answer for it."""
+        if t == self._t:
+            return
+        self._t = t
+        if t < self.until - AHEAD:
+            self.began = False
+            return
+        active = self.timing.active(t)
+        self.began = active and not self.active
+        self.active = active
+        self.until = self.timing.next_edge(t)
 
 
 @dataclass(frozen=True, slots=True)
@@ -143,21 +195,12 @@ def parse_ramp(text: str) -> Ramp:
     """``0.5`` (constant) or ``0.2@0/0.8@30/0.8@60`` (value@seconds, linear between, constant outside)."""
     parts = [p.strip() for p in text.split("/")]
     if len(parts) == 1 and "@" not in parts[0]:
-        return Ramp.constant(_number(parts[0], "value"))
+        return Ramp.constant(number(parts[0], "value"))
     points = []
     for part in parts:
         value, at, t = (s.strip() for s in part.partition("@"))
         if not at:
             raise ValueError(f"{part!r}: expected value@seconds, e.g. 0.8@30")
-        points.append((_number(t.removesuffix("s"), "time"), _number(value, "value")))
+        points.append((number(t.removesuffix("s"), "time"), number(value, "value")))
     return Ramp(tuple(points))
 
-
-def _number(text: str, what: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        raise ValueError(f"{what} {text!r} is not a number") from None
-    if not math.isfinite(value):
-        raise ValueError(f"{what} {text!r} is not a finite number")
-    return value
