@@ -12,10 +12,10 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from fault_run_helpers import Blind
 
-from rei.geometry import Pose2D, Twist2D
+from rei.geometry import Twist2D
 from rei.run import MissionRunOptions, run_mission
-from rei.sut.api import Controller, NavGoal, NavStatus, Observation, StaticMap
 from rei.wamp.codec import LaserMode
 from rei.wamp.collector import CollectorConfig
 from rei.wamp.recording import read_recording
@@ -27,43 +27,11 @@ FAULTS = ("laser:blackout,from=2,to=3;laser:freeze,from=4,to=5.5;"
 END = 11.5
 
 
-class Turner(Controller):
-    """Turns on the spot, blind to its sensors; gives up on every goal from ``END`` s on (a short run)."""
-
-    def __init__(self) -> None:
-        self._status = NavStatus.IDLE
-
-    def reset(self, static_map: StaticMap, start: Pose2D) -> None:
-        pass
-
-    def set_goal(self, goal: NavGoal) -> None:
-        self._status = NavStatus.ACTIVE
-
-    def cancel(self) -> None:
-        self._status = NavStatus.CANCELLED
-
-    def step(self, observation: Observation) -> Twist2D:
-        if observation.t >= END:
-            self._status = NavStatus.ABORTED
-        return Twist2D(0.0, 0.6)
-
-    @property
-    def status(self) -> NavStatus:
-        return self._status
-
-
-@pytest.fixture(scope="module")
-def case(run_cli, repo_root: Path, tmp_path_factory: pytest.TempPathFactory) -> Path:
-    out = tmp_path_factory.mktemp("case")
-    result = run_cli("generate", repo_root / "examples" / "simple_navigation.rei", "-o", out)
-    assert result.returncode == 0, result.stderr
-    return out
-
-
 def _run(case: Path, out: Path, fault: str | None) -> Path:
     options = MissionRunOptions(seed=SEED, humans=False, fault=fault,
                                 collector=CollectorConfig(rate_hz=20.0, laser=LaserMode.FULL))
-    run_mission(case, out, options, run_id="faults", controller=Turner())
+    turner = Blind(lambda k: Twist2D(0.0, 0.6), rate=20.0, end=END)  # turns on the spot
+    run_mission(case, out, options, run_id="faults", controller=turner)
     return out
 
 

@@ -14,11 +14,12 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from fault_run_helpers import Blind
 
-from rei.geometry import Pose2D, Twist2D
+from rei.geometry import Twist2D
 from rei.run import MissionRunOptions, run_mission
 from rei.sim.faults import parse_faults
-from rei.sut.api import Controller, NavGoal, NavStatus, Observation, StaticMap
+from rei.sut.api import Controller
 from rei.wamp.collector import CollectorConfig
 from rei.wamp.recording import read_recording
 
@@ -40,42 +41,8 @@ def still(k: int) -> Twist2D:
     return Twist2D()
 
 
-class Blind(Controller):
-    """Commands ``plan(k)`` at control tick ``k`` (``applied`` may rewrite it, as a fault would); gives up on every
-    goal from ``END`` s on."""
-
-    def __init__(self, plan: Callable[[int], Twist2D],
-                 applied: Callable[[int, Twist2D], Twist2D] | None = None) -> None:
-        self._plan, self._applied = plan, applied
-        self._status = NavStatus.IDLE
-
-    def reset(self, static_map: StaticMap, start: Pose2D) -> None:
-        pass
-
-    def set_goal(self, goal: NavGoal) -> None:
-        self._status = NavStatus.ACTIVE
-
-    def cancel(self) -> None:
-        self._status = NavStatus.CANCELLED
-
-    def step(self, observation: Observation) -> Twist2D:
-        if observation.t >= END:
-            self._status = NavStatus.ABORTED
-        k = round(observation.t * RATE)
-        command = self._plan(k)
-        return command if self._applied is None else self._applied(k, command)
-
-    @property
-    def status(self) -> NavStatus:
-        return self._status
-
-
-@pytest.fixture(scope="module")
-def case(run_cli, repo_root: Path, tmp_path_factory: pytest.TempPathFactory) -> Path:
-    out = tmp_path_factory.mktemp("case")
-    result = run_cli("generate", repo_root / "examples" / "simple_navigation.rei", "-o", out)
-    assert result.returncode == 0, result.stderr
-    return out
+def _blind(plan: Callable[[int], Twist2D], applied: Callable[[int, Twist2D], Twist2D] | None = None) -> Blind:
+    return Blind(plan, applied, rate=RATE, end=END)
 
 
 def _run(case: Path, out: Path, controller: Controller, fault: str | None) -> Path:
@@ -104,10 +71,10 @@ def _delayed(periods: int) -> Callable[[int, Twist2D], Twist2D]:
 
 
 def test_latency_applies_each_command_exactly_4_periods_later(case: Path, tmp_path: Path) -> None:
-    faulty = _run(case, tmp_path / "faulty", Blind(wiggle), "commands:latency,delay=0.2,from=2,to=5")
-    by_hand = _run(case, tmp_path / "by_hand", Blind(wiggle, _delayed(4)), None)
-    off_by_one = _run(case, tmp_path / "off", Blind(wiggle, _delayed(3)), None)
-    clean = _run(case, tmp_path / "clean", Blind(wiggle), None)
+    faulty = _run(case, tmp_path / "faulty", _blind(wiggle), "commands:latency,delay=0.2,from=2,to=5")
+    by_hand = _run(case, tmp_path / "by_hand", _blind(wiggle, _delayed(4)), None)
+    off_by_one = _run(case, tmp_path / "off", _blind(wiggle, _delayed(3)), None)
+    clean = _run(case, tmp_path / "clean", _blind(wiggle), None)
     assert _state_bytes(faulty) == _state_bytes(by_hand)
     assert _state_bytes(faulty) != _state_bytes(off_by_one) and _state_bytes(faulty) != _state_bytes(clean)
     # the recorded twist: equal to the clean run's before the window, different inside it
@@ -132,10 +99,10 @@ def test_loss_drops_commands_with_its_seeded_draws_and_the_last_applied_stays(ca
         last[0] = command
         return command
 
-    faulty = _run(case, tmp_path / "faulty", Blind(wiggle), spec)
-    again = _run(case, tmp_path / "again", Blind(wiggle), spec)
-    by_hand = _run(case, tmp_path / "by_hand", Blind(wiggle, lossy), None)
-    clean = _run(case, tmp_path / "clean", Blind(wiggle), None)
+    faulty = _run(case, tmp_path / "faulty", _blind(wiggle), spec)
+    again = _run(case, tmp_path / "again", _blind(wiggle), spec)
+    by_hand = _run(case, tmp_path / "by_hand", _blind(wiggle, lossy), None)
+    clean = _run(case, tmp_path / "clean", _blind(wiggle), None)
     assert 15 < len(dropped) < 50  # about 0.4 of the window's 80 ticks
     assert _state_bytes(faulty) == _state_bytes(by_hand) == _state_bytes(again) != _state_bytes(clean)
     assert (faulty / "streams" / "mission.msgpack").read_bytes() == (again / "streams" / "mission.msgpack").read_bytes()
@@ -146,8 +113,8 @@ def _xy(m: dict, key: str) -> np.ndarray:
 
 
 def test_slip_scales_the_true_displacement_and_the_odometry_counts_the_wheels(case: Path, tmp_path: Path) -> None:
-    faulty = _states(_run(case, tmp_path / "faulty", Blind(straight), "drive:slip,fraction=0.5,from=1,to=5"))
-    clean = _states(_run(case, tmp_path / "clean", Blind(straight), None))
+    faulty = _states(_run(case, tmp_path / "faulty", _blind(straight), "drive:slip,fraction=0.5,from=1,to=5"))
+    clean = _states(_run(case, tmp_path / "clean", _blind(straight), None))
     at = {round(m["t"], 6): m for m in faulty}
     clean_at = {round(m["t"], 6): m for m in clean}
     for states in (at, clean_at):
@@ -164,7 +131,7 @@ def test_slip_scales_the_true_displacement_and_the_odometry_counts_the_wheels(ca
 
 
 def test_kidnap_moves_the_true_pose_and_not_the_odometry(case: Path, tmp_path: Path) -> None:
-    out = _run(case, tmp_path / "kidnap", Blind(still), "pose:kidnap,dx=1,dy=0.5,dyaw=90,from=3")
+    out = _run(case, tmp_path / "kidnap", _blind(still), "pose:kidnap,dx=1,dy=0.5,dyaw=90,from=3")
     states = {round(m["t"], 6): m for m in _states(out)}
     before, after = states[2.9], states[4.0]
     np.testing.assert_allclose(_xy(after, "pose") - _xy(before, "pose"), [1.0, 0.5], atol=2e-3)
@@ -177,8 +144,8 @@ def test_kidnap_moves_the_true_pose_and_not_the_odometry(case: Path, tmp_path: P
 
 def test_odometry_drift_and_jump_change_the_belief_not_the_truth(case: Path, tmp_path: Path) -> None:
     spec = "odometry:drift,scale=1.2,from=1,to=4;odometry:jump,dx=-0.3,dy=0.2,from=4.5,to=4.6"
-    faulty = _states(_run(case, tmp_path / "faulty", Blind(straight), spec))
-    clean = _states(_run(case, tmp_path / "clean", Blind(straight), None))
+    faulty = _states(_run(case, tmp_path / "faulty", _blind(straight), spec))
+    clean = _states(_run(case, tmp_path / "clean", _blind(straight), None))
     assert [m["robot"]["pose"] for m in faulty] == [m["robot"]["pose"] for m in clean]  # the truth untouched
     at = {round(m["t"], 6): m for m in faulty}
     clean_at = {round(m["t"], 6): m for m in clean}
@@ -192,7 +159,7 @@ def test_odometry_drift_and_jump_change_the_belief_not_the_truth(case: Path, tmp
 
 
 def test_a_stuck_wheel_turns_the_robot_about_it(case: Path, tmp_path: Path) -> None:
-    states = {round(m["t"], 6): m for m in _states(_run(case, tmp_path / "stuck", Blind(straight),
+    states = {round(m["t"], 6): m for m in _states(_run(case, tmp_path / "stuck", _blind(straight),
                                                          "drive:stuck,wheel=left,from=1,to=4"))}
     turned = math.remainder(states[4.0]["robot"]["pose"][3] - states[1.0]["robot"]["pose"][3], 2 * math.pi)
     assert turned > 0.5  # the right wheel alone drives: the robot turns left, counter-clockwise
@@ -208,7 +175,7 @@ def test_a_stuck_wheel_turns_the_robot_about_it(case: Path, tmp_path: Path) -> N
 ])
 def test_bad_specs_are_refused_naming_what_is_wrong(case: Path, tmp_path: Path, spec: str, message: str) -> None:
     with pytest.raises(ValueError, match=None) as error:
-        _run(case, tmp_path / "bad", Blind(still), spec) if "delay" in spec else parse_faults(spec)
+        _run(case, tmp_path / "bad", _blind(still), spec) if "delay" in spec else parse_faults(spec)
     assert message in str(error.value)
 
 

@@ -2,6 +2,7 @@
 """Faults on a timeline (issue #39): a schedule of faults, each a kind of one sensor and when it acts.
 
 * :mod:`rei.sim.faults.timing`: windows, pulse trains, ramps;
+* :mod:`rei.sim.faults.kind`: what every kind shares (its name, sentence and number checks);
 * :mod:`rei.sim.faults.impulse`: the thesis's Poisson impulse noise and the run-long ``--fault laser:...``;
 * :mod:`rei.sim.faults.laser`: the laser's kinds and what each does to a scan;
 * :mod:`rei.sim.faults.motion`: the odometry's, drive's, commands' and pose's kinds;
