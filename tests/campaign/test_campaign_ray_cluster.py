@@ -288,6 +288,7 @@ def test_a_node_that_cannot_see_out_runs_the_campaign_as_a_local_one(tmp_path: P
     assert [(r["status"], r["attempt"]) for r in rows] == [("COMPLETED", "1")] * 3, rows
     assert (out / "cases" / "two_rooms" / "map.pgm").is_file()
     assert list(node_tmp.glob("rei-run-*")) == []  # the node's temporary run folders are gone
+    assert len(list(node_tmp.glob("rei-node-monitor-*"))) == 1  # its Ray worker's warm monitor JVM's folder
     cluster_time = time.monotonic() - started
     moved = json.loads((out / "campaign.json").read_text(encoding="utf-8"))["metrics"]["transfer"]
     case = sum(p.stat().st_size for name in ("simple_navigation", "two_rooms")
@@ -323,6 +324,8 @@ def test_a_node_that_cannot_see_out_runs_the_campaign_as_a_local_one(tmp_path: P
         assert str(shipped / "patterns") in summary["utilities"], summary["utilities"]
         assert summary == {**local_summary, "utilities": local_summary["utilities"].replace(str(local), str(work))}
         assert summary["counts"]["SIG_USER_TASK_STARTED"] == 2  # the user's pattern ran on the node
+        # replayed in the warm monitor JVM the node's Ray worker keeps, not in a JVM of its own
+        assert json.loads((shipped / "timing.json").read_text(encoding="utf-8"))["monitor"].get("served"), row
         task = json.loads((shipped / "task.json").read_text(encoding="utf-8"))
         assert task["run_dir"] == str(shipped) and task["patterns"] == str(work / "mine")  # the driver's task
     print(f"shared-nothing campaign of 3 runs (cluster start included): {cluster_time:.1f} s")

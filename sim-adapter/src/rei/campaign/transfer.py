@@ -111,6 +111,57 @@ def rewrite(task: RunTask, work: Path, fields: dict[str, Any], create: bool = Tr
     return replace(task, **changes)
 
 
+#: This Ray worker process's warm monitor JVM (rei.run.jvm.JarServer), started by its first run and kept for the
+#: next ones as the local backend keeps one for all its runs: a replay there costs ~0.1-0.3 s of CPU instead of a
+#: JVM's start and rule build (~3-4 s). It ends with the Ray worker (its standard input closes).
+_monitor: Any = None
+#: The folder of a Ray worker's warm monitor JVM (its socket and log), named after the worker's pid: Ray ends a
+#: job's workers without running their exit handlers, so the next worker on the node removes a dead one's.
+_MONITOR_FOLDER = "rei-node-monitor-"
+
+
+def _warm_monitor() -> dict[str, str]:
+    """The environment that sends this worker's runs' replays to its warm monitor JVM ({} when none starts: each
+    replay then starts a JVM of its own, as before)."""
+    global _monitor
+    from rei.campaign.worker import MONITOR_SERVER_ENV
+
+    if _monitor is None or not _monitor.alive():
+        import atexit
+
+        from rei.run.jvm import JarServer, JarServerError
+        from rei.toolchain import ToolchainError
+
+        if _monitor is None:
+            _sweep_monitor_folders()
+        else:
+            _monitor.stop()
+        folder = Path(tempfile.mkdtemp(prefix=f"{_MONITOR_FOLDER}{os.getpid()}-"))  # 0700: its socket runs commands
+        server = JarServer("monitor", folder / "monitor-server.log", folder)
+        try:
+            server.start()
+        except (JarServerError, ToolchainError, OSError):
+            shutil.rmtree(folder, ignore_errors=True)
+            return {}
+        atexit.register(lambda: (server.stop(), shutil.rmtree(folder, ignore_errors=True)))
+        _monitor = server
+    return {MONITOR_SERVER_ENV: str(_monitor.socket)}
+
+
+def _sweep_monitor_folders() -> None:
+    """Removes the warm monitor folders of this node's Ray workers that are gone."""
+    for folder in Path(tempfile.gettempdir()).glob(f"{_MONITOR_FOLDER}*"):
+        pid = folder.name[len(_MONITOR_FOLDER):].split("-")[0]
+        if not pid.isdigit():
+            continue
+        try:
+            os.kill(int(pid), 0)
+        except ProcessLookupError:
+            shutil.rmtree(folder, ignore_errors=True)
+        except OSError:  # alive, someone else's
+            pass
+
+
 def run_shipped(task: dict[str, Any], case: Bundle, extra: Bundle, fields: dict[str, Any],
                 attempt: int) -> dict[str, Any]:
     """The Ray task: the run in a temporary folder of this node's, its files returned as object store chunks."""
@@ -126,7 +177,8 @@ def run_shipped(task: dict[str, Any], case: Bundle, extra: Bundle, fields: dict[
         local = rewrite(RunTask.from_dict(task), work, fields)
         run_dir = Path(local.run_dir)
         # the worker process dies with this Ray worker (a node lost, a task cancelled by force), not after it
-        outcome = supervise(local, command=die_with_parent(worker_command(run_dir)))
+        env = _warm_monitor() if local.mode == "replay" else {}  # pipeline runs' monitors are live
+        outcome = supervise(local, command=die_with_parent(worker_command(run_dir)), env=env)
         files = []
         for path in sorted(run_dir.rglob("*")):
             if not path.is_file() or path == run_dir / "task.json":  # the driver writes its own task.json

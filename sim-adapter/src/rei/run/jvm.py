@@ -62,10 +62,12 @@ class JarServerError(RuntimeError):
 
 class JarServer:
     """One of REI's jars serving many commands in one JVM until ``stop()`` (or until this process ends: the JVM
-    exits when its standard input closes). Its socket lives in a new private folder (0700)."""
+    exits when its standard input closes). Its socket lives in a new private folder (0700), or in ``folder`` (the
+    caller's, private, not removed at ``stop()``)."""
 
-    def __init__(self, role: str, log: Path) -> None:
+    def __init__(self, role: str, log: Path, folder: Path | None = None) -> None:
         self.role, self.log = role, log
+        self._given = folder
         self._folder: Path | None = None
         self._process: subprocess.Popen[bytes] | None = None
         self._log_file: IO[bytes] | None = None
@@ -82,7 +84,8 @@ class JarServer:
         java = toolchain.find_java()
         jar = toolchain.find_jar(self.role)
         sharing, self._dump = _class_sharing(jar, java)
-        self._folder = Path(tempfile.mkdtemp(prefix=f"rei-{self.role}-"))  # 0700: whoever connects runs commands
+        # 0700: whoever connects runs commands
+        self._folder = self._given or Path(tempfile.mkdtemp(prefix=f"rei-{self.role}-"))
         self.log.parent.mkdir(parents=True, exist_ok=True)
         self.log.write_bytes(b"")
         # appending: the JVM's standard error and the copy of its standard output share the file
@@ -116,7 +119,7 @@ class JarServer:
             if process.stdout is not None:
                 process.stdout.close()
             self._log_file.close()
-        if self._folder is not None:
+        if self._folder is not None and self._given is None:
             shutil.rmtree(self._folder, ignore_errors=True)
 
     def __enter__(self) -> Self:
