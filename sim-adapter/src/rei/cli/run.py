@@ -32,6 +32,7 @@ from rei.cli._mission_options import (
 from rei.cli._outcome import print_verdicts, write_views
 from rei.cli._router_options import add_router_options, check_router_options
 from rei.cli.errors import CommandError
+from rei.lifetime import skip_exit_collection
 
 if TYPE_CHECKING:
     from rei.run.held import HeldSimulation
@@ -73,7 +74,7 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-
+    skip_exit_collection()  # the user waits for this process's exit
     check_mission_options(args)
     check_router_options(args)
     patterns, declared = _check_patterns(args)

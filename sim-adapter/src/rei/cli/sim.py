@@ -29,7 +29,7 @@ from rei.cli._mission_options import (
 )
 from rei.cli._router_options import add_router_options, check_router_options
 from rei.cli.errors import EXIT_INVALID, EXIT_OK, EXIT_RUN_ERROR, CommandError
-from rei.lifetime import sigterm_unwinds
+from rei.lifetime import sigterm_unwinds, skip_exit_collection
 
 if TYPE_CHECKING:
     from rei.wamp.client import WampClient
@@ -80,6 +80,7 @@ def run(args: argparse.Namespace) -> int:
     # Heavy imports here, so `rei --help` stays fast.
     from rei.artifacts import ArtifactError
     from rei.run import MissionRunOptions, run_mission
+    skip_exit_collection()  # `rei run` waits for this process's exit
     check_mission_options(args)
     _check_router_options(args)
     out = Path(args.output).resolve()  # children and the router run in other working directories
