@@ -52,13 +52,15 @@ FROM_SIMULATION = ("hello", "tick", "goal", "cancel", "end")
 FROM_SUT = ("hello_call", "command", "status")
 #: A lidar slower than the control rate (ticks without a scan) that cannot span the room (misses read +inf), and a
 #: mission whose first goal times out (cancel) at once. The realtime run's robot is holonomic (hello's drive, the
-#: ticks' [v, w, vy]), the lockstep run's differential.
-CATALOGUE = """catalogue ContractTypes {
+#: ticks' [v, w, vy]) and round, read from its description (hello's outline a circle); the lockstep run's a
+#: differential box (a polygon).
+ROUND_BOT = Path(__file__).resolve().parents[2] / "examples" / "robots" / "round_bot.urdf"
+CATALOGUE = f"""catalogue ContractTypes {{
   robot type Probe : box 0.281 x 0.306 x 0.141 mass 1.8
     lidar beams 90 range 0.12 to 3.5 rate 5
-  robot type OmniProbe : box 0.281 x 0.306 x 0.141 mass 1.8 drive holonomic
-    lidar beams 90 range 0.12 to 3.5 rate 5
-}
+  robot type OmniProbe : urdf "{ROUND_BOT}" mass 1.8 drive holonomic
+    lidar link "laser" beams 90 range 0.12 to 3.5 rate 5
+}}
 """
 CASE = """import "types.rei"
 testcase Contract {
@@ -280,12 +282,15 @@ def test_what_rei_sends_and_takes_is_what_the_document_says(
     sideways = sum(1 for p in ticks if commands[p["tick"] % len(commands)].get("vy", 0) != 0)
     assert sideways > 0 and stats["clamped"] == sideways and set(stats["round_trip_ms"]) == {"p50", "p99", "max"}
     assert hello["robot"]["drive"] == "differential" and hello["robot"]["max_lateral"] == 0.0
+    assert hello["robot"]["outline"] == {"type": "polygon", "points": [[-0.1405, -0.153], [0.1405, -0.153],
+                                                                      [0.1405, 0.153], [-0.1405, 0.153]]}
     assert all(len(p["odom"]["twist"]) == 2 for p in ticks)
 
     received, sim = runs[realtime]
     assert received[0][1]["map"] is None and received[0][1]["clock"] == "realtime"
     robot = received[0][1]["robot"]
     assert robot["drive"] == "holonomic" and robot["max_lateral"] == robot["max_linear"]
+    assert robot["outline"] == {"type": "circle", "x": 0.0, "y": 0.0, "radius": 0.17}  # round_bot.urdf's body
     assert all(len(p["odom"]["twist"]) == 3 for name, p in received if name == "tick")
     assert sim["sut"]["clamped"] == 0  # its vy is within its limit
     assert sim["sut"]["round_trip_ms"] is None and sim["sut"]["clock"] == "realtime"

@@ -107,6 +107,16 @@ def test_a_holonomic_robot_s_tick_has_its_sideways_odometry_third() -> None:
     assert protocol.read_observation(differential, None).odom_twist == Twist2D(0.1, 0.2)
 
 
+def test_hello_s_outline_is_the_footprint_as_world_json_writes_it() -> None:
+    from rei.artifacts.world import CircleFootprint, PolygonFootprint
+
+    assert protocol.outline(CircleFootprint(0.05, 0, 0.17)) == {"type": "circle", "x": 0.05, "y": 0.0, "radius": 0.17}
+    square = PolygonFootprint(((-0.1, -0.1), (0.1, -0.1), (0.1, 0.1), (-0.1, 0.1)))
+    assert protocol.outline(square) == {"type": "polygon", "points": [[-0.1, -0.1], [0.1, -0.1], [0.1, 0.1],
+                                                                      [-0.1, 0.1]]}
+    assert all(isinstance(v, float) for point in protocol.outline(square)["points"] for v in point)
+
+
 def test_statuses_follow_the_action_server_s_states() -> None:
     assert protocol.check_status({"goal_id": 1, "status": "SUCCEEDED", "text": "there"}, current_goal=1) == \
         Status(1, NavStatus.SUCCEEDED, "there")

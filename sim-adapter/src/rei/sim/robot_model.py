@@ -18,7 +18,7 @@ from string import Template
 
 import pybullet as p
 
-from rei.artifacts.world import RobotSpec, footprint_polygon
+from rei.artifacts.world import CircleFootprint, RobotSpec, footprint_polygon
 
 GROUND_CLEARANCE = 0.01
 WHEEL_WIDTH = 0.018
@@ -26,6 +26,12 @@ CASTER_RADIUS = 0.012
 FRONT_CASTER_LIFT = 0.003
 ROBOT_COLLISION_GROUP = 0x8000
 """The robot's links are in this collision group alone, so the lidar's rays can leave them out."""
+ROBOT_COLLISION_MASK = 0xFFFF & ~0x1
+"""The robot's links' collision mask leaves out group 1, a ray's: Bullet's ray test skips a body whose mask leaves
+out the ray's group before testing the ray against its shape, where pybullet's ``collisionFilterMask`` of a ray
+drops a body only after the test (every lidar ray starts inside the robot: a test each against its chassis, a
+millisecond a scan against a footprint's hull). Bodies still meet the robot: pybullet pairs two bodies when either's
+group is in the other's mask, and every other body's mask has the robot's group."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -70,9 +76,17 @@ def render_urdf(spec: RobotSpec) -> str:
     footprint_mass = min(0.05, 0.05 * spec.mass)
     chassis_mass = spec.mass - 2 * wheel_mass - 2 * caster_mass - footprint_mass
     chassis_h = sz - GROUND_CLEARANCE
+    chassis_xy = "0 0"  # a box robot's URDF is the text it always was
     if spec.footprint is None:
         xmin, xmax = -sx / 2, sx / 2
         chassis_geometry = f'<box size="{float(sx)!r} {float(sy)!r} {float(chassis_h)!r}"/>'
+    elif isinstance(spec.footprint, CircleFootprint):
+        # an upright cylinder, the circle itself: a 64-gon hull cost each lidar ray a GJK test against its 128
+        # vertices (pybullet's ray filter drops the robot's own links only after testing them), 2 ms a scan
+        circle = spec.footprint
+        xmin, xmax = circle.x - circle.radius, circle.x + circle.radius
+        chassis_xy = f"{float(circle.x)!r} {float(circle.y)!r}"
+        chassis_geometry = f'<cylinder radius="{float(circle.radius)!r}" length="{float(chassis_h)!r}"/>'
     else:
         xs = [x for x, _ in footprint_polygon(spec.footprint)]
         xmin, xmax = min(xs), max(xs)
@@ -88,6 +102,7 @@ def render_urdf(spec: RobotSpec) -> str:
         "chassis_iyy": chassis_mass * (sx**2 + chassis_h**2) / 12,
         "chassis_izz": chassis_mass * (sx**2 + sy**2) / 12,
         "chassis_geometry": chassis_geometry,
+        "chassis_xy": chassis_xy,
         "wheel_mass": wheel_mass,
         "wheel_r": r,
         "wheel_w": WHEEL_WIDTH,
@@ -112,7 +127,7 @@ def load_robot(client: int, spec: RobotSpec, wheel_friction: float = 1.0) -> Rob
     with tempfile.TemporaryDirectory(prefix="rei-robot-") as folder:
         urdf = Path(folder) / f"{spec.name}.urdf"
         urdf.write_text(render_urdf(spec), encoding="utf-8")
-        if spec.footprint is not None:
+        if spec.footprint is not None and not isinstance(spec.footprint, CircleFootprint):
             (Path(folder) / CHASSIS_MESH).write_text(
                 chassis_obj(list(footprint_polygon(spec.footprint)), spec.size[2] - GROUND_CLEARANCE), encoding="utf-8")
         x, y, _, yaw = spec.pose
@@ -132,7 +147,7 @@ def load_robot(client: int, spec: RobotSpec, wheel_friction: float = 1.0) -> Rob
     casters = (joints["caster_rear_joint"], joints["caster_front_joint"])
     links = (-1, *sorted(joints.values()))
     for link in links:
-        p.setCollisionFilterGroupMask(body, link, ROBOT_COLLISION_GROUP, 0xFFFF, physicsClientId=client)
+        p.setCollisionFilterGroupMask(body, link, ROBOT_COLLISION_GROUP, ROBOT_COLLISION_MASK, physicsClientId=client)
     for wheel in (left, right):
         p.changeDynamics(body, wheel, lateralFriction=wheel_friction, physicsClientId=client)
         # Without this the velocity motor would fight a default joint damping; the wheels spin freely.

@@ -21,6 +21,7 @@ from typing import Any
 
 import numpy as np
 
+from rei.artifacts.world import CircleFootprint, PolygonFootprint
 from rei.geometry import Pose2D, Twist2D
 from rei.sut.api import LaserScan, NavGoal, NavStatus, Observation, StaticMap
 
@@ -82,6 +83,14 @@ def hello_answer(*, run_id: str, clock: str, control_rate: float, deadline: floa
     if static_map is not None and occupancy is not None:
         answer["map"]["occupancy"] = occupancy
     return answer
+
+
+def outline(footprint: PolygonFootprint | CircleFootprint) -> dict[str, Any]:
+    """``hello``'s ``robot.outline``: the robot's outline on the floor in its own frame, as world.json writes a
+    described robot's footprint (a box robot's is its rectangle)."""
+    if isinstance(footprint, CircleFootprint):
+        return {"type": "circle", "x": float(footprint.x), "y": float(footprint.y), "radius": float(footprint.radius)}
+    return {"type": "polygon", "points": [[float(x), float(y)] for x, y in footprint.points]}
 
 
 def tick_message(tick: int, observation: Observation, *, new_scan: bool, scan_time: float,

@@ -38,6 +38,7 @@ def external_sut(options: SutOptions, client: WampClient, run_id: str, out_dir: 
         robot={"name": robot.name, "footprint": [float(robot.size[0]), float(robot.size[1])],
                "max_linear": limits.max_linear, "max_angular": limits.max_angular,
                "drive": robot.drive.kind, "max_lateral": limits.max_lateral,
+               "outline": protocol.outline(robot.outline),
                "lidar": {"beams": robot.lidar.beams, "range_min": float(robot.lidar.range_min),
                          "range_max": float(robot.lidar.range_max), "rate": float(robot.lidar.rate)}}))
     url = options.router_url or client.url
