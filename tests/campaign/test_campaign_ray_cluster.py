@@ -482,3 +482,20 @@ def test_a_node_without_java_is_named_when_the_campaign_connects(tmp_path: Path,
     assert named.groups() in cluster.nodes_with_cpu(), (named.groups(), cluster.nodes_with_cpu())
     assert not (out / "runs.csv").exists()  # no run was tried
     print(f"a node without java refused (cluster start included): {time.monotonic() - started:.1f} s")
+
+
+def test_the_wheel_carries_the_monitor_jar_and_names_a_jar_it_lacks(node_env: NodeEnv, tmp_path: Path) -> None:
+    """Outside any checkout (run from a temporary folder, no REI_HOME), the wheel's REI finds its own monitor jar,
+    and a jar it was built without is refused saying which jars it has and how to get the one asked for."""
+    script = ("from rei import toolchain\nprint(toolchain.find_jar('monitor'))\ntry:\n    toolchain.find_jar('cli')\n"
+              "except toolchain.ToolchainError as error:\n    print(error)\n")
+    env = {key: value for key, value in os.environ.items() if key not in ("REI_HOME", "VIRTUAL_ENV", "PYTHONPATH")}
+    done = subprocess.run([str(node_env.python), "-c", script], capture_output=True, text=True, cwd=tmp_path,
+                          env=env, timeout=120, check=False)
+    assert done.returncode == 0, done.stderr
+    jar, refusal = done.stdout.strip().splitlines()
+    assert Path(jar).is_relative_to(node_env.python.parent.parent)  # the node's venv, where the wheel went
+    assert Path(jar).name == "rei-monitor.jar" and Path(jar).stat().st_size == (
+        REPO_ROOT / "runtime-monitor" / "target" / "rei-monitor.jar").stat().st_size
+    assert refusal == ("this installation of REI carries no rei-cli.jar (it has: rei-monitor.jar); install a wheel "
+                       "built with it (scripts/build-wheel.sh --jars cli) or set REI_HOME to a built checkout")
