@@ -6,9 +6,10 @@
 
 It needs ``/use_sim_time`` true. The timeline (``rei.sut.script.ScriptController``, the ``script:FILE``
 controller; the private parameter ``~script`` names another script file) starts at the first clock message and
-is published on ``cmd_vel`` (geometry_msgs/Twist) once per ``~period`` (0.1 s) of sim time. It serves the
-``move_base`` action (move_base_msgs/MoveBaseAction): any goal is accepted and SUCCEEDED once the timeline has
-played; a cancelled goal stops the script (the robot stands still, later goals are aborted).
+is published on ``cmd_vel`` (geometry_msgs/Twist, a script's sideways speed as ``linear.y``) once per ``~period``
+(0.1 s) of sim time. It serves the ``move_base`` action (move_base_msgs/MoveBaseAction): any goal is accepted and
+SUCCEEDED once the timeline has played; a cancelled goal stops the script (the robot stands still, later goals are
+aborted).
 """
 
 from __future__ import annotations
@@ -58,7 +59,7 @@ class RamNode:
             cmd = self.script.step(Observation(now.to_sec(), Pose2D(0.0, 0.0), Twist2D(), None))
             self.report()
         msg = Twist()
-        msg.linear.x, msg.angular.z = cmd.v, cmd.w
+        msg.linear.x, msg.linear.y, msg.angular.z = cmd.v, cmd.vy, cmd.w  # vy: a script's fourth column
         self.cmd_pub.publish(msg)
 
     def report(self) -> None:

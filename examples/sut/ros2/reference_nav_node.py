@@ -10,6 +10,11 @@ nav2's NavigateToPose action (``navigate_to_pose/_action/send_goal``, ``get_resu
 rmw_cyclonedds's request header echoed in each reply, and the action's status topic), and publishes ``rt/cmd_vel`` exactly once per
 new clock time, zero when idle. It takes ROS_DOMAIN_ID and CYCLONEDDS_URI from its environment, as the bridge sets
 them. Goals are map-frame poses, the tolerance is 0.25 m (NavigateToPose goals carry none).
+
+    rei run CASE --sut "ros2:python3 examples/sut/ros2/reference_nav_node.py --script FILE"
+
+plays a ``script:FILE`` timeline instead (``rei.sut.script``; no map needed, every goal SUCCEEDED once it has
+played), a script's sideways speed on ``cmd_vel``'s ``linear.y``.
 """
 
 from __future__ import annotations
@@ -25,13 +30,14 @@ from cyclonedds.sub import DataReader
 from cyclonedds.topic import Topic
 
 from rei.geometry import Pose2D, Twist2D
-from rei.sut.api import LaserScan, NavGoal, NavStatus, Observation
+from rei.sut.api import LaserScan, NavGoal, NavStatus, Observation, StaticMap
 from rei.sut.nav import NavController
 from rei.sut.rasterize import static_map_of_grid
 from rei.sut.ros2 import messages as m
 from rei.sut.ros2 import types as t
 from rei.sut.ros2.action import action_topics, service_qos, status_qos
 from rei.sut.ros2.dds import listening_reader
+from rei.sut.script import ScriptController, load_script
 
 FOOTPRINT = (0.281, 0.306)
 MAX_LINEAR, MAX_ANGULAR, TOLERANCE = 0.26, 1.82, 0.25
@@ -46,10 +52,11 @@ def pose2d_of(pose: t.Pose) -> Pose2D:
 
 
 class ReferenceNavNode:
-    def __init__(self, participant: DomainParticipant) -> None:
+    def __init__(self, participant: DomainParticipant, script: ScriptController | None = None) -> None:
         self.participant = participant
         self.lock = threading.Condition()
-        self.nav: NavController | None = None
+        self.nav: NavController | ScriptController | None = script
+        self.script = script is not None
         self.odom: t.Odometry | None = None
         self.scan: LaserScan | None = None
         self.clock_ns = 0  # the newest clock time
@@ -103,6 +110,8 @@ class ReferenceNavNode:
 
     def on_map(self, reader: DataReader) -> None:
         for grid in reader.take(N=1):
+            if self.script:
+                continue
             info = grid.info
             static_map = static_map_of_grid(grid.data, info.width, info.height, info.resolution,
                                             pose2d_of(info.origin), FOOTPRINT)
@@ -186,7 +195,8 @@ class ReferenceNavNode:
                     odom = self.odom
                     twist = odom.twist.twist
                     cmd = self.nav.step(Observation(now * 1e-9, pose2d_of(odom.pose.pose),
-                                                    Twist2D(twist.linear.x, twist.angular.z), self.scan))
+                                                    Twist2D(twist.linear.x, twist.angular.z, twist.linear.y),
+                                                    self.scan))
                     if self.active is not None and self.nav.status in FINAL:
                         self.finish(FINAL[self.nav.status])
             self.cmd_vel.write(m.twist(cmd))
@@ -195,9 +205,13 @@ class ReferenceNavNode:
 def main() -> None:
     domain = int(os.environ.get("ROS_DOMAIN_ID", "0"))
     participant = DomainParticipant(domain)  # CYCLONEDDS_URI from the environment: the bridge's loopback set-up
-    print(f"reference navigation on DDS domain {domain}", flush=True)
+    script = None
+    if sys.argv[1:2] == ["--script"]:
+        script = ScriptController(load_script(sys.argv[2]))
+        script.reset(StaticMap((0.0, 0.0, 1.0, 1.0), (), (0.0, 0.0)), Pose2D(0.0, 0.0))  # both ignored
+    print(f"{'script' if script else 'reference navigation'} on DDS domain {domain}", flush=True)
     try:
-        ReferenceNavNode(participant).run()
+        ReferenceNavNode(participant, script).run()
     except KeyboardInterrupt:
         sys.exit(0)
 

@@ -141,3 +141,32 @@ def test_fault_windows_are_shaded_behind_the_utility_line() -> None:
     assert blackout == pytest.approx(1.5 * noise, rel=0.01)  # 3 s against the 2 s left of the run
     assert svg.find("s:g[@id='fault-windows']", ns) is not None
     assert ET.fromstring(render_utility(events, 10.0)).find("s:g[@id='fault-windows']", ns) is None
+
+
+@pytest.mark.parametrize("footprint", [None, {"type": "polygon", "points": [[-0.1, -0.08], [0.04, -0.09], [0.05, 0.0],
+                                                                               [0.04, 0.09], [-0.1, 0.08]]},
+                                       {"type": "circle", "x": 0.05, "y": 0.0, "radius": 0.17}])
+def test_the_map_draws_the_robot_s_outline(tmp_path: Path, footprint: dict | None) -> None:
+    """A box robot's rectangle; a described robot's footprint as world.json has it, placed and turned at each end."""
+    import json
+
+    out = make_run(tmp_path / "out")
+    world_file = out / "case" / "world.json"
+    world = json.loads(world_file.read_text())
+    if footprint is not None:
+        world["robot"]["footprint"] = footprint
+        world_file.write_text(json.dumps(world))
+    room = svg(write_report(out).read_text(encoding="utf-8"), "map")
+    robot, path = by_id(room, "map-robot"), points(by_id(room, "map-robot-path"))
+    shapes = [e for e in robot if e.get("class") in ("robot-start", "robot-end")]
+    assert len(shapes) == 2
+    if footprint is None or footprint["type"] == "polygon":
+        assert all(e.tag == f"{SVG}polygon" for e in shapes)
+        assert len(points(shapes[0])) == (4 if footprint is None else len(footprint["points"]))
+    else:
+        # the robot drives along +x (yaw 0): the circle's centre is 0.05 m ahead of the path's end, its radius drawn
+        assert all(e.tag == f"{SVG}circle" for e in shapes)
+        end = shapes[1]
+        scale = (path[-1][0] - path[0][0]) / 0.4  # pixels a metre: make_run's robot drives 0.1 m/s for 4 s
+        assert float(end.get("cx")) - path[-1][0] == pytest.approx(0.05 * scale, abs=0.2)
+        assert float(end.get("r")) == pytest.approx(0.17 * scale, abs=0.2)

@@ -191,25 +191,52 @@ def _path(track: Track, tf: MapTransform, element_id: str, colour: str, *, dashe
             f' stroke-linejoin="round" stroke-linecap="round"{dash}><title>{esc(label)}</title></polyline>')
 
 
+def _outline(world: Mapping[str, Any] | None) -> tuple[tuple[float, float], dict[str, Any] | None]:
+    """The robot's size (x, y) and its footprint as world.json gives a robot read from a description (a polygon or
+    a circle in the robot's frame), None for a box robot (its ``size`` rectangle centred on its pose)."""
+    size, footprint = (0.3, 0.3), None
+    robot = world.get("robot") if world is not None else None
+    if isinstance(robot, Mapping):
+        try:
+            size = (float(robot["size"][0]), float(robot["size"][1]))
+        except (KeyError, IndexError, TypeError, ValueError):
+            pass
+        raw = robot.get("footprint")
+        try:
+            if isinstance(raw, Mapping) and raw.get("type") == "circle":
+                footprint = {"type": "circle", "x": float(raw["x"]), "y": float(raw["y"]),
+                             "radius": float(raw["radius"])}
+            elif isinstance(raw, Mapping) and raw.get("type") == "polygon" and len(raw["points"]) >= 3:
+                footprint = {"type": "polygon", "points": [(float(px), float(py)) for px, py in raw["points"]]}
+        except (KeyError, TypeError, ValueError):
+            footprint = None  # a footprint that does not read: the bounding box, as before
+    return size, footprint
+
+
 def _robot_poses(world: Mapping[str, Any] | None, robot: Track, tf: MapTransform) -> str:
-    """The robot's footprint where it started (hollow) and where it ended (filled), heading marked."""
+    """The robot's outline where it started (hollow) and where it ended (filled), heading marked: a described
+    robot's footprint (polygon or circle, turned about its origin as the monitor turns it), else its box."""
     if len(robot) == 0:
         return ""
-    size = (0.3, 0.3)
-    if world is not None and isinstance(world.get("robot"), Mapping):
-        try:
-            size = tuple(float(v) for v in world["robot"]["size"][:2])  # type: ignore[assignment]
-        except (KeyError, TypeError, ValueError):
-            pass
+    size, footprint = _outline(world)
     out = ['<g id="map-robot">']
     for index, label, fill in ((0, "start", "none"), (len(robot) - 1, "end", ROBOT_TRUE)):
         x, y, yaw = robot.x[index], robot.y[index], robot.yaw[index]
-        corners = box_corners(x, y, size[0], size[1], yaw)
-        hx, hy = tf.point(x + math.cos(yaw) * size[0] * 0.8, y + math.sin(yaw) * size[0] * 0.8)
+        c, s = math.cos(yaw), math.sin(yaw)
+        hx, hy = tf.point(x + c * size[0] * 0.8, y + s * size[0] * 0.8)
         cx, cy = tf.point(x, y)
-        out.append(f'<polygon class="robot-{label}" points="{tf.points_attr(corners)}" fill="{fill}" '
-                   f'fill-opacity="0.5" stroke="{ROBOT_TRUE}" stroke-width="1.5"><title>robot {label}: '
-                   f'({x:.2f}, {y:.2f}) at t = {robot.t[index]:.2f} s</title></polygon>')
+        title = f'<title>robot {label}: ({x:.2f}, {y:.2f}) at t = {robot.t[index]:.2f} s</title>'
+        style = f'fill="{fill}" fill-opacity="0.5" stroke="{ROBOT_TRUE}" stroke-width="1.5"'
+        if footprint is not None and footprint["type"] == "circle":
+            ox, oy = footprint["x"], footprint["y"]
+            px, py = tf.point(x + c * ox - s * oy, y + s * ox + c * oy)
+            out.append(f'<circle class="robot-{label}" cx="{num(px)}" cy="{num(py)}" '
+                       f'r="{num(tf.length(footprint["radius"]))}" {style}>{title}</circle>')
+        else:
+            corners = (box_corners(x, y, size[0], size[1], yaw) if footprint is None else
+                       [(x + c * px - s * py, y + s * px + c * py) for px, py in footprint["points"]])
+            out.append(f'<polygon class="robot-{label}" points="{tf.points_attr(corners)}" {style}>{title}'
+                       f'</polygon>')
         out.append(f'<line x1="{num(cx)}" y1="{num(cy)}" x2="{num(hx)}" y2="{num(hy)}" stroke="{ROBOT_TRUE}" '
                    f'stroke-width="2"/>')
     out.append("</g>")
