@@ -54,6 +54,35 @@ def test_a_gated_noise_s_values_and_pulse_train_are_written_for_its_kind_only(tm
     assert space.edit({**values, "fault.kind": "blackout"}).fault == "laser:blackout,from=0.0,period=1.0,pulse=1.0"
 
 
+def test_a_motion_fault_s_values_are_written_for_its_kind_only(tmp_path: Path) -> None:
+    """The motion's kinds searched as the laser's are: a kidnap's offset and when it happens, an odometry fault's
+    kind from a list with each kind's own keys only in its spec."""
+    spec = parse_search_spec(_spec(tmp_path, "{fault: pose, kind: kidnap, start: [2, 8], dx: [-1, 1], "
+                                             "dyaw: [0, 90]}"), base=tmp_path, file="s.yaml")
+    assert [p.key for p in spec.parameters] == ["fault.kind", "fault.start", "fault.dx", "fault.dyaw"]
+    space = Space(spec.parameters, DIAGRAM)
+    fault = space.edit({"fault.kind": "kidnap", "fault.start": 3.5, "fault.dx": -0.25, "fault.dyaw": 45.0}).fault
+    assert fault == "pose:kidnap,dx=-0.25,dy=0.0,dyaw=45.0,from=3.5"
+    [parsed] = parse_faults(fault).faults
+    assert (parsed.sensor, parsed.kind, parsed.effect.dx, parsed.effect.dyaw, parsed.timing.start) == (
+        "pose", "kidnap", -0.25, 45.0, 3.5)
+    assert space.smaller("fault.start", 3.5, "wall") == pytest.approx([8, 6.875, 5.75, 4.625])
+
+    spec = parse_search_spec(_spec(tmp_path, "{fault: odometry, kind: [drift, jump], start: [0, 5], "
+                                             "duration: [1, 3], bias: [-5, 5], dy: [0.1, 0.5]}"),
+                             base=tmp_path, file="s.yaml")
+    space = Space(spec.parameters, DIAGRAM)
+    values = {"fault.kind": "drift", "fault.start": 1.0, "fault.duration": 2.0, "fault.bias": 3.0, "fault.dy": 0.2}
+    assert space.edit(values).fault == "odometry:drift,scale=1.0,bias=3.0,from=1.0,to=3.0"
+    assert space.edit({**values, "fault.kind": "jump"}).fault == "odometry:jump,dx=0.0,dy=0.2,dyaw=0.0,from=1.0,to=3.0"
+    for sensor, kind, key, value in (("drive", "slip", "fraction", 0.4), ("commands", "loss", "probability", 0.3)):
+        spec = parse_search_spec(_spec(tmp_path, f"{{fault: {sensor}, kind: {kind}, {key}: [0.1, 0.9]}}"),
+                                 base=tmp_path, file="s.yaml")
+        fault = Space(spec.parameters, DIAGRAM).edit({"fault.kind": kind, f"fault.{key}": value}).fault
+        assert fault == f"{sensor}:{kind},{key}={value}"
+        assert getattr(parse_faults(fault).faults[0].effect, key) == value  # it reads back
+
+
 @pytest.mark.parametrize(("parameter", "expected"), [
     ("{fault: laser, kind: [blackot], start: [0, 5]}",
      ("s.yaml:3:26: unknown laser fault kind 'blackot' (did you mean blackout?); known: impulse, freeze, blackout, "
@@ -81,8 +110,25 @@ def test_a_gated_noise_s_values_and_pulse_train_are_written_for_its_kind_only(tm
      ("s.yaml:3:58: duty [0.1, 1.5] reaches outside what a laser blackout fault accepts: duty must be in (0, 1] (or "
      "(0 %, 100 %]), got 1.5")),
     ("{fault: drive, kind: slip, start: [0, 5]}",
-     ("s.yaml:3:13: drive faults are not searched yet (the laser's are): give them in the base case's faults block "
-      "or the run's --fault")),
+     "s.yaml:3:26: a drive slip fault needs 'fraction': give its range"),
+    ("{fault: odometry, kind: [drift, jump], start: [0, 5], dx: [0, 1]}",
+     "s.yaml:3:29: an odometry drift fault needs 'scale' or 'bias': give a range of one"),
+    ("{fault: drive, kind: [stuck]}",
+     ("s.yaml:3:26: a stuck wheel (left or right) is not searched yet: search slip, or give the stuck in the base "
+      "case's faults block")),
+    ("{fault: commands, kind: latency}",
+     ("s.yaml:3:29: a latency (a whole number of control periods) is not searched yet: search loss, or give the "
+      "latency in the base case's faults block")),
+    ("{fault: drive, kind: slip, fraction: [0, 0.5]}",
+     ("s.yaml:3:42: fraction [0, 0.5] reaches outside what a drive slip fault accepts: slip fraction must be in "
+      "(0, 1], got 0")),
+    ("{fault: pose, kind: kidnap, dx: [0, 1], sigma: [0.1, 0.2]}",
+     "s.yaml:3:45: a pose kidnap fault has no 'sigma' (its keys: dx, dy, dyaw, start, duration, period, pulse, duty)"),
+    ("{fault: commands, kind: [los], probability: [0.1, 0.5]}",
+     "s.yaml:3:29: unknown commands fault kind 'los' (did you mean loss?); known: loss"),
+    ("{fault: odometry, start: [0, 5]}",
+     ("s.yaml:3:5: give 'kind': the odometry fault's kinds to choose from, such as [drift, jump] (of drift, "
+      "jump)")),
     ("{fault: \"laser:1%\", start: [0, 5]}",
      ("s.yaml:3:25: 'start' is a key of a fault on a timeline ({fault: laser, kind: [...], start: ...}); a preset's "
      "values are rate, gain, width")),

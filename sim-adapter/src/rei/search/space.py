@@ -33,7 +33,7 @@ from rei import located_yaml
 from rei.campaign.spec import SpecError
 from rei.edit.gatherings import gatherings, with_values
 from rei.search.spec import UNREAD, Parameter, Range
-from rei.sim.faults import KIND_KEYS, fault_from_fields, format_fault
+from rei.sim.faults import SENSOR_KIND_KEYS, fault_from_fields, format_fault
 
 Values = Mapping[str, Any]
 #: The names of extra pieces of furniture: ``search_extra_0``, ...
@@ -392,7 +392,7 @@ class Space:
             fields["from"] = repr(round(start or 0.0, 3))
         if duration is not None:
             fields["to"] = repr(round((start or 0.0) + duration, 3))
-        for key in KIND_KEYS[kind]:
+        for key in SENSOR_KIND_KEYS[sensor][kind]:
             value = number(key)
             if value is not None:
                 fields[key] = str(int(value)) if key == "width" else repr(round(value, 6))

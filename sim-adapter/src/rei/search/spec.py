@@ -30,6 +30,7 @@ of elements the base case does not have with them: rei.search.base.with_base_cas
       - {fault: "laser:1%", rate: [0.0, 0.05]}  # and gain, width: the run-long impulse noise around a preset
       - {fault: laser, kind: [blackout, freeze], start: [2, 20], duration: [0.2, 5]}  # a fault on a timeline
       #   and a kind's own values (impulse: rate, gain, width; noise: sigma), a pulse train's period, pulse or duty
+      - {fault: commands, kind: loss, probability: [0.5, 1], start: [4, 6]}           # the motion's faults alike
       - {furniture: [Chair, Box], count: [0, 3], floor: any}  # extra pieces from the catalogues
       - {crowd: shoppers, count: [2, 12], rate: [0.2, 2], behaviour: [avoids, ignores, blocks]}  # a crowd's line
       - {group: family, count: [2, 4], behaviour: [avoids, curious]}  # a group's line
@@ -60,7 +61,7 @@ from rei.artifacts.animation import Behaviour
 from rei.campaign.spec import ExternalSut, RoomSettings, SpecError, _Reader, _rooms, _sut, check_user_patterns
 from rei.evaluation.metrics import BY_NAME, NAMES, Better
 from rei.search import SAMPLERS
-from rei.sim.faults import KIND_KEYS, SENSORS, fault_from_fields
+from rei.sim.faults import SENSOR_KIND_KEYS, SENSORS, fault_from_fields
 
 DIRECTIONS = ("minimize", "maximize")
 #: Samplers that search one objective only (Optuna's CmaEsSampler refuses a multi-objective study at its first ask).
@@ -400,6 +401,7 @@ def _check_controller(controller: str, where: str) -> None:
 _PROPS = {"object": ("floor", "yaw"), "robot": ("floor",),
           "human": ("points", "start", "speed", "loop", "behaviour", "stop", "floor"),
           "goal": ("floor",), "seed": (), "fault": ("rate", "gain", "width", "kind", "start", "duration", "sigma",
+                                                   "fraction", "probability", "scale", "bias", "dx", "dy", "dyaw",
                                                    "period", "pulse", "duty"), "furniture": ("count", "floor"),
           "crowd": ("count", "rate", "behaviour"), "group": ("count", "behaviour")}
 #: The fewest people of a crowd and of a group (the language's tooFewPeople: a group's leader and one more).
@@ -527,10 +529,6 @@ def _fault(name_value: Any, name_node: yaml.Node, props: list[str], entry: dict[
     from rei.sim.faults import parse_fault
 
     if isinstance(name_value, str) and name_value in SENSORS:
-        if name_value != "laser":
-            problems.add(f"{loc.at(name_node)}: {name_value} faults are not searched yet (the laser's are): give "
-                         f"them in the base case's faults block or the run's --fault")
-            return []
         return _scheduled_fault(name_value, name_node, props, entry, item, loc, problems)
     base_fault = None
     if not isinstance(name_value, str):
@@ -566,8 +564,22 @@ PRESET_KEYS = ("rate", "gain", "width")
 #: its ``from`` and ``to``; the others are the fault's own keys (rei.sim.faults.spec), a kind's (``KIND_KEYS``) or
 #: the pulse train's (``period`` with ``pulse`` or ``duty``).
 SCHEDULE_KEYS = ("start", "duration", "period", "pulse", "duty")
-#: Kinds whose every key is a number searched in a range (an occlusion's sector is two angles, not searched yet).
-SEARCHABLE_KINDS = ("impulse", "freeze", "blackout", "noise")
+#: Each sensor's kinds whose every key is a number searched in a range, the first two the example of a list.
+SEARCHABLE_KINDS: dict[str, tuple[str, ...]] = {
+    "laser": ("blackout", "freeze", "impulse", "noise"), "odometry": ("drift", "jump"), "drive": ("slip",),
+    "commands": ("loss",), "pose": ("kidnap",)}
+#: Why the other kinds are not searched yet.
+UNSEARCHED = {"occlusion": "an occlusion's sector is not searched yet",
+              "stuck": "a stuck wheel (left or right) is not searched yet",
+              "latency": "a latency (a whole number of control periods) is not searched yet"}
+#: What a kind cannot do without: a range of at least one key of each (a drift's scale or bias, an offset's dx, dy
+#: or dyaw).
+NEEDED_KEYS = {"noise": ("sigma",), "slip": ("fraction",), "loss": ("probability",), "drift": ("scale", "bias"),
+               "jump": ("dx", "dy", "dyaw"), "kidnap": ("dx", "dy", "dyaw")}
+#: A value of each needed key that its kinds accept whatever the others are: it stands in for the keys other than
+#: the one whose range's ends are checked.
+STAND_INS = {"sigma": "1", "fraction": "1", "probability": "1", "scale": "2", "bias": "1", "dx": "1", "dy": "1",
+             "dyaw": "1"}
 
 
 def _scheduled_fault(sensor: str, name_node: yaml.Node, props: list[str],
@@ -578,9 +590,10 @@ def _scheduled_fault(sensor: str, name_node: yaml.Node, props: list[str],
     values the fault model accepts (its own checks, rei.sim.faults, say why not)."""
     name_at = loc.at(name_node)
     kinds: tuple[str, ...] = ()
+    keys, searchable = SENSOR_KIND_KEYS[sensor], SEARCHABLE_KINDS[sensor]
     if "kind" not in entry:
-        problems.add(f"{loc.at(item)}: give 'kind': the {sensor} fault's kinds to choose from, such as [blackout, "
-                     f"freeze] (of {', '.join(SEARCHABLE_KINDS)})")
+        problems.add(f"{loc.at(item)}: give 'kind': the {sensor} fault's kinds to choose from, such as "
+                     f"[{', '.join(searchable[:2])}] (of {', '.join(_in_order(sensor))})")
     else:
         kinds = problems.read(lambda: _fault_kinds(sensor, entry["kind"][1], loc), ())
     domains: dict[str, Any] = {}
@@ -590,16 +603,18 @@ def _scheduled_fault(sensor: str, name_node: yaml.Node, props: list[str],
         value_node = entry[prop][1]
         with problems.check():
             domains[prop] = _range(loc.value(value_node), value_node, loc, integer=prop == "width")
-            owners = [k for k in kinds if prop in KIND_KEYS[k]]
+            owners = [k for k in kinds if prop in keys[k]]
             if prop not in SCHEDULE_KEYS and kinds and not owners:
                 listed = " or ".join(f"{sensor} {k}" for k in kinds)
                 raise SpecError(f"{loc.at(entry[prop][0])}: {_article(listed)} {listed} fault has no '{prop}' "
-                                f"(its keys: {', '.join(_kind_keys(kinds))})")
+                                f"(its keys: {', '.join(_kind_keys(sensor, kinds))})")
             _check_schedule_range(sensor, prop, domains[prop], owners, loc.at(value_node))
     for kind in kinds:
-        needed = [key for key in ("sigma",) if key in KIND_KEYS[kind] and key not in entry]
-        if needed:
-            problems.add(f"{loc.at(entry['kind'][1])}: a {sensor} {kind} fault needs '{needed[0]}': give its range")
+        needed = NEEDED_KEYS.get(kind, ())
+        if needed and not any(key in entry for key in needed):
+            listed = " or ".join(f"'{key}'" for key in needed)
+            problems.add(f"{loc.at(entry['kind'][1])}: {_article(sensor)} {sensor} {kind} fault needs {listed}: give "
+                         f"{'its range' if len(needed) == 1 else 'a range of one'}")
     if "pulse" in entry and "duty" in entry:
         problems.add(f"{loc.at(entry['duty'][0])}: give the pulse width as 'pulse' (seconds) or 'duty' (a share of "
                      "the period), not both")
@@ -615,25 +630,31 @@ def _scheduled_fault(sensor: str, name_node: yaml.Node, props: list[str],
     return parameters
 
 
-def _kind_keys(kinds: tuple[str, ...]) -> list[str]:
-    return list(dict.fromkeys([*(key for k in kinds for key in KIND_KEYS[k]), *SCHEDULE_KEYS]))
+def _kind_keys(sensor: str, kinds: tuple[str, ...]) -> list[str]:
+    return list(dict.fromkeys([*(key for k in kinds for key in SENSOR_KIND_KEYS[sensor][k]), *SCHEDULE_KEYS]))
+
+
+def _in_order(sensor: str) -> list[str]:
+    """The sensor's searched kinds in the fault model's order (contract/vocabulary.json's)."""
+    return [kind for kind in SENSOR_KIND_KEYS[sensor] if kind in SEARCHABLE_KINDS[sensor]]
 
 
 def _fault_kinds(sensor: str, node: yaml.Node, loc: _Located) -> tuple[str, ...]:
     value = loc.value(node)
     listed = [value] if isinstance(value, str) else value
+    keys, searchable = SENSOR_KIND_KEYS[sensor], SEARCHABLE_KINDS[sensor]
     if not isinstance(listed, list) or not listed or not all(isinstance(k, str) for k in listed):
-        raise SpecError(f"{loc.at(node)}: 'kind' is a {sensor} fault's kind or a list of them, such as [blackout, "
-                        f"freeze] (of {', '.join(SEARCHABLE_KINDS)})")
+        raise SpecError(f"{loc.at(node)}: 'kind' is {_article(sensor)} {sensor} fault's kind or a list of them, such "
+                        f"as [{', '.join(searchable[:2])}] (of {', '.join(_in_order(sensor))})")
     for kind in listed:
-        if kind in KIND_KEYS and kind not in SEARCHABLE_KINDS:
-            raise SpecError(f"{loc.at(node)}: an {kind}'s sector is not searched yet: search "
-                            f"{', '.join(SEARCHABLE_KINDS)}, or give the {kind} in the base case's faults block")
-        if kind not in KIND_KEYS:
-            close = difflib.get_close_matches(kind, list(KIND_KEYS), n=1)
+        if kind in keys and kind not in searchable:
+            raise SpecError(f"{loc.at(node)}: {UNSEARCHED[kind]}: search {', '.join(_in_order(sensor))}, or give "
+                            f"the {kind} in the base case's faults block")
+        if kind not in keys:
+            close = difflib.get_close_matches(kind, list(keys), n=1)
             hint = f" (did you mean {close[0]}?)" if close else ""
             raise SpecError(f"{loc.at(node)}: unknown {sensor} fault kind {kind!r}{hint}; known: "
-                            f"{', '.join(SEARCHABLE_KINDS)}")
+                            f"{', '.join(_in_order(sensor))}")
     return tuple(dict.fromkeys(listed))
 
 
@@ -651,9 +672,10 @@ def _check_schedule_range(sensor: str, prop: str, domain: Range, kinds: list[str
         fields = {"period": text, "pulse": text} if prop == "period" else \
             {"period": "1", "duty": text} if prop == "duty" else \
             {"period": repr(max(end, 1.0)), "pulse": text} if prop == "pulse" else {prop: text}
-        for kind in kinds or ("blackout",):
+        for kind in kinds or SEARCHABLE_KINDS[sensor][:1]:
+            stand_ins = {key: STAND_INS[key] for key in NEEDED_KEYS.get(kind, ()) if key != prop}
             try:
-                fault_from_fields(sensor, kind, {**({"sigma": "1"} if kind == "noise" else {}), **fields})
+                fault_from_fields(sensor, kind, {**stand_ins, **fields})
             except ValueError as error:
                 raise SpecError(f"{where}: {prop} [{domain.low:g}, {domain.high:g}] reaches outside what a {sensor} "
                                 f"{kind} fault accepts: {error}") from None
