@@ -17,6 +17,7 @@ from rei.sim.people.walkers import (
     LINGER,
     NOTICE,
     SCARED_CLEARANCE,
+    Queue,
     RobotView,
     Walker,
 )
@@ -160,3 +161,37 @@ def test_a_follower_keeps_its_place_abreast_of_its_leader_or_on_its_trail_and_ar
     assert first.target(0.0, (-spacing, 0.0), FAR)[1][1][2] == 0.0
     walk(leader, 6.0)
     assert first.arrivals == leader.arrivals == [pytest.approx(3.85, abs=0.06)]
+
+
+def test_a_queue_lets_one_pass_every_so_often_and_the_others_line_up_behind_in_the_order_they_came() -> None:
+    """Three people set off 0.5 s apart along the x axis to a queue at x = 4 (one every 3 s) and on to x = 8; each is
+    moved straight to where it heads, as the model would, without the model's keeping apart."""
+    queue = Queue((4.0, 0.0), every=3.0, spacing=0.75)
+    walkers = []
+    for i in range(3):
+        spec = PersonSpec(f"p{i}", Behaviour.AVOIDS, 1.0, 0.5 * i, False, (
+            RouteStop("F0", 0.0, 0.0, 0.0), RouteStop("F1", 4.0, 0.0, 0.0, queue=3.0), RouteStop("F2", 8.0, 0.0, 0.0)))
+        walkers.append(Walker(spec, 0.25, [[(0.0, 0.0), (4.0, 0.0)], [(4.0, 0.0), (8.0, 0.0)]], straight,
+                              queues={1: queue}))
+    places = [(0.0, 0.0)] * 3
+    lined_up = None
+    for k in range(round(16.0 / DT)):
+        t = k * DT
+        for i, w in enumerate(walkers):
+            speed, points = w.target(t, places[i], FAR)
+            (tx, ty), at = points[0], places[i]
+            d = math.dist(at, (tx, ty))
+            if d > 0:
+                step = min(d, speed * DT)
+                places[i] = (at[0] + (tx - at[0]) * step / d, at[1] + (ty - at[1]) * step / d)
+        if lined_up is None and len(queue.passed) == 1 and t > queue.passed[0][0] + 1.5:
+            lined_up = list(places)
+    assert [name for _, name in queue.passed] == ["p0", "p1", "p2"]  # in the order they came
+    times = [time for time, _ in queue.passed]
+    assert times[0] == pytest.approx(3.75, abs=0.06)  # p0 reached the floor (within 0.3 m) after 3.7 m
+    assert [b - a for a, b in itertools.pairwise(times)] == pytest.approx([3.0, 3.0], abs=DT)
+    # while p0 walks on, p1 stands on the floor and p2 one spacing behind it, back along the way they came
+    assert lined_up is not None
+    assert math.dist(lined_up[1], (4.0, 0.0)) <= 0.15 and math.dist(lined_up[2], (3.25, 0.0)) <= 0.15
+    assert all(math.dist(at, (8.0, 0.0)) <= 0.15 for at in places)  # and all got on to their last stop
+    assert [w.arrivals[0] for w in walkers] == times  # passing the queue is reaching its stop

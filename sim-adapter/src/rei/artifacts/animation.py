@@ -48,6 +48,8 @@ class RouteStop:
     x: float
     y: float
     wait: float
+    #: A crowd's queue here: seconds between two people passing (docs/people.md); None: not a queue.
+    queue: float | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -102,13 +104,16 @@ def _person(p: Fields) -> PersonSpec:
     start = p.number("start")
     if start < 0:
         raise p.error(f"must be >= 0 s, got {start}", "start")
-    route = tuple(RouteStop(floor=s.text("floor"), x=s.number("x"), y=s.number("y"), wait=s.number("wait"))
+    route = tuple(RouteStop(floor=s.text("floor"), x=s.number("x"), y=s.number("y"), wait=s.number("wait"),
+                            queue=s.number("queue") if s.has("queue") else None)
                   for s in p.items("route"))
     if not route:
         raise p.error("needs at least one stop", "route")
     for i, stop in enumerate(route):
         if stop.wait < 0:
             raise p.error(f"must be >= 0 s, got {stop.wait}", f"route[{i}].wait")
+        if stop.queue is not None and not stop.queue > 0:
+            raise p.error(f"must be > 0 s, got {stop.queue}", f"route[{i}].queue")
     return PersonSpec(name=p.text("name"), behaviour=behaviour, speed=speed, start=start, loop=p.flag("loop"),
                       route=route, speed_to=speed_to, group=p.optional_text("group"))
 

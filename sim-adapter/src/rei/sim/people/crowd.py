@@ -20,7 +20,7 @@ import numpy as np
 from rei.artifacts.animation import Behaviour, PersonSpec
 from rei.artifacts.world import Shape, WorldSpec
 from rei.sim.people.server import INIT_TIMEOUT, PROTOCOL, PeopleServer
-from rei.sim.people.walkers import Follower, Point, RobotView, Walker
+from rei.sim.people.walkers import QUEUE_GAP, Follower, Point, Queue, RobotView, Walker
 
 #: Crowd step (s).
 DT = 0.05
@@ -223,13 +223,17 @@ def _walkers(people: Sequence[PersonSpec], radii: Sequence[float], speeds: Seque
     walkers: list[Walker] = []
     leaders: dict[str, tuple[int, Walker]] = {}
     members: dict[str, int] = {}
+    queues: dict[tuple[float, float, float], Queue] = {}  # one line per place and pace: a crowd's people share it
     for i, (p, r, v, person_legs) in enumerate(zip(people, radii, speeds, legs, strict=True)):
         if p.group is not None and p.group in leaders:
             index, leader = leaders[p.group]
             members[p.group] += 1
             walkers.append(Follower(p, r, members[p.group], leader, lambda index=index: heading(index), v))
             continue
-        walker = Walker(p, r, [[(q[0], q[1]) for q in leg] for leg in person_legs], route, v)
+        mine = {k: queues.setdefault((stop.x, stop.y, stop.queue), Queue((stop.x, stop.y), stop.queue,
+                                                                          2 * r + QUEUE_GAP))
+                for k, stop in enumerate(p.route) if stop.queue is not None}
+        walker = Walker(p, r, [[(q[0], q[1]) for q in leg] for leg in person_legs], route, v, mine)
         if p.group is not None:
             leaders[p.group] = (i, walker)
             members[p.group] = 0

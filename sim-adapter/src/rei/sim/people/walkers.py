@@ -18,6 +18,9 @@ into it); ``curious`` walks to a spot just in front of the robot and stands ther
 once; ``scared`` passes the robot :data:`SCARED_CLEARANCE` wide and backs away from a robot nearer than
 :data:`SCARED_DISTANCE`; ``blocks`` keeps stepping into
 the robot's way for :data:`BLOCK_TIME` seconds, once.
+
+A crowd's queue (a :class:`Queue`) is a stop its people pass one at a time: each joins the line as it comes near
+its end and moves up as the line does; the first stands on the stop and walks on when its turn comes.
 """
 
 from __future__ import annotations
@@ -52,6 +55,10 @@ SCARED_STEP = 1.5
 BLOCK_AHEAD = 0.6
 #: ...for this long (s), once.
 BLOCK_TIME = 10.0
+#: Room (m) between two people in a queue, beyond their bodies.
+QUEUE_GAP = 0.25
+#: A person on its way to a queue joins the line within this distance (m) of the place at its end.
+QUEUE_JOIN = 1.0
 
 
 @dataclass(frozen=True, slots=True)
@@ -75,13 +82,73 @@ class RobotView:
 Router = Callable[[Point, Point], list[Point]]
 
 
+class Queue:
+    """A floor that people pass one at a time, at most one every ``every`` seconds (a crowd's ``queue F every D``).
+
+    The first in line stands on it and passes when its turn comes; the others stand ``spacing`` apart behind it
+    along the way the first of them came by (a corridor's bend is followed), in the order they joined. A person
+    joins when it comes within :data:`QUEUE_JOIN` of the place at the line's end, or nearer the floor than that
+    place. ``passed``: who passed when."""
+
+    def __init__(self, at: Point, every: float, spacing: float) -> None:
+        self.at = at
+        self.every = every
+        self.spacing = spacing
+        self.passed: list[tuple[float, str]] = []
+        self._line: list[Walker] = []
+        self._back: list[Point] = []  # the way back from the floor along which the line stands
+        self._last = -math.inf
+
+    def joins(self, walker: Walker, at: Point, way: Sequence[Point]) -> bool:
+        """Whether ``walker``, at ``at`` on ``way`` (its way on to the floor), is in line: it may join now."""
+        if walker in self._line:
+            return True
+        if self._line:
+            end = self.spot(len(self._line))
+            if math.dist(at, end) > QUEUE_JOIN and math.dist(at, self.at) > math.dist(end, self.at):
+                return False
+        elif math.dist(at, self.at) > QUEUE_JOIN:
+            return False
+        else:  # the first in line: the line forms back along the way it came
+            self._back = [self.at, *reversed([at, *way][:-1])]
+        self._line.append(walker)
+        return True
+
+    def passes(self, walker: Walker, t: float, at: Point) -> bool:
+        """Whether ``walker`` passes now: first in line, on the floor, and ``every`` seconds after the last."""
+        if not (self._line and self._line[0] is walker and math.dist(at, self.at) < ARRIVE
+                and t - self._last >= self.every):
+            return False
+        self._line.pop(0)
+        self._last = t
+        self.passed.append((t, walker.spec.name))
+        return True
+
+    def spot(self, place: int) -> Point:
+        """Where the ``place``-th in line stands (0: on the floor): that far back along the line's way, and on
+        in its last direction past its end."""
+        left = place * self.spacing
+        segments = [(a, b, math.dist(a, b)) for a, b in zip(self._back, self._back[1:])]
+        segments = [segment for segment in segments if segment[2] > 1e-9]
+        for i, (a, b, length) in enumerate(segments):
+            if left <= length or i == len(segments) - 1:
+                f = left / length
+                return (a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1]))
+            left -= length
+        return self.at  # the first joined standing on the floor: no way back to line up along
+
+    def place_of(self, walker: Walker) -> int:
+        return self._line.index(walker)
+
+
 class Walker:
     """One person's intentions; :meth:`target` is asked once per crowd step. ``speed``: its desired speed (the
     spec's, or drawn from its range); ``arrivals`` the times it reached a stop."""
 
     def __init__(self, spec: PersonSpec, radius: float, legs: Sequence[Sequence[Point]], route: Router,
-                 speed: float | None = None) -> None:
+                 speed: float | None = None, queues: dict[int, Queue] | None = None) -> None:
         self.spec = spec
+        self._queues = queues or {}  # by the index of the route's stop that is a queue
         self.radius = radius
         self.speed = spec.speed if speed is None else speed
         self.arrivals: list[float] = []
@@ -119,6 +186,9 @@ class Walker:
             return (0.0, [at])  # a model's walker keeps its heading at its target: standing is a speed of 0
         if self._done:
             return (0.0, [at])
+        in_line = self._in_line(t, at)
+        if in_line is not None:
+            return (0.0 if math.dist(at, in_line) < ARRIVE_STOP else speed, self._around(at, in_line, robot))
         if self._rejoin:
             self._rejoin = False
             leg = self._legs[self._leg]
@@ -128,6 +198,26 @@ class Walker:
         point = self._next(t, at)
         standing = self._done or (self._wait_until is not None and t < self._wait_until)
         return (0.0 if standing else speed, self._around(at, point, robot))
+
+    def _in_line(self, t: float, at: Point) -> Point | None:
+        """The place in line of a person on its way to a queue who has joined it, None when it walks on (not there
+        yet, or its turn has come: then it has arrived at the queue's stop)."""
+        stop = (self._leg + 1) % len(self.spec.route)
+        queue = self._queues.get(stop)
+        if queue is None or not queue.joins(self, at, self._legs[self._leg][self._waypoint:]):
+            return None
+        if not queue.passes(self, t, at):
+            return queue.spot(queue.place_of(self))
+        self.arrivals.append(t)
+        self._wait_until = t + self.spec.route[stop].wait
+        self._leg, self._waypoint = stop if stop else len(self._legs), 1
+        if self._leg == len(self._legs):  # a queue at a route's first stop, passed at the end of a round
+            if not self.spec.loop:
+                self._done, self._leg = True, self._leg - 1
+                return None
+            self._leg = 0
+        self._rejoin = True  # on from where it stood, a little off the stop maybe
+        return None
 
     def _around(self, at: Point, target: Point, robot: RobotView) -> list[Point]:
         """``[target]``, or the points beside the robot, the preferred side first, when the way there passes it too

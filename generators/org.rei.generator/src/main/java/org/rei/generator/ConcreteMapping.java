@@ -281,14 +281,22 @@ final class ConcreteMapping {
 		}
 		ObjectType type = typeOf(crowd.getType(), humanType, types);
 		WalkingSpeed speed = WalkingSpeed.of(crowd);
+		Person.Stop queue = null;
+		if (crowd.getQueue() != null) {
+			onFloors(List.of(crowd.getQueue()), "the queue floor of crowd " + crowd.getName(), layout);
+			double[] centre = layout.centreOf(crowd.getQueue());
+			queue = new Person.Stop(crowd.getQueue().getName(), centre[0], centre[1], 0, crowd.getQueueEvery());
+		}
 		for (int i = 1; i <= count; i++) {
 			PeoplePlacement.Spot start = from.get(i - 1);
 			PeoplePlacement.Spot target = to.get((i - 1) % to.size());
 			String name = crowd.getName() + "_" + i;
 			bodies.add(humanBody(name, type, start.x(), start.y(), start.floor()));
 			double setsOff = crowd.getStart() + (crowd.isSetRate() ? (i - 1) / crowd.getRate() : 0);
+			List<Person.Stop> route = queue == null ? List.of(stop(start), stop(target))
+					: List.of(stop(start), queue, stop(target));
 			people.add(new Person(name, behaviour(crowd.getBehaviour()), speed.speed(), speed.speedTo(), setsOff,
-					crowd.isLoop(), null, List.of(stop(start), stop(target))));
+					crowd.isLoop(), null, route));
 		}
 	}
 

@@ -18,7 +18,15 @@ import java.util.List;
 public record Person(String name, String behaviour, double speed, Double speedTo, double start, boolean loop,
 		String group, List<Stop> route) {
 
-	/** A place the person walks to (the first: where it stands at the start): a floor's centre, or a point of it. */
-	public record Stop(String floor, double x, double y, double waitSeconds) {
+	/**
+	 * A place the person walks to (the first: where it stands at the start): a floor's centre, or a point of it.
+	 *
+	 * @param queueSeconds a crowd's queue: the seconds between two people passing here, {@code null} elsewhere
+	 */
+	public record Stop(String floor, double x, double y, double waitSeconds, Double queueSeconds) {
+
+		public Stop(String floor, double x, double y, double waitSeconds) {
+			this(floor, x, y, waitSeconds, null);
+		}
 	}
 }

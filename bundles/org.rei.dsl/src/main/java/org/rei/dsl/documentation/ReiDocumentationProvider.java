@@ -154,6 +154,10 @@ public class ReiDocumentationProvider implements IEObjectDocumentationProvider {
 				.append(c.isLoop() ? ", back and forth" : ", then staying").append("; ")
 				.append(behaviour(c.getBehaviour())).append(":\n- from ").append(names(c.getFrom()))
 				.append("\n- to ").append(names(c.getTo()));
+		if (c.getQueue() != null) {
+			b.append("\n- queueing at ").append(c.getQueue().eIsProxy() ? "?" : c.getQueue().getName())
+					.append(" on the way: one passes every ").append(num(c.getQueueEvery())).append(" s");
+		}
 		return b.append(type(c.getType())).toString();
 	}
 

@@ -54,6 +54,15 @@ public class PeopleValidator extends ReiCheckBase {
 		}
 	}
 
+	@Check
+	public void checkQueueEvery(Crowd crowd) {
+		if (crowd.getQueue() != null && !(crowd.getQueueEvery() > 0)) {
+			error("A queue lets one person pass every so many seconds, above 0: got "
+					+ RouteValidator.num(crowd.getQueueEvery()), crowd, ContextPackage.Literals.CROWD__QUEUE_EVERY,
+					ReiIssueCodes.NON_POSITIVE);
+		}
+	}
+
 	/** As a route's ({@link RouteValidator#checkSpeed}). */
 	@Check
 	public void checkSpeed(Crowd crowd) {
@@ -131,6 +140,12 @@ public class PeopleValidator extends ReiCheckBase {
 						+ first.getName() + ") through neighbouring floors", crowd, ContextPackage.Literals.CROWD__TO,
 						i, ReiIssueCodes.AREA_UNREACHABLE);
 			}
+		}
+		Floor queue = crowd.getQueue();
+		if (queue != null && !queue.eIsProxy() && !reachable.contains(queue)) {
+			error("Floor " + queue.getName() + " cannot be reached from the crowd's from floors (" + first.getName()
+					+ ") through neighbouring floors: the crowd queues on its way", crowd,
+					ContextPackage.Literals.CROWD__QUEUE, ReiIssueCodes.AREA_UNREACHABLE);
 		}
 	}
 

@@ -89,6 +89,19 @@ class CrowdTest {
 		assertFalse(few.isLoop());
 		assertEquals(Behaviour.AVOIDS, few.getBehaviour());
 		assertNull(few.getType(), "the default Human, as for a human");
+		assertNull(few.getQueue(), "no queue on the way");
+	}
+
+	@Test
+	void aQueueIsAFloorOnTheWayAndAPace() throws Exception {
+		TestCase testCase = parser.parse(STATION.replace("to [F_6_3]", "to [F_6_3] queue F_4_3 every 2.5s"));
+		validation.assertNoIssues(testCase);
+		Crowd few = (Crowd) object(testCase, 3);
+		assertEquals("F_4_3", few.getQueue().getName());
+		assertEquals(2.5, few.getQueueEvery());
+		assertTrue(new ReiDocumentationProvider().getDocumentation(few).endsWith("""
+				- to F_6_3
+				- queueing at F_4_3 on the way: one passes every 2.5 s"""), "the hover says where it queues");
 	}
 
 	@Test
