@@ -43,7 +43,7 @@ final class Messages {
 				new Session.Lidar((int) integer(lidar, "beams", what), number(lidar, "range_min", what),
 						number(lidar, "range_max", what), number(lidar, "rate", what)),
 				drive == null ? "differential" : text(robot, "drive", what),
-				robot.has("max_lateral") ? number(robot, "max_lateral", what) : 0.0);
+				robot.has("max_lateral") ? number(robot, "max_lateral", what) : 0.0, outline(robot.get("outline")));
 		String clock = text(m, "clock", what);
 		Session.Clock c = switch (clock) {
 		case "lockstep" -> Session.Clock.LOCKSTEP;
@@ -53,6 +53,30 @@ final class Messages {
 		return new Session(protocol, text(m, "run_id", what), c, number(m, "control_rate", what),
 				number(m, "deadline", what), pose(m, "start", what), r, (int) integer(m, "goals", what),
 				map(m.get("map")));
+	}
+
+	private static Session.Outline outline(JsonNode outline) {
+		if (outline == null || outline.isNull()) {
+			return null;
+		}
+		String what = "hello's answer: robot: outline";
+		String type = text(outline, "type", what);
+		if (type.equals("circle")) {
+			return new Session.Outline(List.of(), number(outline, "x", what), number(outline, "y", what),
+					number(outline, "radius", what));
+		}
+		if (!type.equals("polygon")) {
+			throw malformed(what, "unknown type '" + type + "'");
+		}
+		JsonNode list = outline.get("points");
+		if (list == null || !list.isArray() || list.size() < 3) {
+			throw malformed(what, "'points' is not a list of at least 3 points");
+		}
+		List<double[]> points = new ArrayList<>();
+		for (JsonNode point : list) {
+			points.add(numbers(point, 2, what + ": points"));
+		}
+		return new Session.Outline(List.copyOf(points), 0.0, 0.0, 0.0);
 	}
 
 	private static Session.StaticMap map(JsonNode map) {

@@ -23,18 +23,31 @@ public record Session(int protocol, String runId, Clock clock, double controlRat
 
 	/**
 	 * The robot: footprint sizes (m), velocity limits (m/s, rad/s), laser, its drive ("differential" or
-	 * "holonomic") and its sideways speed limit (m/s; 0 for a differential drive).
+	 * "holonomic"), its sideways speed limit (m/s; 0 for a differential drive) and its outline on the floor (null
+	 * from a simulation that sends none).
 	 */
 	public record Robot(String name, double sizeX, double sizeY, double maxLinear, double maxAngular, Lidar lidar,
-			String drive, double maxLateral) {
+			String drive, double maxLateral, Outline outline) {
 
 		/** A differential robot. */
 		public Robot(String name, double sizeX, double sizeY, double maxLinear, double maxAngular, Lidar lidar) {
-			this(name, sizeX, sizeY, maxLinear, maxAngular, lidar, "differential", 0.0);
+			this(name, sizeX, sizeY, maxLinear, maxAngular, lidar, "differential", 0.0, null);
 		}
 
 		public boolean holonomic() {
 			return "holonomic".equals(drive);
+		}
+	}
+
+	/**
+	 * The robot's outline on the floor in its own frame (x forward, y left, m, about its pose): a convex polygon,
+	 * counter-clockwise ({@code points} as {x, y} pairs; {@code radius} 0), or a circle of {@code radius} about
+	 * ({@code x}, {@code y}) ({@code points} empty).
+	 */
+	public record Outline(List<double[]> points, double x, double y, double radius) {
+
+		public boolean circle() {
+			return radius > 0;
 		}
 	}
 

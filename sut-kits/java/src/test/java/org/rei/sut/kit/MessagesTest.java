@@ -180,6 +180,26 @@ class MessagesTest {
 	}
 
 	@Test
+	void readsTheRobotsOutline() throws Exception {
+		assertNull(Messages.session(msgpack(HELLO)).robot().outline()); // a simulation before outlines
+		Session.Outline circle = Messages.session(msgpack(HELLO.replace("\"max_angular\": 1.82,",
+				"\"max_angular\": 1.82, \"outline\": {\"type\": \"circle\", \"x\": 0.05, \"y\": 0, \"radius\": 0.17},")))
+				.robot().outline();
+		assertTrue(circle.circle());
+		assertEquals(0.17, circle.radius());
+		assertEquals(0.05, circle.x());
+		Session.Outline polygon = Messages.session(msgpack(HELLO.replace("\"max_angular\": 1.82,",
+				"\"max_angular\": 1.82, \"outline\": {\"type\": \"polygon\", \"points\": [[-0.1, -0.1], [0.1, -0.1], [0, 0.1]]},")))
+				.robot().outline();
+		assertFalse(polygon.circle());
+		assertEquals(3, polygon.points().size());
+		assertEquals(-0.1, polygon.points().get(0)[1]);
+		String bad = HELLO.replace("\"max_angular\": 1.82,", "\"max_angular\": 1.82, \"outline\": {\"type\": \"blob\"},");
+		SutException e = assertThrows(SutException.class, () -> Messages.session(msgpack(bad)));
+		assertTrue(e.getMessage().contains("unknown type 'blob'"), e.getMessage());
+	}
+
+	@Test
 	void statusHasTextOnlyWhenGiven() {
 		assertEquals("{\"goal_id\":1,\"status\":\"ACTIVE\"}", Messages.status(1, GoalStatus.ACTIVE, null).toString());
 		assertEquals("{\"goal_id\":1,\"status\":\"ABORTED\",\"text\":\"stuck\"}",
