@@ -92,3 +92,19 @@ def test_a_stuck_wheel_is_refused_for_a_holonomic_robot_and_an_unknown_drive_in_
     with pytest.raises(ArtifactError, match=r"robot\.drive\.kind.*unknown value 'tracked', expected one of "
                                             r"differential, holonomic"):
         read_world(world)
+
+
+def test_a_holonomic_robot_s_slip_moves_it_half_and_its_odometry_counts_the_command(run_cli, tmp_path: Path) -> None:
+    (tmp_path / "bases.rei").write_text(CATALOGUE, encoding="utf-8")
+    case = tmp_path / "strafe.rei"
+    case.write_text(CASE.replace("TYPE", "Omni"), encoding="utf-8")
+    script = tmp_path / "left.script"
+    script.write_text(SCRIPT, encoding="utf-8")
+    result = run_cli("sim", case, "-o", tmp_path / "out", "--no-router", "--controller", f"script:{script}",
+                     "--fault", "drive:slip,fraction=0.5")
+    assert result.returncode == 1, result.stdout + result.stderr  # the goal is not reached: the ground gave half
+    last = read_recording(tmp_path / "out" / "streams" / "state.msgpack")[-1]["robot"]
+    # the body goes half of the strafe's 1.98 m, the odometry counts the whole (as a slipping wheel's does)
+    assert last["pose"][1] - 0.5 == pytest.approx(0.99, abs=0.02)
+    assert last["odom"][1] - 0.5 == pytest.approx(1.98, abs=0.02)
+    assert abs(last["pose"][-1]) < 0.005 and abs(last["odom"][-1]) < 0.005
