@@ -90,6 +90,40 @@ def test_a_gap_a_stall_and_the_end_are_shown(view: View) -> None:
     assert page.page.locator("#status").inner_text() == "run ended"
 
 
+def test_fault_windows_are_shaded_on_the_utility_chart(view: View) -> None:
+    """A fault's window edges arrive as mission events (rei.view.view_config names them from the contract's fault
+    kinds); the chart shades each window, an open one up to the latest time, and leaves the rest white."""
+    page, client, topics = view
+    edges = [(2.0, "FAULT_LASER_BLACKOUT_BEGIN"), (4.0, "FAULT_LASER_BLACKOUT_END"),
+             (6.0, "FAULT_COMMANDS_LOSS_BEGIN")]
+    for seq, (t, event) in enumerate(edges):
+        client.publish(topics.mission, {"seq": seq, "t": t, "event": event, "task_index": -1, "goal": None,
+                                        "reason": event.lower()})
+    for seq in range(201):
+        client.publish(topics.state, state_message(seq, seq * 0.05, (1.0, 1.0)))
+    client.flush()
+    page.wait_for("state.robot !== null && state.robot.seq === 200 && state.faults.length === 2")
+    assert page.state()["faults"] == [{"fault": "laser blackout", "begin": 2.0, "end": 4.0},
+                                      {"fault": "commands loss", "begin": 6.0, "end": None}]
+    # the run's end redraws the chart up to the latest state (10 s), the loss still open
+    client.publish(topics.mission, {"seq": len(edges), "t": 10.0, "event": "END", "task_index": -1, "goal": None})
+    client.flush()
+    page.wait_for("state.condition === 'ended'")
+    page.page.wait_for_timeout(300)  # a frame or two after the end
+    # the canvas's pixels half-way up at t = 1 (white), 3 (shaded), 5 (white) and 8 s (shaded, still open); the
+    # chart spans 0..10 s over its plot (PAD left 38, right 8 CSS pixels, rei viewer/src/draw/chart.ts)
+    colours = page.page.evaluate("""() => {
+      const canvas = document.getElementById("utility");
+      const ratio = canvas.width / canvas.clientWidth;
+      const x = (t) => Math.round((38 + (t / 10) * (canvas.clientWidth - 46)) * ratio);
+      const y = Math.round(canvas.height * 0.4);
+      return [1, 3, 5, 8].map((t) => Array.from(canvas.getContext("2d").getImageData(x(t), y, 1, 1).data));
+    }""")
+    white, shaded = [255, 255, 255, 255], [253, 239, 215, 255]  # FAULT_FILL, rgba(245, 166, 35, 0.18), over white
+    assert [c == white for c in colours] == [True, False, True, False], colours
+    assert all(abs(a - b) <= 2 for c in (colours[1], colours[3]) for a, b in zip(c, shaded, strict=True)), colours
+
+
 def test_floors_and_furniture_are_named_on_hover(view: View) -> None:
     page, client, topics = view
     client.publish(topics.state, state_message(0, 0.0, (0.5, 0.5)))

@@ -66,6 +66,9 @@ export interface ViewConfig {
   readonly mission: { readonly name: string; readonly goals: readonly Goal[] } | null;
   readonly utilities: Readonly<Record<string, number>>;
   readonly colours: Readonly<Record<string, string>>;
+  /** Each fault window's edge as a mission event (FAULT_LASER_BLACKOUT_BEGIN): the fault it names, whether it
+   * begins the window. Absent from a server older than fault windows. */
+  readonly faults?: Readonly<Record<string, { readonly fault: string; readonly begin: boolean }>>;
   /** Where the page says it is subscribed (POST), so `rei run --view` can wait for it; null: nowhere. */
   readonly hello: string | null;
 }

@@ -11,7 +11,7 @@ import { UtilityChart } from "./draw/chart";
 import type { DrawnRobot } from "./draw/scene";
 import { MapView } from "./draw/scene";
 import { contains } from "./geometry";
-import type { Gap, SignalEntry, TaskEntry } from "./model";
+import type { FaultWindow, Gap, SignalEntry, TaskEntry } from "./model";
 import { LiveModel, wallMs } from "./model";
 import type { Condition } from "./panels";
 import { Panels } from "./panels";
@@ -35,6 +35,7 @@ export interface ViewState {
   malformed: number;
   movers: number;
   gaps: readonly Gap[];
+  faults: readonly FaultWindow[];
   signals: readonly SignalEntry[];
   total: number;
   tasks: readonly TaskEntry[];
@@ -72,7 +73,7 @@ function start(config: ViewConfig): void {
   const state: ViewState = {
     condition: "connecting", link: "connecting", subscribed: false, robot: null, drawnAtMs: 0, lagMs: 0,
     received: { state: 0, signal: 0, mission: 0 }, dropped: 0, malformed: 0, movers: 0, gaps: model.gaps,
-    signals: model.signals, total: 0, tasks: model.tasks, ended: null, transform: { scale: 1, ox: 0, oy: 0 },
+    faults: model.faults, signals: model.signals, total: 0, tasks: model.tasks, ended: null, transform: { scale: 1, ox: 0, oy: 0 },
   };
   window.reiView = { config, state, frames: () => stats.summary(), resetFrames: () => stats.reset() };
 
@@ -138,7 +139,7 @@ function start(config: ViewConfig): void {
     }
     const now = wallMs();
     if (model.revision !== drawnRevision || (fresh !== null && now - chartDrawnAt > 500)) {
-      chart.draw(model.utility, model.latest?.t ?? 0, model.gaps);
+      chart.draw(model.utility, model.latest?.t ?? 0, model.gaps, model.faults);
       chartDrawnAt = now;
       drawnRevision = model.revision;
     }

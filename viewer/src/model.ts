@@ -38,6 +38,13 @@ export interface SignalEntry {
   shownAtMs: number | null;
 }
 
+/** A fault's window on the timeline, from its mission events; `end` null while it is open. */
+export interface FaultWindow {
+  readonly fault: string;
+  readonly begin: number;
+  end: number | null;
+}
+
 export interface TaskEntry {
   readonly index: number;
   goal: readonly [number, number] | null;
@@ -74,6 +81,7 @@ export class LiveModel {
   readonly utility: [number, number][] = [[0, 0]];
   readonly tasks: TaskEntry[];
   readonly gaps: Gap[] = [];
+  readonly faults: FaultWindow[] = [];
   /** Geometric zone of the robot towards each object that is not FAR (from the monitor's signals). */
   readonly zones = new Map<string, Zone>();
   began: number | null = null;
@@ -199,6 +207,21 @@ export class LiveModel {
 
   private applyMission(message: MissionMessage, now: number): void {
     if (message.event === "BEGIN") this.began = message.t;
+    const edge = this.config.faults?.[message.event];
+    if (edge !== undefined) {
+      if (edge.begin) {
+        this.faults.push({ fault: edge.fault, begin: message.t, end: null });
+      } else {
+        // a fault's windows never overlap (one pulse ends before the next begins): the open one is the last
+        for (let i = this.faults.length - 1; i >= 0; i -= 1) {
+          const open = this.faults[i];
+          if (open !== undefined && open.fault === edge.fault && open.end === null) {
+            open.end = message.t;
+            break;
+          }
+        }
+      }
+    }
     if (message.event === "END") {
       this.ended = { t: message.t, atMs: now, reason: message.reason ?? this.ended?.reason ?? null };
     }

@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: EPL-2.0
 // The running total of the signals' utilities as a step line over simulation time (thesis Fig. 33), with
-// stream gaps as red ticks. Redrawn only when something changed.
-import type { Gap } from "../model";
+// stream gaps as red ticks and the faults' windows shaded behind it (as the report shades them). Redrawn only when
+// something changed.
+import type { FaultWindow, Gap } from "../model";
 import { Layer } from "./layer";
 
 const PAD = { left: 38, right: 8, top: 8, bottom: 18 };
+/** The report's fault window colour (rei.report.charts). */
+export const FAULT_FILL = "rgba(245, 166, 35, 0.18)";
 
 export class UtilityChart {
   private readonly layer: Layer;
@@ -17,7 +20,8 @@ export class UtilityChart {
     return this.layer.resize(width, height, ratio);
   }
 
-  draw(series: readonly (readonly [number, number])[], now: number, gaps: readonly Gap[]): void {
+  draw(series: readonly (readonly [number, number])[], now: number, gaps: readonly Gap[],
+       faults: readonly FaultWindow[] = []): void {
     const { ctx, width, height } = this.layer;
     this.layer.reset();
     const tmax = Math.max(1, now, series.at(-1)?.[0] ?? 0);
@@ -34,6 +38,11 @@ export class UtilityChart {
     const py = (v: number): number => PAD.top + (1 - (v - lo) / (hi - lo)) * h;
     ctx.fillStyle = "#fff";
     ctx.fillRect(0, 0, width, height);
+    ctx.fillStyle = FAULT_FILL;
+    for (const span of faults) {
+      const end = Math.min(span.end ?? tmax, tmax); // an open window reaches the latest time
+      ctx.fillRect(px(span.begin), PAD.top, Math.max(px(end) - px(span.begin), 1), h);
+    }
     ctx.strokeStyle = "#ccc";
     ctx.lineWidth = 1;
     ctx.beginPath();

@@ -20,6 +20,7 @@ from typing import Any
 from rei.artifacts import ArtifactError, read_animation, read_mission, read_world_map
 from rei.evaluation import load_utilities
 from rei.maps import map_picture
+from rei.mission.executor import FAULT_KINDS
 from rei.report.colours import SIGNAL_COLOURS
 from rei.spline import Trajectory
 from rei.wamp.topics import Topics
@@ -70,8 +71,16 @@ def view_config(router_url: str, run_id: str, case_dir: Path | None, *, realm: s
         "mission": _mission(case_dir / "mission.xml") if case_dir is not None else None,
         "utilities": dict(load_utilities(utilities, declared)),
         "colours": dict(SIGNAL_COLOURS),
+        "faults": _fault_events(),
         "hello": None,
     }
+
+
+def _fault_events() -> dict[str, dict[str, Any]]:
+    """Each fault window's edge as the mission event it is (contract/vocabulary.json "faults"), with the fault it
+    names and whether it begins the window: the page shades the windows on its utility chart."""
+    return {f"FAULT_{sensor.upper()}_{kind.upper()}_{edge}": {"fault": f"{sensor} {kind}", "begin": edge == "BEGIN"}
+            for sensor, kinds in FAULT_KINDS.items() for kind in kinds for edge in ("BEGIN", "END")}
 
 
 def _json(path: Path) -> dict[str, Any] | None:
