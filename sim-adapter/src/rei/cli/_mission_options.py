@@ -7,10 +7,13 @@ import argparse
 import dataclasses
 import json
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from rei.cli.errors import CommandError
 from rei.sut.external.options import DEFAULT_DEADLINE, DEFAULT_JOIN_TIMEOUT, SutOptions
-from rei.wamp.collector import CollectorConfig
+
+if TYPE_CHECKING:  # imported where needed: it pulls in numpy and the mission's modules (check_mission_options)
+    from rei.wamp.collector import CollectorConfig
 
 
 def add_mission_options(parser: argparse.ArgumentParser) -> None:
@@ -54,28 +57,38 @@ def add_mission_options(parser: argparse.ArgumentParser) -> None:
 
 
 def check_mission_options(args: argparse.Namespace) -> None:
-    """Refuse a bad controller or fault before any process starts."""
-    from rei.sim.faults import parse_faults
+    """Refuse a bad controller or fault before any process starts.
+
+    The defaults need no check, nor the modules a check imports (numpy, the artifacts', pybullet with a fault):
+    `rei run` takes its router over and starts its simulation right after this."""
+    sut_options(args)
+    if args.fault or args.controller != "nav":
+        _check_controller_and_faults(args)
+    if args.state_rate is not None and not args.state_rate > 0:
+        raise CommandError(f"--state-rate must be positive, got {args.state_rate}")
+    if args.collector is not None or args.laser is not None:
+        collector_config(args)
+
+
+def _check_controller_and_faults(args: argparse.Namespace) -> None:
     from rei.sut.registry import UnknownControllerError, create_controller
 
-    sut_options(args)
     try:
         if args.fault:
             from rei.run.mission_run import MissionRunOptions
+            from rei.sim.faults import parse_faults
 
             # a command latency must be whole control periods at the rate the run will have
             parse_faults(args.fault).commands([], MissionRunOptions().control_rate)
         create_controller(args.controller)
     except (ValueError, UnknownControllerError) as error:
         raise CommandError(str(error)) from None
-    if args.state_rate is not None and not args.state_rate > 0:
-        raise CommandError(f"--state-rate must be positive, got {args.state_rate}")
-    collector_config(args)
 
 
 def collector_config(args: argparse.Namespace) -> CollectorConfig:
     """The collector's settings: the --collector file's (or the defaults), then --state-rate and --laser."""
     from rei.wamp.codec import LaserMode
+    from rei.wamp.collector import CollectorConfig
     from rei.wamp.collector_settings import CollectorSettingsError, load_collector_settings
 
     try:
