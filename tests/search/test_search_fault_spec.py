@@ -75,6 +75,14 @@ def test_a_motion_fault_s_values_are_written_for_its_kind_only(tmp_path: Path) -
     values = {"fault.kind": "drift", "fault.start": 1.0, "fault.duration": 2.0, "fault.bias": 3.0, "fault.dy": 0.2}
     assert space.edit(values).fault == "odometry:drift,scale=1.0,bias=3.0,from=1.0,to=3.0"
     assert space.edit({**values, "fault.kind": "jump"}).fault == "odometry:jump,dx=0.0,dy=0.2,dyaw=0.0,from=1.0,to=3.0"
+    spec = parse_search_spec(_spec(tmp_path, "{fault: drive, kind: [slip, stuck], fraction: [0.2, 0.8], "
+                                             "wheel: [left, right], start: [1, 4]}"), base=tmp_path, file="s.yaml")
+    assert next(p.domain for p in spec.parameters if p.key == "fault.wheel") == ("left", "right")
+    space = Space(spec.parameters, DIAGRAM)
+    values = {"fault.kind": "stuck", "fault.fraction": 0.5, "fault.wheel": "right", "fault.start": 2.0}
+    assert space.edit(values).fault == "drive:stuck,wheel=right,from=2.0"
+    assert space.edit({**values, "fault.kind": "slip"}).fault == "drive:slip,fraction=0.5,from=2.0"
+    assert space.smaller("fault.wheel", "right", "wall") == []  # shrinking keeps the wheel
     for sensor, kind, key, value in (("drive", "slip", "fraction", 0.4), ("commands", "loss", "probability", 0.3)):
         spec = parse_search_spec(_spec(tmp_path, f"{{fault: {sensor}, kind: {kind}, {key}: [0.1, 0.9]}}"),
                                  base=tmp_path, file="s.yaml")
@@ -114,8 +122,11 @@ def test_a_motion_fault_s_values_are_written_for_its_kind_only(tmp_path: Path) -
     ("{fault: odometry, kind: [drift, jump], start: [0, 5], dx: [0, 1]}",
      "s.yaml:3:29: an odometry drift fault needs 'scale' or 'bias': give a range of one"),
     ("{fault: drive, kind: [stuck]}",
-     ("s.yaml:3:26: a stuck wheel (left or right) is not searched yet: search slip, or give the stuck in the base "
-      "case's faults block")),
+     "s.yaml:3:26: a drive stuck fault needs 'wheel': give its range"),
+    ("{fault: drive, kind: [stuck], wheel: [left, middle]}",
+     "s.yaml:3:42: 'wheel' is the stuck wheel or a list to choose from: left or right, got ['left', 'middle']"),
+    ("{fault: drive, kind: [slip], fraction: [0.1, 0.5], wheel: left}",
+     "s.yaml:3:56: a drive slip fault has no 'wheel' (its keys: fraction, start, duration, period, pulse, duty)"),
     ("{fault: commands, kind: latency}",
      ("s.yaml:3:29: a latency (a whole number of control periods) is not searched yet: search loss, or give the "
       "latency in the base case's faults block")),

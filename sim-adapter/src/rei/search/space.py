@@ -130,7 +130,7 @@ class Space:
         if p.target == "furniture":
             self._add_furniture(p, taken)
             return
-        if p.target == "fault" and p.prop == "kind":
+        if p.target == "fault" and p.prop in ("kind", "wheel"):
             self._categorical(p.key, list(p.domain), None, p.where)  # base None: the base case runs no such fault
             return
         if p.target == "fault":  # a fault's values (its start and speed are no person's)
@@ -393,6 +393,10 @@ class Space:
         if duration is not None:
             fields["to"] = repr(round((start or 0.0) + duration, 3))
         for key in SENSOR_KIND_KEYS[sensor][kind]:
+            if key == "wheel":  # a choice, not a number
+                if values.get("fault.wheel") is not None:
+                    fields["wheel"] = str(values["fault.wheel"])
+                continue
             value = number(key)
             if value is not None:
                 fields[key] = str(int(value)) if key == "width" else repr(round(value, 6))

@@ -62,6 +62,7 @@ from rei.campaign.spec import ExternalSut, RoomSettings, SpecError, _Reader, _ro
 from rei.evaluation.metrics import BY_NAME, NAMES, Better
 from rei.search import SAMPLERS
 from rei.sim.faults import SENSOR_KIND_KEYS, SENSORS, fault_from_fields
+from rei.sim.faults.motion import WHEELS
 
 DIRECTIONS = ("minimize", "maximize")
 #: Samplers that search one objective only (Optuna's CmaEsSampler refuses a multi-objective study at its first ask).
@@ -401,7 +402,7 @@ def _check_controller(controller: str, where: str) -> None:
 _PROPS = {"object": ("floor", "yaw"), "robot": ("floor",),
           "human": ("points", "start", "speed", "loop", "behaviour", "stop", "floor"),
           "goal": ("floor",), "seed": (), "fault": ("rate", "gain", "width", "kind", "start", "duration", "sigma",
-                                                   "fraction", "probability", "scale", "bias", "dx", "dy", "dyaw",
+                                                   "fraction", "probability", "scale", "bias", "dx", "dy", "dyaw", "wheel",
                                                    "period", "pulse", "duty"), "furniture": ("count", "floor"),
           "crowd": ("count", "rate", "behaviour"), "group": ("count", "behaviour")}
 #: The fewest people of a crowd and of a group (the language's tooFewPeople: a group's leader and one more).
@@ -566,15 +567,14 @@ PRESET_KEYS = ("rate", "gain", "width")
 SCHEDULE_KEYS = ("start", "duration", "period", "pulse", "duty")
 #: Each sensor's kinds whose every key is a number searched in a range, the first two the example of a list.
 SEARCHABLE_KINDS: dict[str, tuple[str, ...]] = {
-    "laser": ("blackout", "freeze", "impulse", "noise"), "odometry": ("drift", "jump"), "drive": ("slip",),
+    "laser": ("blackout", "freeze", "impulse", "noise"), "odometry": ("drift", "jump"), "drive": ("slip", "stuck"),
     "commands": ("loss",), "pose": ("kidnap",)}
 #: Why the other kinds are not searched yet.
 UNSEARCHED = {"occlusion": "an occlusion's sector is not searched yet",
-              "stuck": "a stuck wheel (left or right) is not searched yet",
               "latency": "a latency (a whole number of control periods) is not searched yet"}
 #: What a kind cannot do without: a range of at least one key of each (a drift's scale or bias, an offset's dx, dy
 #: or dyaw).
-NEEDED_KEYS = {"noise": ("sigma",), "slip": ("fraction",), "loss": ("probability",), "drift": ("scale", "bias"),
+NEEDED_KEYS = {"noise": ("sigma",), "slip": ("fraction",), "stuck": ("wheel",), "loss": ("probability",), "drift": ("scale", "bias"),
                "jump": ("dx", "dy", "dyaw"), "kidnap": ("dx", "dy", "dyaw")}
 #: A value of each needed key that its kinds accept whatever the others are: it stands in for the keys other than
 #: the one whose range's ends are checked.
@@ -602,13 +602,15 @@ def _scheduled_fault(sensor: str, name_node: yaml.Node, props: list[str],
             continue
         value_node = entry[prop][1]
         with problems.check():
-            domains[prop] = _range(loc.value(value_node), value_node, loc, integer=prop == "width")
+            domains[prop] = (_wheels(loc.value(value_node), value_node, loc) if prop == "wheel"
+                             else _range(loc.value(value_node), value_node, loc, integer=prop == "width"))
             owners = [k for k in kinds if prop in keys[k]]
             if prop not in SCHEDULE_KEYS and kinds and not owners:
                 listed = " or ".join(f"{sensor} {k}" for k in kinds)
                 raise SpecError(f"{loc.at(entry[prop][0])}: {_article(listed)} {listed} fault has no '{prop}' "
                                 f"(its keys: {', '.join(_kind_keys(sensor, kinds))})")
-            _check_schedule_range(sensor, prop, domains[prop], owners, loc.at(value_node))
+            if prop != "wheel":  # a choice of wheels, each one a stuck wheel can be
+                _check_schedule_range(sensor, prop, domains[prop], owners, loc.at(value_node))
     for kind in kinds:
         needed = NEEDED_KEYS.get(kind, ())
         if needed and not any(key in entry for key in needed):
@@ -632,6 +634,14 @@ def _scheduled_fault(sensor: str, name_node: yaml.Node, props: list[str],
 
 def _kind_keys(sensor: str, kinds: tuple[str, ...]) -> list[str]:
     return list(dict.fromkeys([*(key for k in kinds for key in SENSOR_KIND_KEYS[sensor][k]), *SCHEDULE_KEYS]))
+
+
+def _wheels(value: Any, node: yaml.Node, loc: _Located) -> tuple[str, ...]:
+    listed = [value] if isinstance(value, str) else value
+    if not isinstance(listed, list) or not listed or not all(wheel in WHEELS for wheel in listed):
+        raise SpecError(f"{loc.at(node)}: 'wheel' is the stuck wheel or a list to choose from: "
+                        f"{' or '.join(WHEELS)}, got {value!r}")
+    return tuple(dict.fromkeys(listed))
 
 
 def _in_order(sensor: str) -> list[str]:
