@@ -23,7 +23,7 @@ from typing import Any
 from rei.campaign.forkserver import ForkServer, ForkServerError
 from rei.campaign.plan import RunTask
 from rei.campaign.supervise import KILL_GRACE, Outcome, supervise
-from rei.campaign.transfer import folder_bundle, inputs, receive, run_shipped
+from rei.campaign.transfer import folder_bundle, inputs, receive, run_shipped, sweep_monitor_folders
 from rei.campaign.worker import MONITOR_SERVER_ENV
 from rei.run.jvm import JarServer, JarServerError
 
@@ -265,6 +265,8 @@ class RayBackend:
 
     def close(self) -> None:
         self._ray.shutdown()  # stops the processes of an instance started here, and waits for them
+        if self._temp_dir is not None:  # its Ray workers' warm monitor folders, in this machine's TMPDIR
+            sweep_monitor_folders(wait=5.0)
         for key, value in self._saved_env.items():
             if value is None:
                 os.environ.pop(key, None)

@@ -133,7 +133,7 @@ def _warm_monitor() -> dict[str, str]:
         from rei.toolchain import ToolchainError
 
         if _monitor is None:
-            _sweep_monitor_folders()
+            sweep_monitor_folders()
         else:
             _monitor.stop()
         folder = Path(tempfile.mkdtemp(prefix=f"{_MONITOR_FOLDER}{os.getpid()}-"))  # 0700: its socket runs commands
@@ -148,18 +148,25 @@ def _warm_monitor() -> dict[str, str]:
     return {MONITOR_SERVER_ENV: str(_monitor.socket)}
 
 
-def _sweep_monitor_folders() -> None:
-    """Removes the warm monitor folders of this node's Ray workers that are gone."""
+def sweep_monitor_folders(wait: float = 0.0) -> None:
+    """Removes the warm monitor folders of this machine's Ray workers that are gone; ``wait``: seconds to give
+    workers that are ending (a local Ray instance just shut down) to be gone."""
+    import time
+
+    deadline = time.monotonic() + wait
     for folder in Path(tempfile.gettempdir()).glob(f"{_MONITOR_FOLDER}*"):
         pid = folder.name[len(_MONITOR_FOLDER):].split("-")[0]
-        if not pid.isdigit():
-            continue
-        try:
-            os.kill(int(pid), 0)
-        except ProcessLookupError:
-            shutil.rmtree(folder, ignore_errors=True)
-        except OSError:  # alive, someone else's
-            pass
+        while pid.isdigit():
+            try:
+                os.kill(int(pid), 0)
+            except ProcessLookupError:
+                shutil.rmtree(folder, ignore_errors=True)
+                break
+            except OSError:  # alive, someone else's
+                break
+            if time.monotonic() > deadline:
+                break
+            time.sleep(0.05)
 
 
 def run_shipped(task: dict[str, Any], case: Bundle, extra: Bundle, fields: dict[str, Any],
