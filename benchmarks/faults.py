@@ -5,8 +5,8 @@ time so that the machine's other work weighs on both alike.
 
 The run: examples/simple_navigation.rei simulated for 60 s with the robot told to turn on the spot, the lidar at
 10 Hz and physics at 240 Hz, stepped by a loop shaped like the mission loop's (rei.run.mission_run): the window
-clock at every step, the commands' faults at every control tick (20 Hz) between the controller's command and the
-robot; each run's CPU time summed over its turns. With faults: impulse noise gated 1 s in 4 s with a gain ramp, a
+clock at every step, the commands' faults at every control tick (10 Hz, as `rei run`) between the controller's
+command and the robot; each run's CPU time summed over its turns. With faults: impulse noise gated 1 s in 4 s with a gain ramp, a
 freeze, a blackout, an occlusion, range noise; command latency and loss; wheel slip and a stuck wheel; odometry
 drift and jumps; a kidnap. Their windows overlap so that most steps see several kinds; the kidnap turns the robot
 where it stands, so it stays clear of the walls as in the run without faults. Issue #39's goal: ratio <= 1.1.
@@ -28,11 +28,12 @@ from _examples import generate_example
 
 from rei.artifacts import read_case
 from rei.geometry import Twist2D
+from rei.run import MissionRunOptions
 from rei.sim.faults import FaultClock, parse_faults
 from rei.sim.simulation import Simulation
 
 GOAL = 1.1
-CONTROL_RATE = 20.0
+CONTROL_RATE = MissionRunOptions().control_rate  # the mission loop's own
 WANTED = Twist2D(0.0, 0.6)
 LASER = ("laser:impulse,rate=0.05,width=3,gain=0.2@0/0.8@60,period=4,pulse=1;"
          "laser:freeze,period=10,pulse=0.5,from=3;laser:blackout,period=15,pulse=1,from=7;"
