@@ -22,8 +22,9 @@ def add_mission_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--seed", type=int, default=0, help="seed of every random choice (default 0)")
     parser.add_argument("--no-humans", action="store_true", help="leave the humans out of the world")
     parser.add_argument("--fault", metavar="SPEC", help="faults besides the test case's, ';' between two: "
-                        "laser:KIND,key=value,... with KIND impulse, freeze, blackout, occlusion or noise and "
-                        "from=, to= (s), period= with pulse= or duty= (e.g. laser:blackout,from=5,to=7); the "
+                        "SENSOR:KIND,key=value,... (the laser's, odometry's, drive's, commands' and pose's kinds "
+                        "and keys in docs/faults.md) and from=, to= (s), period= with pulse= or duty= (e.g. "
+                        "laser:blackout,from=5,to=7; commands:loss,probability=0.3,from=2); the "
                         "run-long impulse noise laser:1%%, laser:10%% or laser:rate=0.01,gain=0.5,width=3; the "
                         "thesis's gated laser:gated-1%%, laser:gated-10%% (docs/faults.md)")
     parser.add_argument("--animation", choices=("velocity", "force"), default="velocity",
