@@ -9,6 +9,7 @@ from pathlib import Path
 
 import pytest
 
+from rei.run import MissionRunOptions
 from rei.search.space import Space
 from rei.search.spec import SearchSpecError, parse_search_spec
 from rei.sim.faults import parse_faults
@@ -83,6 +84,14 @@ def test_a_motion_fault_s_values_are_written_for_its_kind_only(tmp_path: Path) -
     assert space.edit(values).fault == "drive:stuck,wheel=right,from=2.0"
     assert space.edit({**values, "fault.kind": "slip"}).fault == "drive:slip,fraction=0.5,from=2.0"
     assert space.smaller("fault.wheel", "right", "wall") == []  # shrinking keeps the wheel
+    # a latency's delay: the nearest whole number of the runs' control periods (rei run's 10 Hz), one at least
+    spec = parse_search_spec(_spec(tmp_path, "{fault: commands, kind: [loss, latency], delay: [0.01, 0.5], "
+                                             "probability: [0.1, 0.9]}"), base=tmp_path, file="s.yaml")
+    space = Space(spec.parameters, DIAGRAM)
+    written = [space.edit({"fault.kind": "latency", "fault.delay": delay, "fault.probability": 0.5}).fault
+               for delay in (0.26, 0.34, 0.01)]
+    assert written == ["commands:latency,delay=0.3", "commands:latency,delay=0.3", "commands:latency,delay=0.1"]
+    assert [parse_faults(w).commands([], MissionRunOptions().control_rate) for w in written]  # whole periods
     for sensor, kind, key, value in (("drive", "slip", "fraction", 0.4), ("commands", "loss", "probability", 0.3)):
         spec = parse_search_spec(_spec(tmp_path, f"{{fault: {sensor}, kind: {kind}, {key}: [0.1, 0.9]}}"),
                                  base=tmp_path, file="s.yaml")
@@ -128,15 +137,17 @@ def test_a_motion_fault_s_values_are_written_for_its_kind_only(tmp_path: Path) -
     ("{fault: drive, kind: [slip], fraction: [0.1, 0.5], wheel: left}",
      "s.yaml:3:56: a drive slip fault has no 'wheel' (its keys: fraction, start, duration, period, pulse, duty)"),
     ("{fault: commands, kind: latency}",
-     ("s.yaml:3:29: a latency (a whole number of control periods) is not searched yet: search loss, or give the "
-      "latency in the base case's faults block")),
+     "s.yaml:3:29: a commands latency fault needs 'delay': give its range"),
+    ("{fault: commands, kind: latency, delay: [0, 0.5]}",
+     ("s.yaml:3:45: delay [0, 0.5] reaches outside what a commands latency fault accepts: latency delay must be > 0 "
+      "s, got 0")),
     ("{fault: drive, kind: slip, fraction: [0, 0.5]}",
      ("s.yaml:3:42: fraction [0, 0.5] reaches outside what a drive slip fault accepts: slip fraction must be in "
       "(0, 1], got 0")),
     ("{fault: pose, kind: kidnap, dx: [0, 1], sigma: [0.1, 0.2]}",
      "s.yaml:3:45: a pose kidnap fault has no 'sigma' (its keys: dx, dy, dyaw, start, duration, period, pulse, duty)"),
     ("{fault: commands, kind: [los], probability: [0.1, 0.5]}",
-     "s.yaml:3:29: unknown commands fault kind 'los' (did you mean loss?); known: loss"),
+     "s.yaml:3:29: unknown commands fault kind 'los' (did you mean loss?); known: latency, loss"),
     ("{fault: odometry, start: [0, 5]}",
      ("s.yaml:3:5: give 'kind': the odometry fault's kinds to choose from, such as [drift, jump] (of drift, "
       "jump)")),

@@ -398,7 +398,9 @@ class Space:
                     fields["wheel"] = str(values["fault.wheel"])
                 continue
             value = number(key)
-            if value is not None:
+            if value is not None and key == "delay":
+                fields[key] = repr(round(_control_periods(value), 6))
+            elif value is not None:
                 fields[key] = str(int(value)) if key == "width" else repr(round(value, 6))
         period = number("period")
         if period is not None:
@@ -458,6 +460,15 @@ class Space:
 
 #: The shares of the way to a fault's shortest duration (or latest start) shrinking tries, boldest first.
 SHRINK_STEPS = (1.0, 0.75, 0.5, 0.25)
+
+
+def _control_periods(delay: float) -> float:
+    """A command latency's ``delay`` as the whole number of the runs' control periods nearest to it, one at least:
+    the mission loop applies a command a whole number of ticks later (rei.sim.faults.motion.Latency)."""
+    from rei.run.mission_run import MissionRunOptions  # the rate every run of a search has (rei run's own)
+
+    rate = MissionRunOptions().control_rate
+    return max(1, round(delay * rate)) / rate
 
 
 def _shorter_or_later(p: Parameter, value: Any) -> list[Any]:

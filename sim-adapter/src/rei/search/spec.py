@@ -402,7 +402,7 @@ def _check_controller(controller: str, where: str) -> None:
 _PROPS = {"object": ("floor", "yaw"), "robot": ("floor",),
           "human": ("points", "start", "speed", "loop", "behaviour", "stop", "floor"),
           "goal": ("floor",), "seed": (), "fault": ("rate", "gain", "width", "kind", "start", "duration", "sigma",
-                                                   "fraction", "probability", "scale", "bias", "dx", "dy", "dyaw", "wheel",
+                                                   "fraction", "probability", "scale", "bias", "dx", "dy", "dyaw", "wheel", "delay",
                                                    "period", "pulse", "duty"), "furniture": ("count", "floor"),
           "crowd": ("count", "rate", "behaviour"), "group": ("count", "behaviour")}
 #: The fewest people of a crowd and of a group (the language's tooFewPeople: a group's leader and one more).
@@ -568,17 +568,16 @@ SCHEDULE_KEYS = ("start", "duration", "period", "pulse", "duty")
 #: Each sensor's kinds whose every key is a number searched in a range, the first two the example of a list.
 SEARCHABLE_KINDS: dict[str, tuple[str, ...]] = {
     "laser": ("blackout", "freeze", "impulse", "noise"), "odometry": ("drift", "jump"), "drive": ("slip", "stuck"),
-    "commands": ("loss",), "pose": ("kidnap",)}
+    "commands": ("loss", "latency"), "pose": ("kidnap",)}
 #: Why the other kinds are not searched yet.
-UNSEARCHED = {"occlusion": "an occlusion's sector is not searched yet",
-              "latency": "a latency (a whole number of control periods) is not searched yet"}
+UNSEARCHED = {"occlusion": "an occlusion's sector is not searched yet"}
 #: What a kind cannot do without: a range of at least one key of each (a drift's scale or bias, an offset's dx, dy
 #: or dyaw).
-NEEDED_KEYS = {"noise": ("sigma",), "slip": ("fraction",), "stuck": ("wheel",), "loss": ("probability",), "drift": ("scale", "bias"),
+NEEDED_KEYS = {"noise": ("sigma",), "slip": ("fraction",), "stuck": ("wheel",), "latency": ("delay",), "loss": ("probability",), "drift": ("scale", "bias"),
                "jump": ("dx", "dy", "dyaw"), "kidnap": ("dx", "dy", "dyaw")}
 #: A value of each needed key that its kinds accept whatever the others are: it stands in for the keys other than
 #: the one whose range's ends are checked.
-STAND_INS = {"sigma": "1", "fraction": "1", "probability": "1", "scale": "2", "bias": "1", "dx": "1", "dy": "1",
+STAND_INS = {"delay": "1", "sigma": "1", "fraction": "1", "probability": "1", "scale": "2", "bias": "1", "dx": "1", "dy": "1",
              "dyaw": "1"}
 
 
