@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: EPL-2.0
-"""The connect-time check of a Ray cluster's nodes (rei.campaign.nodes), on a real local Ray instance whose tasks
+"""The connect-time check of a Ray cluster's nodes (rei.campaign.nodes), through `rei campaign --ray local` (a real
+Ray instance; in a process of its own, as Ray keeps a first instance's token for the process's life) whose tasks
 run in the runtime environment ``$REI_RAY_RUNTIME_ENV`` names: one that points ``JAVA_HOME`` at a folder without
 Java makes the node unfit, named with what it lacks, before any run; a runtime environment that is not JSON is
 refused saying so. (A node whose PATH has no java, on a multi-node cluster: tests/campaign/test_campaign_ray_cluster.)"""
@@ -7,30 +8,39 @@ refused saying so. (A node whose PATH has no java, on a multi-node cluster: test
 from __future__ import annotations
 
 import json
+import os
 import re
+import subprocess
+import sys
 from pathlib import Path
 
-import pytest
+from rei.campaign.backends import RUNTIME_ENV_ENV
 
-from rei.campaign.backends import RUNTIME_ENV_ENV, RayUnavailableError, connect_ray
+EXAMPLE = Path(__file__).resolve().parents[3] / "examples" / "simple_navigation.rei"
 
 
-def test_a_node_the_runtime_env_leaves_without_java_is_named_at_connect_time(tmp_path: Path,
-                                                                               monkeypatch: pytest.MonkeyPatch) -> None:
+def _campaign(tmp_path: Path, runtime_env: str) -> subprocess.CompletedProcess[str]:
+    spec = tmp_path / "spec.yaml"
+    spec.write_text(f"groups:\n  - name: example\n    cases: [{EXAMPLE}]\n", encoding="utf-8")
+    return subprocess.run([sys.executable, "-m", "rei.cli", "campaign", str(spec), "-o", str(tmp_path / "out"),
+                           "--ray", "local", "--workers", "1"], capture_output=True, text=True, timeout=300,
+                          env={**os.environ, RUNTIME_ENV_ENV: runtime_env}, check=False)
+
+
+def test_a_node_the_runtime_env_leaves_without_java_is_named_at_connect_time(tmp_path: Path) -> None:
     settings = tmp_path / "runtime_env.json"  # as a user names one: a file
     settings.write_text(json.dumps({"env_vars": {"JAVA_HOME": str(tmp_path)}}), encoding="utf-8")
-    monkeypatch.setenv(RUNTIME_ENV_ENV, str(settings))
-    with pytest.raises(RayUnavailableError) as raised:
-        connect_ray("local", 1)
-    lines = str(raised.value).splitlines()
-    assert lines[0] == "1 of 1 Ray node(s) cannot run REI's runs:", lines
-    assert len(lines) == 2 and re.fullmatch(
-        rf"node \S+ \([0-9a-f]{{12}}\): JAVA_HOME={re.escape(str(tmp_path))} has no bin/java; fix JAVA_HOME or "
-        r"unset it", lines[1]), lines
+    done = _campaign(tmp_path, str(settings))
+    assert done.returncode == 2, done.stdout + done.stderr
+    lines = done.stderr.strip().splitlines()
+    assert lines[-2] == "rei: error: 1 of 1 Ray node(s) cannot run REI's runs:", done.stderr
+    assert re.fullmatch(rf"rei: error: node \S+ \([0-9a-f]{{12}}\): JAVA_HOME={re.escape(str(tmp_path))} has no "
+                        r"bin/java; fix JAVA_HOME or unset it", lines[-1]), done.stderr
+    assert not (tmp_path / "out" / "runs.csv").exists()  # no run was tried
 
 
-def test_a_runtime_env_that_is_not_json_is_refused(monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setenv(RUNTIME_ENV_ENV, "{py_modules: [rei.whl]}")
-    with pytest.raises(RayUnavailableError, match=r"cannot connect to Ray at local: \$REI_RAY_RUNTIME_ENV: not a "
-                                                  r"JSON object nor a JSON file"):
-        connect_ray("local", 1)
+def test_a_runtime_env_that_is_not_json_is_refused(tmp_path: Path) -> None:
+    done = _campaign(tmp_path, "{py_modules: [rei.whl]}")
+    assert done.returncode == 2, done.stdout + done.stderr
+    assert done.stderr.startswith("rei: error: cannot connect to Ray at local: $REI_RAY_RUNTIME_ENV: not a JSON "
+                                  "object nor a JSON file"), done.stderr
