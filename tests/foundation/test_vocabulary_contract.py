@@ -146,16 +146,17 @@ def test_behaviour_copies(contract: dict, repo_root: Path) -> None:
     assert f"\\\\b(?:{'|'.join(behaviours['values'])})\\\\b" in keywords
 
 
-def test_drive_copies(contract: dict, repo_root: Path) -> None:
+def test_drive_copies(contract: dict, repo_root: Path, java_facts: dict) -> None:
     """A robot's drive: the language's enum (its first literal is EMF's default, what a robot type that says no
     drive gets), the catalogue metamodel's literals, world.json's reader, hello's robot.drive as the simulation
-    writes it, and the VS Code keywords."""
+    writes it and the Java kit reads it, and the VS Code keywords."""
     import xml.etree.ElementTree as ET
 
     from rei.artifacts.world import DRIVE_KINDS, DriveSpec
 
     drives = contract["drives"]
     assert list(DRIVE_KINDS) == drives["types"] and drives["default"] == drives["types"][0]
+    assert java_facts["sut_drives"] == drives["types"]
     assert DriveSpec(0.033, 0.287, 0.26, 1.82).kind == drives["default"]
     grammar = (repo_root / "bundles" / "org.rei.dsl" / "src" / "main" / "java" / "org" / "rei" / "dsl"
                / "Rei.xtext").read_text(encoding="utf-8")

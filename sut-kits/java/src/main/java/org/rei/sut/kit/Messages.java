@@ -42,7 +42,7 @@ final class Messages {
 				number(robot, "max_linear", what), number(robot, "max_angular", what),
 				new Session.Lidar((int) integer(lidar, "beams", what), number(lidar, "range_min", what),
 						number(lidar, "range_max", what), number(lidar, "rate", what)),
-				drive == null ? "differential" : text(robot, "drive", what),
+				drive == null ? Session.DRIVES.get(0) : text(robot, "drive", what),
 				robot.has("max_lateral") ? number(robot, "max_lateral", what) : 0.0, outline(robot.get("outline")));
 		String clock = text(m, "clock", what);
 		Session.Clock c = switch (clock) {

@@ -16,6 +16,9 @@ import java.util.Map;
 public record Session(int protocol, String runId, Clock clock, double controlRate, double deadline, Pose start,
 		Robot robot, int goals, StaticMap map) {
 
+	/** hello's robot.drive values, the default first (contract/vocabulary.json drives). */
+	public static final List<String> DRIVES = List.of("differential", "holonomic");
+
 	/** lockstep: the simulation waits for every command; realtime: it runs at wall-clock speed. */
 	public enum Clock {
 		LOCKSTEP, REALTIME
@@ -31,11 +34,11 @@ public record Session(int protocol, String runId, Clock clock, double controlRat
 
 		/** A differential robot. */
 		public Robot(String name, double sizeX, double sizeY, double maxLinear, double maxAngular, Lidar lidar) {
-			this(name, sizeX, sizeY, maxLinear, maxAngular, lidar, "differential", 0.0, null);
+			this(name, sizeX, sizeY, maxLinear, maxAngular, lidar, DRIVES.get(0), 0.0, null);
 		}
 
 		public boolean holonomic() {
-			return "holonomic".equals(drive);
+			return DRIVES.get(1).equals(drive);
 		}
 	}
 
