@@ -329,3 +329,8 @@ def test_the_footprint_types_are_one_fact_of_the_reader_and_both_world_readers(c
     assert java_facts["footprint_types"] == types
     written = [Polygon(((0.0, 0.0), (1.0, 0.0), (0.0, 1.0))).to_json()["type"], Circle(0.0, 0.0, 1.0).to_json()["type"]]
     assert written == types
+    # hello's robot.outline: written by the simulation, read by the Java kit
+    from rei.artifacts.world import CircleFootprint, PolygonFootprint
+    sent = [protocol.outline(PolygonFootprint(((0.0, 0.0), (1.0, 0.0), (0.0, 1.0))))["type"],
+            protocol.outline(CircleFootprint(0.0, 0.0, 1.0))["type"]]
+    assert sent == types == java_facts["sut_outline_types"]

@@ -42,6 +42,7 @@ public final class JavaVocabulary {
 		facts.put("sut_from_simulation", SutClient.FROM_SIMULATION);
 		facts.put("sut_from_sut", SutClient.FROM_SUT);
 		facts.put("sut_drives", org.rei.sut.kit.Session.DRIVES);
+		facts.put("sut_outline_types", org.rei.sut.kit.Session.Outline.TYPES);
 		facts.put("sut_procedures", SutClient.PROCEDURES);
 		facts.put("sut_environment", List.of(SutClient.ENV_ROUTER_URL, SutClient.ENV_REALM, SutClient.ENV_RUN_ID,
 				SutClient.ENV_AUTH_FILE));

@@ -21,7 +21,7 @@ from typing import Any
 
 import numpy as np
 
-from rei.artifacts.world import CircleFootprint, PolygonFootprint
+from rei.artifacts.world import FOOTPRINT_TYPES, CircleFootprint, PolygonFootprint
 from rei.geometry import Pose2D, Twist2D
 from rei.sut.api import LaserScan, NavGoal, NavStatus, Observation, StaticMap
 
@@ -88,9 +88,10 @@ def hello_answer(*, run_id: str, clock: str, control_rate: float, deadline: floa
 def outline(footprint: PolygonFootprint | CircleFootprint) -> dict[str, Any]:
     """``hello``'s ``robot.outline``: the robot's outline on the floor in its own frame, as world.json writes a
     described robot's footprint (a box robot's is its rectangle)."""
+    polygon, circle = FOOTPRINT_TYPES
     if isinstance(footprint, CircleFootprint):
-        return {"type": "circle", "x": float(footprint.x), "y": float(footprint.y), "radius": float(footprint.radius)}
-    return {"type": "polygon", "points": [[float(x), float(y)] for x, y in footprint.points]}
+        return {"type": circle, "x": float(footprint.x), "y": float(footprint.y), "radius": float(footprint.radius)}
+    return {"type": polygon, "points": [[float(x), float(y)] for x, y in footprint.points]}
 
 
 def tick_message(tick: int, observation: Observation, *, new_scan: bool, scan_time: float,

@@ -61,11 +61,11 @@ final class Messages {
 		}
 		String what = "hello's answer: robot: outline";
 		String type = text(outline, "type", what);
-		if (type.equals("circle")) {
+		if (type.equals(Session.Outline.TYPES.get(1))) {
 			return new Session.Outline(List.of(), number(outline, "x", what), number(outline, "y", what),
 					number(outline, "radius", what));
 		}
-		if (!type.equals("polygon")) {
+		if (!type.equals(Session.Outline.TYPES.get(0))) {
 			throw malformed(what, "unknown type '" + type + "'");
 		}
 		JsonNode list = outline.get("points");

@@ -49,6 +49,9 @@ public record Session(int protocol, String runId, Clock clock, double controlRat
 	 */
 	public record Outline(List<double[]> points, double x, double y, double radius) {
 
+		/** hello's robot.outline.type values (contract/vocabulary.json footprints). */
+		public static final List<String> TYPES = List.of("polygon", "circle");
+
 		public boolean circle() {
 			return radius > 0;
 		}
