@@ -13,6 +13,7 @@ import math
 from collections.abc import Mapping, Sequence
 from typing import Any
 
+from rei.artifacts.world import FOOTPRINT_TYPES
 from rei.maps import MapPicture
 from rei.report.colours import HUMAN_PATH, ROBOT_BELIEVED, ROBOT_TRUE, css_colour, signal_colour
 from rei.report.decimate import MAX_PATH_POINTS, decimate
@@ -202,12 +203,13 @@ def _outline(world: Mapping[str, Any] | None) -> tuple[tuple[float, float], dict
         except (KeyError, IndexError, TypeError, ValueError):
             pass
         raw = robot.get("footprint")
+        polygon, circle = FOOTPRINT_TYPES
         try:
-            if isinstance(raw, Mapping) and raw.get("type") == "circle":
-                footprint = {"type": "circle", "x": float(raw["x"]), "y": float(raw["y"]),
+            if isinstance(raw, Mapping) and raw.get("type") == circle:
+                footprint = {"type": circle, "x": float(raw["x"]), "y": float(raw["y"]),
                              "radius": float(raw["radius"])}
-            elif isinstance(raw, Mapping) and raw.get("type") == "polygon" and len(raw["points"]) >= 3:
-                footprint = {"type": "polygon", "points": [(float(px), float(py)) for px, py in raw["points"]]}
+            elif isinstance(raw, Mapping) and raw.get("type") == polygon and len(raw["points"]) >= 3:
+                footprint = {"type": polygon, "points": [(float(px), float(py)) for px, py in raw["points"]]}
         except (KeyError, TypeError, ValueError):
             footprint = None  # a footprint that does not read: the bounding box, as before
     return size, footprint
@@ -227,7 +229,7 @@ def _robot_poses(world: Mapping[str, Any] | None, robot: Track, tf: MapTransform
         cx, cy = tf.point(x, y)
         title = f'<title>robot {label}: ({x:.2f}, {y:.2f}) at t = {robot.t[index]:.2f} s</title>'
         style = f'fill="{fill}" fill-opacity="0.5" stroke="{ROBOT_TRUE}" stroke-width="1.5"'
-        if footprint is not None and footprint["type"] == "circle":
+        if footprint is not None and footprint["type"] == FOOTPRINT_TYPES[1]:
             ox, oy = footprint["x"], footprint["y"]
             px, py = tf.point(x + c * ox - s * oy, y + s * ox + c * oy)
             out.append(f'<circle class="robot-{label}" cx="{num(px)}" cy="{num(py)}" '
