@@ -19,6 +19,7 @@ from rei.campaign.aggregate import (
     TOTAL,
     MetricRow,
     Row,
+    by_fault,
     metric_rows,
     signal_table,
     summary_rows,
@@ -64,12 +65,19 @@ def render(out: Path, name: str, results: Sequence[RunResult], metrics: dict[str
         if by_variant:
             parts.append("<h3>Per variant</h3>")
             parts.append(_summary_table(by_variant, "variant"))
+        of_faults = [r for r in rows if r.group == group and r.fault != ALL]
+        if of_faults:
+            parts.append("<h3>Per fault (thesis Tables 9, 10)</h3>")
+            parts.append(_summary_table(of_faults, "fault"))
         parts.append("<h3>Navigation metrics (mean [95 % CI], median; success: rate [Wilson 95 %])</h3>")
         parts.append(_navigation_html([r for r in navigation if r.group == group], f"metrics-{group}"))
         parts.append("<h3>Signals per room (Tables 6, 8)</h3>")
         parts.append(_signal_html(*signal_table(runs, "case"), f"signals-{group}"))
         parts.append("<h3>Signals per variant (Tables 9, 10)</h3>")
         parts.append(_signal_html(*signal_table(runs, "variant"), f"variants-{group}"))
+        if by_fault(runs):
+            parts.append("<h3>Signals per fault (Tables 9, 10)</h3>")
+            parts.append(_signal_html(*signal_table(runs, "fault"), f"faults-{group}"))
         parts.append("<h3>Verdicts</h3>")
         parts.append(_verdict_html(runs))
     parts.append("<h2>Utility of each mission over time (Fig. 36)</h2>")
@@ -88,7 +96,7 @@ def _summary_table(rows: Sequence[Row], first: str) -> str:
             "<th>missions succeeded</th><th>verdict pass rate</th></tr>")
     body = []
     for r in rows:
-        label = r.room if first == "room" else r.variant
+        label = getattr(r, first)
         cls = " class='total'" if r.room == "Total" else ""
         rate = "" if r.verdict_pass_rate is None else f"{100 * r.verdict_pass_rate:.0f} %"
         body.append(f"<tr{cls}><td>{_e(label)}</td><td>{r.executions}</td><td>{r.errors}</td>"
@@ -99,20 +107,22 @@ def _summary_table(rows: Sequence[Row], first: str) -> str:
 
 
 def _navigation_html(rows: Sequence[MetricRow], ident: str) -> str:
-    """One column per metric, one line per room, the group's total and each variant (docs/metrics.md)."""
-    lines = list(dict.fromkeys((r.room, r.variant) for r in rows))
+    """One column per metric, one line per room, the group's total, each variant and each fault
+    (docs/metrics.md)."""
+    lines = list(dict.fromkeys((r.room, r.variant, r.fault) for r in rows))
     metrics = list(dict.fromkeys(r.metric for r in rows))
-    cell = {(r.room, r.variant, r.metric): r for r in rows}
-    head = "<tr><th>room / variant</th><th>runs</th>" + "".join(
+    cell = {(r.room, r.variant, r.fault, r.metric): r for r in rows}
+    head = "<tr><th>room / variant / fault</th><th>runs</th>" + "".join(
         f"<th title='{_e(BY_NAME[m].label)}'>{_e(m)}{f' [{BY_NAME[m].unit}]' if BY_NAME[m].unit else ''}</th>"
         for m in metrics) + "</tr>"
     body = []
-    for room, variant in lines:
-        label = variant if room == ALL else room
+    for line in lines:
+        room, variant, fault = line
+        label = room if room != ALL else variant if variant != ALL else fault
         cls = " class='total'" if room == TOTAL else ""
-        runs = max((cell[(room, variant, m)].n for m in metrics), default=0)
+        runs = max((cell[(*line, m)].n for m in metrics), default=0)
         body.append(f"<tr{cls}><td>{_e(label)}</td><td>{runs}</td>" + "".join(
-            f"<td>{_estimate(cell[(room, variant, m)])}</td>" for m in metrics) + "</tr>")
+            f"<td>{_estimate(cell[(*line, m)])}</td>" for m in metrics) + "</tr>")
     return f"<table id='{_e(ident)}' class='metrics'>{head}{''.join(body)}</table>"
 
 

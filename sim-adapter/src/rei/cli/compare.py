@@ -2,13 +2,14 @@
 """`rei compare BASELINE CANDIDATE -o OUT [--thresholds FILE.yaml]`: is the candidate worse, and is it real?
 
 BASELINE and CANDIDATE are two campaign folders (or two run folders) of the same spec, run with different
-systems under test, settings or versions. Runs pair by group, case, variant and seed; runs without a partner or
-in ERROR are listed, not dropped. Per navigation metric (docs/metrics.md) the paired difference with its 95 %
+systems under test, settings or versions. Runs pair by group, case, variant, seed and fault; runs without a
+partner or in ERROR are listed, not dropped. Per navigation metric (docs/metrics.md) the paired difference with its 95 %
 bootstrap interval and a paired test (Wilcoxon signed-rank; success: McNemar's exact test), and a regression
 verdict from the thresholds (default: success, SPL and collisions worse at p < 0.05, minimum clearances 5 cm
 lower, any more robot-at-fault collisions with people, 2 % more of the mission in people's intimate space, people
-delayed 1 s more). Writes OUT/compare.html, OUT/compare.json and OUT/verdicts.xml (JUnit). Exit 0: no regression;
-1: a metric regressed; 2: bad arguments or thresholds, or no run pairs.
+delayed 1 s more); when the runs carry several faults, also per fault over its pairs. Writes OUT/compare.html,
+OUT/compare.json and OUT/verdicts.xml (JUnit). Exit 0: no regression; 1: a metric regressed (overall or under a
+fault); 2: bad arguments or thresholds, or no run pairs.
 """
 
 from __future__ import annotations
@@ -71,7 +72,14 @@ def compare_and_report(baseline: Path, candidate: Path, out: Path, thresholds: A
     for m in comparison.metrics:
         if m.status is not None:
             print(f"  {str(m.status).upper() if m.regressed else str(m.status):<14} {m.message}")
+    for fault, metrics in comparison.by_fault:
+        for m in metrics:
+            if m.status is not None:
+                print(f"  {str(m.status).upper() if m.regressed else str(m.status):<14} under {fault}: {m.message}")
     print(f"regressions: {', '.join(m.metric.name for m in comparison.regressions) or 'none'}")
+    if comparison.by_fault:
+        under = comparison.fault_regressions
+        print(f"regressions under a fault: {', '.join(f'{m.metric.name} under {f}' for f, m in under) or 'none'}")
     print(f"report:   {files['html']}")
     print(f"verdicts: {files['junit']}")
     return comparison.exit_code

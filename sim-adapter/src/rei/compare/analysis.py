@@ -6,6 +6,10 @@ test; success: change of the success rate and McNemar's exact test (rei.campaign
 with a threshold (rei.compare.thresholds) is ``fail`` when it regressed, ``pass`` when not, ``not-applicable``
 when no pair has it (e.g. clearance to humans in rooms without humans); metrics without a threshold are
 reported, not judged.
+
+When the pairs carry more than one fault (a campaign whose variants inject different faults), every metric is also
+compared and judged over each fault's pairs alone (``Comparison.by_fault``): a regression under one fault level
+that the others' pairs would average away shows there, and makes the comparison exit 1 as an overall one does.
 """
 
 from __future__ import annotations
@@ -57,15 +61,22 @@ class Comparison:
     pairing: Pairing
     thresholds: Thresholds
     metrics: tuple[MetricComparison, ...]
+    #: per fault (canonical text), every metric over that fault's pairs; empty when the pairs share one fault
+    by_fault: tuple[tuple[str, tuple[MetricComparison, ...]], ...] = ()
 
     @property
     def regressions(self) -> list[MetricComparison]:
         return [m for m in self.metrics if m.regressed]
 
     @property
+    def fault_regressions(self) -> list[tuple[str, MetricComparison]]:
+        """(fault, metric) for every metric that regressed over one fault's pairs."""
+        return [(fault, m) for fault, metrics in self.by_fault for m in metrics if m.regressed]
+
+    @property
     def exit_code(self) -> int:
-        """0: no regression; 1: at least one metric regressed."""
-        return 1 if self.regressions else 0
+        """0: no regression; 1: at least one metric regressed, overall or under one fault."""
+        return 1 if self.regressions or self.fault_regressions else 0
 
 
 def compare(baseline: Path, candidate: Path, thresholds: Thresholds | None = None) -> Comparison:
@@ -74,12 +85,17 @@ def compare(baseline: Path, candidate: Path, thresholds: Thresholds | None = Non
     pairing = pair(load_side(baseline), load_side(candidate))
     if not pairing.pairs:
         raise CompareError(
-            f"no run of {candidate} pairs with one of {baseline} (same group, case, variant and seed, both "
+            f"no run of {candidate} pairs with one of {baseline} (same group, case, variant, seed and fault, both "
             f"COMPLETED): {len(pairing.only_baseline)} only in the baseline, {len(pairing.only_candidate)} only "
             f"in the candidate, {len(pairing.errors)} with a side in ERROR")
     by_metric = {t.metric: t for t in thresholds.items}
     results = tuple(_compare_metric(m, pairing.pairs, by_metric.get(m.name)) for m in METRICS)
-    return Comparison(Path(baseline), Path(candidate), pairing, thresholds, results)
+    faults: dict[str, list[tuple[Run, Run]]] = {}
+    for b, c in pairing.pairs:
+        faults.setdefault(b.fault, []).append((b, c))
+    by_fault = tuple((fault, tuple(_compare_metric(m, tuple(pairs), by_metric.get(m.name)) for m in METRICS))
+                     for fault, pairs in faults.items()) if len(faults) > 1 else ()
+    return Comparison(Path(baseline), Path(candidate), pairing, thresholds, results, by_fault)
 
 
 def _compare_metric(metric: Metric, pairs: tuple[tuple[Run, Run], ...], threshold: Threshold | None,

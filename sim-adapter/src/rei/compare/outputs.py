@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: EPL-2.0
 """The files of a comparison: ``compare.json`` (every figure), ``verdicts.xml`` (JUnit: one test case per
-judged metric, a regression a failure) and ``compare.html``."""
+judged metric, and per metric and fault when the pairs carry several faults, a regression a failure) and
+``compare.html``."""
 
 from __future__ import annotations
 
@@ -29,6 +30,8 @@ def write_comparison(comparison: Comparison, out: Path) -> dict[str, Path]:
     tmp.write_text(json.dumps(document, indent=2, allow_nan=False) + "\n", encoding="utf-8")
     os.replace(tmp, out / JSON_FILE)
     verdicts = [_junit_verdict(m) for m in comparison.metrics if m.status is not None]
+    verdicts += [_junit_verdict(m, fault) for fault, metrics in comparison.by_fault for m in metrics
+                 if m.status is not None]
     write_junit(out / VERDICTS_FILE, verdicts, suite="rei.compare", classname=CLASSNAME,
                 properties={"baseline": str(comparison.baseline), "candidate": str(comparison.candidate),
                             "pairs": str(len(comparison.pairing.pairs)), "thresholds": comparison.thresholds.source})
@@ -45,6 +48,12 @@ def to_dict(c: Comparison) -> dict[str, Any]:
         "only_baseline": [_run(r) for r in p.only_baseline], "only_candidate": [_run(r) for r in p.only_candidate],
         "errors": [{"baseline": _run(b), "candidate": _run(k)} for b, k in p.errors],
         "metrics": {m.metric.name: _metric(m) for m in c.metrics},
+        # per fault (canonical text) when the pairs carry more than one: the same figures over its pairs alone
+        "fault_regressions": [{"fault": fault, "metric": m.metric.name} for fault, m in c.fault_regressions],
+        "by_fault": {fault: {"pairs": sum(1 for b, _ in p.pairs if b.fault == fault),
+                             "regressions": [m.metric.name for m in metrics if m.regressed],
+                             "metrics": {m.metric.name: _metric(m) for m in metrics}}
+                     for fault, metrics in c.by_fault},
     }
 
 
@@ -59,9 +68,12 @@ def _metric(m: MetricComparison) -> dict[str, Any]:
 
 def _run(r: Run) -> dict[str, Any]:
     return {"key": r.key, "group": r.group, "case": r.case, "variant": r.variant, "seed": r.seed,
-            "status": r.status, "error": r.error, "folder": str(r.folder)}
+            "status": r.status, "error": r.error, "folder": str(r.folder), "fault": r.fault}
 
 
-def _junit_verdict(m: MetricComparison) -> Verdict:
+def _junit_verdict(m: MetricComparison, fault: str | None = None) -> Verdict:
+    """A metric's test case, named ``METRIC under FAULT`` for one fault's pairs."""
     evidence = tuple(Evidence(f"{d.baseline.key} -> {d.candidate.key}: {d.value:+.4g}") for d in m.worst(5))
-    return Verdict(m.metric.name, m.status, m.message, evidence)  # type: ignore[arg-type]
+    name = m.metric.name if fault is None else f"{m.metric.name} under {fault}"
+    message = m.message if fault is None else f"under {fault}: {m.message}"
+    return Verdict(name, m.status, message, evidence)  # type: ignore[arg-type]

@@ -37,14 +37,22 @@ def render(out: Path, c: Comparison) -> str:
     verdict = (f"<p id='verdict' class='fail'>{len(c.regressions)} regression(s): "
                f"{_e(', '.join(m.metric.name for m in c.regressions))}</p>" if c.regressions
                else "<p id='verdict' class='pass'>no regression</p>")
+    if c.by_fault:
+        under = c.fault_regressions
+        verdict += (f"<p id='fault-verdict' class='fail'>{len(under)} regression(s) under a fault: "
+                    f"{_e(', '.join(f'{m.metric.name} under {fault}' for fault, m in under))}</p>" if under
+                    else "<p id='fault-verdict' class='pass'>no regression under any fault</p>")
     parts = [(f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>REI comparison</title><style>{_STYLE}</style>"
              "</head><body><h1>Comparison</h1>"),
              (f"<p>baseline <code>{_e(c.baseline)}</code>, candidate <code>{_e(c.candidate)}</code>; "
-             f"{len(p.pairs)} pair(s) of runs (same group, case, variant and seed), {len(p.only_baseline)} only in "
+             f"{len(p.pairs)} pair(s) of runs (same group, case, variant, seed and fault), {len(p.only_baseline)} only in "
              f"the baseline, {len(p.only_candidate)} only in the candidate, {len(p.errors)} with a side in ERROR; thresholds: "
              f"{_e(c.thresholds.source)}.</p>"), verdict,
-             "<h2>Metrics (candidate - baseline, over the pairs)</h2>", _verdict_table(c.metrics),
-             "<h2>Paired plots (each room a line, baseline to candidate; mean over seeds)</h2><div class='plots'>"]
+             "<h2>Metrics (candidate - baseline, over the pairs)</h2>", _verdict_table(c.metrics)]
+    for fault, metrics in c.by_fault:
+        parts += [f"<h2>Under fault <code>{_e(fault)}</code> (its pairs alone)</h2>",
+                  _verdict_table(metrics, fault)]
+    parts += ["<h2>Paired plots (each room a line, baseline to candidate; mean over seeds)</h2><div class='plots'>"]
     parts += [_paired_plot(m) for m in c.metrics if m.differences]
     parts.append("</div><h2>Runs that changed most</h2>")
     parts.append(_changed(out, [m for m in c.metrics if m.threshold is not None and m.differences]))
@@ -54,7 +62,7 @@ def render(out: Path, c: Comparison) -> str:
     return "\n".join(parts)
 
 
-def _verdict_table(metrics: Sequence[MetricComparison]) -> str:
+def _verdict_table(metrics: Sequence[MetricComparison], fault: str | None = None) -> str:
     head = ("<tr><th>metric</th><th>pairs</th><th>baseline</th><th>candidate</th><th>difference [95 % CI]</th>"
             "<th>test</th><th>p</th><th>threshold</th><th>verdict</th></tr>")
     body = []
@@ -69,7 +77,8 @@ def _verdict_table(metrics: Sequence[MetricComparison]) -> str:
                     f"<td>{'' if d.mean is None else f'{d.mean:+.3g}'}{interval}</td><td>{_e(d.test)}</td>"
                     f"<td>{'' if d.p is None else f'{d.p:.3g}'}</td>"
                     f"<td>{_e(m.threshold.describe()) if m.threshold else ''}</td>{status}</tr>")
-    return f"<table id='metrics'>{head}{''.join(body)}</table>"
+    ident = "id='metrics'" if fault is None else f"class='fault-metrics' data-fault='{_e(fault)}'"
+    return f"<table {ident}>{head}{''.join(body)}</table>"
 
 
 def _paired_plot(m: MetricComparison) -> str:

@@ -3,8 +3,9 @@
 
 A side is a campaign folder (``OUT/runs/<key>/result.json``, as ``rei campaign`` writes them) or one run folder
 (``summary.json``, as ``rei run`` and ``rei evaluate`` write it). Runs pair when they have the same group, case,
-variant and seed - the same room driven under the same conditions - so the difference of a pair is the change of
-the system under test alone. Runs without a partner, and runs that ended in ERROR (they have no metrics) with
+variant, seed and fault (the canonical text of the fault the run carried, rei.campaign.aggregate.fault_label,
+``none`` without one) - the same room driven under the same conditions - so the difference of a pair is the change
+of the system under test alone: a variant whose fault changed between the two campaigns does not pair. Runs without a partner, and runs that ended in ERROR (they have no metrics) with
 their partner, are listed, never silently dropped.
 """
 
@@ -15,6 +16,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from rei.campaign.aggregate import NO_FAULT, fault_label
 from rei.campaign.results import RESULT_FILE
 
 
@@ -33,10 +35,11 @@ class Run:
     folder: Path
     metrics: dict[str, Any] = field(default_factory=dict)
     error: str | None = None
+    fault: str = NO_FAULT  # canonical (fault_label)
 
     @property
-    def pair_key(self) -> tuple[str, str, str, int]:
-        return (self.group, self.case, self.variant, self.seed)
+    def pair_key(self) -> tuple[str, str, str, int, str]:
+        return (self.group, self.case, self.variant, self.seed, self.fault)
 
 
 @dataclass(frozen=True, slots=True)
@@ -84,20 +87,24 @@ def _campaign_run(path: Path) -> Run:
     try:
         return Run(key=str(data["key"]), group=str(data["group"]), case=str(data["case"]),
                    variant=str(data["variant"]), seed=int(data["seed"]), status=str(data["status"]),
-                   folder=path.parent, metrics=dict(data.get("metrics") or {}), error=data.get("error"))
+                   folder=path.parent, metrics=dict(data.get("metrics") or {}), error=data.get("error"),
+                   fault=fault_label(data.get("fault")))
     except (KeyError, TypeError, ValueError) as error:
         raise CompareError(f"{path}: not a campaign run's result ({error})") from None
 
 
 def _single_run(folder: Path) -> Run:
-    """A run folder pairs with the other side's by its test case and seed (group and variant are empty)."""
+    """A run folder pairs with the other side's by its test case, seed and ``--fault`` (group and variant are
+    empty)."""
     summary = _json(folder / "summary.json")
     sim = _json(folder / "sim.json") if (folder / "sim.json").is_file() else {}
-    seed = (sim.get("options") or {}).get("seed", 0) if isinstance(sim, dict) else 0
+    options = (sim.get("options") or {}) if isinstance(sim, dict) else {}
+    seed = options.get("seed", 0)
     case = str(summary.get("testcase") or folder.name)
     return Run(key=folder.name, group="", case=case, variant="", seed=int(seed or 0),
                status=str(summary.get("status", "ERROR")), folder=folder,
-               metrics=dict(summary.get("metrics") or {}), error=summary.get("error"))
+               metrics=dict(summary.get("metrics") or {}), error=summary.get("error"),
+               fault=fault_label(options.get("fault")))
 
 
 def _json(path: Path) -> Any:
