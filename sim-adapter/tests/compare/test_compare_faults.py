@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 
 from rei.cli import main
-from rei.compare import compare, write_comparison
+from rei.compare import CompareError, compare, write_comparison
 from rei.compare.thresholds import parse_thresholds
 from rei.evaluation.metrics import NAMES
 
@@ -72,3 +72,19 @@ def test_runs_pair_only_under_the_same_fault(tmp_path: Path) -> None:
     assert c.by_fault == ()  # the pairs share one fault: no verdicts per fault
     document = json.loads(write_comparison(c, tmp_path / "out")["json"].read_text())
     assert document["by_fault"] == {} and document["only_candidate"][0]["fault"] == GATED
+
+
+def test_run_folders_pair_by_their_fault(tmp_path: Path) -> None:
+    """Two `rei run` folders: the fault is sim.json's --fault, so a run under another fault does not pair."""
+    def run(name: str, fault: str | None) -> Path:
+        folder = tmp_path / name
+        folder.mkdir()
+        (folder / "summary.json").write_text(json.dumps({"testcase": "room", "status": "COMPLETED",
+                                                         "metrics": dict.fromkeys(NAMES)}))
+        (folder / "sim.json").write_text(json.dumps({"options": {"seed": 3, "fault": fault}}))
+        return folder
+
+    plain, gated, spelled = run("plain", None), run("gated", "laser:gated-10%"), run("spelled", GATED)
+    assert len(compare(gated, spelled).pairing.pairs) == 1
+    with pytest.raises(CompareError, match="same group, case, variant, seed and fault"):
+        compare(plain, gated)
