@@ -16,10 +16,35 @@ import numpy as np
 from rei.geometry import Pose2D, Twist2D, wrap_angle
 
 
-class WheelOdometry:
+class _DeadReckoning:
+    """The pose an odometry integrates, and what both kinds do with it: its noise's checks, a jump, the pose."""
+
+    __slots__ = ("_noise", "_rng", "_x", "_y", "_yaw")
+
+    def __init__(self, start: Pose2D, noise: float, rng: np.random.Generator | None) -> None:
+        if noise < 0.0:
+            raise ValueError(f"odometry noise must be >= 0, got {noise}")
+        if noise > 0.0 and rng is None:
+            raise ValueError("odometry noise needs a seeded generator")
+        self._noise = noise
+        self._rng = rng
+        self._x, self._y, self._yaw = start.x, start.y, start.yaw
+
+    def shift(self, dx: float, dy: float, dyaw: float) -> None:
+        """Move the pose by an offset (an odometry jump): world axes, radians."""
+        self._x += dx
+        self._y += dy
+        self._yaw = wrap_angle(self._yaw + dyaw)
+
+    @property
+    def pose(self) -> Pose2D:
+        return Pose2D(self._x, self._y, self._yaw)
+
+
+class WheelOdometry(_DeadReckoning):
     """Midpoint integration of a differential drive's wheel angles."""
 
-    __slots__ = ("_b", "_left", "_noise", "_r", "_right", "_rng", "_v", "_w", "_x", "_y", "_yaw")
+    __slots__ = ("_b", "_left", "_r", "_right", "_v", "_w")
 
     def __init__(
         self,
@@ -31,15 +56,9 @@ class WheelOdometry:
         noise: float = 0.0,
         rng: np.random.Generator | None = None,
     ) -> None:
-        if noise < 0.0:
-            raise ValueError(f"odometry noise must be >= 0, got {noise}")
-        if noise > 0.0 and rng is None:
-            raise ValueError("odometry noise needs a seeded generator")
+        super().__init__(start, noise, rng)
         self._r = wheel_radius
         self._b = wheel_separation
-        self._noise = noise
-        self._rng = rng
-        self._x, self._y, self._yaw = start.x, start.y, start.yaw
         self._left, self._right = left_angle, right_angle
         self._v = self._w = 0.0
 
@@ -67,38 +86,22 @@ class WheelOdometry:
         self._v = 0.5 * self._r * (left_rate + right_rate)
         self._w = self._r * (right_rate - left_rate) / self._b
 
-    def shift(self, dx: float, dy: float, dyaw: float) -> None:
-        """Move the pose by an offset (an odometry jump): world axes, radians."""
-        self._x += dx
-        self._y += dy
-        self._yaw = wrap_angle(self._yaw + dyaw)
-
-    @property
-    def pose(self) -> Pose2D:
-        return Pose2D(self._x, self._y, self._yaw)
-
     @property
     def twist(self) -> Twist2D:
         return Twist2D(self._v, self._w)
 
 
-class BodyOdometry:
+class BodyOdometry(_DeadReckoning):
     """A holonomic base's odometry: its wheels (mecanum or omni) measure the body's velocity in its own frame, so
     this integrates the body's velocity (forward, sideways, turn) turned into the frame of the odometry's own
     heading, at the midpoint of each step. Noise as :class:`WheelOdometry`'s, on each axis's travel; a bump or a
     push is measured as the motion it is (a holonomic base's rollers slip sideways by design, so the model has no
     wheel slip to miss)."""
 
-    __slots__ = ("_noise", "_rng", "_twist", "_x", "_y", "_yaw")
+    __slots__ = ("_twist",)
 
     def __init__(self, start: Pose2D, noise: float = 0.0, rng: np.random.Generator | None = None) -> None:
-        if noise < 0.0:
-            raise ValueError(f"odometry noise must be >= 0, got {noise}")
-        if noise > 0.0 and rng is None:
-            raise ValueError("odometry noise needs a seeded generator")
-        self._noise = noise
-        self._rng = rng
-        self._x, self._y, self._yaw = start.x, start.y, start.yaw
+        super().__init__(start, noise, rng)
         self._twist = Twist2D()
 
     def update(self, v: float, vy: float, w: float, dt: float, scale: float = 1.0, yaw_bias: float = 0.0) -> None:
@@ -116,16 +119,6 @@ class BodyOdometry:
         self._y += s * dx + c * dy
         self._yaw = wrap_angle(self._yaw + dyaw)
         self._twist = Twist2D(scale * v, scale * w, scale * vy)
-
-    def shift(self, dx: float, dy: float, dyaw: float) -> None:
-        """Move the pose by an offset (an odometry jump): world axes, radians."""
-        self._x += dx
-        self._y += dy
-        self._yaw = wrap_angle(self._yaw + dyaw)
-
-    @property
-    def pose(self) -> Pose2D:
-        return Pose2D(self._x, self._y, self._yaw)
 
     @property
     def twist(self) -> Twist2D:
