@@ -15,12 +15,20 @@ export interface WorldObject {
   readonly colour?: readonly number[];
 }
 
+/** A robot's outline on the floor in its own frame (x forward, y left), as world.json gives a robot read from a
+ * URDF or xacro description (docs/artifacts.md; contract/vocabulary.json footprints). */
+export type RobotFootprint =
+  | { readonly type: "polygon"; readonly points: readonly (readonly number[])[] }
+  | { readonly type: "circle"; readonly x: number; readonly y: number; readonly radius: number };
+
 export interface World {
   readonly bounds: readonly number[];
   readonly objects: readonly WorldObject[];
   readonly robot: {
     readonly name: string;
     readonly size: readonly number[];
+    /** Absent for a box robot, whose footprint is its size rectangle centred on its pose. */
+    readonly footprint?: RobotFootprint;
     readonly lidar?: { readonly beams: number; readonly rangeMin: number; readonly rangeMax: number };
   } | null;
 }

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: EPL-2.0
 // World metres to canvas pixels (x right, y up in the world; y down on the canvas), and footprints.
-import type { World, WorldObject } from "./config";
+import type { RobotFootprint, World, WorldObject } from "./config";
 
 export type Bounds = readonly [number, number, number, number];
 
@@ -45,6 +45,39 @@ export function boxCorners(x: number, y: number, sx: number, sy: number, yaw: nu
   const hy = sy / 2;
   return [[-hx, -hy], [hx, -hy], [hx, hy], [-hx, hy]].map(
     ([dx = 0, dy = 0]) => [x + dx * c - dy * s, y + dx * s + dy * c] as [number, number]);
+}
+
+/** A robot's outline read from world.json: a circle, or a polygon of at least three vertices; null (draw the box)
+ * for a box robot and for a footprint that does not read, as the report's map does. */
+export type RobotOutline =
+  | { readonly type: "polygon"; readonly points: readonly [number, number][] }
+  | { readonly type: "circle"; readonly x: number; readonly y: number; readonly radius: number };
+
+export function robotOutline(footprint: RobotFootprint | undefined): RobotOutline | null {
+  if (typeof footprint !== "object" || footprint === null) return null;
+  const finite = (v: unknown): v is number => typeof v === "number" && Number.isFinite(v);
+  if (footprint.type === "circle") {
+    const { x, y, radius } = footprint;
+    return finite(x) && finite(y) && finite(radius) && radius > 0 ? { type: "circle", x, y, radius } : null;
+  }
+  if (footprint.type === "polygon" && Array.isArray(footprint.points) && footprint.points.length >= 3) {
+    const points: [number, number][] = [];
+    for (const point of footprint.points) {
+      const [px, py] = Array.isArray(point) ? point : [];
+      if (!finite(px) || !finite(py)) return null;
+      points.push([px, py]);
+    }
+    return { type: "polygon", points };
+  }
+  return null;
+}
+
+/** Points of the robot's frame placed at pose (x, y, yaw): turned about the robot's origin, as the monitor does. */
+export function placed(points: readonly (readonly [number, number])[], x: number, y: number,
+                       yaw: number): [number, number][] {
+  const c = Math.cos(yaw);
+  const s = Math.sin(yaw);
+  return points.map(([px, py]) => [x + px * c - py * s, y + px * s + py * c] as [number, number]);
 }
 
 /** Whether world point (px, py) lies on the body's footprint (a turned box, or a disc for a cylinder). */

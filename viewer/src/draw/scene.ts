@@ -3,7 +3,7 @@
 // and, every frame, what moves: goals by task state, humans, the laser scan, the odometry ghost and the
 // robot in the colour of its zone.
 import type { MovingObject, StateMessage, ViewConfig } from "../config";
-import { boxCorners, Transform, worldBounds } from "../geometry";
+import { boxCorners, placed, robotOutline, type RobotOutline, Transform, worldBounds } from "../geometry";
 import type { LiveModel, Zone } from "../model";
 import { HUMAN, LASER, ROBOT_BELIEVED, ROBOT_TRUE, signalColour, TASK, ZONE } from "./colours";
 import { Layer } from "./layer";
@@ -37,6 +37,7 @@ export class MapView {
   private readonly movers = new Map<string, Mover>();
   private readonly radii = new Map<string, number>();
   private readonly robotSize: [number, number];
+  private readonly robotOutline: RobotOutline | null;
   private readonly lidarMax: number;
   private picture: MapPicture | null = null;
 
@@ -47,6 +48,7 @@ export class MapView {
       if (body.category === "HUMAN" || body.category === "DYNAMIC") this.radii.set(body.name, (body.size[0] ?? 0.5) / 2);
     }
     this.robotSize = [world?.robot?.size[0] ?? 0.3, world?.robot?.size[1] ?? 0.3];
+    this.robotOutline = robotOutline(world?.robot?.footprint);
     this.lidarMax = world?.robot?.lidar?.rangeMax ?? 3.5;
     const occupancy = config.occupancy;
     if (occupancy !== null && occupancy !== undefined) {
@@ -236,14 +238,23 @@ export class MapView {
     }
   }
 
-  /** The robot's footprint with its heading; zone null draws the odometry ghost (dashed, hollow). */
+  /** The robot's footprint (its description's outline, else its box) with its heading; zone null draws the
+   * odometry ghost (dashed, hollow). */
   private drawRobot(ctx: CanvasRenderingContext2D, pose: [number, number, number], zone: Zone | null): void {
     const tf = this.transform;
     const [x, y, yaw] = pose;
     const [sx, sy] = this.robotSize;
+    const outline = this.robotOutline;
     ctx.beginPath();
-    for (const [cx, cy] of boxCorners(x, y, sx, sy, yaw)) ctx.lineTo(tf.x(cx), tf.y(cy));
-    ctx.closePath();
+    if (outline?.type === "circle") {
+      // the circle's centre may lie off the robot's origin (a description's disc), so it turns with the pose
+      const [[cx, cy]] = placed([[outline.x, outline.y]], x, y, yaw) as [[number, number]];
+      ctx.arc(tf.x(cx), tf.y(cy), outline.radius * tf.scale, 0, 2 * Math.PI);
+    } else {
+      const corners = outline === null ? boxCorners(x, y, sx, sy, yaw) : placed(outline.points, x, y, yaw);
+      for (const [cx, cy] of corners) ctx.lineTo(tf.x(cx), tf.y(cy));
+      ctx.closePath();
+    }
     if (zone !== null) {
       ctx.fillStyle = ZONE[zone];
       ctx.fill();
