@@ -34,6 +34,14 @@ def test_odometry_and_tf_carry_the_pose_in_their_frames() -> None:
     assert len(m.transforms(1.0, Pose2D(0, 0), FRAMES, with_map=False).transforms) == 1
 
 
+def test_tf_static_places_the_scans_frame_at_the_lidar_s_pose() -> None:
+    [lidar] = m.static_transforms((0.05, -0.01, 0.18, -2.5), FRAMES).transforms
+    assert (lidar.header.frame_id, lidar.child_frame_id, lidar.header.stamp) == ("base_link", "base_scan", m.stamp(0.0))
+    position = lidar.transform.translation
+    assert (position.x, position.y, position.z, m.yaw_of(lidar.transform.rotation)) == pytest.approx(
+        (0.05, -0.01, 0.18, -2.5))
+
+
 def test_cmd_vel_s_linear_y_is_the_sideways_speed_both_ways() -> None:
     from geometry_msgs.msg import Twist
 

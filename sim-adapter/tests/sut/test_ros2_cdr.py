@@ -63,7 +63,7 @@ SERVICE_TYPES = [t.NavigateToPose_SendGoal_Request, t.NavigateToPose_SendGoal_Re
                  t.CancelGoal_Response, t.NavigateToPose_GetResult_Request, t.NavigateToPose_GetResult_Response]
 ALL_TYPES = [t.Time, t.Header, t.Vector3, t.Point, t.Quaternion, t.Pose, t.PoseWithCovariance, t.Twist,
              t.TwistWithCovariance, t.Transform, t.TransformStamped, t.Odometry, t.MapMetaData, t.OccupancyGrid,
-             t.LaserScan, t.TFMessage, t.Clock, t.Duration, t.PoseStamped, t.UUID, t.GoalInfo, t.GoalStatus,
+             t.LaserScan, t.TFMessage, t.Clock, t.String, t.Duration, t.PoseStamped, t.UUID, t.GoalInfo, t.GoalStatus,
              t.GoalStatusArray, t.NavigateToPose_Goal, t.NavigateToPose_Feedback,
              t.NavigateToPose_FeedbackMessage, *SERVICE_TYPES]
 #: rmw_cyclonedds's request header before a service's fields: not a ROS field.
@@ -145,6 +145,9 @@ def samples() -> dict[str, IdlStruct]:
         "laser_scan_empty": t.LaserScan(),
         "tf": m.transforms(4.5, Pose2D(-3.0, 0.5, 2.0), FRAMES, with_map=True),
         "tf_empty": t.TFMessage(),
+        "tf_static": m.static_transforms((0.05, -0.01, 0.18, 3.0), FRAMES),
+        "robot_description": m.robot_description('<robot name="rü">\n  <link name="base_footprint"/>\n</robot>\n'),
+        "string_empty": t.String(),
         "clock": m.clock(0.3),
         "duration": t.Duration(sec=-3, nanosec=999_999_999),
         "pose_stamped": t.PoseStamped(header=m.header(2.0, "map"), pose=t.Pose(orientation=m.quaternion(1.0))),
@@ -237,7 +240,12 @@ def test_rei_values_map_to_the_ros_fields() -> None:
     cells = np.array(grid.data).reshape(60, 80)
     assert cells[30, 30] == 100 and cells[0, 0] == 0 and set(grid.data) == {0, 100}
     assert {topic.dds_name for topic in m.TOPICS.values()} == {
-        "rt/clock", "rt/odom", "rt/tf", "rt/scan", "rt/map", "rt/cmd_vel"}
+        "rt/clock", "rt/odom", "rt/tf", "rt/scan", "rt/map", "rt/robot_description", "rt/tf_static", "rt/cmd_vel"}
+    [lidar] = m.static_transforms((0.05, -0.01, 0.18, 0.5), FRAMES).transforms
+    assert (lidar.header.frame_id, lidar.child_frame_id, lidar.header.stamp) == ("base_link", "base_scan", m.stamp(0.0))
+    position = lidar.transform.translation
+    assert (position.x, position.y, position.z, m.yaw_of(lidar.transform.rotation)) == pytest.approx(
+        (0.05, -0.01, 0.18, 0.5))
 
 
 # --- through DDS ---------------------------------------------------------------------------------------------
@@ -287,7 +295,8 @@ def test_each_topic_crosses_dds_between_two_participants_on_loopback(tmp_path) -
     domain_id = lease.domain
     values = samples()
     sent = {"clock": values["clock"], "odom": values["odometry"], "tf": values["tf"], "scan": values["laser_scan"],
-            "map": values["occupancy_grid"], "cmd_vel": values["twist"]}
+            "map": values["occupancy_grid"], "robot_description": values["robot_description"],
+            "tf_static": values["tf_static"], "cmd_vel": values["twist"]}
     assert set(sent) == set(m.TOPICS)
     receiver = subprocess.Popen(
         [sys.executable, "-c", RECEIVER, str(domain_id), loopback_config(str(tmp_path / "receiver.log")),

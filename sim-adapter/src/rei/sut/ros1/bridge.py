@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: EPL-2.0
 """The bridge node: REI's external SUT on one side, the robot a ROS 1 navigation stack expects on the other.
 
+Before the stack starts it sets the robot's /robot_description and latches /tf_static (rei.sut.ros_description).
 Per control period (REI's tick, rei.sut.ros_bridge) it publishes /odom, /tf and (when new) /scan stamped with the
 tick's time, then /clock, and waits for the stack's next /cmd_vel. The stack runs on ``use_sim_time``, so its timers advance only
 with this clock: simulation and stack move in lockstep, as fast as the stack answers. REI's goals become goals of
@@ -38,6 +39,7 @@ from rei.sut.ros_bridge import (
     session_occupancy,
 )
 from rei.sut.ros_conventions import ACTIONLIB_FINAL, CMD_WAIT
+from rei.sut.ros_description import RobotDescription, case_robot_description
 
 
 @dataclass(frozen=True, slots=True)
@@ -130,6 +132,16 @@ class Ros1Bridge(RosBridge):
         self._clock = rospy.Publisher("/clock", Clock, queue_size=10, latch=True, tcp_nodelay=True)
         self._clock.publish(self.m.clock(-PRE_START))
 
+    def publish_description(self, description: RobotDescription) -> None:
+        """/robot_description (a parameter in ROS 1) and the latched /tf_static, as robot_state_publisher gives
+        them; before the stack starts, so its nodes find both when they come up."""
+        import rospy
+        from tf2_msgs.msg import TFMessage
+
+        rospy.set_param("/robot_description", description.urdf)
+        self._tf_static = rospy.Publisher("/tf_static", TFMessage, queue_size=1, latch=True)
+        self._tf_static.publish(self.m.static_transforms(description.lidar, self.frames))
+
     def _await_server(self) -> None:
         """Until the stack's move_base server answers, in wall time (its own timeout counts the frozen sim time)."""
         found = threading.Event()
@@ -181,6 +193,11 @@ def _bridge(command: list[str], home: Path, master_uri: str | None, settings: Br
         stack.callback(rospy.signal_shutdown, "the run is over")
         bridge = Ros1Bridge(settings, None)
         bridge.start_clock()
+        description = case_robot_description()
+        if description is not None:
+            bridge.publish_description(description)
+        else:
+            print("rei ros1-bridge: REI_CASE_DIR not set: no /robot_description or /tf_static", flush=True)
         if command:
             print(f"rei ros1-bridge: master {master_uri}; starting {shlex.join(command)} (output: {home / STACK_LOG})",
                   flush=True)

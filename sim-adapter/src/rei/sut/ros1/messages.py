@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: EPL-2.0
-"""REI's values as ROS 1 messages (and back): clock, odometry, tf, laser scan, occupancy grid, move_base goal.
+"""REI's values as ROS 1 messages (and back): clock, odometry, tf, static tf, laser scan, occupancy grid, move_base goal.
 
 Call ``rei.sut.ros1.environment.import_rospy()`` before importing this module. Times are simulation seconds
 plus ``TIME_OFFSET``: rospy takes time 0 for "no clock yet", so the run's t = 0 must be a later ROS time.
@@ -66,6 +66,17 @@ def transforms(t: float, odom: Pose2D, frames: Frames, *, with_map: bool) -> TFM
     if with_map:
         edges.insert(0, transform(frames.map, frames.odom, Pose2D(0.0, 0.0, 0.0)))
     return TFMessage(transforms=edges)
+
+
+def static_transforms(lidar: tuple[float, float, float, float], frames: Frames) -> TFMessage:
+    """/tf_static: base_link -> the scans' frame at the lidar's ``(x, y, z, yaw)``, as robot_state_publisher
+    publishes a URDF's fixed joints (stamped at t = 0: tf2 takes a static transform at every time)."""
+    x, y, z, yaw = lidar
+    stamped = TransformStamped()
+    stamped.header.stamp, stamped.header.frame_id, stamped.child_frame_id = stamp(0.0), frames.base, frames.laser
+    stamped.transform.translation.x, stamped.transform.translation.y, stamped.transform.translation.z = x, y, z
+    stamped.transform.rotation = quaternion(yaw)
+    return TFMessage(transforms=[stamped])
 
 
 def laser_scan(scan: LaserScan, scan_time: float, frames: Frames) -> RosLaserScan:

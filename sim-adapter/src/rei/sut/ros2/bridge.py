@@ -2,6 +2,7 @@
 """The ROS 2 bridge node: REI's external SUT on one side, on the other the robot a ROS 2 navigation stack (Nav2)
 expects, on plain DDS - no ROS 2 installation is needed on REI's side.
 
+Before the stack starts it publishes the robot's /robot_description and /tf_static (rei.sut.ros_description).
 Per control period (REI's tick, rei.sut.ros_bridge) it publishes /odom, /tf and (when new) /scan stamped with the
 tick's time, then /clock, and waits for the stack's next /cmd_vel. The stack's nodes run with ``use_sim_time``, so their timers
 advance only with this clock: simulation and stack move in lockstep. REI's goals become goals of nav2's
@@ -38,6 +39,7 @@ from rei.sut.ros_bridge import (
     session_occupancy,
 )
 from rei.sut.ros_conventions import CMD_WAIT, Frames
+from rei.sut.ros_description import RobotDescription, case_robot_description
 
 #: Wall seconds between repetitions of the start clock while the stack comes up.
 START_CLOCK_PERIOD = 0.2
@@ -135,6 +137,12 @@ class Ros2Bridge(RosBridge):
 
     # -- set-up and DDS callbacks ------------------------------------------------------------------------------
 
+    def publish_description(self, description: RobotDescription) -> None:
+        """/robot_description and /tf_static, transient-local (as robot_state_publisher gives them): written
+        before the stack starts and kept for every reader that comes later."""
+        self._writers["robot_description"].write(self.m.robot_description(description.urdf))
+        self._writers["tf_static"].write(self.m.static_transforms(description.lidar, self.frames))
+
     def _cancel(self, index: int) -> None:
         from rei.sut.ros2 import types as t
 
@@ -217,6 +225,11 @@ def _bridge(command: list[str], home: Path, settings: Ros2BridgeSettings) -> int
         with contextlib.ExitStack() as stack:
             bridge = Ros2Bridge(settings, lease.domain, participant)
             print(f"rei ros2-bridge: ROS domain {lease.domain} (the run's own), loopback only", flush=True)
+            description = case_robot_description()
+            if description is not None:
+                bridge.publish_description(description)
+            else:
+                print("rei ros2-bridge: REI_CASE_DIR not set: no /robot_description or /tf_static", flush=True)
             if command:
                 print(f"rei ros2-bridge: starting {shlex.join(command)} with ROS_DOMAIN_ID={lease.domain} "
                       f"(output: {home / STACK_LOG})", flush=True)

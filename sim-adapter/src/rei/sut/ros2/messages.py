@@ -75,6 +75,19 @@ def transforms(t_sim: float, odom: Pose2D, frames: Frames, *, with_map: bool) ->
     return t.TFMessage(transforms=edges)
 
 
+def static_transforms(lidar: tuple[float, float, float, float], frames: Frames) -> t.TFMessage:
+    """/tf_static: base_link -> the scans' frame at the lidar's ``(x, y, z, yaw)``, as robot_state_publisher
+    publishes a URDF's fixed joints (stamped at t = 0: tf2 takes a static transform at every time)."""
+    x, y, z, yaw = lidar
+    return t.TFMessage(transforms=[t.TransformStamped(
+        header=header(0.0, frames.base), child_frame_id=frames.laser,
+        transform=t.Transform(translation=t.Vector3(x=float(x), y=float(y), z=float(z)), rotation=quaternion(yaw)))])
+
+
+def robot_description(urdf: str) -> t.String:
+    return t.String(data=urdf)
+
+
 def laser_scan(scan: LaserScan, scan_time: float, frames: Frames) -> t.LaserScan:
     count = len(scan.ranges)
     return t.LaserScan(
@@ -145,6 +158,8 @@ class Topic:
 #: alike (rclcpp's TimeSource reads /clock with ClockQoS, best-effort keep-last 1; nav2's costmaps read /scan
 #: with SensorDataQoS, best-effort), whereas a best-effort writer would miss reliable readers. /map is
 #: transient-local (depth 1), as nav2's map_server publishes it, so late subscribers get it (ROS 1's latching).
+#: /robot_description and /tf_static are transient-local keep-last 1 too, as robot_state_publisher and tf2's
+#: StaticTransformBroadcaster publish them: written once, before the stack starts, and kept for late readers.
 #: /cmd_vel is read reliable (the default, as nav2's controller_server and teleop publish it); a stack publishing
 #: it best-effort would not match.
 TOPICS: dict[str, Topic] = {
@@ -153,5 +168,7 @@ TOPICS: dict[str, Topic] = {
     "tf": Topic("/tf", t.TFMessage, _qos(depth=100), True),
     "scan": Topic("/scan", t.LaserScan, _qos(), True),
     "map": Topic("/map", t.OccupancyGrid, _qos(transient_local=True, depth=1), True),
+    "robot_description": Topic("/robot_description", t.String, _qos(transient_local=True, depth=1), True),
+    "tf_static": Topic("/tf_static", t.TFMessage, _qos(transient_local=True, depth=1), True),
     "cmd_vel": Topic("/cmd_vel", t.Twist, _qos(), False),
 }

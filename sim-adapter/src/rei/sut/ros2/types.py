@@ -153,6 +153,11 @@ class Clock(IdlStruct, typename="rosgraph_msgs::msg::dds_::Clock_"):
 
 
 @dataclass
+class String(IdlStruct, typename="std_msgs::msg::dds_::String_"):
+    data: str = ""
+
+
+@dataclass
 class Duration(IdlStruct, typename="builtin_interfaces::msg::dds_::Duration_"):
     sec: int32 = 0
     nanosec: uint32 = 0
