@@ -291,6 +291,9 @@ def test_what_rei_sends_and_takes_is_what_the_document_says(
     robot = received[0][1]["robot"]
     assert robot["drive"] == "holonomic" and robot["max_lateral"] == robot["max_linear"]
     assert robot["outline"] == {"type": "circle", "x": 0.0, "y": 0.0, "radius": 0.17}  # round_bot.urdf's body
+    # the lidar where round_bot.urdf's laser joint puts it (a box robot's at its centre: the lockstep run's)
+    assert (robot["lidar"]["x"], robot["lidar"]["y"], robot["lidar"]["yaw"]) == (0.05, 0.0, 0.0)
+    assert (hello["robot"]["lidar"]["x"], hello["robot"]["lidar"]["y"], hello["robot"]["lidar"]["yaw"]) == (0, 0, 0)
     assert all(len(p["odom"]["twist"]) == 3 for name, p in received if name == "tick")
     assert sim["sut"]["clamped"] == 0  # its vy is within its limit
     assert sim["sut"]["round_trip_ms"] is None and sim["sut"]["clock"] == "realtime"

@@ -3,12 +3,14 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
+import numpy as np
 import pytest
 
 from rei.geometry import Pose2D, Twist2D
-from rei.sut.api import NavGoal, NavStatus
+from rei.sut.api import LaserScan, NavGoal, NavStatus
 from rei.sut.nav import NavConfig, NavController
 
 from .kinematic import Disc, KinematicWorld, drive, rect_room, room, shuttle
@@ -215,3 +217,15 @@ def test_config_parse_reports_unknown_and_bad_values():
         NavConfig.parse("max_linear=fast")
     with pytest.raises(ValueError, match="must be > 0"):
         NavConfig(resolution=0.0)
+
+
+def test_the_scan_is_read_from_where_the_lidar_sits_on_the_robot() -> None:
+    """A robot read from a description may carry its lidar off its centre and turned (StaticMap.lidar): a beam's
+    hit is that far from the lidar, not from the centre; a box robot's lidar is at its centre."""
+    scan = LaserScan(t=0.0, angle_min=0.0, angle_increment=math.pi / 2, range_min=0.1, range_max=3.5,
+                     ranges=np.array([1.0, np.inf, 2.0, np.inf]))
+    centred, turned = NavController(), NavController()
+    centred.reset(rect_room(4, 4), Pose2D(2.0, 2.0, 0.0))
+    turned.reset(dataclasses.replace(rect_room(4, 4), lidar=(0.05, -0.02, math.pi / 2)), Pose2D(2.0, 2.0, 0.0))
+    assert centred._scan_local(scan) == pytest.approx(np.array([[1.0, 0.0], [-2.0, 0.0]]))
+    assert turned._scan_local(scan) == pytest.approx(np.array([[0.05, 0.98], [0.05, -2.02]]))

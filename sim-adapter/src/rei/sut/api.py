@@ -32,7 +32,8 @@ class NavStatus(enum.Enum):
 
 @dataclass(frozen=True, slots=True)
 class LaserScan:
-    """One planar scan. Beam i points at ``angle_min + i * angle_increment`` in the robot frame.
+    """One planar scan. Beam i points at ``angle_min + i * angle_increment`` in the lidar's frame (the robot's,
+    unless the robot's description places its lidar elsewhere: ``StaticMap.lidar``).
 
     Ranges beyond ``range_max`` (nothing hit) are reported as ``inf``.
     """
@@ -75,6 +76,9 @@ class StaticMap:
     bounds: tuple[float, float, float, float]
     obstacles: tuple[tuple[float, float, float, float, float], ...]
     robot_size: tuple[float, float]
+    #: Where the lidar sits on the robot, ``(x, y, yaw)`` in its frame: a scan's beams start there and its angle 0
+    #: is that yaw (a robot read from a description; a box robot's lidar is at its centre, facing ahead).
+    lidar: tuple[float, float, float] = (0.0, 0.0, 0.0)
 
     @classmethod
     def of_world(cls, world: WorldSpec) -> StaticMap:
@@ -82,7 +86,9 @@ class StaticMap:
         footprint: one definition for the simulation's map and the metrics' shortest path (SPL)."""
         obstacles = tuple((o.pose[0], o.pose[1], o.pose[3], o.size[0], o.size[1]) for o in world.objects
                           if o.category in (Category.WALL, Category.STATIC))
-        return cls(bounds=world.bounds, obstacles=obstacles, robot_size=(world.robot.size[0], world.robot.size[1]))
+        lidar = world.robot.lidar
+        return cls(bounds=world.bounds, obstacles=obstacles, robot_size=(world.robot.size[0], world.robot.size[1]),
+                   lidar=(lidar.x, lidar.y, lidar.yaw))
 
 
 class Controller(ABC):

@@ -149,9 +149,11 @@ def read_static_map(hello: Mapping[str, Any]) -> StaticMap | None:
     if data is None:
         return None
     size_x, size_y = hello["robot"]["footprint"]
+    lidar = hello["robot"].get("lidar", {})
     return StaticMap(bounds=tuple(float(v) for v in data["bounds"]),  # type: ignore[arg-type]
                      obstacles=tuple(tuple(float(v) for v in box) for box in data["obstacles"]),  # type: ignore[misc]
-                     robot_size=(float(size_x), float(size_y)))
+                     robot_size=(float(size_x), float(size_y)),
+                     lidar=(float(lidar.get("x", 0.0)), float(lidar.get("y", 0.0)), float(lidar.get("yaw", 0.0))))
 
 
 def read_occupancy(hello: Mapping[str, Any], case_dir: Path | None = None) -> Path | None:

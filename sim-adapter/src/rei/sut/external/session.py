@@ -40,7 +40,8 @@ def external_sut(options: SutOptions, client: WampClient, run_id: str, out_dir: 
                "drive": robot.drive.kind, "max_lateral": limits.max_lateral,
                "outline": protocol.outline(robot.outline),
                "lidar": {"beams": robot.lidar.beams, "range_min": float(robot.lidar.range_min),
-                         "range_max": float(robot.lidar.range_max), "rate": float(robot.lidar.rate)}}))
+                         "range_max": float(robot.lidar.range_max), "rate": float(robot.lidar.rate),
+                         "x": float(robot.lidar.x), "y": float(robot.lidar.y), "yaw": float(robot.lidar.yaw)}}))
     url = options.router_url or client.url
     # the simulation's own session is RawSocket when it can be (rei sim, rei run): offered to the SUT too, but
     # only where it reaches the same router as the URL the SUT was given

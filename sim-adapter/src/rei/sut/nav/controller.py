@@ -66,6 +66,7 @@ class NavController(Controller):
         self._scan_world = np.zeros((0, 2))
         self._tracker = DynamicTracker()
         self._trig: tuple[tuple[int, float, float], np.ndarray, np.ndarray] | None = None
+        self._lidar = (0.0, 0.0, 0.0)
         self._pose: Pose2D | None = None
         self.replans = 0
         self.recoveries = 0
@@ -91,6 +92,7 @@ class NavController(Controller):
         return None if self._path is None else self._path.points
 
     def reset(self, static_map: StaticMap, start: Pose2D) -> None:
+        self._lidar, self._trig = static_map.lidar, None
         self._grid = CostGrid(static_map, self.config)
         self._localizer = Localizer(self._grid, self.config.match_gate) if self.config.localize else None
         self._scan_t, self._pose = None, None
@@ -294,16 +296,19 @@ class NavController(Controller):
         return self._last_cmd
 
     def _scan_local(self, scan: LaserScan) -> np.ndarray:
-        """Robot-frame points of a scan's valid beams (the lidar sits at the base's centre)."""
+        """Robot-frame points of a scan's valid beams, from where the lidar sits on the robot."""
         ranges = np.asarray(scan.ranges, dtype=float)
         key = (len(ranges), scan.angle_min, scan.angle_increment)
         if self._trig is None or self._trig[0] != key:
-            angles = scan.angle_min + scan.angle_increment * np.arange(len(ranges))
+            angles = scan.angle_min + scan.angle_increment * np.arange(len(ranges)) + self._lidar[2]
             self._trig = (key, np.cos(angles), np.sin(angles))
         _, cos, sin = self._trig
         ok = np.isfinite(ranges) & (ranges >= scan.range_min) & (ranges <= scan.range_max)
         r = ranges[ok]
-        return np.column_stack((r * cos[ok], r * sin[ok]))
+        lx, ly, _ = self._lidar
+        if lx == 0.0 and ly == 0.0:
+            return np.column_stack((r * cos[ok], r * sin[ok]))
+        return np.column_stack((lx + r * cos[ok], ly + r * sin[ok]))
 
     @staticmethod
     def _to_world(pose: Pose2D, local: np.ndarray) -> np.ndarray:
