@@ -41,7 +41,8 @@ final class Messages {
 		Session.Robot r = new Session.Robot(text(robot, "name", what), footprint[0], footprint[1],
 				number(robot, "max_linear", what), number(robot, "max_angular", what),
 				new Session.Lidar((int) integer(lidar, "beams", what), number(lidar, "range_min", what),
-						number(lidar, "range_max", what), number(lidar, "rate", what)),
+						number(lidar, "range_max", what), number(lidar, "rate", what), orZero(lidar, "x", what),
+						orZero(lidar, "y", what), orZero(lidar, "yaw", what)),
 				drive == null ? Session.DRIVES.get(0) : text(robot, "drive", what),
 				robot.has("max_lateral") ? number(robot, "max_lateral", what) : 0.0, outline(robot.get("outline")));
 		String clock = text(m, "clock", what);
@@ -201,6 +202,11 @@ final class Messages {
 			throw malformed(what, "'" + name + "' is not a string");
 		}
 		return v.asText();
+	}
+
+	/** A field that came later (a lidar's place on the robot): 0 from a simulation that does not send it. */
+	private static double orZero(JsonNode m, String name, String what) {
+		return m.has(name) ? number(m, name, what) : 0.0;
 	}
 
 	private static double number(JsonNode m, String name, String what) {

@@ -57,8 +57,15 @@ public record Session(int protocol, String runId, Clock clock, double controlRat
 		}
 	}
 
-	/** The laser: beams per scan, ranges (m), scans per second. */
-	public record Lidar(int beams, double rangeMin, double rangeMax, double rate) {
+	/**
+	 * The laser: beams per scan, ranges (m), scans per second, and where it sits on the robot ({@code x}, {@code y}
+	 * in the robot's frame, m; {@code yaw}, rad, the direction of a scan's angle 0): 0 for a box robot.
+	 */
+	public record Lidar(int beams, double rangeMin, double rangeMax, double rate, double x, double y, double yaw) {
+
+		public Lidar(int beams, double rangeMin, double rangeMax, double rate) {
+			this(beams, rangeMin, rangeMax, rate, 0, 0, 0);
+		}
 	}
 
 	/**

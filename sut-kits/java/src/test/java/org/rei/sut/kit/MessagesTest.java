@@ -62,8 +62,16 @@ class MessagesTest {
 		assertEquals(new Pose(0.5, 0.5, 0.0), s.start());
 		assertEquals(0.26, s.robot().maxLinear());
 		assertEquals(360, s.robot().lidar().beams());
+		assertEquals(0.0, s.robot().lidar().x(), "a simulation without the lidar's place: at the centre");
 		assertEquals(2, s.goals());
 		assertNull(s.map());
+	}
+
+	@Test
+	void decodesWhereTheLidarSits() throws Exception {
+		String placed = HELLO.replace("\"rate\": 10.0}", "\"rate\": 10.0, \"x\": 0.05, \"y\": -0.02, \"yaw\": 3}");
+		Session s = Messages.session(msgpack(placed));
+		assertEquals(new Session.Lidar(360, 0.12, 3.5, 10.0, 0.05, -0.02, 3.0), s.robot().lidar());
 	}
 
 	@Test
