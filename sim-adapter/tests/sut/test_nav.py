@@ -229,3 +229,15 @@ def test_the_scan_is_read_from_where_the_lidar_sits_on_the_robot() -> None:
     turned.reset(dataclasses.replace(rect_room(4, 4), lidar=(0.05, -0.02, math.pi / 2)), Pose2D(2.0, 2.0, 0.0))
     assert centred._scan_local(scan) == pytest.approx(np.array([[1.0, 0.0], [-2.0, 0.0]]))
     assert turned._scan_local(scan) == pytest.approx(np.array([[0.05, 0.98], [0.05, -2.02]]))
+
+
+def test_the_nav_controller_plans_with_the_robots_own_footprint_unless_told_otherwise() -> None:
+    from rei.sut.registry import ControllerRegistry
+
+    burger = dataclasses.replace(rect_room(4, 4), robot_size=(0.138, 0.178))
+    own = ControllerRegistry(()).create("nav")
+    own.reset(burger, Pose2D(2.0, 2.0, 0.0))
+    assert (own.config.footprint_x, own.config.footprint_y) == (0.138, 0.178)  # type: ignore[attr-defined]
+    told = ControllerRegistry(()).create("nav:footprint_x=0.3,footprint_y=0.3")
+    told.reset(burger, Pose2D(2.0, 2.0, 0.0))
+    assert (told.config.footprint_x, told.config.footprint_y) == (0.3, 0.3)  # type: ignore[attr-defined]

@@ -30,7 +30,10 @@ def _nav(arg: str) -> Controller:
     from rei.sut.nav import NavConfig, NavController
 
     config = NavConfig.parse(arg)
-    return NavController(config.max_linear, config.max_angular, (config.footprint_x, config.footprint_y), config)
+    # the robot's own footprint (the case's) unless the argument sets one: a Burger is not planned as a Waffle
+    given = {part.partition("=")[0].strip() for part in arg.split(",")} & {"footprint_x", "footprint_y"}
+    footprint = (config.footprint_x, config.footprint_y) if given else None
+    return NavController(config.max_linear, config.max_angular, footprint, config)
 
 
 def _script(arg: str) -> Controller:

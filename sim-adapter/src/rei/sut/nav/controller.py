@@ -33,18 +33,23 @@ class NavController(Controller):
     """Navigation to one goal at a time; heading-free (the goal's yaw is ignored).
 
     ``max_linear``, ``max_angular`` and ``footprint`` describe the robot (TurtleBot3 Waffle by default) and
-    override the same fields of ``config``, which holds the planners' tuning.
+    override the same fields of ``config``, which holds the planners' tuning; ``footprint=None``: the robot's own,
+    the static map's ``robot_size``, taken at each :meth:`reset`.
     """
 
     def __init__(
         self,
         max_linear: float = 0.26,
         max_angular: float = 1.82,
-        footprint: tuple[float, float] = (0.281, 0.306),
+        footprint: tuple[float, float] | None = (0.281, 0.306),
         config: NavConfig | None = None,
     ) -> None:
+        config = config or NavConfig()
+        self._robots_footprint = footprint is None
+        if footprint is None:
+            footprint = (config.footprint_x, config.footprint_y)
         self.config = dataclasses.replace(
-            config or NavConfig(), max_linear=max_linear, max_angular=max_angular,
+            config, max_linear=max_linear, max_angular=max_angular,
             footprint_x=footprint[0], footprint_y=footprint[1],
         )
         self._grid: CostGrid | None = None
@@ -93,6 +98,9 @@ class NavController(Controller):
 
     def reset(self, static_map: StaticMap, start: Pose2D) -> None:
         self._lidar, self._trig = static_map.lidar, None
+        if self._robots_footprint:
+            self.config = dataclasses.replace(self.config, footprint_x=static_map.robot_size[0],
+                                              footprint_y=static_map.robot_size[1])
         self._grid = CostGrid(static_map, self.config)
         self._localizer = Localizer(self._grid, self.config.match_gate) if self.config.localize else None
         self._scan_t, self._pose = None, None
