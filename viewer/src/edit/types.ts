@@ -2,6 +2,7 @@
 // The JSON of the room editor's HTTP API, as docs/room-editor.md ("Protocol") specifies it. The Diagram records
 // are bundles/org.rei.dsl.edit/.../diagram/Diagram.java written by Jackson: every component by name, nulls kept.
 // Units: metres, seconds, degrees; x right, y up, origin at the room's bottom-left corner.
+import type { RobotFootprint } from "../config";
 
 export type RoomForm = "grid" | "map" | "graph" | "occupancy";
 export type Side = "top" | "right" | "bottom" | "left";
@@ -49,6 +50,10 @@ export interface Footprint {
   sizeY: number;
   height: number;
   colour: string | null;
+  /** A robot type read from a URDF or xacro description: its file (relative to the case), arguments, lidar link. */
+  description?: { file: string; args: Record<string, string>; lidar: string | null } | null;
+  /** Its outline in the robot's frame as world.json's robot.footprint (the server reads it); null: draw the box. */
+  outline?: RobotFootprint | null;
 }
 
 export interface Item {

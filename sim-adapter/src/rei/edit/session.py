@@ -18,6 +18,7 @@ from typing import Any
 
 from rei.edit.engine import EditEngine, EngineError
 from rei.edit.occupancy import MapPictures
+from rei.edit.outlines import RobotOutlines
 
 
 class SessionConflict(RuntimeError):
@@ -65,6 +66,7 @@ class EditSession:
             raise FileNotFoundError(f"{path}: no such file")
         self._disk_changed = False
         self._maps = MapPictures()
+        self._outlines = RobotOutlines()
         self._answer = engine.request("open", path=str(path.resolve()))
 
     # -- what the page reads ------------------------------------------------------------------------------------
@@ -79,8 +81,10 @@ class EditSession:
             self._look_at_disk()
             notice, self._notice = self._notice, None
             answer = self._answer
+            folder = self.path.resolve().parent
+            diagram = self._outlines.of_diagram(_relative_map(answer.get("diagram"), folder), folder)
             return {**self._status(), "file": str(self.path), "text": answer["text"],
-                    "diagram": _relative_map(answer.get("diagram"), self.path.resolve().parent),
+                    "diagram": diagram,
                     "issues": answer.get("issues", []),
                     "palette": answer.get("palette", []), "notice": notice,
                     "occupancy": self._maps.of_diagram(answer.get("diagram"))}

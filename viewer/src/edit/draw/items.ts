@@ -4,7 +4,7 @@
 // <rect>) carrying data-kind and data-name (goals: data-index), which is what the page's one pointer listener
 // and the browser tests look for. Footprints are the catalogue's, turned by yaw like the live view's.
 import { HUMAN, ROBOT_TRUE, WALL } from "../../draw/colours";
-import { boxCorners } from "../../geometry";
+import { boxCorners, placed, robotOutline } from "../../geometry";
 import { goalKey, nameKey } from "../model";
 import type { RoomIndex } from "../room";
 import { points, r, svg, Y } from "../svg";
@@ -21,9 +21,19 @@ export type Registry = Map<string, SVGElement>;
 
 const rad = (degrees: number): number => (degrees * Math.PI) / 180;
 
-/** A footprint's outline: a disc for a cylinder, else the box turned by yaw (degrees). */
+/** A footprint's outline: a described robot's own (polygon or circle, turned by yaw about the robot's origin as
+ * the monitor does), a disc for a cylinder, else the box turned by yaw (degrees). */
 export function outline(parent: Element, x: number, y: number, footprint: Footprint, yawDegrees: number,
                         attrs: Record<string, string | number>): SVGElement {
+  const own = robotOutline(footprint.outline ?? undefined);
+  if (own?.type === "circle") {
+    const [[cx, cy] = [x, y]] = placed([[own.x, own.y]], x, y, rad(yawDegrees));
+    return svg("circle", { cx: r(cx), cy: r(Y(cy)), r: r(own.radius), "data-outline": "circle", ...attrs }, parent);
+  }
+  if (own?.type === "polygon") {
+    return svg("polygon", { points: points(placed(own.points, x, y, rad(yawDegrees))), "data-outline": "polygon",
+      ...attrs }, parent);
+  }
   if (footprint.shape === "cylinder") {
     return svg("circle", { cx: r(x), cy: r(Y(y)), r: r(footprint.sizeX / 2), ...attrs }, parent);
   }
@@ -73,12 +83,13 @@ export function drawRobot(layer: SVGGElement, labels: SVGGElement, robot: Item |
   const footprint = robot.footprint ?? ROBOT_SIZE;
   const group = svg("g", { class: "robot", "data-kind": "robot", "data-name": robot.name, "data-floor": robot.floor,
     "data-yaw": robot.yaw }, layer);
+  const span = robotSpan(footprint);
   // a robot is small (0.3 m); a halo makes it findable and easier to grab
-  svg("circle", { cx: r(robot.x), cy: r(Y(robot.y)), r: r(Math.hypot(footprint.sizeX, footprint.sizeY) * 0.6),
+  svg("circle", { cx: r(robot.x), cy: r(Y(robot.y)), r: r(span.reach * 1.2),
     fill: ROBOT_TRUE, "fill-opacity": 0.12, stroke: ROBOT_TRUE, "stroke-dasharray": "3 2", class: "halo" }, group);
   outline(group, robot.x, robot.y, footprint, robot.yaw, { fill: ROBOT_TRUE, stroke: "#0d1d4d" });
   const a = rad(robot.yaw);
-  const len = Math.max(footprint.sizeX, footprint.sizeY) * 0.95;
+  const len = span.size * 0.95;
   const tip: [number, number] = [robot.x + Math.cos(a) * len, robot.y + Math.sin(a) * len];
   svg("line", { x1: r(robot.x), y1: r(Y(robot.y)), x2: r(tip[0]), y2: r(Y(tip[1])), stroke: "#fff",
     "stroke-width": 2, class: "heading" }, group);
@@ -87,7 +98,20 @@ export function drawRobot(layer: SVGGElement, labels: SVGGElement, robot: Item |
   const right: [number, number] = [tip[0] - Math.cos(a + 0.5) * head, tip[1] - Math.sin(a + 0.5) * head];
   svg("polygon", { points: points([tip, left, right]), fill: "#fff", stroke: ROBOT_TRUE, class: "heading" }, group);
   registry.set(nameKey(robot.name), group);
-  label(labels, robot.x, robot.y - Math.max(footprint.sizeX, footprint.sizeY) * 0.9, robot.name, "robot-name");
+  label(labels, robot.x, robot.y - span.size * 0.9, robot.name, "robot-name");
+}
+
+/** How far the robot's body reaches from its origin, and its size for the heading arrow and the label: the box's
+ * for a box robot, the outline's for a described one (its catalogue sizes are the metamodel's defaults). */
+function robotSpan(footprint: Footprint): { reach: number; size: number } {
+  const own = robotOutline(footprint.outline ?? undefined);
+  if (own === null) {
+    return { reach: Math.hypot(footprint.sizeX, footprint.sizeY) / 2,
+      size: Math.max(footprint.sizeX, footprint.sizeY) };
+  }
+  const reach = own.type === "circle" ? Math.hypot(own.x, own.y) + own.radius
+    : Math.max(...own.points.map(([px, py]) => Math.hypot(px, py)));
+  return { reach, size: reach * Math.SQRT2 };
 }
 
 /**

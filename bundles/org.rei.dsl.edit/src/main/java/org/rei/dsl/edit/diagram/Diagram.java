@@ -43,8 +43,24 @@ public record Diagram(String testCase, Room room, List<Item> objects, Item robot
 			double sizeY, boolean written) {
 	}
 
-	/** What a catalogue type says about an element's outline: {@code box} or {@code cylinder}, sizes in metres. */
-	public record Footprint(String type, String shape, double sizeX, double sizeY, double height, String colour) {
+	/**
+	 * What a catalogue type says about an element's outline: {@code box} or {@code cylinder}, sizes in metres; a robot
+	 * type read from a URDF or xacro description also names it ({@code description}, else null), whose outline only
+	 * REI's Python reader computes (the room editor's server adds it).
+	 */
+	public record Footprint(String type, String shape, double sizeX, double sizeY, double height, String colour,
+			Description description) {
+
+		public Footprint(String type, String shape, double sizeX, double sizeY, double height, String colour) {
+			this(type, shape, sizeX, sizeY, height, colour, null);
+		}
+	}
+
+	/**
+	 * A robot type's description: its file's absolute path (resolved against its catalogue, as the generator does),
+	 * its xacro arguments in the catalogue's order and its lidar's link.
+	 */
+	public record Description(String file, java.util.Map<String, String> args, String lidar) {
 	}
 
 	/** Furniture or the robot on a floor; {@code x, y} is the floor's centre. */

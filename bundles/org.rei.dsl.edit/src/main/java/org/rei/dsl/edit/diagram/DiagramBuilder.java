@@ -4,14 +4,19 @@
  */
 package org.rei.dsl.edit.diagram;
 
+import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 
 import org.eclipse.emf.ecore.resource.ResourceSet;
 import org.rei.catalogue.Catalogue;
 import org.rei.catalogue.ObjectType;
+import org.rei.catalogue.RobotType;
 import org.rei.catalogue.util.Catalogues;
+import org.rei.catalogue.util.RobotDescriptions;
 import org.rei.context.AsciiLayout;
 import org.rei.context.BuildingBlock;
 import org.rei.context.ControlPoint;
@@ -209,7 +214,26 @@ public final class DiagramBuilder {
 			return null;
 		}
 		return new Diagram.Footprint(effective.getName(), effective.getShape().getLiteral().toLowerCase(),
-				effective.getSizeX(), effective.getSizeY(), effective.getSizeZ(), effective.getColour());
+				effective.getSizeX(), effective.getSizeY(), effective.getSizeZ(), effective.getColour(),
+				description(effective));
+	}
+
+	/** A described robot type's file, arguments and lidar link; null for any other type or a file not resolved. */
+	private static Diagram.Description description(ObjectType type) {
+		if (!(type instanceof RobotType robot) || robot.getDescription() == null) {
+			return null;
+		}
+		Path file = RobotDescriptions.file(robot);
+		if (file == null) {
+			return null;
+		}
+		Map<String, String> args = new LinkedHashMap<>();
+		int count = Math.min(robot.getDescriptionArgNames().size(), robot.getDescriptionArgValues().size());
+		for (int i = 0; i < count; i++) {
+			args.put(robot.getDescriptionArgNames().get(i), robot.getDescriptionArgValues().get(i));
+		}
+		String lidar = robot.getLidar() == null ? null : robot.getLidar().getLink();
+		return new Diagram.Description(file.toString(), args, lidar);
 	}
 
 	private static String typeName(ObjectType type, Catalogue defaults, String defaultType) {
