@@ -488,7 +488,7 @@ def _encounters(run: _Run) -> tuple[tuple[Encounter, ...], tuple[str, ...]]:
     footprints = footprints_of([moving.names[k] for k in published], moving.boxes[published],
                                moving.circle[published])
     threshold = run.spec.collision_threshold if run.spec is not None else 0.0
-    return tuple(encounters(animation, footprints, s.t, s.pose, run.robot_size, threshold)), ()
+    return tuple(encounters(animation, footprints, s.t, s.pose, run.robot_shape, threshold)), ()
 
 
 def _clearances(which: str, gaps: np.ndarray) -> dict[str, float | None]:
@@ -550,7 +550,7 @@ def _people(run: _Run, moving_gaps: np.ndarray, moving_collides: np.ndarray | No
     for column, k in enumerate(humans):
         person = velocities(s.t, xy[:, column], s.moving_twist[:, k])
         other = np.hstack((s.moving[:, k], np.broadcast_to(run.moving.boxes[k, 3:], (count, 2))))
-        times.append(contact_times(s.pose, robot, run.robot_size, other, person, run.moving.circle[k]))
+        times.append(contact_times(s.pose, robot, run.robot_shape, other, person, run.moving.circle[k]))
     ttc = np.concatenate(times)
     out["ttc_humans_min"] = float(np.nanmin(ttc)) if np.isfinite(ttc).any() else None
     out["path_irregularity_humans"] = path_irregularity(s.t, xy)

@@ -43,11 +43,12 @@ class Encounter:
 
 
 def encounters(animation: AnimationSpec, footprints: dict[str, tuple[np.ndarray, bool]],
-               t: np.ndarray, pose: np.ndarray, robot_size: tuple[float, float],
+               t: np.ndarray, pose: np.ndarray, robot_size: tuple[float, float] | np.ndarray,
                threshold: float) -> list[Encounter]:
     """Each human's encounter, in ``animation``'s order, for the robot's samples ``t`` and true ``pose`` ``(T, 3)``:
     the humans named in ``footprints`` (see :func:`footprints_of`); a human whose path never comes within
-    ``threshold`` of the robot's footprint has none."""
+    ``threshold`` of the robot's footprint (``robot_size``: its rectangle, or a described robot's outline ``(M, 2)``
+    as rei.geometry.footprint_gaps takes them) has none."""
     found = []
     for o in animation.objects:
         if o.category != Category.HUMAN or o.name not in footprints:
@@ -67,7 +68,7 @@ def footprints_of(names: Sequence[str], boxes: np.ndarray, circle: np.ndarray) -
 
 
 def _shift(trajectory: Trajectory, box: np.ndarray, circle: bool, t: np.ndarray, pose: np.ndarray,
-           robot_size: tuple[float, float], threshold: float) -> float | None:
+           robot_size: tuple[float, float] | np.ndarray, threshold: float) -> float | None:
     """``t_k - tau`` of the conflicting pair of least ``|t_k - tau|``, None without a conflict."""
     if len(t) == 0:
         return None
@@ -85,7 +86,10 @@ def _shift(trajectory: Trajectory, box: np.ndarray, circle: bool, t: np.ndarray,
     if (gaps(k, np.searchsorted(first, t, side="right") - 1) < threshold).any():
         return 0.0
     # Only schedule places within reach of some robot position can conflict: both footprints' circumradii.
-    reach = math.hypot(*robot_size) / 2 + math.hypot(box[3], box[4]) / 2 + max(threshold, 0.0)
+    # An outline is placed about the robot's origin, not its centre: its farthest vertex from the origin.
+    robot_reach = (float(np.hypot(*robot_size.T).max()) if isinstance(robot_size, np.ndarray)
+                   else math.hypot(*robot_size) / 2)
+    reach = robot_reach + math.hypot(box[3], box[4]) / 2 + max(threshold, 0.0)
     schedule = _Grid(places, reach)
     best: float | None = None
     for a in range(0, len(t), _BLOCK):

@@ -83,9 +83,12 @@ def velocities(t: np.ndarray, xy: np.ndarray, twist: np.ndarray) -> np.ndarray:
     return out
 
 
-def contact_times(pose: np.ndarray, velocity: np.ndarray, robot_size: tuple[float, float], other: np.ndarray,
-                  other_velocity: np.ndarray, circle: np.ndarray, horizon: float = TTC_HORIZON) -> np.ndarray:
-    """Time to collision ``(N,)``: how long until the robot's footprint (``pose`` ``(N, 3)``, ``robot_size``) and
+def contact_times(pose: np.ndarray, velocity: np.ndarray, robot_size: tuple[float, float] | np.ndarray,
+                  other: np.ndarray, other_velocity: np.ndarray, circle: np.ndarray, horizon: float = TTC_HORIZON,
+                  ) -> np.ndarray:
+    """Time to collision ``(N,)``: how long until the robot's footprint (``pose`` ``(N, 3)``, ``robot_size``: the
+    rectangle's full size, or a described robot's outline, an ``(M, 2)`` convex polygon counter-clockwise in its
+    frame as rei.geometry.outline_gaps takes it) and
     another's (``other`` ``(N, 5)`` of ``x, y, yaw, size_x, size_y``, a circle of diameter ``size_x`` where
     ``circle``) touch (their footprint gap reaches 0) when both keep their velocities (``(N, 2)``, world frame)
     and headings; 0 where they touch or overlap now, inf where they do not meet within ``horizon`` seconds, NaN
@@ -98,13 +101,27 @@ def contact_times(pose: np.ndarray, velocity: np.ndarray, robot_size: tuple[floa
     """
     pose, other = np.asarray(pose, dtype=float), np.asarray(other, dtype=float)
     circle = np.broadcast_to(np.asarray(circle, dtype=bool), (len(pose),))
-    a, b = robot_size[0] / 2, robot_size[1] / 2
     cos, sin = np.cos(pose[:, 2]), np.sin(pose[:, 2])
     dx, dy = other[:, 0] - pose[:, 0], other[:, 1] - pose[:, 1]
     wx, wy = other_velocity[:, 0] - velocity[:, 0], other_velocity[:, 1] - velocity[:, 1]
     c = np.stack((cos * dx + sin * dy, -sin * dx + cos * dy), axis=1)  # in the robot's frame
     w = np.stack((cos * wx + sin * wy, -sin * wx + cos * wy), axis=1)
     ha, hb = other[:, 3] / 2, other[:, 4] / 2
+    if isinstance(robot_size, np.ndarray) and robot_size.ndim == 2:
+        found = _outline_contact(c, w, np.asarray(robot_size, dtype=float), other[:, 2] - pose[:, 2], ha, hb, circle)
+    else:
+        found = _box_contact(c, w, (robot_size[0] / 2, robot_size[1] / 2), other[:, 2] - pose[:, 2], ha, hb, circle)
+    found[found > horizon] = np.inf
+    unknown = ~(np.isfinite(c).all(axis=1) & np.isfinite(w).all(axis=1) & np.isfinite(other[:, 3:5]).all(axis=1))
+    found[unknown] = np.nan
+    return found
+
+
+def _box_contact(c: np.ndarray, w: np.ndarray, half: tuple[float, float], yaw: np.ndarray, ha: np.ndarray,
+                 hb: np.ndarray, circle: np.ndarray) -> np.ndarray:
+    """:func:`contact_times` for the rectangle of half extents ``half`` (no horizon): ``c``, ``w`` the other's
+    centre and relative velocity in the robot's frame, ``yaw`` its heading there."""
+    a, b = half
     # a circle: the rectangle widened along x, along y, and the four corner discs
     x_axis, y_axis = np.array([1.0, 0.0]), np.array([0.0, 1.0])
     rounded = np.minimum(_entry(c, w, ((x_axis, a + ha), (y_axis, np.full(len(c), b)))),
@@ -112,7 +129,6 @@ def contact_times(pose: np.ndarray, velocity: np.ndarray, robot_size: tuple[floa
     for sx, sy in ((1, 1), (-1, 1), (-1, -1), (1, -1)):
         rounded = np.minimum(rounded, _disc_entry(c - np.array([sx * a, sy * b]), w, ha))
     # a rectangle: the Minkowski sum's edges lie across the two rectangles' four axes
-    yaw = other[:, 2] - pose[:, 2]
     u = np.stack((np.cos(yaw), np.sin(yaw)), axis=1)
     v = np.stack((-np.sin(yaw), np.cos(yaw)), axis=1)
     slabs = []
@@ -120,11 +136,56 @@ def contact_times(pose: np.ndarray, velocity: np.ndarray, robot_size: tuple[floa
         reach = a * np.abs(n[:, 0]) + b * np.abs(n[:, 1]) + ha * np.abs((n * u).sum(1)) + hb * np.abs((n * v).sum(1))
         slabs.append((n, reach))
     box = _entry(c, w, slabs)
-    found = np.where(circle, rounded, box)
-    found[found > horizon] = np.inf
-    unknown = ~(np.isfinite(c).all(axis=1) & np.isfinite(w).all(axis=1) & np.isfinite(other[:, 3:5]).all(axis=1))
-    found[unknown] = np.nan
-    return found
+    return np.where(circle, rounded, box)
+
+
+def _outline_contact(c: np.ndarray, w: np.ndarray, outline: np.ndarray, yaw: np.ndarray, ha: np.ndarray,
+                     hb: np.ndarray, circle: np.ndarray) -> np.ndarray:
+    """:func:`contact_times` for a convex, counter-clockwise ``outline`` ``(M, 2)`` (no horizon), the arguments
+    as :func:`_box_contact`'s.
+
+    A circle of radius ``r`` touches the outline when its centre enters the outline widened by ``r``: the union of
+    the outline, a rectangle ``r`` deep on each edge and a disc at each vertex, so the first time is the least of
+    their entry times. A rectangle: the Minkowski sum of the outline and the rectangle is convex, bounded by
+    half-planes across the outline's edge normals and the rectangle's two axes both ways, each as far out as the
+    two shapes reach along it (their support functions)."""
+    n = len(c)
+    edge = np.roll(outline, -1, axis=0) - outline
+    length = np.hypot(edge[:, 0], edge[:, 1])
+    along = edge / length[:, None]
+    normal = np.stack((along[:, 1], -along[:, 0]), axis=1)  # outward, counter-clockwise
+    at = (normal * outline).sum(axis=1)  # each edge's line: normal . p = at
+    start = (along * outline).sum(axis=1)
+    rounded = _halfplane_entry(c, w, np.broadcast_to(normal, (n, *normal.shape)), np.broadcast_to(at, (n, len(at))))
+    for m in range(len(outline)):
+        sides = np.array([normal[m], -normal[m], along[m], -along[m]])
+        reach = np.stack((at[m] + ha, np.full(n, -at[m]), np.full(n, start[m] + length[m]), np.full(n, -start[m])),
+                         axis=1)
+        rounded = np.minimum(rounded, _halfplane_entry(c, w, np.broadcast_to(sides, (n, 4, 2)), reach))
+        rounded = np.minimum(rounded, _disc_entry(c - outline[m], w, ha))
+    u = np.stack((np.cos(yaw), np.sin(yaw)), axis=1)
+    v = np.stack((-np.sin(yaw), np.cos(yaw)), axis=1)
+    normals = np.concatenate((np.broadcast_to(normal, (n, *normal.shape)), np.stack((u, -u, v, -v), axis=1)),
+                             axis=1)  # (N, M + 4, 2)
+    own = (normals[:, :, None, :] * outline[None, None, :, :]).sum(axis=3).max(axis=2)  # the outline's support
+    other = ha[:, None] * np.abs((normals * u[:, None, :]).sum(2)) + hb[:, None] * np.abs((normals * v[:, None, :]).sum(2))
+    box = _halfplane_entry(c, w, normals, own + other)
+    return np.where(circle, rounded, box)
+
+
+def _halfplane_entry(c: np.ndarray, w: np.ndarray, normals: np.ndarray, reach: np.ndarray) -> np.ndarray:
+    """When the points ``c + w τ`` (τ >= 0) first lie in every half-plane ``n · p <= reach`` (``normals``
+    ``(N, K, 2)``, ``reach`` ``(N, K)``; 0 inside now, inf never): the Cyrus-Beck clipping of a ray."""
+    s = (normals * c[:, None, :]).sum(axis=2)
+    d = (normals * w[:, None, :]).sum(axis=2)
+    parallel = np.abs(d) < _PARALLEL
+    with np.errstate(invalid="ignore", divide="ignore"):
+        cross = (reach - s) / d
+    outside = s > reach
+    enter = np.where(parallel, np.where(outside, np.inf, -np.inf), np.where(d < 0, cross, -np.inf)).max(axis=1)
+    leave = np.where(parallel, np.inf, np.where(d > 0, cross, np.inf)).min(axis=1)
+    enter = np.maximum(enter, 0.0)
+    return np.where(enter <= leave, enter, np.inf)
 
 
 def _entry(c: np.ndarray, w: np.ndarray, slabs: Sequence[tuple[np.ndarray, np.ndarray]]) -> np.ndarray:
