@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import json
+import math
 from collections import Counter
 from pathlib import Path
 from typing import Any
@@ -11,10 +12,12 @@ from typing import Any
 import pytest
 from mcap.reader import make_reader
 
+from rei.geometry import yaw_of_quaternion
 from rei.report import write_mcap
 from rei.report.foxglove import SCHEMA_NAMES, schema_bytes
+from rei.wamp.recording import RecordingWriter
 
-from .runs import SIGNALS, make_run
+from .runs import SIGNALS, make_run, state
 
 
 def strict_json(data: bytes) -> Any:
@@ -108,3 +111,63 @@ def test_schema_files_are_json_named_like_foxglove() -> None:
         schema = json.loads(schema_bytes(name))
         assert schema["title"] == f"foxglove.{name}" and schema["type"] == "object"
         assert "timestamp" in schema["properties"] or name == "SceneUpdate"
+
+
+
+def _placed(x: float, y: float, yaw: float, px: float, py: float) -> tuple[float, float]:
+    """A point of the robot's frame in the world, the robot at (x, y) turned by yaw."""
+    c, s = math.cos(yaw), math.sin(yaw)
+    return x + c * px - s * py, y + s * px + c * py
+
+
+@pytest.mark.parametrize("footprint", [
+    {"type": "polygon", "points": [[-0.1, -0.08], [0.04, -0.09], [0.07, 0.0], [0.04, 0.09], [-0.1, 0.08]]},
+    {"type": "circle", "x": 0.05, "y": 0.0, "radius": 0.17}], ids=["polygon", "circle"])
+def test_a_described_robot_is_its_outline_turned_with_its_pose(tmp_path: Path, footprint: dict[str, Any]) -> None:
+    """A robot read from its description (world.json robot.footprint) is drawn as its outline at every state,
+    true and believed, while it turns at 0.5 rad/s: a polygon as its prism's edges (bottom and top loops in the
+    robot's frame, placed at its pose: in the world, the outline's vertices turned and moved), a circle as a
+    cylinder of its diameter about its centre (0.05 m ahead of the origin, turned with it). A box robot's file
+    is unchanged (test_scene_content)."""
+    out = make_run(tmp_path / "out")
+    world_file = out / "case" / "world.json"
+    world = json.loads(world_file.read_text())
+    world["robot"]["footprint"] = footprint
+    world_file.write_text(json.dumps(world))
+    with RecordingWriter(out / "streams" / "state.msgpack") as writer:
+        for i in range(81):
+            message = state(i, i / 20)
+            message["robot"]["pose"][3] = 0.5 * i / 20
+            writer.write(message)
+    _, messages = read(write_mcap(out))
+    bodies = [m for topic, _, _, m in messages if topic == "/bodies"]
+    assert len(bodies) == 81
+    height = world["robot"]["size"][2]
+    for k, update in enumerate(bodies):
+        x, y, yaw = 0.5 + 0.1 * k / 20, 0.5, 0.5 * k / 20
+        entities = {e["id"]: e for e in update["entities"]}
+        robot, believed = entities["robot"], entities["robot_believed"]
+        assert "cubes" not in robot and "cubes" not in believed
+        if footprint["type"] == "circle":
+            (cylinder,) = robot["cylinders"]
+            where = cylinder["pose"]["position"]
+            assert (where["x"], where["y"], where["z"]) == pytest.approx((*_placed(x, y, yaw, 0.05, 0.0), height / 2),
+                                                                        abs=1e-9)
+            assert yaw_of_quaternion(*(cylinder["pose"]["orientation"][a] for a in "xyzw")) == pytest.approx(yaw)
+            size = cylinder["size"]
+            assert (size["x"], size["y"], size["z"]) == pytest.approx((0.34, 0.34, height))
+            assert believed["cylinders"][0]["size"]["x"] == pytest.approx(0.34)
+            continue
+        bottom, top, upright = robot["lines"]
+        assert (bottom["type"], top["type"], upright["type"]) == (1, 1, 2)  # two loops and a list of edges
+        place = bottom["pose"]["position"]
+        turn = yaw_of_quaternion(*(bottom["pose"]["orientation"][a] for a in "xyzw"))
+        drawn = [_placed(place["x"], place["y"], turn, p["x"], p["y"]) for p in bottom["points"]]
+        expected = [_placed(x, y, yaw, px, py) for px, py in footprint["points"]]
+        assert drawn == [pytest.approx(p, abs=1e-9) for p in expected]
+        assert {p["z"] for p in bottom["points"]} == {0.0} and {p["z"] for p in top["points"]} == {height}
+        assert [(p["x"], p["y"]) for p in top["points"]] == [(p["x"], p["y"]) for p in bottom["points"]]
+        assert len(upright["points"]) == 2 * len(footprint["points"])
+        # the believed pose: the odometry's (x, 0.5 + 0.01 t), heading 0 in these states
+        believed_place = believed["lines"][0]["pose"]["position"]
+        assert (believed_place["x"], believed_place["y"]) == pytest.approx((x, 0.5 + 0.01 * k / 20), abs=1e-9)

@@ -11,12 +11,13 @@ from __future__ import annotations
 
 import base64
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from importlib import resources
 from typing import Any
 
 import numpy as np
 
+from rei.artifacts.world import FOOTPRINT_TYPES
 from rei.geometry import quaternion_of_yaw
 
 WORLD_FRAME = "world"
@@ -82,6 +83,28 @@ def body_entity(t: float, name: str, shape: str, size: Sequence[float], centre: 
         primitive.update(bottom_scale=1.0, top_scale=1.0)
         return entity(t, name, cylinders=[primitive])
     return entity(t, name, cubes=[primitive])
+
+
+def outline_entity(t: float, name: str, footprint: Mapping[str, Any], height: float, base: Sequence[float],
+                   yaw: float, rgba: object) -> dict[str, Any]:
+    """A robot drawn as its description's outline (world.json robot.footprint, in the robot's frame) standing
+    ``height`` high on ``base`` (x, y, z of its origin), turned by ``yaw``: a circle as a cylinder about its centre,
+    a polygon as the edges of its prism (bottom and top loops and the upright edges; SceneUpdate's lines, so the
+    schema every run.mcap carries stays as it was)."""
+    x, y, z = (float(v) for v in base[:3])
+    if footprint["type"] == FOOTPRINT_TYPES[1]:
+        c, s = math.cos(yaw), math.sin(yaw)
+        fx, fy, d = footprint["x"], footprint["y"], 2 * footprint["radius"]
+        return body_entity(t, name, "CYLINDER", (d, d, height), (x + c * fx - s * fy, y + s * fx + c * fy,
+                                                                  z + height / 2), yaw, rgba)
+    points = footprint["points"]
+    loops = [{"type": 1, "pose": pose(x, y, z, yaw), "thickness": 0.01, "scale_invariant": False,
+              "points": [vector(px, py, level) for px, py in points], "color": colour(rgba), "indices": []}
+             for level in (0.0, height)]
+    upright = [vector(px, py, level) for px, py in points for level in (0.0, height)]
+    loops.append({"type": 2, "pose": pose(x, y, z, yaw), "thickness": 0.01, "scale_invariant": False,
+                  "points": upright, "color": colour(rgba), "indices": []})
+    return entity(t, name, lines=loops)
 
 
 def line_entity(t: float, entity_id: str, points: Sequence[tuple[float, float]], rgba: Sequence[float],

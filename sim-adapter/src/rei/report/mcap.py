@@ -12,7 +12,7 @@ Topics (JSON encoding, `jsonschema` schemas named `foxglove.<Type>`):
 | `/world` | foxglove.SceneUpdate | 1: floors, walls, furniture, goals (static, never replaced) |
 | `/map` | foxglove.Grid | 1, in a room from an occupancy map: the map's cells (int8, as `map_server` publishes them) |
 | `/paths` | foxglove.SceneUpdate | 1: the whole true and believed paths as lines, to see where the run goes |
-| `/bodies` | foxglove.SceneUpdate | 1 per state: the robot, its believed pose (ghost), humans, dynamic objects |
+| `/bodies` | foxglove.SceneUpdate | 1 per state: the robot (a described robot's outline), its believed pose (ghost), humans, dynamic objects |
 | `/tf` | foxglove.FrameTransform | 1 per state: `world` -> `base_link` (true pose) |
 | `/laser` | foxglove.LaserScan | 1 per state that carries `laser_ranges` (`--laser full`) |
 | `/signals` | foxglove.Log | 1 per monitor signal (with its utility when events.csv has it) |
@@ -32,6 +32,7 @@ from mcap.writer import Writer
 
 from rei.report import foxglove as fg
 from rei.report.decimate import decimate
+from rei.report.map_svg import _outline
 from rei.report.run_data import RunData, load_run
 from rei.report.tracks import Tracks, collect_tracks
 
@@ -63,6 +64,8 @@ class _McapRun:
         self.channels: dict[str, int] = {}
         self.sequence: dict[str, int] = {}
         self.bodies = {str(b.get("name")): b for b in (data.world or {}).get("objects") or ()}
+        # a robot read from its description is drawn as its outline, a box robot as its box (as before)
+        self.footprint = _outline(data.world)[1]
 
     def write(self) -> None:
         self.writer.start(profile=PROFILE, library="rei-report")
@@ -143,11 +146,18 @@ class _McapRun:
         if isinstance(robot, Mapping) and _reals(robot.get("pose"), 4):
             x, y, z, yaw = robot["pose"][:4]
             size = _robot_size(self.data.world)
-            entities.append(fg.body_entity(t, "robot", "BOX", size, (x, y, z + size[2] / 2), yaw, _ROBOT_RGBA))
+            if self.footprint is None:
+                entities.append(fg.body_entity(t, "robot", "BOX", size, (x, y, z + size[2] / 2), yaw, _ROBOT_RGBA))
+            else:
+                entities.append(fg.outline_entity(t, "robot", self.footprint, size[2], (x, y, z), yaw, _ROBOT_RGBA))
             if _reals(robot.get("odom"), 3):
                 ox, oy, oyaw = robot["odom"][:3]
-                entities.append(fg.body_entity(t, "robot_believed", "BOX", size, (ox, oy, size[2] / 2), oyaw,
-                                               _BELIEF_RGBA))
+                if self.footprint is None:
+                    entities.append(fg.body_entity(t, "robot_believed", "BOX", size, (ox, oy, size[2] / 2), oyaw,
+                                                   _BELIEF_RGBA))
+                else:
+                    entities.append(fg.outline_entity(t, "robot_believed", self.footprint, size[2], (ox, oy, 0.0),
+                                                      oyaw, _BELIEF_RGBA))
             self.publish("/tf", "FrameTransform", t, fg.frame_transform(t, x, y, yaw))
             ranges = robot.get("laser_ranges")
             if isinstance(ranges, list) and ranges:
