@@ -20,8 +20,9 @@ import pytest
 from rei.evaluation import Evaluator, Status, replay
 from rei.evaluation.metrics import NAMES, compute_metrics, measure
 from rei.evaluation.metrics.social import AT_FAULT_SPEED, TTC_HORIZON, ZONES, contact_times
-from rei.geometry import footprint_gaps
 from rei.wamp.recording import RecordingWriter, stream_path
+
+from .contacts import check_contact_times
 
 FIXTURE = Path(__file__).resolve().parents[1] / "fixtures" / "room6x4"
 ROBOT = (0.281, 0.306)  # the fixture's tb3 footprint
@@ -144,39 +145,8 @@ def test_the_time_to_collision_is_when_the_monitors_footprint_gap_reaches_zero(c
     """Random robots and people (cylinders, or rectangles at any yaw) at constant velocities: where a time is
     found the footprint gap is 0 then and positive just before; where none is, the gap stays positive over the
     horizon (checked every millisecond)."""
-    rng = np.random.default_rng(7)
-    n = 300
-    pose = np.column_stack((rng.uniform(-1, 1, (n, 2)), rng.uniform(-math.pi, math.pi, n)))
-    other = np.column_stack((rng.uniform(-3, 3, (n, 2)), rng.uniform(-math.pi, math.pi, n),
-                             rng.uniform(0.2, 0.8, (n, 2))))
-    if circle:
-        other[:, 4] = other[:, 3]
-    velocity = rng.uniform(-0.4, 0.4, (n, 2))
-    # people walking roughly towards the robot, so that many meet it, many pass it and some walk away
-    towards = (pose[:, :2] - other[:, :2]) / np.hypot(*(pose[:, :2] - other[:, :2]).T)[:, None]
-    other_velocity = towards * rng.uniform(0.2, 0.8, (n, 1)) + rng.uniform(-0.4, 0.4, (n, 2))
-    kinds = np.full(n, circle)
-    ttc = contact_times(pose, velocity, ROBOT, other, other_velocity, kinds)
-
-    def gap(i: int, tau: np.ndarray) -> np.ndarray:
-        robot = np.column_stack((pose[i, 0] + velocity[i, 0] * tau, pose[i, 1] + velocity[i, 1] * tau,
-                                 np.full(len(tau), pose[i, 2])))
-        moved = np.repeat(other[i][None, :], len(tau), axis=0)
-        moved[:, :2] += other_velocity[i] * tau[:, None]
-        return footprint_gaps(robot, ROBOT, moved[:, None, :], np.array([circle]))[:, 0]
-
-    met = 0
-    for i in range(n):
-        start = gap(i, np.array([0.0]))[0]
-        if start <= 0:
-            assert ttc[i] == 0.0
-        elif math.isfinite(ttc[i]):
-            met += 1
-            touching, before = gap(i, np.array([ttc[i], ttc[i] * (1 - 1e-6)]))
-            assert abs(touching) < 1e-9 and before > 0, (i, touching, before)
-        else:
-            assert gap(i, np.arange(0.0, TTC_HORIZON, 0.001)).min() > 0, i
-    assert met > 50 and (~np.isfinite(ttc)).sum() > 50  # plenty of meetings, and of misses
+    met, missed = check_contact_times(ROBOT, n=300, seed=7, circle=circle, step=0.001)
+    assert met > 50 and missed > 50  # plenty of meetings, and of misses
 
 
 # -- who was at fault ----------------------------------------------------------------------------------------

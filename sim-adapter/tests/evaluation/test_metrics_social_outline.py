@@ -18,9 +18,10 @@ import pytest
 
 from rei.artifacts.world import CircleFootprint, footprint_polygon
 from rei.evaluation.metrics import compute_metrics
-from rei.evaluation.metrics.social import TTC_HORIZON, ZONES, contact_times
-from rei.geometry import footprint_gaps
+from rei.evaluation.metrics.social import ZONES
 from rei.wamp.recording import RecordingWriter, stream_path
+
+from .contacts import check_contact_times
 
 FIXTURE = Path(__file__).resolve().parents[1] / "fixtures" / "room6x4"
 R = 0.17  # the round robot's radius
@@ -116,37 +117,8 @@ def test_the_outlines_time_to_collision_is_when_its_outline_gap_reaches_zero(out
     footprint gap is 0 then and positive just before; where none is, the gap stays positive over the horizon
     (checked every 2 ms)."""
     shape = BURGER if outline == "polygon" else np.array(footprint_polygon(CircleFootprint(0.05, 0.02, R)))
-    rng = np.random.default_rng(11)
-    n = 60
-    pose = np.column_stack((rng.uniform(-1, 1, (n, 2)), rng.uniform(-math.pi, math.pi, n)))
-    other = np.column_stack((rng.uniform(-3, 3, (n, 2)), rng.uniform(-math.pi, math.pi, n),
-                             rng.uniform(0.2, 0.8, (n, 2))))
-    if circle:
-        other[:, 4] = other[:, 3]
-    velocity = rng.uniform(-0.4, 0.4, (n, 2))
-    towards = (pose[:, :2] - other[:, :2]) / np.hypot(*(pose[:, :2] - other[:, :2]).T)[:, None]
-    other_velocity = towards * rng.uniform(0.2, 0.8, (n, 1)) + rng.uniform(-0.4, 0.4, (n, 2))
-    ttc = contact_times(pose, velocity, shape, other, other_velocity, np.full(n, circle))
-
-    def gap(i: int, tau: np.ndarray) -> np.ndarray:
-        robot = np.column_stack((pose[i, 0] + velocity[i, 0] * tau, pose[i, 1] + velocity[i, 1] * tau,
-                                 np.full(len(tau), pose[i, 2])))
-        moved = np.repeat(other[i][None, :], len(tau), axis=0)
-        moved[:, :2] += other_velocity[i] * tau[:, None]
-        return footprint_gaps(robot, shape, moved[:, None, :], np.array([circle]))[:, 0]
-
-    met = 0
-    for i in range(n):
-        start = gap(i, np.array([0.0]))[0]
-        if start <= 0:
-            assert ttc[i] == 0.0
-        elif math.isfinite(ttc[i]):
-            met += 1
-            touching, before = gap(i, np.array([ttc[i], ttc[i] * (1 - 1e-6)]))
-            assert abs(touching) < 1e-9 and before > 0, (i, touching, before)
-        else:
-            assert gap(i, np.arange(0.0, TTC_HORIZON, 0.002)).min() > 0, i
-    assert met > 10 and (~np.isfinite(ttc)).sum() > 10
+    met, missed = check_contact_times(shape, n=60, seed=11, circle=circle, step=0.002)
+    assert met > 10 and missed > 10
 
 
 @pytest.mark.parametrize("delay", [-4.0, 1.7, 6.0])
