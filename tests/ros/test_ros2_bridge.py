@@ -17,8 +17,6 @@ from pathlib import Path
 
 import pytest
 
-from rei.wamp.recording import read_recording
-
 EXAMPLE = "examples/simple_navigation.rei"
 NODES = "examples/sut/ros2"
 DOMAIN_LINE = re.compile(r"rei ros2-bridge: ROS domain (\d+) \(the run's own\)")
@@ -159,18 +157,6 @@ def test_a_ros2_stack_that_dies_ends_the_run_in_error_with_its_log(run_cli, repo
     assert processes_mentioning(out) == []
 
 
-def test_a_holonomic_robot_strafes_on_cmd_vel_s_linear_y(run_cli, repo_root: Path, tmp_path: Path,
-                                                        processes_mentioning) -> None:
-    """The strafe example through the bridge: the node plays the sideways-only script as /cmd_vel's linear.y, and
-    the robot moves 2 m to its left with its heading unchanged."""
-    out = tmp_path / "out"
-    script = repo_root / "examples" / "robots" / "strafe.script"
-    result = run_cli("sim", repo_root / "examples" / "robots" / "strafe.rei", "-o", out, "--progress", "none",
-                     "--sut", f"ros2:python3 {repo_root / NODES / 'reference_nav_node.py'} --script {script} {out}",
-                     timeout=400)
-    assert result.returncode == 0 and "mission succeeded" in result.stdout, \
-        result.stdout + result.stderr + (out / "sut.log").read_text()
-    poses = [m["robot"]["pose"] for m in read_recording(out / "streams" / "state.msgpack")]
-    assert poses[-1][1] - poses[0][1] > 1.9
-    assert max(abs(p[0] - poses[0][0]) for p in poses) < 0.005 and max(abs(p[-1]) for p in poses) < 0.005
-    assert processes_mentioning(out) == []
+def test_a_holonomic_robot_strafes_on_cmd_vel_s_linear_y(strafes, repo_root: Path) -> None:
+    """The strafe example through the bridge: the reference node plays the sideways-only script."""
+    strafes(lambda script, out: f"ros2:python3 {repo_root / NODES / 'reference_nav_node.py'} --script {script} {out}")
