@@ -134,7 +134,8 @@ def _cluster(cpus: int, hide: Path) -> Iterator[str]:
                                            "--include-dashboard=false", f"--temp-dir={root / 'ray'}", *common],
                                           stdout=log, stderr=subprocess.STDOUT, start_new_session=True, env=env))
         (root / "node").mkdir()
-        node = [str(RAY), "start", f"--address=127.0.0.1:{port}", f"--num-cpus={cpus}", *common]
+        node = [str(RAY), "start", f"--address=127.0.0.1:{port}", f"--num-cpus={cpus}",
+                f'--resources={{"rei": {cpus}}}', *common]
         processes.append(subprocess.Popen(
             ["unshare", "-m", "sh", "-c", 'mount -t tmpfs tmpfs "$0" && exec "$@"', str(hide), *node],
             stdout=log, stderr=subprocess.STDOUT, start_new_session=True, env={**env, "TMPDIR": str(root / "node")}))

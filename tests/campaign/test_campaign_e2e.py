@@ -145,7 +145,8 @@ def ray_head(tmp_path: Path, ray_root: Path) -> Iterator[dict[str, str]]:
     ray = Path(sys.executable).parent / "ray"
     log = open(tmp_path / "ray.log", "w")  # noqa: SIM115 - closed below
     head = subprocess.Popen([str(ray), "start", "--head", "--block", f"--port={port}", "--node-ip-address=127.0.0.1",
-                             "--num-cpus=2", "--include-dashboard=false", "--disable-usage-stats",
+                             "--num-cpus=2", '--resources={"rei": 2}', "--include-dashboard=false",
+                             "--disable-usage-stats",
                              "--object-store-memory=100000000", f"--temp-dir={ray_root / 'ray'}"],
                             stdout=log, stderr=subprocess.STDOUT, start_new_session=True, env={**os.environ, **env})
     try:

@@ -101,14 +101,15 @@ class Cluster:
 
     def add_node(self, name: str, *, hide: Path | None = None, own: NodeEnv | None = None,
                  path: str | None = None) -> Path:
-        """A worker node of 1 CPU whose processes' temporary folder is a folder of its own (returned); ``hide``: the
-        node runs in a mount namespace of its own where that folder is an empty tmpfs; ``own``: the node runs the
-        Python environment of REI's wheel, and this checkout is hidden too; ``path``: the node's PATH."""
+        """A worker node of 1 CPU offering one 'rei' (the resource REI's runs ask for) whose processes' temporary
+        folder is a folder of its own (returned); ``hide``: the node runs in a mount namespace of its own where that
+        folder is an empty tmpfs; ``own``: the node runs the Python environment of REI's wheel, and this checkout is
+        hidden too; ``path``: the node's PATH."""
         tmp = self.root / name
         tmp.mkdir()
         ray = [str(RAY)] if own is None else [str(own.python), "-m", "ray.scripts.scripts"]
         command = [*ray, "start", "--block", f"--address={self.env['RAY_ADDRESS']}", "--num-cpus=1",
-                   "--node-ip-address=127.0.0.1", "--disable-usage-stats", "--object-store-memory=80000000"]
+                   '--resources={"rei": 1}', "--node-ip-address=127.0.0.1", "--disable-usage-stats", "--object-store-memory=80000000"]
         env = {**os.environ, **self.env, "TMPDIR": str(tmp)}
         if own is not None:  # nothing of the driver's Python but the stash: no REI_HOME, no venv of the checkout's
             for key in ("REI_HOME", "VIRTUAL_ENV", "PYTHONPATH"):
@@ -466,9 +467,17 @@ def test_sigterm_stops_this_campaigns_runs_on_the_cluster_and_nothing_else(tmp_p
 def test_a_node_without_java_is_named_when_the_campaign_connects(tmp_path: Path, cluster: Cluster, run_cli: Any,
                                                                  node_env: NodeEnv) -> None:
     """Checked at connect time, node by node: a node whose PATH has no java fails the campaign before any run,
-    named by its address and id, with what it lacks (not each of its runs with that error)."""
+    named by its address and id, with what it lacks (not each of its runs with that error). Before it joins, the
+    cluster has no node offering the resource 'rei' (its head has none), which is said as plainly."""
     started = time.monotonic()
     spec = _spec(tmp_path, 1, "1.0 0.1 0.0\n")
+    cluster.wait_for_cpus(0)
+    result = _campaign(run_cli, spec, tmp_path / "none", cluster, timeout=120)
+    assert result.returncode == 2, result.stdout + result.stderr
+    assert result.stderr.strip().splitlines()[-1] == (
+        "rei: error: no Ray node offers the resource 'rei' that REI's runs ask for; start each node that is to run "
+        "them with `ray start --resources='{\"rei\": N}' ...` (N: its runs at a time, e.g. its CPUs; "
+        "docs/campaigns.md#setting-up-a-cluster) (1 node(s) alive)"), result.stderr
     cluster.add_node("nojava", own=node_env, path=_without_java(tmp_path / "bin"))
     cluster.wait_for_cpus(1)
     out = tmp_path / "out"

@@ -21,6 +21,7 @@ from pathlib import Path
 from typing import Any
 
 from rei.campaign.forkserver import ForkServer, ForkServerError
+from rei.campaign.nodes import NodesUnfitError
 from rei.campaign.plan import RunTask
 from rei.campaign.supervise import KILL_GRACE, Outcome, supervise
 from rei.campaign.transfer import folder_bundle, inputs, receive, run_shipped, sweep_monitor_folders
@@ -152,7 +153,7 @@ class RayBackend:
                  log: Callable[[str], None] = print, router: bool = False) -> None:
         import ray
 
-        from rei.campaign.nodes import check_cluster
+        from rei.campaign.nodes import RESOURCE, check_cluster, slots
 
         if attempts < 1:
             raise ValueError(f"attempts must be >= 1, got {attempts}")
@@ -178,23 +179,31 @@ class RayBackend:
                 # and takes this token instead of making one; the instance's processes, started from here, inherit
                 # the environment (a path, not the secret)
                 self._set_env({"RAY_AUTH_TOKEN_PATH": str(token)})
-                ray.init(address="local", num_cpus=workers or 1, _temp_dir=str(self._temp_dir), **init)
+                # this instance is REI's own: its one node offers the runs' resource, one a CPU
+                ray.init(address="local", num_cpus=workers or 1, resources={RESOURCE: workers or 1},
+                         _temp_dir=str(self._temp_dir), **init)
             except BaseException:
                 self.close()
                 raise
         else:
             ray.init(address=address, **init)
-        # every node runs can go to is asked once whether it can run them (Java, the monitor jar, pybullet, the
-        # router when the runs start one): one that cannot is named now rather than failing its runs one by one
-        problems = check_cluster(ray, router)
+        # every node runs can go to (those offering the resource 'rei') is asked once whether it can run them (Java,
+        # the monitor jar, pybullet, the router when the runs start one): one that cannot is named now rather than
+        # failing its runs one by one
+        try:
+            problems = check_cluster(ray, router)
+        except NodesUnfitError:  # no node offers the resource
+            self.close()
+            raise
         if problems:
-            nodes = sum(1 for node in ray.nodes() if node.get("Alive") and node.get("Resources", {}).get("CPU", 0))
+            nodes = sum(1 for node in ray.nodes() if node.get("Alive") and node.get("Resources", {}).get(RESOURCE))
             self.close()
             raise NodesUnfitError(f"{len({name for name, _ in problems})} of {nodes} Ray node(s) cannot run "
                                   "REI's runs:\n" + "\n".join(f"{name}: {lack}" for name, lack in problems))
-        self.workers = max(1, int(ray.cluster_resources().get("CPU", 1)))
-        # max_retries=0: REI tries a lost task again itself (above); Ray's own retry would hide the attempt
-        self._remote = ray.remote(num_cpus=1, max_retries=0)(run_shipped)
+        self.workers = max(1, slots(ray.nodes()))
+        # a CPU and a 'rei' each: only the nodes offering it get runs; max_retries=0: REI tries a lost task again
+        # itself (above); Ray's own retry would hide the attempt
+        self._remote = ray.remote(num_cpus=1, resources={RESOURCE: 1}, max_retries=0)(run_shipped)
 
     def warm_up(self) -> None:
         pass
@@ -295,10 +304,6 @@ def _runtime_env() -> dict[str, Any] | None:
     if not isinstance(env, dict):
         raise TypeError(f"${RUNTIME_ENV_ENV}: a runtime environment is a JSON object, got {type(env).__name__}")
     return env
-
-
-class NodesUnfitError(RuntimeError):
-    """Some nodes of the cluster cannot run REI's runs; the message names each and what it lacks."""
 
 
 class RayUnavailableError(RuntimeError):
