@@ -112,7 +112,7 @@ class Cluster:
                    '--resources={"rei": 1}', "--node-ip-address=127.0.0.1", "--disable-usage-stats", "--object-store-memory=80000000"]
         env = {**os.environ, **self.env, "TMPDIR": str(tmp)}
         if own is not None:  # nothing of the driver's Python but the stash: no REI_HOME, no venv of the checkout's
-            for key in ("REI_HOME", "VIRTUAL_ENV", "PYTHONPATH"):
+            for key in ("REI_HOME", "VIRTUAL_ENV", "PYTHONPATH", "REI_CROSSBAR"):
                 env.pop(key, None)
             env["PATH"] = os.pathsep.join([str(own.python.parent), *(
                 p for p in env["PATH"].split(os.pathsep) if not p.startswith(str(REPO_ROOT)))])
@@ -464,11 +464,24 @@ def test_sigterm_stops_this_campaigns_runs_on_the_cluster_and_nothing_else(tmp_p
     print(f"campaign stopped on the cluster (cluster start included): {time.monotonic() - started:.1f} s")
 
 
+def _refused(result: Any, cluster: Cluster, *lacks: str) -> None:
+    """The command stopped at connect time (exit 2) naming the cluster's one node, by its address and id, once
+    for each of ``lacks`` (regular expressions), in that order."""
+    assert result.returncode == 2, result.stdout + result.stderr
+    lines = result.stderr.strip().splitlines()[-1 - len(lacks):]
+    assert lines[0] == "rei: error: 1 of 1 Ray node(s) cannot run REI's runs:", result.stderr
+    named = [re.fullmatch(rf"rei: error: node (\S+) \(([0-9a-f]{{12}})\): {lack}", line)
+             for line, lack in zip(lines[1:], lacks, strict=True)]
+    assert all(named), result.stderr
+    assert {m.groups() for m in named if m} == {*cluster.nodes_with_cpu()}, (result.stderr, cluster.nodes_with_cpu())
+
+
 def test_a_node_without_java_is_named_when_the_campaign_connects(tmp_path: Path, cluster: Cluster, run_cli: Any,
                                                                  node_env: NodeEnv) -> None:
     """Checked at connect time, node by node: a node whose PATH has no java fails the campaign before any run,
-    named by its address and id, with what it lacks (not each of its runs with that error). Before it joins, the
-    cluster has no node offering the resource 'rei' (its head has none), which is said as plainly."""
+    named by its address and id, with what it lacks (not each of its runs with that error); `rei search --ray` is
+    refused the same way, and for the router too when its runs start one (an external SUT's). Before the node
+    joins, the cluster has no node offering the resource 'rei' (its head has none), which is said as plainly."""
     started = time.monotonic()
     spec = _spec(tmp_path, 1, "1.0 0.1 0.0\n")
     cluster.wait_for_cpus(0)
@@ -481,15 +494,20 @@ def test_a_node_without_java_is_named_when_the_campaign_connects(tmp_path: Path,
     cluster.add_node("nojava", own=node_env, path=_without_java(tmp_path / "bin"))
     cluster.wait_for_cpus(1)
     out = tmp_path / "out"
-    result = _campaign(run_cli, spec, out, cluster, timeout=240)
-    assert result.returncode == 2, result.stdout + result.stderr
-    lines = result.stderr.strip().splitlines()
-    assert lines[-2] == "rei: error: 1 of 1 Ray node(s) cannot run REI's runs:", result.stderr
-    named = re.fullmatch(r"rei: error: node (\S+) \(([0-9a-f]{12})\): java not found on PATH; install a Java 17\+ "
-                         r"runtime or set JAVA_HOME", lines[-1])
-    assert named, result.stderr
-    assert named.groups() in cluster.nodes_with_cpu(), (named.groups(), cluster.nodes_with_cpu())
+    no_java = r"java not found on PATH; install a Java 17\+ runtime or set JAVA_HOME"
+    _refused(_campaign(run_cli, spec, out, cluster, timeout=240), cluster, no_java)
     assert not (out / "runs.csv").exists()  # no run was tried
+    # a search of an external SUT, whose runs start a router: the wheel's node has none either
+    for name in ("crossing.rei", "crossing.yaml"):
+        shutil.copy(REPO_ROOT / "examples" / "search" / name, tmp_path / name)
+    searched = tmp_path / "crossing.yaml"
+    searched.write_text(searched.read_text(encoding="utf-8").replace(
+        "controller: nav", 'sut: {command: "rei nav-sut", map: true}'), encoding="utf-8")
+    result = run_cli("search", searched, "-o", tmp_path / "search", "--ray", cluster.env["RAY_ADDRESS"],
+                     "--budget", "1", timeout=240, env=cluster.env)
+    _refused(result, cluster, no_java,
+             r"crossbar executable not found \(.+\); run scripts/setup-router.sh or set REI_CROSSBAR")
+    assert not (tmp_path / "search" / "runs").exists()  # no candidate was run
     print(f"a node without java refused (cluster start included): {time.monotonic() - started:.1f} s")
 
 

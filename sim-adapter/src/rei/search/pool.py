@@ -61,12 +61,13 @@ class LocalPool:
 
 class RayPool:
     """Runs as Ray tasks through the campaign's Ray backend (``address``: a cluster's, or ``local`` for an instance
-    of ``workers`` CPUs started here)."""
+    of ``workers`` CPUs started here), whose nodes are checked as a campaign's (rei.campaign.nodes; ``router``: for
+    the router too)."""
 
     name = "ray"
 
-    def __init__(self, address: str, workers: int, stop: threading.Event) -> None:
-        self._backend = connect_ray(address, workers)
+    def __init__(self, address: str, workers: int, stop: threading.Event, router: bool = False) -> None:
+        self._backend = connect_ray(address, workers, router=router)
         self.workers = self._backend.workers
         self._stop = stop
         self._threads = ThreadPoolExecutor(self.workers, thread_name_prefix="rei-search-ray")

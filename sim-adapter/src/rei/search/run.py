@@ -24,9 +24,10 @@ RANDOM = "random"
 BUDGET = "budget"
 
 
-def make_pool(workers: int, ray: str | None, out: Path, stop: threading.Event) -> Pool:
-    """The local pool, or with ``ray`` the Ray pool (rei.campaign.backends.RayUnavailableError: it can not be)."""
-    return RayPool(ray, workers, stop) if ray else LocalPool(workers, out / "runs", stop)
+def make_pool(workers: int, ray: str | None, out: Path, stop: threading.Event, router: bool = False) -> Pool:
+    """The local pool, or with ``ray`` the Ray pool (rei.campaign.backends.RayUnavailableError: it can not be, or a
+    node cannot run the runs); ``router``: the runs start a WAMP router (an external SUT), which its nodes need."""
+    return RayPool(ray, workers, stop, router=router) if ray else LocalPool(workers, out / "runs", stop)
 
 
 def run_search(spec: SearchSpec, out: Path, *, workers: int = 1, ray: str | None = None,
@@ -38,7 +39,8 @@ def run_search(spec: SearchSpec, out: Path, *, workers: int = 1, ray: str | None
     stop = stop or threading.Event()
     # a cluster is reached before anything else, so a wrong address fails at once; the local pool starts with the
     # first run (a finished search that only rewrites its outputs starts no JVM)
-    pool: Pool = make_pool(workers, ray, out, stop) if ray else _LazyPool(
+    # an external SUT's runs start a router: the nodes are checked for it as a campaign's are
+    pool: Pool = make_pool(workers, ray, out, stop, router=spec.sut is not None) if ray else _LazyPool(
         lambda: make_pool(workers, None, out, stop), workers, "local")
     try:
         search = Search(spec, out, pool, stop, log)
