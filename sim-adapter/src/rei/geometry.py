@@ -156,3 +156,39 @@ def outline_gaps(robot: np.ndarray, outline: np.ndarray, obstacles: np.ndarray, 
     apart = np.minimum(apart, to_outline(cx, cy).min(axis=-1))
     rectangles = np.where(overlap < 0, apart, -overlap)
     return np.where(circle, circles, rectangles)
+
+
+def triangulate(points: np.ndarray | list[tuple[float, float]] | tuple[tuple[float, float], ...]
+                ) -> list[tuple[int, int, int]]:
+    """Ear clipping of a simple polygon (convex or not) of ``n`` counter-clockwise vertices: ``n - 2`` triangles
+    of vertex indices, each counter-clockwise (a POLYGON object's prism in the simulator, its pieces in the
+    metrics). A vertex is an ear when its corner turns left and no other vertex lies in its triangle."""
+    pts = [(float(x), float(y)) for x, y in points]
+    if len(pts) < 3:
+        raise ValueError(f"a polygon has at least 3 vertices, got {len(pts)}")
+    if sum(pts[i - 1][0] * pts[i][1] - pts[i][0] * pts[i - 1][1] for i in range(len(pts))) < 0:
+        raise ValueError("the polygon's vertices must go counter-clockwise")
+
+    def cross(o: tuple[float, float], a: tuple[float, float], b: tuple[float, float]) -> float:
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
+    left = list(range(len(pts)))
+    out: list[tuple[int, int, int]] = []
+    while len(left) > 3:
+        n = len(left)
+        for k in range(n):
+            i, j, m = left[k - 1], left[k], left[(k + 1) % n]
+            a, b, c = pts[i], pts[j], pts[m]
+            if cross(a, b, c) <= 1e-15:
+                continue  # a reflex (or straight) corner is no ear
+            if any(q not in (i, j, m) and cross(a, b, pts[q]) >= 0 and cross(b, c, pts[q]) >= 0
+                   and cross(c, a, pts[q]) >= 0 for q in left):
+                continue
+            out.append((i, j, m))
+            del left[k]
+            break
+        else:  # only straight corners are left (collinear vertices): cut the flat remainder as it comes
+            out.append((left[-1], left[0], left[1]))
+            del left[0]
+    out.append((left[0], left[1], left[2]))
+    return out

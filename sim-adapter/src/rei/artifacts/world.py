@@ -46,6 +46,7 @@ class Shape(enum.StrEnum):
     BOX = "BOX"
     CYLINDER = "CYLINDER"
     MESH = "MESH"
+    POLYGON = "POLYGON"  # furniture on a polygon: ObjectSpec.footprint (docs/language.md#catalogues)
 
 
 Vec3 = tuple[float, float, float]
@@ -80,6 +81,18 @@ class ObjectSpec:
     inertia: Vec3
     colour: Colour
     floor: str | None
+    footprint: PolygonFootprint | None = None
+    """A POLYGON object's outline about ``pose`` (its bounding box's centre), in its own frame, counter-clockwise,
+    convex or not; None for every other shape (a box's footprint is its ``size`` rectangle, a cylinder's circle)."""
+
+    @property
+    def outline(self) -> tuple[tuple[float, float], ...] | None:
+        """A POLYGON object's vertices placed and turned into the world (None for other shapes)."""
+        if self.footprint is None:
+            return None
+        x, y, _, yaw = self.pose
+        c, s = math.cos(yaw), math.sin(yaw)
+        return tuple((x + c * u - s * v, y + s * u + c * v) for u, v in self.footprint.points)
 
 
 @dataclass(frozen=True, slots=True)
@@ -128,7 +141,8 @@ class CircleFootprint:
 
 @dataclass(frozen=True, slots=True)
 class PolygonFootprint:
-    """A robot's outline on the floor in the robot's frame: a convex polygon, counter-clockwise."""
+    """An outline on the floor in its body's frame, counter-clockwise: a robot's (convex), or a POLYGON object's
+    (a simple polygon, convex or not)."""
 
     points: tuple[tuple[float, float], ...]
 
@@ -156,8 +170,8 @@ class RobotSpec:
     """The robot is built by the simulator from these parameters; its ``pose`` is on the ground (z = 0).
 
     A robot read from a URDF or xacro description (docs/robots.md) also has its ``footprint`` (the collision shapes'
-    outline on the floor, relative to ``pose``), its lidar's ``lidar_pose`` ``(x, y, z, yaw)`` in the robot's frame
-    and the expanded ``description`` in the case folder; ``size`` is then the footprint's bounding box (and the
+    outline on the floor, relative to ``pose``), its lidar's ``lidar_pose`` ``(x, y, z, yaw)`` in the robot's frame,
+    the lidar's link ``lidar_link`` and the expanded ``description`` in the case folder; ``size`` is then the footprint's bounding box (and the
     lidar's height). A box robot has none of these: its footprint is the ``size`` rectangle centred on ``pose``."""
 
     name: str
@@ -172,6 +186,9 @@ class RobotSpec:
     footprint: Footprint | None = None
     lidar_pose: tuple[float, float, float, float] | None = None
     description: Path | None = None
+    #: The description's link the lidar is (the catalogue entry's ``lidar link``); None for a box robot, and in a
+    #: world.json written before it was recorded.
+    lidar_link: str | None = None
 
     @property
     def outline(self) -> Footprint:
@@ -347,17 +364,26 @@ def _object(o: Fields) -> ObjectSpec:
     pose = o.vector("pose", 4)
     inertia = o.vector("inertia", 3, non_negative=True)
     colour = o.vector("colour", 4)
+    shape = _enum(o, "shape", Shape)
+    footprint = None
+    if shape is Shape.POLYGON:
+        if not o.has("footprint"):
+            raise o.error("a POLYGON object needs its footprint", "footprint")
+        footprint = _footprint(o.child("footprint"))
+        if not isinstance(footprint, PolygonFootprint):
+            raise o.error("a POLYGON object's footprint is a polygon", "footprint")
     return ObjectSpec(
         name=o.text("name"),
         category=category,
         type=o.text("type"),
-        shape=_enum(o, "shape", Shape),
+        shape=shape,
         size=(size[0], size[1], size[2]),
         pose=(pose[0], pose[1], pose[2], pose[3]),
         mass=mass,
         inertia=(inertia[0], inertia[1], inertia[2]),
         colour=(colour[0], colour[1], colour[2], colour[3]),
         floor=o.optional_text("floor"),
+        footprint=footprint,
     )
 
 
@@ -424,6 +450,7 @@ def _robot(r: Fields, folder: Path) -> RobotSpec:
         footprint=_footprint(r.child("footprint")) if r.has("footprint") else None,
         lidar_pose=lidar_pose,
         description=_description(r, folder) if r.has("description") else None,
+        lidar_link=r.text("lidarLink") if r.has("lidarLink") else None,
     )
 
 

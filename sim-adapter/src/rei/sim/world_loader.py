@@ -39,7 +39,8 @@ import numpy as np
 import pybullet as p
 
 from rei.artifacts.errors import ArtifactError
-from rei.artifacts.world import Category, ObjectSpec, WorldSpec
+from rei.artifacts.world import Category, ObjectSpec, Shape, WorldSpec
+from rei.geometry import quaternion_of_yaw, triangulate
 from rei.sim.native_output import quiet_native_output
 
 GRAVITY = 9.81
@@ -105,7 +106,8 @@ def load_world(client: int, sdf_path: Path | str, world: WorldSpec, *, fixed: Co
     merged: dict[int, MergedBoxes] = {}
     placed = [o for o in world.objects if world.map is None or o.category is not Category.FLOOR]
     fixed = frozenset(fixed)
-    if not fixed and len(placed) == len(world.objects) <= MERGE_ABOVE:
+    polygons = any(o.shape is Shape.POLYGON for o in world.objects)
+    if not fixed and not polygons and len(placed) == len(world.objects) <= MERGE_ABOVE:
         ids = _load_sdf(client, sdf_path, sdf_path)
         names = [p.getBodyInfo(b, physicsClientId=client)[1].decode("utf-8") for b in ids]
         if names != expected:
@@ -189,6 +191,10 @@ def _load_large(
             body_of[obj.name] = -1
             holder.remove(model)
             continue
+        if obj.shape is Shape.POLYGON:  # pybullet's loadSDF knows no <polyline>: its prism, built here
+            holder.remove(model)
+            body_of[obj.name] = _polygon_body(client, obj)
+            continue
         if obj.name in fixed:
             pinned.append(model)
             holder.remove(model)
@@ -224,6 +230,30 @@ def _load_large(
             merged[chunk.body] = chunk
             body_of.update((name, chunk.body) for name in chunk.names)
     return expected, [body_of[n] for n in expected], merged
+
+
+def _polygon_body(client: int, obj: ObjectSpec) -> int:
+    """A POLYGON object (furniture, fixed): the prism of its footprint, convex or not, from the floor to its
+    height, as one concave triangle mesh (pybullet's static trimesh: the robot's bodies collide with it and the
+    lidar's rays hit it where the monitor's polygon is), placed at its pose (its centre, turned by its yaw)."""
+    assert obj.footprint is not None
+    points = obj.footprint.points
+    n, half = len(points), obj.size[2] / 2
+    vertices = [[x, y, -half] for x, y in points] + [[x, y, half] for x, y in points]
+    indices: list[int] = []
+    for a, b, c in triangulate(points):
+        indices += [n + a, n + b, n + c, c, b, a]  # the top faces up, the bottom down
+    for i in range(n):
+        j = (i + 1) % n  # each side faces out of the counter-clockwise outline
+        indices += [i, j, n + j, i, n + j, n + i]
+    shape = p.createCollisionShape(p.GEOM_MESH, vertices=vertices, indices=indices,
+                                   flags=p.GEOM_FORCE_CONCAVE_TRIMESH, physicsClientId=client)
+    visual = p.createVisualShape(p.GEOM_MESH, vertices=vertices, indices=indices, rgbaColor=list(obj.colour),
+                                 physicsClientId=client)
+    x, y, z, yaw = obj.pose
+    return p.createMultiBody(0.0, shape, visual, basePosition=[x, y, z],
+                             baseOrientation=quaternion_of_yaw(yaw), useMaximalCoordinates=True,
+                             physicsClientId=client)
 
 
 def _load_part(client: int, root: ET.Element, sdf_path: Path, world: WorldSpec, *,

@@ -18,6 +18,7 @@ import org.rei.catalogue.Catalogue;
 import org.rei.catalogue.ObjectCategory;
 import org.rei.catalogue.ObjectType;
 import org.rei.catalogue.Shape;
+import org.rei.catalogue.util.Polygons;
 import org.rei.catalogue.util.Catalogues;
 import org.rei.context.Behaviour;
 import org.rei.context.BuildingBlock;
@@ -216,6 +217,11 @@ final class ConcreteMapping {
 		double[] centre = layout.centreOf(floor);
 		double sizeX = type.getSizeX();
 		double sizeY = type.getShape() == Shape.CYLINDER ? sizeX : type.getSizeY();
+		if (Polygons.isPolygon(type)) { // its bounding box, centred on the floor centre as a box is
+			double[] b = Polygons.bounds(Polygons.points(type));
+			sizeX = b[2] - b[0];
+			sizeY = b[3] - b[1];
+		}
 		// bodies are posed at their centre, the robot at its base on the ground
 		double z = category == ObjectCategory.ROBOT ? 0 : type.getSizeZ() / 2;
 		return body(object.getName(), type, category, sizeX, sizeY, type.getSizeZ(), centre[0], centre[1], z,

@@ -20,6 +20,7 @@ import org.rei.catalogue.ObjectCategory;
 import org.rei.catalogue.ObjectType;
 import org.rei.catalogue.RobotType;
 import org.rei.catalogue.Shape;
+import org.rei.catalogue.util.Polygons;
 import org.rei.context.Direction;
 import org.rei.context.Floor;
 import org.rei.context.PhysicalObject;
@@ -186,6 +187,51 @@ public final class TemplateSupport {
 	/** Shape literal of a type: BOX, CYLINDER or MESH (BOX when unset). */
 	public String shape(ObjectType type) {
 		return (type.getShape() == null ? Shape.BOX : type.getShape()).getLiteral();
+	}
+
+	/**
+	 * world.json's {@code footprint} of a POLYGON object (its vertices about its pose, the bounding box's centre,
+	 * counter-clockwise: docs/artifacts.md); the template writes none for every other shape, so their lines stay as
+	 * they were.
+	 */
+	public String footprint(ConcreteObject body) {
+		if (!Polygons.isPolygon(body.getType())) {
+			return "";
+		}
+		StringBuilder out = new StringBuilder("{\"type\": \"polygon\", \"points\": [");
+		double[][] points = Polygons.centred(body.getType());
+		for (int i = 0; i < points.length; i++) {
+			out.append(i == 0 ? "" : ", ").append('[').append(num(points[i][0])).append(", ").append(num(points[i][1]))
+					.append(']');
+		}
+		return out.append("]}").toString();
+	}
+
+	/** A type's x size; a POLYGON type's bounding box's. */
+	public double typeSizeX(ObjectType type) {
+		if (!Polygons.isPolygon(type)) {
+			return type.getSizeX();
+		}
+		double[] b = Polygons.bounds(Polygons.points(type));
+		return b[2] - b[0];
+	}
+
+	/** A type's y size; a POLYGON type's bounding box's. */
+	public double typeSizeY(ObjectType type) {
+		if (!Polygons.isPolygon(type)) {
+			return type.getSizeY();
+		}
+		double[] b = Polygons.bounds(Polygons.points(type));
+		return b[3] - b[1];
+	}
+
+	/** world.sdf's geometry of a POLYGON object: an SDF polyline of its footprint, its height high. */
+	public String polyline(ConcreteObject body) {
+		StringBuilder out = new StringBuilder("<polyline>");
+		for (double[] p : Polygons.centred(body.getType())) {
+			out.append("<point>").append(num(p[0])).append(' ').append(num(p[1])).append("</point>");
+		}
+		return out.append("<height>").append(num(body.getSizeZ())).append("</height></polyline>").toString();
 	}
 
 	/** Mesh file of a MESH type when the file exists (relative paths against the output folder), else null. */

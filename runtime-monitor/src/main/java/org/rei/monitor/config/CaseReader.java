@@ -51,7 +51,7 @@ public final class CaseReader {
 		for (JsonNode o : n.path("objects")) {
 			objects.add(new World.WorldObject(o.path("name").asText(), o.path("category").asText(),
 					o.path("type").asText(), o.path("shape").asText("BOX"), doubles(o.path("size"), 3),
-					doubles(o.path("pose"), 4), text(o, "floor")));
+					doubles(o.path("pose"), 4), text(o, "floor"), footprint(o.path("footprint"))));
 		}
 		JsonNode r = n.path("robot");
 		World.WorldRobot robot = new World.WorldRobot(r.path("name").asText(), r.path("type").asText(),
@@ -66,8 +66,9 @@ public final class CaseReader {
 	public static final List<String> FOOTPRINT_TYPES = List.of("polygon", "circle");
 
 	/**
-	 * world.json's robot footprint of a robot read from its description: a convex polygon or a circle in the robot's
-	 * frame (rei.artifacts.world); {@code null} for a box robot.
+	 * world.json's footprint of a robot read from its description (a convex polygon or a circle in the robot's
+	 * frame) or of a POLYGON object (a simple polygon, convex or not, about its pose) (rei.artifacts.world);
+	 * {@code null} for a box robot and every other object.
 	 */
 	static Shape footprint(JsonNode f) {
 		if (f.isMissingNode() || f.isNull()) {
@@ -78,7 +79,7 @@ public final class CaseReader {
 			return Shape.circle(f.path("x").asDouble(), f.path("y").asDouble(), f.path("radius").asDouble());
 		}
 		if (!FOOTPRINT_TYPES.get(0).equals(type)) {
-			throw new IllegalArgumentException("world.json robot.footprint.type must be one of " + FOOTPRINT_TYPES
+			throw new IllegalArgumentException("world.json footprint.type must be one of " + FOOTPRINT_TYPES
 					+ ", got " + type);
 		}
 		List<double[]> points = new ArrayList<>();

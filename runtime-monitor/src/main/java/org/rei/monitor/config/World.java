@@ -14,9 +14,18 @@ public record World(String testcase, String environment, double floorSize, List<
 	public record FloorCell(String name, int i, int j, String top, String right, String bottom, String left) {
 	}
 
-	/** A body of the world: {@code size} is {@code [x, y, z]}, {@code pose} {@code [x, y, z, yaw]}. */
+	/**
+	 * A body of the world: {@code size} is {@code [x, y, z]}, {@code pose} {@code [x, y, z, yaw]}; a POLYGON
+	 * object's {@code footprint} its polygon about its pose (else null).
+	 */
 	public record WorldObject(String name, String category, String type, String shape, double[] size, double[] pose,
-			String floor) {
+			String floor, org.rei.monitor.geometry.Shape footprint) {
+
+		/** A body whose footprint its shape and size give (a box, a cylinder, a mesh's bounding box). */
+		public WorldObject(String name, String category, String type, String shape, double[] size, double[] pose,
+				String floor) {
+			this(name, category, type, shape, size, pose, floor, null);
+		}
 
 		public boolean isObstacle() {
 			return !"FLOOR".equals(category);

@@ -6,8 +6,9 @@ package org.rei.monitor.geometry;
 
 /**
  * A footprint in the body frame: an oriented rectangle centred on the body origin (boxes, meshes by their bounding
- * box, a box robot), a circle (cylinders; a round robot's centred at {@code (centreX, centreY)}) or a convex polygon
- * (a robot read from its URDF description: its collision shapes' outline, docs/robots.md), as the catalogue or
+ * box, a box robot), a circle (cylinders; a round robot's centred at {@code (centreX, centreY)}) or a polygon (a
+ * robot read from its URDF description: its collision shapes' outline, convex, docs/robots.md; a POLYGON object of
+ * the catalogue: a simple polygon, convex or not, whose distances JTS measures as they are), as the catalogue or
  * world.json says (thesis 6.1.3.1). {@code sizeX}, {@code sizeY} are a polygon's bounding box.
  */
 public record Shape(Kind kind, double sizeX, double sizeY, double centreX, double centreY, double[][] points) {
@@ -38,7 +39,7 @@ public record Shape(Kind kind, double sizeX, double sizeY, double centreX, doubl
 		return new Shape(Kind.CIRCLE, 2 * radius, 2 * radius, x, y, null);
 	}
 
-	/** A convex polygon of body-frame {@code [x, y]} points, counter-clockwise (at least 3). */
+	/** A polygon of body-frame {@code [x, y]} points, counter-clockwise (at least 3; a robot's is convex). */
 	public static Shape polygon(double[][] points) {
 		if (points.length < 3) {
 			throw new IllegalArgumentException("a footprint polygon has at least 3 points, got " + points.length);

@@ -89,7 +89,7 @@ public final class Monitor implements AutoCloseable {
 			if (!o.isObstacle()) {
 				continue;
 			}
-			Shape s = shape(o.shape(), o.size());
+			Shape s = o.footprint() != null ? o.footprint() : shape(o.shape(), o.size());
 			shapes.put(o.name(), s);
 			categories.put(o.name(), o.category());
 			Footprint f = Footprint.place(o.name(), s, o.pose()[0], o.pose()[1], o.pose()[3]);

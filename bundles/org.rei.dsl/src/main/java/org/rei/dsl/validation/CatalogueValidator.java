@@ -28,6 +28,7 @@ import org.rei.catalogue.ObjectType;
 import org.rei.catalogue.RobotType;
 import org.rei.catalogue.Shape;
 import org.rei.catalogue.util.Catalogues;
+import org.rei.catalogue.util.Polygons;
 import org.rei.catalogue.util.RobotDescriptions;
 import org.rei.context.ContextPackage;
 import org.rei.context.TestCase;
@@ -153,6 +154,52 @@ public class CatalogueValidator extends ReiCheckBase {
 			if (problem != null) {
 				error(problem, type, CAT.getObjectType_WalkingSpeedTo(), ReiIssueCodes.OUT_OF_RANGE);
 			}
+		}
+	}
+
+	/**
+	 * A polygon footprint (furniture only): at least 3 vertices, an area, no edge crossing or touching another
+	 * (a simple polygon, convex or not), each error at what is wrong: the crossing edge's first vertex.
+	 */
+	@Check
+	public void checkPolygon(ObjectType type) {
+		if (!Polygons.isPolygon(type) || !(type.eContainer() instanceof Catalogue)) {
+			return;
+		}
+		if (type.getCategory() != ObjectCategory.STATIC) {
+			error("Only furniture stands on a polygon: a " + type.getCategory().getLiteral().toLowerCase()
+					+ " type is a box or a cylinder", type, CAT.getObjectType_Shape(), ReiIssueCodes.TYPE_CATEGORY);
+			return;
+		}
+		double[][] points = Polygons.points(type);
+		if (points.length < 3) {
+			error("A polygon has at least 3 vertices, got " + points.length + ": (x,y) in metres, e.g. (0,0) (1,0) "
+					+ "(0,1)", type, CAT.getObjectType_Shape(), ReiIssueCodes.POLYGON);
+			return;
+		}
+		if (Polygons.collinear(points)) {
+			error("The polygon has no area: its vertices lie on one line", type, CAT.getObjectType_Shape(),
+					ReiIssueCodes.POLYGON);
+			return;
+		}
+		int[] crossing = Polygons.crossing(points);
+		if (crossing != null) {
+			int n = points.length;
+			boolean repeat = points[crossing[0]][0] == points[crossing[1]][0]
+					&& points[crossing[0]][1] == points[crossing[1]][1];
+			String message = repeat
+					? "Vertex " + (crossing[1] + 1) + " repeats vertex " + (crossing[0] + 1) + ": a polygon's edges "
+							+ "must have a length"
+					: "The polygon crosses itself: its edge from vertex " + (crossing[1] + 1) + " to vertex "
+							+ ((crossing[1] + 1) % n + 1) + " meets the edge from vertex " + (crossing[0] + 1)
+							+ " to vertex " + ((crossing[0] + 1) % n + 1) + " (the vertices go round the outline "
+							+ "in order)";
+			error(message, type.getVertices().get(crossing[1]), null, ReiIssueCodes.POLYGON);
+			return;
+		}
+		if (Math.abs(Polygons.doubleArea(points)) / 2 < Polygons.MIN_AREA) {
+			error("The polygon has no area: its vertices lie on one line", type, CAT.getObjectType_Shape(),
+					ReiIssueCodes.POLYGON);
 		}
 	}
 

@@ -35,6 +35,7 @@ public interface ReiIssueCodes {
 	String CATALOGUE_INVALID = PREFIX + "catalogueInvalid";
 	String ROBOT_DESCRIPTION = PREFIX + "robotDescription";
 	String CYLINDER_SIZE = PREFIX + "cylinderSize";
+	String POLYGON = PREFIX + "polygon";
 	String COLOUR = PREFIX + "colour";
 	String OUT_OF_RANGE = PREFIX + "outOfRange";
 	String FAULT_TIME_ORDER = PREFIX + "faultTimeOrder";
