@@ -393,4 +393,49 @@ class ArtifactGeneratorTest {
 		assertArrayEquals(Files.readAllBytes(first.resolve("world.sdf")), Files.readAllBytes(second.resolve("world.sdf")));
 		assertNotEquals(Files.readString(first.resolve("world.json")), Files.readString(out.resolve("other/world.json")));
 	}
+
+	/**
+	 * A POLYGON type (an L written clockwise, off its origin): world.json carries its vertices about the object's
+	 * pose, the bounding box's centre on the floor centre, counter-clockwise; size is the bounding box; world.sdf a
+	 * polyline from the floor up; the table's line stays as a box's, with no footprint.
+	 */
+	@Test
+	void polygonFurnitureCarriesItsFootprint() throws Exception {
+		TestCase testCase = TestCases.small();
+		org.rei.catalogue.ObjectType desk = org.rei.catalogue.CatalogueFactory.eINSTANCE.createObjectType();
+		desk.setName("CornerDesk");
+		desk.setCategory(org.rei.catalogue.ObjectCategory.STATIC);
+		desk.setShape(org.rei.catalogue.Shape.POLYGON);
+		desk.setSizeZ(0.75);
+		double[][] clockwise = { { 2, 1 }, { 2, 2.4 }, { 2.6, 2.4 }, { 2.6, 1.6 }, { 3.6, 1.6 }, { 3.6, 1 } };
+		for (double[] p : clockwise) {
+			org.rei.catalogue.Vertex v = org.rei.catalogue.CatalogueFactory.eINSTANCE.createVertex();
+			v.setX(p[0]);
+			v.setY(p[1]);
+			desk.getVertices().add(v);
+		}
+		org.rei.context.StaticObject table = (org.rei.context.StaticObject) testCase.getOwnedEnvironment()
+				.getOwnedObjects().get(0);
+		table.setType(desk);
+		generator.generate(testCase, out);
+
+		JsonNode placed = named(json("world.json").get("objects"), "table1");
+		assertEquals("POLYGON", placed.get("shape").asText());
+		assertArrayEquals(new double[] { 1.6, 1.4, 0.75 }, doubles(placed.get("size")), 1e-9);
+		assertArrayEquals(new double[] { 1.5, 0.5, 0.375, 1.570796 }, doubles(placed.get("pose")), 1e-9);
+		JsonNode footprint = placed.get("footprint");
+		assertEquals("polygon", footprint.get("type").asText());
+		double[][] expected = { { -0.8, -0.7 }, { 0.8, -0.7 }, { 0.8, -0.1 }, { -0.2, -0.1 }, { -0.2, 0.7 },
+				{ -0.8, 0.7 } };
+		assertEquals(expected.length, footprint.get("points").size());
+		for (int i = 0; i < expected.length; i++) {
+			assertArrayEquals(expected[i], doubles(footprint.get("points").get(i)), 1e-9, "vertex " + i);
+		}
+		JsonNode type = named(json("monitor.json").get("catalogue"), "CornerDesk");
+		assertArrayEquals(new double[] { 1.6, 1.4, 0.75 }, doubles(type.get("size")), 1e-9);
+		String sdf = Files.readString(out.resolve("world.sdf"));
+		assertTrue(sdf.contains("<pose>0 0 -0.375 0 0 0</pose><geometry><polyline><point>-0.8 -0.7</point>"), sdf);
+		assertTrue(sdf.contains("<height>0.75</height></polyline>"), sdf);
+		assertFalse(named(json("world.json").get("objects"), "h1").has("footprint"));
+	}
 }

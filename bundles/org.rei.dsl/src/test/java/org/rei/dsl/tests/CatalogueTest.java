@@ -82,4 +82,23 @@ class CatalogueTest {
 		assertTrue(desk.getType().eResource().getURI().toString().endsWith("default.catalogue"));
 		assertEquals("Scout", testCase.getOwnedEnvironment().getOwnedRobot().getType().getName());
 	}
+
+	/** A polygon type's vertices, as written (negative and decimal numbers), its height; the example validates. */
+	@Test
+	void aPolygonTypeKeepsItsVertices(@TempDir Path dir) throws IOException {
+		Path file = dir.resolve("shapes.rei");
+		Files.writeString(file, """
+				catalogue Shapes {
+				  type Wedge : object polygon (-0.5,-0.25) (0.5, -0.25)( 0 , 0.75 ) height 0.4 colour "#808080"
+				}
+				""");
+		Catalogue shapes = (Catalogue) files.load(file).getContents().get(0);
+		var wedge = shapes.getOwnedTypes().get(0);
+		assertEquals(Shape.POLYGON, wedge.getShape());
+		assertEquals(List.of(-0.5, -0.25, 0.5, -0.25, 0.0, 0.75), wedge.getVertices().stream()
+				.flatMap(v -> java.util.stream.Stream.of(v.getX(), v.getY())).toList());
+		assertEquals(0.4, wedge.getSizeZ());
+		assertEquals(List.of(), files.validate(file));
+		assertEquals(List.of(), files.validate(ReiFiles.repository().resolve("examples/corner_desk.rei")));
+	}
 }
