@@ -11,6 +11,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from polygon_desk import add_polygon_desk
 
 ROOM = Path(__file__).resolve().parent / "fixtures" / "room6x4"
 
@@ -52,3 +53,10 @@ def map_case(room_copy: Path) -> Path:
 def occupancy_map() -> Callable[[Path], Path]:
     """``add_occupancy_map``, for a test's own copy of the fixture room."""
     return add_occupancy_map
+
+
+
+@pytest.fixture
+def polygon_case(room_copy: Path) -> Path:
+    """The fixture room with its table1 the C-shaped desk of :func:`polygon_desk.add_polygon_desk`."""
+    return add_polygon_desk(room_copy)
