@@ -334,12 +334,15 @@ def test_a_node_that_cannot_see_out_runs_the_campaign_as_a_local_one(tmp_path: P
 
 def test_a_node_lost_in_the_middle_of_a_campaign_loses_no_run_and_repeats_none(tmp_path: Path, cluster: Cluster,
                                                                              run_cli: Any) -> None:
+    """Nodes come and go: one dies while it runs a run, and one that cannot run REI's runs (no java) joins after
+    the connect-time check; it is checked before it gets a run, named, and every run goes to the node left."""
     started = time.monotonic()
     spec = _spec(tmp_path, 4, "1.0 0.1 0.0\n")
     doomed = cluster.add_node("doomed")
     cluster.wait_for_cpus(1)  # one node at a time: two joining at once on one machine time out now and then
     cluster.add_node("survivor")
     cluster.wait_for_cpus(2)
+    survivors = cluster.nodes_with_cpu()
     out = tmp_path / "out"
     argv = [str(Path(sys.executable).parent / "rei"), "campaign", str(spec), "-o", str(out), "--ray",
             cluster.env["RAY_ADDRESS"]]
@@ -353,6 +356,7 @@ def test_a_node_lost_in_the_middle_of_a_campaign_loses_no_run_and_repeats_none(t
             assert campaign.poll() is None, (tmp_path / "campaign.log").read_text(errors="replace")
             assert time.monotonic() < deadline, "no run ever started on the doomed node"
             time.sleep(0.1)
+        late = cluster.add_node("late", path=_without_java(tmp_path / "bin"))
         os.kill(cluster.raylet("doomed"), signal.SIGKILL)
         code = campaign.wait(240)
     finally:
@@ -362,6 +366,12 @@ def test_a_node_lost_in_the_middle_of_a_campaign_loses_no_run_and_repeats_none(t
     text = (tmp_path / "campaign.log").read_text(errors="replace")
     assert code == 0, text
     assert "lost" in text and "trying again" in text, text
+    late_id = next(node for node in cluster.nodes_with_cpu() if node not in survivors)
+    said = re.findall(rf"^node \S+ \({late_id[1]}\): java not found on PATH; install a Java 17\+ runtime or "
+                      r"set JAVA_HOME; it joined after the check and cannot run REI's runs: they go to the other nodes$",
+                      text, re.MULTILINE)
+    assert len(said) == 1, text  # once, whether its check or a run's task found it first
+    assert not list(late.glob("rei-node-monitor-*")) and not list(late.glob("rei-run-*"))  # it ran no run
     rows = _runs(out)
     keys = [r["key"] for r in rows]
     assert sorted(keys) == sorted(set(keys)) and len(keys) == 4, rows  # every run, once

@@ -150,10 +150,10 @@ class RayBackend:
     name = "ray"
 
     def __init__(self, address: str, workers: int | None = None, attempts: int = 3,
-                 log: Callable[[str], None] = print, router: bool = False) -> None:
+                 log: Callable[[str], None] = print, router: bool = False, people: bool = False) -> None:
         import ray
 
-        from rei.campaign.nodes import RESOURCE, check_cluster, slots
+        from rei.campaign.nodes import RESOURCE, Watch, check_cluster, slots
 
         if attempts < 1:
             raise ValueError(f"attempts must be >= 1, got {attempts}")
@@ -191,7 +191,7 @@ class RayBackend:
         # the monitor jar, pybullet, the router when the runs start one): one that cannot is named now rather than
         # failing its runs one by one
         try:
-            problems = check_cluster(ray, router)
+            problems, fit = check_cluster(ray, router, people)
         except NodesUnfitError:  # no node offers the resource
             self.close()
             raise
@@ -201,6 +201,10 @@ class RayBackend:
             raise NodesUnfitError(f"{len({name for name, _ in problems})} of {nodes} Ray node(s) cannot run "
                                   "REI's runs:\n" + "\n".join(f"{name}: {lack}" for name, lack in problems))
         self.workers = max(1, slots(ray.nodes()))
+        # a node that joins later is checked before it gets a run: by the driver when it notices it, or by the
+        # run's task that lands there first (it then returns without running, and the run goes elsewhere)
+        self._needs = (router, people)
+        self._watch = Watch(ray, fit, router, people, log)
         # a CPU and a 'rei' each: only the nodes offering it get runs; max_retries=0: REI tries a lost task again
         # itself (above); Ray's own retry would hide the attempt
         self._remote = ray.remote(num_cpus=1, resources={RESOURCE: 1}, max_retries=0)(run_shipped)
@@ -225,18 +229,29 @@ class RayBackend:
                 on_outcome(task, Outcome(task.key, None, False, False, 0.0, 0.0,
                                          f"cannot ship the run's inputs: {error}", "-", attempt))
                 return
-            ref = self._remote.remote(task.to_dict(), cases[task.case_dir], extra, fields, attempt)
+            ref = self._remote.options(**self._watch.excluded()).remote(
+                task.to_dict(), cases[task.case_dir], extra, fields, attempt, self._needs)
             refs[ref] = (task, attempt, fields)
 
         for task in tasks:
             submit(task, 1)
         try:
             while refs and not stop.is_set():
+                self._watch.poll()
                 ready, _ = ray.wait(list(refs), num_returns=1, timeout=0.5)
                 for ref in ready:
                     task, attempt, fields = refs.pop(ref)
                     try:
                         shipped = ray.get(ref)
+                        if "unfit" in shipped:  # its node cannot run it (a node that joined after the check)
+                            self._watch.refused(shipped["node"], shipped["unfit"])
+                            nowhere = self._watch.nowhere()
+                            if nowhere is None:
+                                submit(task, attempt)  # not a try: it did not run
+                                continue
+                            outcome = Outcome(task.key, None, False, False, 0.0, 0.0, nowhere, "?", attempt)
+                            on_outcome(task, outcome)
+                            continue
                         self.moved["received"] += receive(task, shipped["files"], ray.get, shipped["work"], fields)
                         outcome = Outcome(**shipped["outcome"])
                     except ray.exceptions.TaskCancelledError:
@@ -311,12 +326,13 @@ class RayUnavailableError(RuntimeError):
     REI (the message says which)."""
 
 
-def connect_ray(address: str, workers: int, router: bool = False) -> RayBackend:
+def connect_ray(address: str, workers: int, router: bool = False, people: bool = False) -> RayBackend:
     """The Ray backend for ``--ray ADDRESS`` (``local``: a Ray instance of ``workers`` CPUs started here; a cluster
     has CPUs of its own), for rei campaign and rei search; ``router``: the runs start a WAMP router (``mode:
-    pipeline``, an external SUT), which the nodes are then checked to have."""
+    pipeline``, an external SUT), ``people``: they move people who see the robot (JuPedSim), which the nodes are
+    then checked to have."""
     try:
-        return RayBackend(address, workers if address == "local" else None, router=router)
+        return RayBackend(address, workers if address == "local" else None, router=router, people=people)
     except ImportError:
         raise RayUnavailableError("--ray needs Ray: pip install 'rei[campaign-ray]'") from None
     except NodesUnfitError as error:

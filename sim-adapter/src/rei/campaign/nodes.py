@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: EPL-2.0
-"""Can every node of a Ray cluster run REI's runs? Asked once at connect time, node by node.
+"""Can every node of a Ray cluster run REI's runs? Asked at connect time, node by node, and of each node that
+joins later before it gets a run.
 
 REI's runs go only to the nodes that offer the custom resource ``rei`` (``RESOURCE``; ``ray start
 --resources='{"rei": N}'``, N runs at a time there): a run's task asks for one CPU and one ``rei``, so a node
@@ -12,12 +13,20 @@ campaign. ``check_cluster`` sends a task of no CPU pinned to each alive node tha
 go to), which runs ``check_node`` there, and returns one line per node that cannot, naming the node and what it
 lacks. ``check_node`` is pickled by reference (``rei.campaign.nodes.check_node``): a node without REI fails to
 load it, which is itself the answer.
+
+A node that joins after that is asked the same by the driver as soon as it notices it (``Watch``), and a run's task
+asks its own node first (``node_lacks``, once per Ray worker process): on a node that cannot run it, the task
+returns without running and the driver submits the run again, kept off that node (Ray's ``ray.io/node-id`` label),
+the node named once with what it lacks; so a late node's shortcomings never turn runs into ERROR.
 """
 
 from __future__ import annotations
 
 import contextlib
 import re
+import threading
+import time
+from collections.abc import Callable
 from typing import Any
 
 #: The custom Ray resource a run's task asks one of: only nodes that offer it get runs.
@@ -31,8 +40,9 @@ CHECK_TIMEOUT = 120.0
 _ANSI = re.compile(r"\x1b\[[0-9;]*m")
 
 
-def check_node(router: bool) -> list[str]:
-    """On the node: what it lacks to run REI's runs (empty: nothing). ``router``: the runs start a WAMP router."""
+def check_node(router: bool, people: bool = False) -> list[str]:
+    """On the node: what it lacks to run REI's runs (empty: nothing). ``router``: the runs start a WAMP router;
+    ``people``: they move people who see the robot (JuPedSim's people server)."""
     problems = []
     try:
         import pybullet  # noqa: F401 - the simulation
@@ -58,40 +68,131 @@ def check_node(router: bool) -> list[str]:
     return problems
 
 
-def check_cluster(ray: Any, router: bool = False, timeout: float = CHECK_TIMEOUT) -> list[tuple[str, str]]:
-    """``(node IP (ID), what it lacks)`` for every alive node offering ``RESOURCE`` that cannot run REI's runs; []
-    if all can. ``NodesUnfitError``: no alive node offers it."""
+_LACKS: dict[tuple[bool, bool], list[str]] = {}
+
+
+def node_lacks(router: bool, people: bool = False) -> list[str]:
+    """``check_node``, asked once per process (a Ray worker runs many runs): what a run's task asks before it runs."""
+    if (router, people) not in _LACKS:
+        _LACKS[router, people] = check_node(router, people)
+    return _LACKS[router, people]
+
+
+def name(node: dict[str, Any]) -> str:
+    """How a node is named to the user: its address and the first 12 digits of its id."""
+    return f"node {node.get('NodeManagerAddress', '?')} ({node['NodeID'][:12]})"
+
+
+def ask(ray: Any, node: dict[str, Any], router: bool, people: bool = False) -> Any:
+    """A reference to ``check_node``'s answer on ``node`` (a task of no CPU pinned to it)."""
     from ray.util.scheduling_strategies import NodeAffinitySchedulingStrategy
 
     remote = ray.remote(num_cpus=0, max_retries=0)(check_node)
-    refs = {}
+    return remote.options(scheduling_strategy=NodeAffinitySchedulingStrategy(node["NodeID"], soft=False)).remote(
+        router, people)
+
+
+def answer(ray: Any, ref: Any) -> list[str]:
+    """What the node of a finished ``ask`` lacks; a check that could not even run there says why."""
+    try:
+        lacks: list[str] = ray.get(ref)
+        return lacks
+    except Exception as error:  # noqa: BLE001 - the check could not even run there: REI or its Python is broken
+        lines = [line.strip() for line in _ANSI.sub("", str(error)).splitlines() if line.strip()]
+        # the innermost cause is the last line of the node's traceback ("ModuleNotFoundError: No module ...")
+        cause = lines[-1] if lines else type(error).__name__
+        hint = "install REI there (pip install rei-*.whl, docs/campaigns.md#setting-up-a-cluster)"
+        return [f"cannot run REI's check ({cause}); {hint}"]
+
+
+def check_cluster(ray: Any, router: bool = False, people: bool = False,
+                  timeout: float = CHECK_TIMEOUT) -> tuple[list[tuple[str, str]], set[str]]:
+    """``(node IP (ID), what it lacks)`` for every alive node offering ``RESOURCE`` that cannot run REI's runs ([]
+    if all can), and the ids of those that can. ``NodesUnfitError``: no alive node offers it."""
     nodes = offering(ray.nodes())
     if not nodes:
         alive = sum(1 for node in ray.nodes() if node.get("Alive"))
         raise NodesUnfitError(f"{NO_RESOURCE} ({alive} node(s) alive)")
-    for node in nodes:
-        strategy = NodeAffinitySchedulingStrategy(node["NodeID"], soft=False)
-        refs[remote.options(scheduling_strategy=strategy).remote(router)] = node
-    _, late = ray.wait(list(refs), num_returns=len(refs), timeout=timeout) if refs else ([], [])
+    refs = {ask(ray, node, router, people): node for node in nodes}
+    _, late = ray.wait(list(refs), num_returns=len(refs), timeout=timeout)
     problems = []
+    fit = set()
     for ref, node in refs.items():
-        name = f"node {node.get('NodeManagerAddress', '?')} ({node['NodeID'][:12]})"
         if ref in late:
-            problems.append((name, f"did not answer REI's check within {timeout:.0f} s"))
+            problems.append((name(node), f"did not answer REI's check within {timeout:.0f} s"))
             with contextlib.suppress(Exception):
                 ray.cancel(ref, force=True)
             continue
-        try:
-            lacks = ray.get(ref)
-        except Exception as error:  # noqa: BLE001 - the check could not even run there: REI or its Python is broken
-            lines = [line.strip() for line in _ANSI.sub("", str(error)).splitlines() if line.strip()]
-            # the innermost cause is the last line of the node's traceback ("ModuleNotFoundError: No module ...")
-            cause = lines[-1] if lines else type(error).__name__
-            hint = "install REI there (pip install rei-*.whl, docs/campaigns.md#setting-up-a-cluster)"
-            problems.append((name, f"cannot run REI's check ({cause}); {hint}"))
-            continue
-        problems += [(name, lack) for lack in lacks]
-    return problems
+        lacks = answer(ray, ref)
+        problems += [(name(node), lack) for lack in lacks]
+        if not lacks:
+            fit.add(node["NodeID"])
+    return problems, fit
+
+
+class Watch:
+    """The nodes runs may go to, for the driver: those that passed the connect-time check, and each that joins
+    later, checked as it is noticed (``poll``, at most every ``every`` seconds: ``ask``, without waiting for the
+    answer) or by a run's task that landed there first (``refused``). A node that cannot run REI's runs is said once
+    through ``log`` and ``excluded`` from the runs submitted afterwards. Shared by the threads of a search."""
+
+    def __init__(self, ray: Any, fit: set[str], router: bool, people: bool, log: Callable[[str], None],
+                 every: float = 2.0) -> None:
+        self._ray = ray
+        self._needs = (router, people)
+        self._log = log
+        self._every = every
+        self._known = set(fit)  # checked: fit, unfit or being asked
+        self.unfit: dict[str, str] = {}  # node id -> "node ADDRESS (ID): what it lacks"
+        self._asked: dict[Any, dict[str, Any]] = {}
+        self._next = 0.0
+        self._lock = threading.Lock()
+
+    def poll(self) -> None:
+        with self._lock:
+            if self._asked:
+                ready, _ = self._ray.wait(list(self._asked), num_returns=len(self._asked), timeout=0)
+                for ref in ready:
+                    node = self._asked.pop(ref)
+                    lacks = answer(self._ray, ref)
+                    if lacks:
+                        self._unfit(node, lacks)
+            if time.monotonic() < self._next:
+                return
+            self._next = time.monotonic() + self._every
+            for node in offering(self._ray.nodes()):
+                if node["NodeID"] not in self._known:
+                    self._known.add(node["NodeID"])
+                    self._asked[ask(self._ray, node, *self._needs)] = node
+
+    def refused(self, node_id: str, lacks: list[str]) -> None:
+        """A run's task found its node cannot run it (and did not run it)."""
+        with self._lock:
+            self._known.add(node_id)
+            if node_id not in self.unfit:
+                node = next((n for n in self._ray.nodes() if n["NodeID"] == node_id), {"NodeID": node_id})
+                self._unfit(node, lacks)
+
+    def _unfit(self, node: dict[str, Any], lacks: list[str]) -> None:
+        if node["NodeID"] in self.unfit:  # said once: its check and a run's task may both have found it
+            return
+        self.unfit[node["NodeID"]] = f"{name(node)}: {'; '.join(lacks)}"
+        self._log(f"{self.unfit[node['NodeID']]}; it joined after the check and cannot run REI's runs: they go to "
+                  "the other nodes")
+
+    def excluded(self) -> dict[str, Any]:
+        """Task options that keep a run off the nodes found unfit (Ray's node id label); {} when none is."""
+        with self._lock:
+            ids = sorted(self.unfit)
+        return {"label_selector": {"ray.io/node-id": f"!in({','.join(ids)})"}} if ids else {}
+
+    def nowhere(self) -> str | None:
+        """Why no alive node can take a run: each offering ``RESOURCE`` is unfit (what each lacks); None: one can."""
+        with self._lock:
+            alive = [node["NodeID"] for node in offering(self._ray.nodes())]
+            if alive and all(node in self.unfit for node in alive):
+                return "no Ray node can run REI's runs: " + "; ".join(self.unfit[node] for node in alive)
+            return None
 
 
 def offering(nodes: list[dict[str, Any]]) -> list[dict[str, Any]]:

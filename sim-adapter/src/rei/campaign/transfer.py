@@ -169,14 +169,20 @@ def sweep_monitor_folders(wait: float = 0.0) -> None:
             time.sleep(0.05)
 
 
-def run_shipped(task: dict[str, Any], case: Bundle, extra: Bundle, fields: dict[str, Any],
-                attempt: int) -> dict[str, Any]:
-    """The Ray task: the run in a temporary folder of this node's, its files returned as object store chunks."""
+def run_shipped(task: dict[str, Any], case: Bundle, extra: Bundle, fields: dict[str, Any], attempt: int,
+                needs: tuple[bool, bool] = (False, False)) -> dict[str, Any]:
+    """The Ray task: the run in a temporary folder of this node's, its files returned as object store chunks.
+    First it asks whether this node can run it (rei.campaign.nodes.node_lacks; ``needs``: the runs' router and
+    people): one that cannot returns ``{"unfit": what it lacks, "node": its id}`` without running."""
     import ray
 
+    from rei.campaign.nodes import node_lacks
     from rei.campaign.supervise import supervise, worker_command
     from rei.lifetime import die_with_parent
 
+    lacks = node_lacks(*needs)
+    if lacks:
+        return {"unfit": lacks, "node": ray.get_runtime_context().get_node_id()}
     work = Path(tempfile.mkdtemp(prefix="rei-run-"))
     try:
         unpack(case, work / "case")

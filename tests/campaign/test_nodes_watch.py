@@ -1,0 +1,41 @@
+# SPDX-License-Identifier: EPL-2.0
+"""rei.campaign.nodes.Watch, the driver's record of the nodes that cannot run REI's runs, with Ray's node list
+given: a node a run's task found unfit is said once, kept off the runs submitted afterwards (Ray's node id label),
+and when every alive node offering 'rei' is unfit the runs are told why instead of waiting for a node forever.
+The real cluster's late node: tests/campaign/test_campaign_ray_cluster.py."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from rei.campaign.nodes import Watch
+
+
+class Nodes:
+    def __init__(self, *nodes: dict[str, Any]) -> None:
+        self.list = list(nodes)
+
+    def nodes(self) -> list[dict[str, Any]]:
+        return self.list
+
+
+def _node(digit: str, rei: float = 1.0) -> dict[str, Any]:
+    return {"NodeID": digit * 56, "NodeManagerAddress": f"10.0.0.{int(digit, 16)}", "Alive": True,
+            "Resources": {"CPU": 2.0, **({"rei": rei} if rei else {})}}
+
+
+def test_a_node_a_run_found_unfit_is_said_once_and_kept_off_the_later_runs() -> None:
+    fit, late, other = _node("a"), _node("b"), _node("c", rei=0)  # other: offers no 'rei', gets no run anyway
+    ray = Nodes(fit, late, other)
+    said: list[str] = []
+    watch = Watch(ray, {fit["NodeID"]}, router=False, people=False, log=said.append)
+    assert watch.excluded() == {} and watch.nowhere() is None
+    for _ in range(2):  # two of its runs' tasks landed there
+        watch.refused(late["NodeID"], ["java not found on PATH; install a Java 17+ runtime or set JAVA_HOME"])
+    assert said == ["node 10.0.0.11 (bbbbbbbbbbbb): java not found on PATH; install a Java 17+ runtime or set "
+                    "JAVA_HOME; it joined after the check and cannot run REI's runs: they go to the other nodes"]
+    assert watch.excluded() == {"label_selector": {"ray.io/node-id": f"!in({late['NodeID']})"}}
+    assert watch.nowhere() is None  # the first node takes them
+    fit["Alive"] = False
+    assert watch.nowhere() == ("no Ray node can run REI's runs: node 10.0.0.11 (bbbbbbbbbbbb): java not found on "
+                               "PATH; install a Java 17+ runtime or set JAVA_HOME")
