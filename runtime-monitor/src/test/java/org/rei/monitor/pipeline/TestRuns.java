@@ -32,7 +32,15 @@ public final class TestRuns implements AutoCloseable {
 
 	/** With these rule files (queries and rules) instead of the packaged ones. */
 	public TestRuns(List<DrlSources.Source> rules) {
-		CaseReader.Case c = room();
+		this(room(), rules);
+	}
+
+	/** On another case (the test room changed), with the packaged rules. */
+	public TestRuns(CaseReader.Case c) {
+		this(c, packagedRules());
+	}
+
+	private TestRuns(CaseReader.Case c, List<DrlSources.Source> rules) {
 		SignalPublisher publisher = new SignalPublisher();
 		publisher.addListener(signals::add);
 		monitor = new Monitor("test", c.world(), c.monitor(), rules, publisher, log::add, queryEvents);
