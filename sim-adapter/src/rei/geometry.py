@@ -192,3 +192,57 @@ def triangulate(points: np.ndarray | list[tuple[float, float]] | tuple[tuple[flo
             del left[0]
     out.append((left[0], left[1], left[2]))
     return out
+
+
+def polygon_gaps(robot: np.ndarray, robot_shape: tuple[float, float] | np.ndarray, polygon: np.ndarray) -> np.ndarray:
+    """Signed gaps ``(T,)`` between the robot's footprint at ``T`` poses (``robot_shape`` as
+    :func:`footprint_gaps` takes it: a rectangle's size or a convex outline) and a fixed polygon, convex or not,
+    ``(K, 2)`` counter-clockwise in the world (a POLYGON object's outline placed). Apart: their distance, exactly
+    (the least over the polygon's triangles, which cover it); overlapping: minus the deepest overlap with one of
+    its triangles (the least push along a separating axis), as :func:`footprint_gaps` goes below 0."""
+    robot = np.asarray(robot, dtype=float).reshape(-1, 3)
+    polygon = np.asarray(polygon, dtype=float).reshape(-1, 2)
+    if isinstance(robot_shape, np.ndarray) and robot_shape.ndim == 2:
+        outline = np.asarray(robot_shape, dtype=float)
+    else:
+        hx, hy = robot_shape[0] / 2, robot_shape[1] / 2
+        outline = np.array([(-hx, -hy), (hx, -hy), (hx, hy), (-hx, hy)])
+    rx, ry, ryaw = (robot[:, k, None] for k in range(3))  # (T, 1)
+    rc, rs = np.cos(ryaw), np.sin(ryaw)
+    vx = rx + rc * outline[:, 0] - rs * outline[:, 1]  # (T, M)
+    vy = ry + rs * outline[:, 0] + rc * outline[:, 1]
+    best = np.full(len(robot), np.inf)
+    for triangle in triangulate(polygon):
+        piece = polygon[list(triangle)]
+        best = np.minimum(best, _convex_gap(vx, vy, piece))
+    return best
+
+
+def _convex_gap(vx: np.ndarray, vy: np.ndarray, piece: np.ndarray) -> np.ndarray:
+    """Signed gap ``(T,)`` between convex polygons: ``(T, M)`` vertices ``vx, vy`` (counter-clockwise) and one fixed
+    ``(K, 2)`` counter-clockwise."""
+    px, py = piece[:, 0], piece[:, 1]
+    axes = []
+    for x, y in ((vx, vy), (px[None, :], py[None, :])):
+        ex, ey = np.roll(x, -1, axis=-1) - x, np.roll(y, -1, axis=-1) - y
+        length = np.hypot(ex, ey)
+        axes += [(ey[..., m] / length[..., m], -ex[..., m] / length[..., m]) for m in range(x.shape[-1])]
+    overlap = np.full(vx.shape[0], np.inf)
+    for ax, ay in axes:
+        ax, ay = np.broadcast_to(np.asarray(ax), (vx.shape[0],))[:, None], np.broadcast_to(np.asarray(ay),
+                                                                                            (vx.shape[0],))[:, None]
+        mine = vx * ax + vy * ay  # (T, M)
+        theirs = px[None, :] * ax + py[None, :] * ay  # (T, K)
+        push = np.minimum(mine.max(axis=1) - theirs.min(axis=1), theirs.max(axis=1) - mine.min(axis=1))
+        overlap = np.minimum(overlap, push)
+
+    def to_edges(qx: np.ndarray, qy: np.ndarray, ax_: np.ndarray, ay_: np.ndarray) -> np.ndarray:
+        """Least distance from points ``(T, A)`` to the closed chain of ``(T, B)`` vertices -> ``(T,)``."""
+        bx, by = np.roll(ax_, -1, axis=-1) - ax_, np.roll(ay_, -1, axis=-1) - ay_
+        dx, dy = qx[:, :, None] - ax_[:, None, :], qy[:, :, None] - ay_[:, None, :]
+        t = np.clip((dx * bx[:, None, :] + dy * by[:, None, :]) / (bx * bx + by * by)[:, None, :], 0.0, 1.0)
+        return np.hypot(dx - t * bx[:, None, :], dy - t * by[:, None, :]).min(axis=(1, 2))
+
+    fx, fy = np.broadcast_to(px, (vx.shape[0], len(px))), np.broadcast_to(py, (vx.shape[0], len(py)))
+    apart = np.minimum(to_edges(vx, vy, fx, fy), to_edges(fx, fy, vx, vy))
+    return np.where(overlap < 0, apart, -overlap)
