@@ -43,7 +43,7 @@ from rei.evaluation.metrics.social import (
     zone_times,
 )
 from rei.evaluation.mission_info import MissionInfo, MissionInfoError
-from rei.geometry import footprint_gaps, wrap_angle
+from rei.geometry import footprint_gaps, polygon_gaps, wrap_angle
 from rei.mission.executor import MISSION_INFO_FILE
 from rei.sut.api import StaticMap
 from rei.wamp.recording import iter_recording, stream_path
@@ -74,6 +74,9 @@ class _Obstacles:
     names: tuple[str, ...]
     boxes: np.ndarray  # (N, 5): x, y, yaw, size_x, size_y
     circle: np.ndarray  # (N,)
+    #: A POLYGON object's outline in the world (K, 2), measured as it is; None for the others (and its box, the
+    #: polygon's bounding box, only bounds where it can be).
+    polygons: tuple[np.ndarray | None, ...] = ()
 
 
 @dataclass(slots=True)
@@ -235,7 +238,8 @@ def _obstacles(objects: Sequence[Any]) -> _Obstacles:
                        max(o.size[0], o.size[1]) if o.shape == Shape.CYLINDER else o.size[1]) for o in objects],
                      dtype=float).reshape(-1, 5)
     return _Obstacles(tuple(o.name for o in objects), boxes,
-                      np.array([o.shape == Shape.CYLINDER for o in objects], dtype=bool))
+                      np.array([o.shape == Shape.CYLINDER for o in objects], dtype=bool),
+                      tuple(None if o.outline is None else np.array(o.outline) for o in objects))
 
 
 def _read_states(run_dir: Path, robot: str, moving: Sequence[str]) -> _States:
@@ -425,7 +429,8 @@ def _static_gaps(statics: _Obstacles, pose: np.ndarray, robot_size: tuple[float,
     """
     n = len(statics.names)
     if n == 0 or len(pose) == 0:
-        return statics, _gaps(pose, robot_size, statics.boxes, statics.circle)
+        return statics, _polygon_gaps(statics, pose, robot_size, _gaps(pose, robot_size, statics.boxes,
+                                                                        statics.circle))
     centres = statics.boxes[:, :2]
     radii = np.where(statics.circle, statics.boxes[:, 3] / 2, np.hypot(statics.boxes[:, 3], statics.boxes[:, 4]) / 2)
     robot_radius = (math.hypot(*robot_size) / 2 if not isinstance(robot_size, np.ndarray)
@@ -448,8 +453,19 @@ def _static_gaps(statics: _Obstacles, pose: np.ndarray, robot_size: tuple[float,
         gaps[a:a + _NEAR_BLOCK, column_of[columns]] = footprint_gaps(
             pose[a:a + _NEAR_BLOCK], robot_size, statics.boxes[columns], statics.circle[columns])
     kept = _Obstacles(tuple(name for name, k in zip(statics.names, keep, strict=True) if k), statics.boxes[keep],
-                      statics.circle[keep])
-    return kept, gaps
+                      statics.circle[keep],
+                      tuple(q for q, k in zip(statics.polygons, keep, strict=True) if k) if statics.polygons else ())
+    return kept, _polygon_gaps(kept, pose, robot_size, gaps)
+
+
+def _polygon_gaps(statics: _Obstacles, pose: np.ndarray, robot_size: tuple[float, float] | np.ndarray,
+                  gaps: np.ndarray) -> np.ndarray:
+    """``gaps`` with each POLYGON object's column measured to its polygon (rei.geometry.polygon_gaps), as the
+    monitor measures it, not to its bounding box (the other columns as they are)."""
+    for k, polygon in enumerate(statics.polygons):
+        if polygon is not None and len(pose):
+            gaps[:, k] = polygon_gaps(pose, robot_size, polygon)
+    return gaps
 
 
 def _gaps(pose: np.ndarray, robot_size: tuple[float, float] | np.ndarray, boxes: np.ndarray,
