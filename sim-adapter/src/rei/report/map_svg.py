@@ -82,10 +82,16 @@ def render_map(world: Mapping[str, Any] | None, tracks: Tracks, goals: Sequence[
 
 
 def _footprint(body: Mapping[str, Any]) -> list[tuple[float, float]] | None:
+    """The body's outline in the world: a POLYGON object's polygon placed and turned (not its bounding box), any
+    other body's ``size`` rectangle."""
     try:
         x, y, _z, yaw = (float(v) for v in body["pose"][:4])
         sx, sy = (float(v) for v in body["size"][:2])
-    except (KeyError, TypeError, ValueError):
+        points = (body.get("footprint") or {}).get("points") if body.get("shape") == "POLYGON" else None
+        if points:
+            c, s = math.cos(yaw), math.sin(yaw)
+            return [(x + c * float(u) - s * float(v), y + s * float(u) + c * float(v)) for u, v in points]
+    except (KeyError, TypeError, ValueError, AttributeError):
         return None
     return box_corners(x, y, sx, sy, yaw)
 
