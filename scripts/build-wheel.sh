@@ -3,7 +3,8 @@
 #
 # scripts/build-wheel.sh [-o DIR] [--jars ROLE,...] — builds REI's wheel (rei-VERSION-py3-none-any.whl) carrying
 # the jars a machine without this checkout needs: by default the monitor's, which a Ray worker node replays every
-# run in (docs/campaigns.md#setting-up-a-cluster). ROLEs are the keys of JARS in sim-adapter/src/rei/toolchain.py
+# run in (docs/campaigns.md#setting-up-a-cluster), and the people server (pedestrians/jupedsim_server.py) that moves
+# reactive people there with the JuPedSim of the node's $REI_PEOPLE_PYTHON. ROLEs are the keys of JARS in sim-adapter/src/rei/toolchain.py
 # (cli, language-server, room-editor, monitor, sut-kit). The jars must be built (./rei builds them).
 #
 # The wheel is built from a copy of sim-adapter/ with the jars in src/rei/jars/ (the checkout itself never holds
@@ -43,6 +44,10 @@ for role in "${roles[@]}"; do
     [ -f "$ROOT/$jar" ] || { echo "build-wheel: $jar is missing: run ./rei once to build the Java parts" >&2; exit 1; }
     cp "$ROOT/$jar" "$STAGE/src/rei/jars/"
 done
+# the people server (EPL-2.0 OR GPL-2.0-or-later; it alone imports JuPedSim, in a Python of its own on the node:
+# docs/people.md), found by rei.sim.people.server as the package's data
+mkdir -p "$STAGE/src/rei/pedestrians"
+cp "$ROOT/pedestrians/jupedsim_server.py" "$STAGE/src/rei/pedestrians/"
 rm -f "$OUT"/rei-*.whl
 PIP_NO_INPUT=1 "$PYTHON" -m pip wheel --quiet --disable-pip-version-check --no-deps -w "$OUT" "$STAGE" >&2
 wheel="$(ls "$OUT"/rei-*.whl)"

@@ -25,6 +25,7 @@ import sys
 import sysconfig
 import tempfile
 import time
+import zipfile
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -521,18 +522,46 @@ def test_a_node_without_java_is_named_when_the_campaign_connects(tmp_path: Path,
     print(f"a node without java refused (cluster start included): {time.monotonic() - started:.1f} s")
 
 
-def test_the_wheel_carries_the_monitor_jar_and_names_a_jar_it_lacks(node_env: NodeEnv, tmp_path: Path) -> None:
+def test_the_wheel_carries_the_monitor_jar_and_the_people_server_and_names_what_it_lacks(
+        node_env: NodeEnv, tmp_path: Path) -> None:
     """Outside any checkout (run from a temporary folder, no REI_HOME), the wheel's REI finds its own monitor jar,
-    and a jar it was built without is refused saying which jars it has and how to get the one asked for."""
-    script = ("from rei import toolchain\nprint(toolchain.find_jar('monitor'))\ntry:\n    toolchain.find_jar('cli')\n"
-              "except toolchain.ToolchainError as error:\n    print(error)\n")
-    env = {key: value for key, value in os.environ.items() if key not in ("REI_HOME", "VIRTUAL_ENV", "PYTHONPATH")}
+    and a jar it was built without is refused saying which jars it has and how to get the one asked for. It finds
+    its own people server too, run by the Python that ``$REI_PEOPLE_PYTHON`` names (here the checkout's
+    .venv-people, which has JuPedSim), and the node check names a missing JuPedSim when the runs move people."""
+    script = ("import json\nfrom rei import toolchain\n"
+              "from rei.sim.people.server import people_problem, server_command\n"
+              "print(toolchain.find_jar('monitor'))\ntry:\n    toolchain.find_jar('cli')\n"
+              "except toolchain.ToolchainError as error:\n    print(error)\n"
+              "print(json.dumps([server_command(), people_problem()]))\n")
+    env = {key: value for key, value in os.environ.items()
+           if key not in ("REI_HOME", "VIRTUAL_ENV", "PYTHONPATH", "REI_PEOPLE_PYTHON")}
+    # the driver's third-party packages (msgpack, PyYAML...) as the node's namespace has them in its stash; a
+    # folder on PYTHONPATH is no site directory: the driver's editable REI's .pth file there is not read
+    env["PYTHONPATH"] = str(node_env.deps)
+    people = REPO_ROOT / ".venv-people" / "bin" / "python"
     done = subprocess.run([str(node_env.python), "-c", script], capture_output=True, text=True, cwd=tmp_path,
-                          env=env, timeout=120, check=False)
+                          env={**env, "REI_PEOPLE_PYTHON": str(people)}, timeout=120, check=False)
     assert done.returncode == 0, done.stderr
-    jar, refusal = done.stdout.strip().splitlines()
+    jar, refusal, server = done.stdout.strip().splitlines()
     assert Path(jar).is_relative_to(node_env.python.parent.parent)  # the node's venv, where the wheel went
     assert Path(jar).name == "rei-monitor.jar" and Path(jar).stat().st_size == (
         REPO_ROOT / "runtime-monitor" / "target" / "rei-monitor.jar").stat().st_size
     assert refusal == ("this installation of REI carries no rei-cli.jar (it has: rei-monitor.jar); install a wheel "
                        "built with it (scripts/build-wheel.sh --jars cli) or set REI_HOME to a built checkout")
+    (python, found), lacks = json.loads(server)
+    assert python == str(people) and lacks is None  # JuPedSim imports there
+    assert Path(found).is_relative_to(node_env.python.parent.parent) and Path(found).read_bytes() == (
+        REPO_ROOT / "pedestrians" / "jupedsim_server.py").read_bytes()
+    with zipfile.ZipFile(node_env.wheel) as wheel:
+        assert "rei/pedestrians/jupedsim_server.py" in wheel.namelist()
+    # a node with no Python for JuPedSim: runs with people cannot go there, runs without can
+    script = "import json\nfrom rei.campaign.nodes import check_node\nprint(json.dumps([check_node(False, True), " \
+             "check_node(False)]))"
+    done = subprocess.run([str(node_env.python), "-c", script], capture_output=True, text=True, cwd=tmp_path,
+                          env=env, timeout=120, check=False)
+    assert done.returncode == 0, done.stderr
+    assert json.loads(done.stdout) == [[(
+        "reactive people need JuPedSim, and $REI_PEOPLE_PYTHON names no Python that has it; install JuPedSim into "
+        "a Python of its own (python -m venv V && V/bin/pip install numpy shapely deprecated msgpack && V/bin/pip "
+        "install --no-deps jupedsim==1.4.2, as scripts/setup-people.sh does) and set REI_PEOPLE_PYTHON to "
+        "V/bin/python")], []]

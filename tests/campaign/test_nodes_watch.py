@@ -2,7 +2,7 @@
 """rei.campaign.nodes.Watch, the driver's record of the nodes that cannot run REI's runs, with Ray's node list
 given: a node a run's task found unfit is said once, kept off the runs submitted afterwards (Ray's node id label),
 and when every alive node offering 'rei' is unfit the runs are told why instead of waiting for a node forever.
-The real cluster's late node: tests/campaign/test_campaign_ray_cluster.py."""
+And what the nodes are asked for. The real cluster's late node: tests/campaign/test_campaign_ray_cluster.py."""
 
 from __future__ import annotations
 
@@ -39,3 +39,16 @@ def test_a_node_a_run_found_unfit_is_said_once_and_kept_off_the_later_runs() -> 
     fit["Alive"] = False
     assert watch.nowhere() == ("no Ray node can run REI's runs: node 10.0.0.11 (bbbbbbbbbbbb): java not found on "
                                "PATH; install a Java 17+ runtime or set JAVA_HOME")
+
+
+def test_the_nodes_are_asked_for_jupedsim_when_the_campaign_moves_people() -> None:
+    """A campaign whose cases have people who see the robot (and a variant with humans) asks its nodes for the
+    people server's JuPedSim too; the thesis campaign (humans on rails) does not."""
+    from pathlib import Path
+
+    from rei.campaign import load_spec
+    from rei.campaign.spec import spec_moves_people
+
+    examples = Path(__file__).resolve().parents[2] / "examples" / "campaigns"
+    assert spec_moves_people(load_spec(examples / "behaviours.yaml"))
+    assert not spec_moves_people(load_spec(examples / "thesis.yaml"))

@@ -65,6 +65,12 @@ def check_node(router: bool, people: bool = False) -> list[str]:
             find_crossbar()
         except RouterError as error:
             problems.append(str(error))
+    if people:
+        from rei.sim.people.server import people_problem
+
+        lack = people_problem()
+        if lack is not None:
+            problems.append(lack)
     return problems
 
 

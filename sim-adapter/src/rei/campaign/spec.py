@@ -585,3 +585,31 @@ class _Reader:
         if value not in choices:
             raise SpecError(f"{self.at(key)}: '{key}' must be one of {', '.join(choices)}, got {value!r}")
         return value
+
+
+def moves_people(cases: tuple[Path, ...], rooms: RoomSettings | None) -> bool:
+    """Whether some of these cases (or the rooms generated) have people who see the robot (a human on a route, a
+    crowd, a group; rooms with ``people: reactive`` and humans), whom JuPedSim's people server moves: their runs'
+    nodes need it (rei.campaign.nodes). A generated case folder says so in its ``animation.json``."""
+    import json
+
+    from rei.edit.gatherings import gatherings
+
+    if rooms is not None and rooms.reactive is not None and (rooms.humans or 0) > 0:
+        return True
+    for case in cases:
+        try:
+            if case.suffix == ".rei":
+                if gatherings(case.read_text(encoding="utf-8"), routes=True):
+                    return True
+            elif json.loads((case / "animation.json").read_text(encoding="utf-8")).get("people"):
+                return True
+        except (OSError, ValueError):  # unreadable: its own error comes with its runs
+            continue
+    return False
+
+
+def spec_moves_people(spec: Spec) -> bool:
+    """``moves_people`` for a campaign: some group has people who see the robot and a variant with humans."""
+    return any(any(v.humans for v in group.variants) and moves_people(group.cases, group.rooms)
+               for group in spec.groups)

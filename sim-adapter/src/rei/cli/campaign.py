@@ -76,12 +76,13 @@ def _run(args: argparse.Namespace) -> int:
         raise CommandError("--thresholds needs --compare BASELINE")
     if args.ray:
         from rei.campaign.backends import RayUnavailableError, connect_ray
+        from rei.campaign.spec import spec_moves_people
 
         try:
-            # the nodes are checked for a router when the runs start one
+            # the nodes are checked for a router when the runs start one, for JuPedSim when they move people
             router = spec.mode == "pipeline" or any(
                 variant.sut is not None for group in spec.groups for variant in group.variants)
-            backend: Any = connect_ray(args.ray, workers, router=router)
+            backend: Any = connect_ray(args.ray, workers, router=router, people=spec_moves_people(spec))
         except RayUnavailableError as error:
             raise CommandError(str(error).splitlines()) from None  # a line per node that cannot run REI
     service = None

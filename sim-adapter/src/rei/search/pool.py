@@ -62,12 +62,13 @@ class LocalPool:
 class RayPool:
     """Runs as Ray tasks through the campaign's Ray backend (``address``: a cluster's, or ``local`` for an instance
     of ``workers`` CPUs started here), whose nodes are checked as a campaign's (rei.campaign.nodes; ``router``: for
-    the router too)."""
+    the router and JuPedSim too)."""
 
     name = "ray"
 
-    def __init__(self, address: str, workers: int, stop: threading.Event, router: bool = False) -> None:
-        self._backend = connect_ray(address, workers, router=router)
+    def __init__(self, address: str, workers: int, stop: threading.Event, router: bool = False,
+                 people: bool = False) -> None:
+        self._backend = connect_ray(address, workers, router=router, people=people)
         self.workers = self._backend.workers
         self._stop = stop
         self._threads = ThreadPoolExecutor(self.workers, thread_name_prefix="rei-search-ray")

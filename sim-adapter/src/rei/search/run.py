@@ -11,6 +11,7 @@ from typing import Any
 
 import optuna
 
+from rei.campaign.spec import moves_people
 from rei.search.failures import Failure, distinct
 from rei.search.outputs import baseline_document, records, write_outputs
 from rei.search.pool import LocalPool, Pool, RayPool
@@ -24,10 +25,13 @@ RANDOM = "random"
 BUDGET = "budget"
 
 
-def make_pool(workers: int, ray: str | None, out: Path, stop: threading.Event, router: bool = False) -> Pool:
+def make_pool(workers: int, ray: str | None, out: Path, stop: threading.Event, router: bool = False,
+              people: bool = False) -> Pool:
     """The local pool, or with ``ray`` the Ray pool (rei.campaign.backends.RayUnavailableError: it can not be, or a
-    node cannot run the runs); ``router``: the runs start a WAMP router (an external SUT), which its nodes need."""
-    return RayPool(ray, workers, stop, router=router) if ray else LocalPool(workers, out / "runs", stop)
+    node cannot run the runs); ``router``: the runs start a WAMP router (an external SUT), ``people``: they move
+    people who see the robot (JuPedSim), which its nodes then need."""
+    return RayPool(ray, workers, stop, router=router, people=people) if ray else LocalPool(workers, out / "runs",
+                                                                                             stop)
 
 
 def run_search(spec: SearchSpec, out: Path, *, workers: int = 1, ray: str | None = None,
@@ -39,8 +43,10 @@ def run_search(spec: SearchSpec, out: Path, *, workers: int = 1, ray: str | None
     stop = stop or threading.Event()
     # a cluster is reached before anything else, so a wrong address fails at once; the local pool starts with the
     # first run (a finished search that only rewrites its outputs starts no JVM)
-    # an external SUT's runs start a router: the nodes are checked for it as a campaign's are
-    pool: Pool = make_pool(workers, ray, out, stop, router=spec.sut is not None) if ray else _LazyPool(
+    # an external SUT's runs start a router, people who see the robot JuPedSim's server: the nodes are checked for
+    # them as a campaign's are
+    people = spec.humans and moves_people((spec.case,) if spec.case else (), spec.rooms)
+    pool: Pool = make_pool(workers, ray, out, stop, router=spec.sut is not None, people=people) if ray else _LazyPool(
         lambda: make_pool(workers, None, out, stop), workers, "local")
     try:
         search = Search(spec, out, pool, stop, log)

@@ -36,18 +36,60 @@ class PeopleError(RuntimeError):
     """The people could not be started or moved; the message says which person and why, or what the server did."""
 
 
+#: Where an installed wheel keeps the people server's script (scripts/build-wheel.sh copies
+#: ``pedestrians/jupedsim_server.py`` in): a Ray worker node runs reactive people without a checkout. Absent in a
+#: checkout, whose ``pedestrians/`` holds it.
+PACKAGED_SERVER = Path(__file__).resolve().parents[2] / "pedestrians" / "jupedsim_server.py"
+#: What the people server's Python must import (scripts/setup-people.sh installs them into .venv-people).
+NEEDS = ("jupedsim", "shapely", "msgpack")
+JUPEDSIM_HINT = ("install JuPedSim into a Python of its own (python -m venv V && V/bin/pip install numpy shapely "
+                 "deprecated msgpack && V/bin/pip install --no-deps jupedsim==1.4.2, as scripts/setup-people.sh "
+                 f"does) and set {PYTHON_ENV} to V/bin/python")
+
+
 def server_command() -> list[str]:
-    """The people server's command line: ``$REI_PEOPLE_PYTHON`` or ``<repo>/.venv-people/bin/python`` and the
-    server script of the checkout."""
-    try:
-        root = find_repo_root()
-    except ToolchainError as error:
-        raise PeopleError(f"cannot find the people server: {error}") from None
-    python = Path(os.environ.get(PYTHON_ENV) or root / ".venv-people" / "bin" / "python")
+    """The people server's command line: ``$REI_PEOPLE_PYTHON`` or ``<repo>/.venv-people/bin/python``, and the
+    server script an installed wheel carries (``PACKAGED_SERVER``, unless ``REI_HOME`` names a checkout) or the
+    checkout's."""
+    root = None
+    if os.environ.get("REI_HOME") or not PACKAGED_SERVER.is_file():
+        try:
+            root = find_repo_root()
+        except ToolchainError as error:
+            raise PeopleError(f"cannot find the people server: {error}") from None
+    script = PACKAGED_SERVER if root is None else root / "pedestrians" / "jupedsim_server.py"
+    if os.environ.get(PYTHON_ENV):
+        python = Path(os.environ[PYTHON_ENV])
+    elif root is not None:
+        python = root / ".venv-people" / "bin" / "python"
+    else:  # a wheel's REI: no checkout to hold .venv-people
+        raise PeopleError(f"reactive people need JuPedSim, and ${PYTHON_ENV} names no Python that has it; "
+                          f"{JUPEDSIM_HINT}")
     if not (python.is_file() and os.access(python, os.X_OK)):
         raise PeopleError(f"reactive people need JuPedSim, installed by scripts/setup-people.sh into .venv-people "
                           f"(no {python}); run it, or `./rei ...`, which runs it")
-    return [str(python), str(root / "pedestrians" / "jupedsim_server.py")]
+    return [str(python), str(script)]
+
+
+def people_problem(timeout: float = 60.0) -> str | None:
+    """What this machine lacks to move people who see the robot (None: nothing): the people server, its Python,
+    or JuPedSim and the rest of what the server imports there. Asked of a Ray node (rei.campaign.nodes)."""
+    try:
+        command = server_command()
+    except PeopleError as error:
+        return str(error)
+    python, script = command
+    if not Path(script).is_file():
+        return f"the people server {script} is missing; reinstall REI"
+    try:
+        done = subprocess.run([python, "-c", f"import {', '.join(NEEDS)}"], capture_output=True, text=True,
+                              timeout=timeout, check=False)
+    except (OSError, subprocess.TimeoutExpired) as error:
+        return f"reactive people need JuPedSim: {python} cannot be run ({error}); {JUPEDSIM_HINT}"
+    if done.returncode != 0:
+        cause = (done.stderr.strip().splitlines() or ["no output"])[-1]
+        return f"reactive people need JuPedSim: {python} cannot import it ({cause}); {JUPEDSIM_HINT}"
+    return None
 
 
 class PeopleServer:
