@@ -32,8 +32,8 @@ def test_a_node_a_run_found_unfit_is_said_once_and_kept_off_the_later_runs() -> 
     assert watch.excluded() == {} and watch.nowhere() is None
     for _ in range(2):  # two of its runs' tasks landed there
         watch.refused(late["NodeID"], ["java not found on PATH; install a Java 17+ runtime or set JAVA_HOME"])
-    assert said == ["node 10.0.0.11 (bbbbbbbbbbbb): java not found on PATH; install a Java 17+ runtime or set "
-                    "JAVA_HOME; it joined after the check and cannot run REI's runs: they go to the other nodes"]
+    assert said == [("node 10.0.0.11 (bbbbbbbbbbbb): java not found on PATH; install a Java 17+ runtime or set "
+                     "JAVA_HOME; it joined after the check and cannot run REI's runs: they go to the other nodes")]
     assert watch.excluded() == {"label_selector": {"ray.io/node-id": f"!in({late['NodeID']})"}}
     assert watch.nowhere() is None  # the first node takes them
     fit["Alive"] = False
