@@ -139,3 +139,57 @@ def test_a_round_robots_encounter_margin_is_its_circles(delay: float) -> None:
     assert expected - 1e-9 <= found.margin <= expected + TOL + POLYGON * math.hypot(2, 1)
     (square,) = encounters(spec, {"h": HUMAN}, lane.t, lane.pose, SQUARE, THRESHOLD)
     assert square.margin < found.margin - 0.05
+
+
+LONG = [(-0.1, -0.1), (0.9, -0.1), (0.9, 0.1), (-0.1, 0.1)]  # a long robot, its origin near its back end
+
+
+@pytest.mark.parametrize("footprint", ["outline", "box"])
+def test_a_long_robot_turning_its_front_into_a_person_is_at_fault(tmp_path: Path, footprint: str) -> None:
+    """The robot's origin stands at (1, 1) while it turns at 0.5 rad/s from a heading of -0.5 rad, and its front
+    end, 0.9 m ahead, sweeps into a person standing at (1.6, 1.6): its origin does not move towards her (by the
+    origin she walked into it), the outline's point nearest to her does, at the turn rate times its arm. The
+    approach is that point's velocity towards her centre, here worked out by sampling the outline's edges every
+    0.1 mm. A box robot as long (2 m by 0.2 m, centred on its origin) is still judged by its origin, as it was
+    before outlines: its figures stay those it had."""
+    w = 0.5
+    outline = np.array(LONG)
+    states = [{"t": DT * k, "robot": {"pose": [1.0, 1.0, 0.0, -0.5 + w * DT * k], "twist": [0.0, 0.0, w]},
+               "objects": [{"name": "h1", "type": "HUMAN", "pose": [1.6, 1.6, 0.85, 0.0], "twist": [0.0, 0.0, 0.0]}],
+               "contacts": []} for k in range(60)]
+    run = tmp_path / footprint
+    shutil.copytree(FIXTURE, run / "case")
+    world = json.loads((FIXTURE / "world.json").read_text())
+    if footprint == "outline":
+        world["robot"]["footprint"] = {"type": "polygon", "points": LONG}
+        world["robot"]["size"] = [1.0, 0.2, 0.2]
+    else:
+        world["robot"]["size"] = [2.0, 0.2, 0.2]
+    (run / "case" / "world.json").write_text(json.dumps(world))
+    with RecordingWriter(stream_path(run, "state")) as writer:
+        for state in states:
+            writer.write(state)
+    from rei.evaluation.metrics import measure
+
+    measured = measure(run)
+    (collision,) = measured.person_collisions
+    if footprint == "box":
+        assert collision.approach == 0.0 and collision.person_at_fault
+        return
+    k = round(collision.t / DT)
+    centre = np.array([1.6, 1.6])
+    expected = []
+    for j in (k - 1, k):
+        yaw = -0.5 + w * DT * j
+        turn = np.array([[math.cos(yaw), -math.sin(yaw)], [math.sin(yaw), math.cos(yaw)]])
+        corners = outline @ turn.T + 1.0
+        edges = [a + (b - a) * u for a, b in zip(corners, np.roll(corners, -1, axis=0), strict=True)
+                 for u in np.linspace(0.0, 1.0, int(np.hypot(*(b - a)) / 1e-4) + 1)]
+        nearest = min(edges, key=lambda p: float(np.hypot(*(centre - p))))
+        arm = nearest - 1.0
+        velocity = w * np.array([-arm[1], arm[0]])
+        direction = (centre - nearest) / np.hypot(*(centre - nearest))
+        expected.append(float(velocity @ direction))
+    assert collision.approach == pytest.approx(max(expected), abs=1e-3)
+    assert collision.approach > 0.3 and collision.robot_at_fault
+    assert (measured.metrics["collisions_robot_at_fault"], measured.metrics["collisions_person_at_fault"]) == (1, 0)

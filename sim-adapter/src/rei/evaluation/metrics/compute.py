@@ -573,7 +573,12 @@ def _people(run: _Run, moving_gaps: np.ndarray, moving_collides: np.ndarray | No
     if moving_collides is None:
         return None
     names = [run.moving.names[k] for k in humans]
-    collided = person_collisions(s.t, s.pose[:, :2], robot, xy, names, moving_collides[:, humans])
+    shapes = np.column_stack((run.moving.boxes[humans, 3:5], run.moving.circle[humans]))
+    # a described robot by its outline's nearest point; a box robot by its origin, as it always was (its figures
+    # stay those it had)
+    outline = run.robot_shape if isinstance(run.robot_shape, np.ndarray) else None
+    collided = person_collisions(s.t, s.pose, robot, s.moving[:, humans], names, moving_collides[:, humans],
+                                 outline, s.twist[:, 2], shapes)
     out["collisions_robot_at_fault"] = sum(c.robot_at_fault for c in collided)
     out["collisions_person_at_fault"] = sum(c.person_at_fault for c in collided)
     return collided

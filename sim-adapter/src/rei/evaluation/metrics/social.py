@@ -22,8 +22,8 @@ import numpy as np
 ZONES: tuple[tuple[str, float], ...] = (("intimate", 0.45), ("personal", 1.2), ("social", 3.6))
 #: How far ahead (s) the time to collision looks: a meeting predicted later is no collision course.
 TTC_HORIZON = 10.0
-#: The robot is at fault in a collision with a person when it moves towards the person's centre faster than
-#: this (m/s) at the collision's first sample or the one before: slower, it stood (a pushed robot jitters by
+#: The robot is at fault in a collision with a person when its footprint's point nearest to her moves towards her
+#: faster than this (m/s) at the collision's first sample or the one before: slower, it stood (a pushed robot jitters by
 #: millimetres) or backed away, and the person walked into it.
 AT_FAULT_SPEED = 0.05
 #: Below this speed (m/s) a person stands: the direction of a step that short is noise, not a heading.
@@ -219,22 +219,145 @@ def _disc_entry(c: np.ndarray, w: np.ndarray, r: np.ndarray) -> np.ndarray:
     return np.where(k <= 0, 0.0, np.where(hits, tau, np.inf))
 
 
-def person_collisions(t: np.ndarray, robot_xy: np.ndarray, robot_velocity: np.ndarray, people_xy: np.ndarray,
-                      names: Sequence[str], collides: np.ndarray) -> tuple[PersonCollision, ...]:
+def person_collisions(t: np.ndarray, robot_pose: np.ndarray, robot_velocity: np.ndarray, people_xy: np.ndarray,
+                      names: Sequence[str], collides: np.ndarray,
+                      robot_shape: tuple[float, float] | np.ndarray | None = None, yaw_rate: np.ndarray | None = None,
+                      people: np.ndarray | None = None) -> tuple[PersonCollision, ...]:
     """The collisions with people: each run of samples in which ``collides`` (``(T, H)``: the monitor's COLLISION
-    with person ``h``) holds, judged at its first sample by the robot's velocity component along the direction
-    from its centre to the person's (``people_xy`` ``(T, H, 2)``); in time order.
+    with person ``h``) holds, judged at its first sample by the velocity, towards the person, of the robot's
+    footprint point nearest to them (``people_xy`` ``(T, H, 2)``, or ``(T, H, 3)`` with their yaws); in time
+    order.
+
+    ``robot_pose`` ``(T, 3)`` (or ``(T, 2)``: its origin alone), ``robot_velocity`` ``(T, 2)`` its origin's
+    velocity (world frame), ``yaw_rate`` ``(T,)`` its turn rate (rad/s; NaN or None: estimated from the yaws),
+    ``robot_shape`` as rei.geometry.footprint_gaps takes it (a box's size, or an outline ``(M, 2)``; None: the
+    robot is its origin, as before outlines), ``people`` ``(H, 3)`` each person's ``size_x, size_y, circle``
+    (None: circles). A point ``p`` of the outline moves at ``v + w x (p - origin)``: a long robot turning its
+    front into a person moves that front at them though its origin may stand or move away (see _contact_point).
 
     The larger of that component at the first sample and at the sample before it: a contact the simulator reports
     happened at some physics step since the sample before, and by the first sample the impact may already have
     stopped the robot (a robot driving into a standing person at 0.26 m/s is down to 0.03 m/s there)."""
+    robot_pose = np.asarray(robot_pose, dtype=float)
+    outline = None if robot_shape is None else _outline_of(robot_shape)
+    if outline is not None and robot_pose.shape[1] >= 3:
+        rate = _yaw_rate(t, robot_pose[:, 2], yaw_rate)
+    else:
+        outline, rate = None, np.zeros(len(robot_pose))
     before = np.vstack((np.zeros((1, collides.shape[1]), dtype=bool), collides[:-1]))
     found = []
     for k, h in zip(*np.nonzero(collides & ~before), strict=True):
-        speeds = [_approach(robot_xy[j], robot_velocity[j], people_xy[j, h]) for j in (k - 1, k) if j >= 0]
+        speeds = []
+        for j in (k - 1, k):
+            if j < 0:
+                continue
+            if outline is None:
+                speeds.append(_approach(robot_pose[j, :2], robot_velocity[j], people_xy[j, h, :2]))
+                continue
+            size = (0.0, 0.0, True) if people is None else people[h]
+            point, towards = _contact_point(robot_pose[j], outline, people_xy[j, h], size)
+            arm = point - robot_pose[j, :2]
+            moving = robot_velocity[j] + rate[j] * np.array([-arm[1], arm[0]])  # v + w x r
+            speeds.append(float(moving @ towards) if towards is not None else float(np.hypot(*moving)))
         known = [v for v in speeds if not math.isnan(v)]
         found.append(PersonCollision(names[h], float(t[k]), max(known) if known else math.nan))
     return tuple(sorted(found, key=lambda c: (c.t, c.person)))
+
+
+def _outline_of(robot_shape: tuple[float, float] | np.ndarray) -> np.ndarray:
+    """The robot's footprint as a convex polygon ``(M, 2)``, counter-clockwise in its frame: a box's rectangle
+    centred on its origin, or the outline itself."""
+    if isinstance(robot_shape, np.ndarray) and robot_shape.ndim == 2:
+        return np.asarray(robot_shape, dtype=float)
+    hx, hy = robot_shape[0] / 2, robot_shape[1] / 2
+    return np.array([(-hx, -hy), (hx, -hy), (hx, hy), (-hx, hy)])
+
+
+def _yaw_rate(t: np.ndarray, yaw: np.ndarray, recorded: np.ndarray | None) -> np.ndarray:
+    """The recorded turn rate where it is known, else the unwrapped yaws' finite difference (0 where neither)."""
+    out = np.full(len(yaw), np.nan) if recorded is None else np.array(recorded, dtype=float)
+    unknown = ~np.isfinite(out)
+    if unknown.any() and len(t) >= 2 and np.isfinite(yaw).all():
+        with np.errstate(invalid="ignore", divide="ignore"):
+            out[unknown] = np.gradient(np.unwrap(yaw), t)[unknown]
+    return np.where(np.isfinite(out), out, 0.0)
+
+
+def _contact_point(pose: np.ndarray, outline: np.ndarray, person: np.ndarray, size: np.ndarray | tuple,
+                   ) -> tuple[np.ndarray, np.ndarray | None]:
+    """The point of the robot's outline (placed at ``pose``) nearest to the person, and the unit direction from it
+    towards the person (None when there is none: the point is the person's centre).
+
+    A round person (``size``: ``size_x, size_y, circle``; a circle of diameter ``size_x``) is nearest where the
+    outline is nearest to her centre, and the direction is the contact's normal: towards her centre, or, with her
+    centre already inside the outline, the outline's outward one. A rectangle apart from the outline: the nearest
+    pair of points of the two shapes (a vertex of one and the other's edge); overlapping it, as a round person at
+    its centre."""
+    c, s = math.cos(pose[2]), math.sin(pose[2])
+    world = pose[:2] + outline @ np.array([[c, s], [-s, c]])  # each vertex rotated by the yaw, then placed
+    person = np.asarray(person, dtype=float)
+    centre = person[:2]
+    if not np.isfinite(world).all() or not np.isfinite(centre).all():
+        return pose[:2], None
+    if not bool(size[2]):
+        yaw = float(person[2]) if len(person) > 2 and math.isfinite(person[2]) else 0.0
+        corners = _rectangle(centre, float(size[0]), float(size[1]), yaw)
+        if not (_inside(world, corners).any() or _inside(corners, world).any() or _crossing(world, corners)):
+            best = None
+            for vertex in world:  # the outline's vertices to the rectangle's edges
+                q = _nearest_on(corners, vertex)
+                if best is None or np.hypot(*(q - vertex)) < best[0]:
+                    best = (float(np.hypot(*(q - vertex))), vertex, q)
+            for corner in corners:  # the rectangle's corners to the outline's edges
+                p = _nearest_on(world, corner)
+                if np.hypot(*(corner - p)) < best[0]:
+                    best = (float(np.hypot(*(corner - p))), p, corner)
+            _, p, q = best
+            return p, (q - p) / np.hypot(*(q - p))
+    p = _nearest_on(world, centre)
+    gap = centre - p
+    length = float(np.hypot(*gap))
+    if length < 1e-9:
+        return p, None
+    inside = bool(_inside(world, centre[None, :])[0])
+    return p, (-gap if inside else gap) / length
+
+
+def _rectangle(centre: np.ndarray, size_x: float, size_y: float, yaw: float = 0.0) -> np.ndarray:
+    c, s = math.cos(yaw), math.sin(yaw)
+    half = np.array([(-size_x, -size_y), (size_x, -size_y), (size_x, size_y), (-size_x, size_y)]) / 2
+    return centre + half @ np.array([[c, s], [-s, c]])
+
+
+def _nearest_on(polygon: np.ndarray, point: np.ndarray) -> np.ndarray:
+    """The point of the closed polygon's boundary nearest to ``point``."""
+    a, e = polygon, np.roll(polygon, -1, axis=0) - polygon
+    u = np.clip(((point - a) * e).sum(axis=1) / (e * e).sum(axis=1), 0.0, 1.0)
+    q = a + u[:, None] * e
+    return q[int(np.argmin(np.hypot(*(q - point).T)))]
+
+
+def _inside(polygon: np.ndarray, points: np.ndarray) -> np.ndarray:
+    """Which ``points`` lie inside the convex, counter-clockwise ``polygon`` (on its boundary counts)."""
+    e = np.roll(polygon, -1, axis=0) - polygon
+    side = e[None, :, 0] * (points[:, None, 1] - polygon[None, :, 1]) - e[None, :, 1] * (points[:, None, 0] -
+                                                                                           polygon[None, :, 0])
+    return (side >= 0).all(axis=1)
+
+
+def _crossing(a: np.ndarray, b: np.ndarray) -> bool:
+    """Whether an edge of polygon ``a`` crosses one of ``b``."""
+    for p, p2 in zip(a, np.roll(a, -1, axis=0), strict=True):
+        for q, q2 in zip(b, np.roll(b, -1, axis=0), strict=True):
+            d1, d2 = _cross(q2 - q, p - q), _cross(q2 - q, p2 - q)
+            d3, d4 = _cross(p2 - p, q - p), _cross(p2 - p, q2 - p)
+            if d1 * d2 < 0 and d3 * d4 < 0:
+                return True
+    return False
+
+
+def _cross(u: np.ndarray, v: np.ndarray) -> float:
+    return float(u[0] * v[1] - u[1] * v[0])
 
 
 def _approach(robot: np.ndarray, velocity: np.ndarray, person: np.ndarray) -> float:
