@@ -8,7 +8,8 @@ import math
 import numpy as np
 import pytest
 
-from rei.geometry import Pose2D, Twist2D
+from rei.geometry import Pose2D, Twist2D, quaternion_of_yaw
+from rei.robots import FixedJoint
 from rei.sut.api import LaserScan, NavGoal, StaticMap
 from rei.sut.ros1.environment import import_rospy
 
@@ -34,8 +35,11 @@ def test_odometry_and_tf_carry_the_pose_in_their_frames() -> None:
     assert len(m.transforms(1.0, Pose2D(0, 0), FRAMES, with_map=False).transforms) == 1
 
 
-def test_tf_static_places_the_scans_frame_at_the_lidar_s_pose() -> None:
-    [lidar] = m.static_transforms((0.05, -0.01, 0.18, -2.5), FRAMES).transforms
+def test_tf_static_places_each_fixed_frame_in_its_parent() -> None:
+    joints = (FixedJoint("lidar", "base_link", "base_scan", (0.05, -0.01, 0.18), quaternion_of_yaw(-2.5)),
+              FixedJoint("imu_joint", "base_link", "imu_link", (0.0, 0.0, 0.068), (0.0, 0.0, 0.0, 1.0)))
+    lidar, imu = m.static_transforms(joints).transforms
+    assert (imu.header.frame_id, imu.child_frame_id, imu.transform.translation.z) == ("base_link", "imu_link", 0.068)
     assert (lidar.header.frame_id, lidar.child_frame_id, lidar.header.stamp) == ("base_link", "base_scan", m.stamp(0.0))
     position = lidar.transform.translation
     assert (position.x, position.y, position.z, m.yaw_of(lidar.transform.rotation)) == pytest.approx(

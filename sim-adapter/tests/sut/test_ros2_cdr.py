@@ -24,7 +24,8 @@ from cyclonedds.pub import DataWriter
 from cyclonedds.topic import Topic
 from rosbags.typesys import Stores, get_types_from_msg, get_typestore
 
-from rei.geometry import Pose2D, Twist2D
+from rei.geometry import Pose2D, Twist2D, quaternion_of_yaw
+from rei.robots import FixedJoint
 from rei.sut.api import LaserScan, NavGoal, StaticMap
 from rei.sut.ros2 import messages as m
 from rei.sut.ros2 import types as t
@@ -145,7 +146,8 @@ def samples() -> dict[str, IdlStruct]:
         "laser_scan_empty": t.LaserScan(),
         "tf": m.transforms(4.5, Pose2D(-3.0, 0.5, 2.0), FRAMES, with_map=True),
         "tf_empty": t.TFMessage(),
-        "tf_static": m.static_transforms((0.05, -0.01, 0.18, 3.0), FRAMES),
+        "tf_static": m.static_transforms((FixedJoint("lidar", "base_link", "base_scan", (0.05, -0.01, 0.18),
+                                                  quaternion_of_yaw(3.0)),)),
         "robot_description": m.robot_description('<robot name="rü">\n  <link name="base_footprint"/>\n</robot>\n'),
         "string_empty": t.String(),
         "clock": m.clock(0.3),
@@ -241,7 +243,8 @@ def test_rei_values_map_to_the_ros_fields() -> None:
     assert cells[30, 30] == 100 and cells[0, 0] == 0 and set(grid.data) == {0, 100}
     assert {topic.dds_name for topic in m.TOPICS.values()} == {
         "rt/clock", "rt/odom", "rt/tf", "rt/scan", "rt/map", "rt/robot_description", "rt/tf_static", "rt/cmd_vel"}
-    [lidar] = m.static_transforms((0.05, -0.01, 0.18, 0.5), FRAMES).transforms
+    [lidar] = m.static_transforms(
+        (FixedJoint("lidar", "base_link", "base_scan", (0.05, -0.01, 0.18), quaternion_of_yaw(0.5)),)).transforms
     assert (lidar.header.frame_id, lidar.child_frame_id, lidar.header.stamp) == ("base_link", "base_scan", m.stamp(0.0))
     position = lidar.transform.translation
     assert (position.x, position.y, position.z, m.yaw_of(lidar.transform.rotation)) == pytest.approx(

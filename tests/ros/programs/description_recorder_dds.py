@@ -2,7 +2,8 @@
 """A ROS 2 participant (Cyclone DDS, in the stack's environment) that joins late and keeps the robot's
 description: ``description_recorder_dds.py OUT.json`` waits until /clock has passed t = 1 s (long after the bridge
 wrote /robot_description and /tf_static), only then creates its readers of both, transient-local as a
-robot_state_publisher's subscribers and tf2's static listener read them, and writes what it got to OUT.json.
+robot_state_publisher's subscribers and tf2's static listener read them, and of /scan and /odom (their frames),
+and writes what it got to OUT.json.
 Started beside a navigation stack by tests/ros/test_ros_robot_description.py."""
 
 from __future__ import annotations
@@ -38,11 +39,18 @@ def main(out: str) -> None:
         for sample in clock.take(N=16):
             joined = max(joined, sample.clock.sec * 10**9 + sample.clock.nanosec)
         time.sleep(0.01)
+    sensor = Qos(Policy.Reliability.BestEffort, Policy.History.KeepLast(1), XCDR1)  # SensorDataQoS, as nav2's
+    scans = DataReader(participant, Topic(participant, "rt/scan", t.LaserScan), qos=sensor)
+    odometry = DataReader(participant, Topic(participant, "rt/odom", t.Odometry), qos=sensor)
     description = DataReader(participant, Topic(participant, "rt/robot_description", t.String), qos=LATCHED)
     static = DataReader(participant, Topic(participant, "rt/tf_static", t.TFMessage), qos=LATCHED)
     kept: dict = {"joined": joined * 1e-9}
     deadline = time.monotonic() + 30.0
-    while ("urdf" not in kept or "tf_static" not in kept) and time.monotonic() < deadline:
+    while not {"urdf", "tf_static", "scan_frame", "odom_frames"} <= kept.keys() and time.monotonic() < deadline:
+        for sample in scans.take(N=4):
+            kept["scan_frame"] = sample.header.frame_id
+        for sample in odometry.take(N=4):
+            kept["odom_frames"] = [sample.header.frame_id, sample.child_frame_id]
         for sample in description.take(N=4):
             kept["urdf"] = sample.data
         for sample in static.take(N=4):

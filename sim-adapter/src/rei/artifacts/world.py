@@ -171,8 +171,8 @@ class RobotSpec:
 
     A robot read from a URDF or xacro description (docs/robots.md) also has its ``footprint`` (the collision shapes'
     outline on the floor, relative to ``pose``), its lidar's ``lidar_pose`` ``(x, y, z, yaw)`` in the robot's frame,
-    the lidar's link ``lidar_link`` and the expanded ``description`` in the case folder; ``size`` is then the footprint's bounding box (and the
-    lidar's height). A box robot has none of these: its footprint is the ``size`` rectangle centred on ``pose``."""
+    the lidar's link ``lidar_link`` and the expanded ``description`` in the case folder; ``size`` is then the
+    footprint's bounding box (and the lidar's height). A box robot has none of these: its footprint is the ``size`` rectangle centred on ``pose``."""
 
     name: str
     type: str

@@ -8,12 +8,14 @@ from rei.robots.description import (
     Circle,
     DescriptionError,
     Drive,
+    FixedJoint,
     LidarPose,
     Part,
     Polygon,
     RobotDescription,
+    fixed_joints,
     load_description,
 )
 
-__all__ = ["Circle", "DescriptionError", "Drive", "LidarPose", "Part", "Polygon", "RobotDescription",
-           "load_description"]
+__all__ = ["Circle", "DescriptionError", "Drive", "FixedJoint", "LidarPose", "Part", "Polygon", "RobotDescription",
+           "fixed_joints", "load_description"]

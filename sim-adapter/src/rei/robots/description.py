@@ -219,6 +219,45 @@ def load_description(path: Path | str, args: Mapping[str, str] | None = None,
                             warnings=tuple(dict.fromkeys(warnings)), links=tuple(links), urdf=text)
 
 
+@dataclass(frozen=True, slots=True)
+class FixedJoint:
+    """A fixed joint of a description: its ``child`` link's frame in its ``parent`` link's, ``xyz`` (m) and the
+    ``quaternion`` ``(x, y, z, w)`` of its ``<origin>``'s roll, pitch and yaw."""
+
+    name: str
+    parent: str
+    child: str
+    xyz: tuple[float, float, float]
+    quaternion: tuple[float, float, float, float]
+
+
+def fixed_joints(text: str, path: Path | str = "robot.urdf") -> tuple[str, tuple[FixedJoint, ...]]:
+    """The root link of the expanded URDF ``text`` and its fixed joints, in the file's order: what
+    robot_state_publisher publishes on /tf_static. ``path`` names the file in errors (:class:`DescriptionError`)."""
+    path = Path(path)
+    robot = _parse_urdf(path, text, [], {})
+    root = next(iter(_link_frames(path, robot, {})))
+    found = []
+    for joint in robot.joints:
+        if joint.type != "fixed":
+            continue
+        origin = joint.origin
+        xyz = tuple(float(v) for v in (origin.xyz if origin is not None and origin.xyz is not None else (0, 0, 0)))
+        rpy = origin.rpy if origin is not None and origin.rpy is not None else (0.0, 0.0, 0.0)
+        found.append(FixedJoint(joint.name, joint.parent, joint.child, (xyz[0], xyz[1], xyz[2]),
+                                _quaternion(*(float(v) for v in rpy))))
+    return root, tuple(found)
+
+
+def _quaternion(roll: float, pitch: float, yaw: float) -> tuple[float, float, float, float]:
+    """``(x, y, z, w)`` of roll, pitch and yaw about the fixed x, y and z axes (tf's setRPY)."""
+    cr, sr = math.cos(roll / 2), math.sin(roll / 2)
+    cp, sp = math.cos(pitch / 2), math.sin(pitch / 2)
+    cy, sy = math.cos(yaw / 2), math.sin(yaw / 2)
+    return (sr * cp * cy - cr * sp * sy, cr * sp * cy + sr * cp * sy, cr * cp * sy - sr * sp * cy,
+            cr * cp * cy + sr * sp * sy)
+
+
 # --- xacro and URDF -------------------------------------------------------------------------------------------
 
 

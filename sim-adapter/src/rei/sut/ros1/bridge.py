@@ -140,7 +140,8 @@ class Ros1Bridge(RosBridge):
 
         rospy.set_param("/robot_description", description.urdf)
         self._tf_static = rospy.Publisher("/tf_static", TFMessage, queue_size=1, latch=True)
-        self._tf_static.publish(self.m.static_transforms(description.lidar, self.frames))
+        self._tf_static.publish(self.m.static_transforms(description.static))
+        self.frames = description.frames(self.frames)  # the odometry's and the scans' frames are the robot's
 
     def _await_server(self) -> None:
         """Until the stack's move_base server answers, in wall time (its own timeout counts the frozen sim time)."""

@@ -7,6 +7,8 @@ plus ``TIME_OFFSET``: rospy takes time 0 for "no clock yet", so the run's t = 0 
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 import numpy as np
 import rospy
 from geometry_msgs.msg import Quaternion, TransformStamped, Twist
@@ -19,6 +21,7 @@ from tf2_msgs.msg import TFMessage
 
 from rei.geometry import Pose2D, Twist2D, quaternion_of_yaw, yaw_of_quaternion
 from rei.maps import OccupancyMap
+from rei.robots import FixedJoint
 from rei.sut.api import LaserScan, NavGoal, StaticMap
 from rei.sut.rasterize import MAP_RESOLUTION, map_grid
 from rei.sut.ros_conventions import Frames, ros_nanoseconds
@@ -68,15 +71,19 @@ def transforms(t: float, odom: Pose2D, frames: Frames, *, with_map: bool) -> TFM
     return TFMessage(transforms=edges)
 
 
-def static_transforms(lidar: tuple[float, float, float, float], frames: Frames) -> TFMessage:
-    """/tf_static: base_link -> the scans' frame at the lidar's ``(x, y, z, yaw)``, as robot_state_publisher
-    publishes a URDF's fixed joints (stamped at t = 0: tf2 takes a static transform at every time)."""
-    x, y, z, yaw = lidar
-    stamped = TransformStamped()
-    stamped.header.stamp, stamped.header.frame_id, stamped.child_frame_id = stamp(0.0), frames.base, frames.laser
-    stamped.transform.translation.x, stamped.transform.translation.y, stamped.transform.translation.z = x, y, z
-    stamped.transform.rotation = quaternion(yaw)
-    return TFMessage(transforms=[stamped])
+def static_transforms(joints: Sequence[FixedJoint]) -> TFMessage:
+    """/tf_static: each fixed frame (rei.sut.ros_description: a description's fixed joints, a box robot's lidar) in
+    its parent's, as robot_state_publisher publishes a URDF's fixed joints (stamped at t = 0: tf2 takes a static
+    transform at every time)."""
+    edges = []
+    for joint in joints:
+        stamped = TransformStamped()
+        stamped.header.stamp, stamped.header.frame_id, stamped.child_frame_id = stamp(0.0), joint.parent, joint.child
+        t = stamped.transform
+        t.translation.x, t.translation.y, t.translation.z = joint.xyz
+        t.rotation.x, t.rotation.y, t.rotation.z, t.rotation.w = joint.quaternion
+        edges.append(stamped)
+    return TFMessage(transforms=edges)
 
 
 def laser_scan(scan: LaserScan, scan_time: float, frames: Frames) -> RosLaserScan:

@@ -141,7 +141,8 @@ class Ros2Bridge(RosBridge):
         """/robot_description and /tf_static, transient-local (as robot_state_publisher gives them): written
         before the stack starts and kept for every reader that comes later."""
         self._writers["robot_description"].write(self.m.robot_description(description.urdf))
-        self._writers["tf_static"].write(self.m.static_transforms(description.lidar, self.frames))
+        self._writers["tf_static"].write(self.m.static_transforms(description.static))
+        self.frames = description.frames(self.frames)  # the odometry's and the scans' frames are the robot's
 
     def _cancel(self, index: int) -> None:
         from rei.sut.ros2 import types as t

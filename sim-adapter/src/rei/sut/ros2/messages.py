@@ -9,6 +9,7 @@ ROS time for "no /clock yet", and one offset keeps both bridges' stamps identica
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -18,6 +19,7 @@ from cyclonedds.util import duration
 
 from rei.geometry import Pose2D, Twist2D, quaternion_of_yaw, yaw_of_quaternion
 from rei.maps import OccupancyMap
+from rei.robots import FixedJoint
 from rei.sut.api import LaserScan, NavGoal, StaticMap
 from rei.sut.rasterize import MAP_RESOLUTION, map_grid
 from rei.sut.ros2 import types as t
@@ -75,13 +77,16 @@ def transforms(t_sim: float, odom: Pose2D, frames: Frames, *, with_map: bool) ->
     return t.TFMessage(transforms=edges)
 
 
-def static_transforms(lidar: tuple[float, float, float, float], frames: Frames) -> t.TFMessage:
-    """/tf_static: base_link -> the scans' frame at the lidar's ``(x, y, z, yaw)``, as robot_state_publisher
-    publishes a URDF's fixed joints (stamped at t = 0: tf2 takes a static transform at every time)."""
-    x, y, z, yaw = lidar
+def static_transforms(joints: Sequence[FixedJoint]) -> t.TFMessage:
+    """/tf_static: each fixed frame (rei.sut.ros_description: a description's fixed joints, a box robot's lidar) in
+    its parent's, as robot_state_publisher publishes a URDF's fixed joints (stamped at t = 0: tf2 takes a static
+    transform at every time)."""
     return t.TFMessage(transforms=[t.TransformStamped(
-        header=header(0.0, frames.base), child_frame_id=frames.laser,
-        transform=t.Transform(translation=t.Vector3(x=float(x), y=float(y), z=float(z)), rotation=quaternion(yaw)))])
+        header=header(0.0, j.parent), child_frame_id=j.child,
+        transform=t.Transform(translation=t.Vector3(x=float(j.xyz[0]), y=float(j.xyz[1]), z=float(j.xyz[2])),
+                              rotation=t.Quaternion(x=float(j.quaternion[0]), y=float(j.quaternion[1]),
+                                                    z=float(j.quaternion[2]), w=float(j.quaternion[3]))))
+        for j in joints])
 
 
 def robot_description(urdf: str) -> t.String:
