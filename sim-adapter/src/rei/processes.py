@@ -20,27 +20,35 @@ import threading
 import time
 from collections.abc import Callable, Sequence
 from pathlib import Path
+from typing import IO, Any
 
 from rei.lifetime import die_with_parent, stat_fields
 
 _TAIL_BYTES = 64 * 1024
+
+#: Starts a child another way: (stdin a pipe?, stdout or None for a pipe, stderr, environment, folder) -> an object
+#: with Popen's pid, stdin, stdout, poll(), wait(timeout) and returncode; None: not possible here.
+Launch = Callable[[bool, IO[str] | None, IO[str], dict[str, str], Path | None], Any]
 
 
 class ManagedProcess:
     """A child process with its output in ``log`` and, optionally, each stdout line passed to ``on_line``."""
 
     def __init__(self, name: str, argv: Sequence[str], log: Path, *, on_line: Callable[[str], None] | None = None,
-                 env: dict[str, str] | None = None, cwd: Path | None = None, held: bool = False) -> None:
+                 env: dict[str, str] | None = None, cwd: Path | None = None, held: bool = False,
+                 launch: Launch | None = None) -> None:
         """``held``: the child's standard input is a pipe that ``release()`` writes a line to (a child that waits
-        for it can start up meanwhile)."""
+        for it can start up meanwhile). ``launch``: another way to start it (``rei.service.warm``: forked from a
+        warm Python), given the same streams, environment and folder; None from it: started as usual."""
         self.name = name
         self.log = log
         self._log = open(log, "w", encoding="utf-8")  # noqa: SIM115 - closed in stop()
-        self._process = subprocess.Popen(
+        environment = {**os.environ, **(env or {})}
+        launched = launch(held, None if on_line else self._log, self._log, environment, cwd) if launch else None
+        self._process: Any = launched or subprocess.Popen(
             die_with_parent(argv), stdin=subprocess.PIPE if held else subprocess.DEVNULL,
             stdout=subprocess.PIPE if on_line else self._log,
-            stderr=self._log, start_new_session=True, cwd=cwd,
-            env={**os.environ, **(env or {})}, text=True, bufsize=1)
+            stderr=self._log, start_new_session=True, cwd=cwd, env=environment, text=True, bufsize=1)
         self._reader: threading.Thread | None = None
         if on_line is not None:
             self._reader = threading.Thread(target=self._pump, args=(on_line,), name=f"{name}-output", daemon=True)

@@ -55,6 +55,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     of the input) and a non-zero exit code; anything else is a bug and keeps its traceback.
     """
     argv = sys.argv[1:] if argv is None else list(argv)
+    if argv[:1] == ["run"] and (code := _warm_run(argv)) is not None:
+        return code
     parser = build_parser(_command_module(argv))
     args = parser.parse_args(argv)
     try:
@@ -76,6 +78,17 @@ def main(argv: Sequence[str] | None = None) -> int:
         # interpreter's own flush at exit does not fail again
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return EXIT_BROKEN_PIPE
+
+
+def _warm_run(argv: list[str]) -> int | None:
+    """``rei run`` forked from the background service's warm Python (rei.service.warm), which has imported what a
+    run needs; None: run here (no service yet, another REI's, ``--no-service``, or this is that fork)."""
+    from rei import service
+    from rei.service.warm import SOCKET_ENV, delegate
+
+    if os.environ.get(SOCKET_ENV) or "--no-service" in argv or not service.enabled():
+        return None
+    return delegate(argv, service.service_dir())
 
 
 def _stdout_closed() -> bool:

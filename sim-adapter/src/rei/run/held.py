@@ -9,7 +9,7 @@ import sys
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import IO, TYPE_CHECKING, Any
 
 from rei.processes import ManagedProcess
 
@@ -35,11 +35,18 @@ def start_simulation(case_dir: Path, out: Path, router: Router, run_id: str, *, 
     progress: dict[str, float] = {"t": 0.0, "done": 0, "total": 0}
     sut_args = ["--sut-router", router.ws_url, "--sut-auth-file", str(router.auth_file("sut"))] \
         if external_sut else []
-    process = ManagedProcess("simulation", [
-        sys.executable, "-m", "rei.cli", "sim", str(case_dir), "-o", str(out), "--router", router.rs_url,
-        "--auth-file", str(router.auth_file("simulation")), "--run-id", run_id, "--progress", "lines",
-        "--reconnect", str(ROUTER_RECONNECT), "--wait-for-monitor", "--held", *sut_args, *sim_args],
-        out / "simulation.log", on_line=lambda line: _on_sim_line(line, progress), held=True)
+    command = ["sim", str(case_dir), "-o", str(out), "--router", router.rs_url,
+               "--auth-file", str(router.auth_file("simulation")), "--run-id", run_id, "--progress", "lines",
+               "--reconnect", str(ROUTER_RECONNECT), "--wait-for-monitor", "--held", *sut_args, *sim_args]
+
+    def warm(held: bool, stdout: IO[str] | None, stderr: IO[str], env: dict[str, str], cwd: Path | None) -> Any:
+        """Forked from the service's warm Python when this run was (it has imported the simulation already)."""
+        from rei.service.warm import WarmProcess
+
+        return WarmProcess.start(command, stdin_pipe=held, stdout=stdout, stderr=stderr, env=env, cwd=cwd)
+
+    process = ManagedProcess("simulation", [sys.executable, "-m", "rei.cli", *command], out / "simulation.log",
+                             on_line=lambda line: _on_sim_line(line, progress), held=True, launch=warm)
     return HeldSimulation(process, progress)
 
 

@@ -28,6 +28,7 @@ import os
 import secrets
 import shutil
 import socket
+import subprocess
 import sys
 import threading
 import time
@@ -38,6 +39,7 @@ from rei.lifetime import alive
 from rei.private_dirs import private_dir
 from rei.run.jvm import JarServer, JarServerError, run_served
 from rei.service import IDLE_SECONDS, LOG_NAME, PID_NAME, SOCKET_NAME, fingerprint, service_dir
+from rei.service.warm import SOCKET_NAME as WARM_SOCKET
 from rei.toolchain import ToolchainError
 from rei.wamp.router import Router, RouterError
 
@@ -61,6 +63,7 @@ class Service:
         self.stopping = threading.Event()
         self.jvms_up = threading.Event()
         self.fingerprint = fingerprint()
+        self.warm: subprocess.Popen[bytes] | None = None  # rei.service.warm: runs forked from a warm Python
 
     def run(self) -> int:
         private_dir(self.folder)
@@ -88,8 +91,9 @@ class Service:
                 self._discard_spares()
                 # a new service may start now; this one stays for the runs that hold its routers
                 control.close()
-                for name in (SOCKET_NAME, PID_NAME):
+                for name in (SOCKET_NAME, PID_NAME, WARM_SOCKET):
                     (self.folder / name).unlink(missing_ok=True)
+                self._release_warm()
                 fcntl.flock(lock, fcntl.LOCK_UN)
                 self._await_runs()
                 self._stop_jvms()
@@ -101,6 +105,8 @@ class Service:
         while not self.stopping.is_set():
             for role in self.jvms if self.jvms_up.is_set() else ():
                 self._keep_jvm(role)
+            if self.jvms_up.is_set():
+                self._keep_warm()
             self._reap_handed()
             self._drop_dead_spares()
             if len(self.spares) < SPARE_ROUTERS:
@@ -129,6 +135,25 @@ class Service:
             threading.Thread(target=run_served, args=(started.socket, ["--compile-only"],
                                                       self.folder / "monitor-warm-up.log"),
                              name="service-warm-up", daemon=True).start()
+
+    def _keep_warm(self) -> None:
+        """The warm Python runs are forked from (rei.service.warm); a new one when it ended (it ends itself on a
+        request from code newer than its own)."""
+        if self.warm is not None and self.warm.poll() is None:
+            return
+        if self.warm is not None:
+            _say(f"the warm Python ended (code {self.warm.returncode}); starting a new one")
+        with open(self.folder / "warm.log", "ab") as log:
+            self.warm = subprocess.Popen(
+                [sys.executable, "-c", "import sys; from rei.service.warm import main; sys.exit(main())",
+                 str(self.folder / WARM_SOCKET)], stdin=subprocess.PIPE, stdout=log, stderr=subprocess.STDOUT,
+                start_new_session=True)
+
+    def _release_warm(self) -> None:
+        """No more forks; the runs forked already go on (the warm Python exits after the last)."""
+        if self.warm is not None and self.warm.stdin is not None:
+            with contextlib.suppress(OSError):
+                self.warm.stdin.close()
 
     def _drop_dead_spares(self) -> None:
         with self.lock:

@@ -1,0 +1,424 @@
+# SPDX-License-Identifier: EPL-2.0
+"""The service's warm Python: ``rei run`` and its simulation forked from a process that has imported them already.
+
+Why: a warm ``rei run`` spent ~0.8 s of a 2.4 s simulation's run starting two interpreters and importing numpy,
+pybullet, the WAMP stack, the evaluator and the report (the command itself, then ``rei sim``) before the
+simulation's first step: most of what the run cost beyond its simulation. A fork of a process that has done so
+costs milliseconds. Each command still runs in a process of its own, so a run that crashes takes nothing else
+with it.
+
+The server (``serve``, started and kept by the service daemon) runs no threads (a fork copies only the forking
+thread) and exits when its standard input ends. One request per connection on ``warm.sock`` in the service's
+folder (0700), a JSON line with the requester's standard input, output and error attached (SCM_RIGHTS):
+
+    client: {"argv": [ARGV0, ARG...], "cwd": PATH, "env": {...}, "fingerprint": F}   + 3 file descriptors
+    server: {"pid": PID}        the command runs: ``rei.cli.main(ARG...)`` in a process group of its own
+    server: {"status": S}       it ended: its wait status
+    server: {"error": TEXT}     not run (``stale``: the server's code is not the requester's; the server exits
+                                and the service starts a fresh one)
+
+A requester that hangs up before its command ended (killed) takes the command with it: SIGTERM to its group.
+``delegate`` is the ``rei run`` side (forwarding its signals), ``WarmProcess`` the run's side for ``rei sim``.
+"""
+
+from __future__ import annotations
+
+import atexit
+import contextlib
+import importlib
+import json
+import os
+import select
+import selectors
+import signal
+import socket
+import sys
+import threading
+import time
+import traceback
+from collections.abc import Sequence
+from pathlib import Path
+from typing import IO, Any
+
+#: Imported once, before the first fork: what ``rei run`` and ``rei sim`` import on their way to the first step.
+PRELOAD = ("rei.cli", "rei.cli.run", "rei.cli.sim", "rei.run.pipeline", "rei.run.mission_run", "rei.sim",
+           "rei.wamp.client", "rei.evaluation", "rei.report", "rei.sut.registry", "rei.service.client", "pybullet")
+SOCKET_NAME = "warm.sock"
+#: Set in a forked command: where it forks its own children (``rei run``'s simulation).
+SOCKET_ENV = "REI_WARM_SOCKET"
+#: Seconds a requester waits for its fork's pid (the server answers at once unless it is stuck or importing).
+FORK_TIMEOUT = 10.0
+#: Seconds the server waits for a request once connected (its client sends it at once).
+REQUEST_TIMEOUT = 2.0
+#: Seconds between SIGTERM and SIGKILL for a command whose requester went.
+ORPHAN_GRACE = 10.0
+_TICK = 0.2
+_FORWARDED = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT)
+
+
+def source_fingerprint() -> str:
+    """What this Python's REI is: its package folder and every module's size and modification time (~2 ms). A
+    server made from other code (the user edited or updated REI) refuses, so no run uses stale modules."""
+    root = Path(__file__).resolve().parents[1]
+    entries = sorted(f"{path.relative_to(root)}|{stat.st_size}|{stat.st_mtime_ns}"
+                     for path in root.rglob("*.py") if (stat := path.stat()))
+    import hashlib
+
+    return hashlib.sha256("\n".join([str(root), sys.executable, *entries]).encode()).hexdigest()[:16]
+
+
+# -- the requester's side ------------------------------------------------------------------------------------------
+
+
+def _request(path: Path, argv: Sequence[str], fds: Sequence[int], env: dict[str, str] | None,
+             cwd: str | None) -> tuple[socket.socket, int] | None:
+    """Sends the request; the connection and the command's pid, or None when there is no (fitting) server."""
+    connection = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+    try:
+        connection.settimeout(FORK_TIMEOUT)
+        connection.connect(str(path))
+        request = {"argv": list(argv), "cwd": cwd or os.getcwd(), "env": dict(os.environ if env is None else env),
+                   "fingerprint": source_fingerprint()}
+        socket.send_fds(connection, [json.dumps(request).encode() + b"\n"], list(fds))
+        answer = json.loads(_read_line(connection) or b"null")
+    except (OSError, ValueError):
+        connection.close()
+        return None
+    if not isinstance(answer, dict) or not isinstance(answer.get("pid"), int):
+        connection.close()
+        return None
+    return connection, answer["pid"]
+
+
+def _read_line(connection: socket.socket) -> bytes:
+    data = b""
+    while not data.endswith(b"\n"):
+        chunk = connection.recv(1024)
+        if not chunk:
+            break
+        data += chunk
+    return data
+
+
+def _status(connection: socket.socket, timeout: float | None) -> int | None:
+    """The command's wait status once it ended (-1: the server went first), None if not within ``timeout``."""
+    if timeout is not None and not select.select([connection], [], [], timeout)[0]:
+        return None
+    try:
+        connection.settimeout(None)
+        line = _read_line(connection)
+    except OSError:
+        return -1
+    try:
+        return int(json.loads(line)["status"])
+    except (ValueError, KeyError, TypeError):
+        return -1
+
+
+def delegate(argv: Sequence[str], folder: Path) -> int | None:
+    """``rei ARGV`` run by the service's warm Python with this process's standard streams, its signals passed on;
+    its exit code, or None when the service has no warm Python for this REI (the caller runs the command itself)."""
+    sent = _request(folder / SOCKET_NAME, [sys.argv[0], *argv], (0, 1, 2), None, None)
+    if sent is None:
+        return None
+    connection, pid = sent
+
+    def forward(signum: int, _frame: object) -> None:
+        with contextlib.suppress(ProcessLookupError):
+            os.killpg(pid, signum)
+
+    for signum in _FORWARDED:
+        signal.signal(signum, forward)
+    status = _status(connection, None)
+    connection.close()
+    if status is None or status < 0:
+        print("rei: the service's warm Python ended before the run; see the service's log", file=sys.stderr)
+        return 1
+    code = os.waitstatus_to_exitcode(status)
+    return code if code >= 0 else 128 - code
+
+
+class WarmProcess:
+    """What ``subprocess.Popen`` gives ``rei.processes.ManagedProcess``, for a ``rei`` command forked by the warm
+    Python: ``pid`` (also its process group), ``stdin``/``stdout`` pipes (text, line-buffered), ``poll``, ``wait``
+    and ``returncode`` (negative: killed by that signal)."""
+
+    def __init__(self, connection: socket.socket, pid: int, stdin: IO[str] | None, stdout: IO[str] | None) -> None:
+        self.pid, self.stdin, self.stdout = pid, stdin, stdout
+        self._connection = connection
+        self.returncode: int | None = None
+        self._lock = threading.Lock()
+
+    @classmethod
+    def start(cls, argv: Sequence[str], *, stdin_pipe: bool, stdout: IO[Any] | None, stderr: IO[Any],
+              env: dict[str, str], cwd: Path | None) -> WarmProcess | None:
+        """``rei ARGV`` forked (None: no warm Python here, or not for this code); ``stdout`` None: a pipe."""
+        path = os.environ.get(SOCKET_ENV)
+        if not path:
+            return None
+        ours: list[tuple[str, int]] = []  # our ends of the pipes
+        theirs: list[int] = []  # what the child gets and we close once it has them
+        if stdin_pipe:
+            read, write = os.pipe()
+            theirs.append(read)
+            ours.append(("w", write))
+        else:
+            theirs.append(os.open(os.devnull, os.O_RDONLY))
+        child_out = stdout.fileno() if stdout is not None else None
+        if child_out is None:
+            read, write = os.pipe()
+            theirs.append(write)
+            ours.append(("r", read))
+        try:
+            fds = [theirs[0], child_out if child_out is not None else theirs[1], stderr.fileno()]
+            sent = _request(Path(path), ["rei", *argv], fds, env, str(cwd) if cwd else None)
+        finally:
+            for fd in theirs:
+                os.close(fd)
+        if sent is None:
+            for _, fd in ours:
+                os.close(fd)
+            return None
+        pipes = {mode: open(fd, mode, buffering=1, encoding="utf-8") for mode, fd in ours}  # noqa: SIM115 - the caller closes them
+        return cls(sent[0], sent[1], pipes.get("w"), pipes.get("r"))
+
+    def poll(self) -> int | None:
+        return self.wait(0.0)
+
+    def wait(self, timeout: float | None = None) -> int | None:
+        with self._lock:
+            if self.returncode is None:
+                status = _status(self._connection, timeout)
+                if status is None:  # not ended within ``timeout``
+                    return None
+                self.returncode = -signal.SIGKILL if status < 0 else os.waitstatus_to_exitcode(status)
+                self._connection.close()
+            return self.returncode
+
+
+# -- the server's side ---------------------------------------------------------------------------------------------
+
+
+def serve(path: Path) -> int:
+    """The server's loop (module docstring); returns once its standard input ends or a stale request came."""
+    fingerprint = source_fingerprint()  # before the imports: a module edited meanwhile makes this server stale
+    for module in PRELOAD:
+        importlib.import_module(module)
+    listener = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+    with contextlib.suppress(FileNotFoundError):
+        os.unlink(str(path) + ".new")
+    listener.bind(str(path) + ".new")
+    listener.listen(16)
+    os.rename(str(path) + ".new", path)  # requesters find the name once it accepts
+    running: dict[int, socket.socket] = {}
+    orphans: dict[int, float] = {}  # pid -> when its requester went
+    try:
+        with selectors.DefaultSelector() as selector:
+            selector.register(listener, selectors.EVENT_READ)
+            selector.register(sys.stdin.fileno(), selectors.EVENT_READ)
+            serving = True
+            while serving:
+                for key, _ in selector.select(_TICK):
+                    if key.fileobj is listener:
+                        connection, _ = listener.accept()
+                        if _start(connection, running, fingerprint, keep=(listener, selector)) == "stale":
+                            serving = False
+                    elif not os.read(sys.stdin.fileno(), 4096):
+                        serving = False
+                _reap(running, orphans)
+                _watch_requesters(running, orphans)
+        # the service stops (or this code is stale): no more forks (a requester then runs its command itself; a
+        # new server's name replaces this one's), but the commands running are users' runs: they go on
+        listener.close()
+        while running:
+            _reap(running, orphans)
+            _watch_requesters(running, orphans)
+            time.sleep(_TICK)
+    finally:
+        listener.close()
+        _stop_all(running)
+    return 0
+
+
+def _start(connection: socket.socket, running: dict[int, socket.socket], fingerprint: str,
+           keep: tuple[Any, ...]) -> str | None:
+    fds: list[int] = []
+    try:
+        connection.settimeout(REQUEST_TIMEOUT)
+        message, fds, _, _ = socket.recv_fds(connection, 1 << 20, 3)
+        while not message.endswith(b"\n"):
+            chunk = connection.recv(1 << 20)
+            if not chunk:
+                raise ValueError("the request ended early")
+            message += chunk
+        request = json.loads(message)
+        argv = [str(arg) for arg in request["argv"]]
+        env = {str(k): str(v) for k, v in dict(request["env"]).items()}
+        cwd = str(request["cwd"])
+        if len(fds) != 3:
+            raise ValueError(f"expected 3 file descriptors, got {len(fds)}")
+    except (OSError, ValueError, TypeError, KeyError) as error:
+        _close_all(fds)
+        _answer(connection, {"error": f"bad request: {error}"})
+        connection.close()
+        return None
+    if request.get("fingerprint") != fingerprint:
+        _close_all(fds)
+        _answer(connection, {"error": "stale"})
+        connection.close()
+        return "stale"
+    _flush_all()
+    pid = os.fork()
+    if pid == 0:
+        for inherited in (*keep, *running.values(), connection):
+            inherited.close()
+        _become(argv, env, cwd, fds)  # never returns
+    _close_all(fds)
+    with contextlib.suppress(OSError):  # also here: a signal to the group right after the answer reaches it
+        os.setpgid(pid, pid)
+    running[pid] = connection
+    _answer(connection, {"pid": pid})
+    return None
+
+
+def _become(argv: list[str], env: dict[str, str], cwd: str, fds: list[int]) -> None:
+    """In the forked child: the requester's streams, folder and environment, then ``rei.cli.main``; exits the
+    process as the interpreter would (exit functions run, non-daemon threads joined)."""
+    code = 1
+    try:
+        os.setpgid(0, 0)  # a group of its own: the requester's signals and its hang-up reach all it started
+        signal.signal(signal.SIGTERM, signal.SIG_DFL)
+        signal.signal(signal.SIGCHLD, signal.SIG_DFL)
+        signal.signal(signal.SIGINT, signal.default_int_handler)
+        signal.signal(signal.SIGPIPE, signal.SIG_IGN)
+        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+        for target, fd in enumerate(fds):
+            os.dup2(fd, target)
+        _close_all([fd for fd in fds if fd > 2])
+        # as the interpreter makes them at its start: stdout line-buffered on a terminal, stderr always
+        sys.stdin = sys.__stdin__ = open(0, encoding="utf-8", closefd=False)  # noqa: SIM115
+        sys.stdout = sys.__stdout__ = open(1, "w", buffering=1 if os.isatty(1) else -1, encoding="utf-8",  # noqa: SIM115
+                                           closefd=False)
+        sys.stderr = sys.__stderr__ = open(2, "w", buffering=1, encoding="utf-8", errors="backslashreplace",  # noqa: SIM115
+                                           closefd=False)
+        os.chdir(cwd)
+        os.environ.clear()
+        os.environ.update(env)
+        os.environ[SOCKET_ENV] = os.environ.get(SOCKET_ENV) or _server_socket
+        sys.argv = argv
+        from rei.cli import main
+
+        code = main(argv[1:])
+        for thread in threading.enumerate():
+            if thread is not threading.main_thread() and not thread.daemon:
+                thread.join()
+    except SystemExit as stop:
+        if stop.code is None or isinstance(stop.code, int):
+            code = stop.code or 0
+        else:
+            print(stop.code, file=sys.stderr)
+            code = 1
+    except BaseException:  # noqa: BLE001 - the requester's stderr gets it
+        traceback.print_exc()
+        code = 1
+    finally:
+        with contextlib.suppress(BaseException):
+            atexit._run_exitfuncs()
+        for stream in (sys.stdout, sys.stderr):
+            with contextlib.suppress(OSError, ValueError):
+                stream.flush()
+        _flush_all()
+        os._exit(code)
+
+
+_server_socket = ""
+
+
+def _reap(running: dict[int, socket.socket], orphans: dict[int, float]) -> None:
+    while running:
+        try:
+            pid, status = os.waitpid(-1, os.WNOHANG)
+        except ChildProcessError:
+            running.clear()
+            return
+        if not pid:
+            return
+        orphans.pop(pid, None)
+        connection = running.pop(pid, None)
+        if connection is not None:
+            _answer(connection, {"status": status})
+            connection.close()
+
+
+def _watch_requesters(running: dict[int, socket.socket], orphans: dict[int, float]) -> None:
+    """A requester that hung up (killed) takes its command with it: SIGTERM, SIGKILL after ORPHAN_GRACE."""
+    now = time.monotonic()
+    for pid, connection in running.items():
+        if pid in orphans:
+            if now - orphans[pid] > ORPHAN_GRACE:
+                _signal_group(pid, signal.SIGKILL)
+            continue
+        try:
+            connection.setblocking(False)
+            gone = connection.recv(1) == b""
+        except (BlockingIOError, InterruptedError):
+            gone = False
+        except OSError:
+            gone = True
+        if gone:
+            orphans[pid] = now
+            _signal_group(pid, signal.SIGTERM)
+
+
+def _stop_all(running: dict[int, socket.socket]) -> None:
+    """The service has gone: so do the commands still running (SIGTERM, SIGKILL after 3 s)."""
+    for pid in running:
+        _signal_group(pid, signal.SIGTERM)
+    deadline = time.monotonic() + 3.0
+    while running and time.monotonic() < deadline:
+        _reap(running, {})
+        time.sleep(0.05)
+    for pid in running:
+        _signal_group(pid, signal.SIGKILL)
+    while running:
+        _reap(running, {})
+        time.sleep(0.05)
+
+
+def _signal_group(pid: int, sig: int) -> None:
+    with contextlib.suppress(ProcessLookupError, PermissionError):
+        os.killpg(pid, sig)
+
+
+def _answer(connection: socket.socket, message: dict[str, Any]) -> None:
+    with contextlib.suppress(OSError):
+        connection.setblocking(True)
+        connection.sendall(json.dumps(message).encode() + b"\n")
+
+
+def _close_all(fds: Sequence[int]) -> None:
+    for fd in fds:
+        with contextlib.suppress(OSError):
+            os.close(fd)
+
+
+def _flush_all() -> None:
+    """Python's and C's output buffers: a fork would copy what they hold into the child."""
+    import ctypes
+
+    sys.stdout.flush()
+    sys.stderr.flush()
+    ctypes.CDLL(None).fflush(None)
+
+
+def main(argv: list[str] | None = None) -> int:
+    global _server_socket
+    args = sys.argv[1:] if argv is None else argv
+    if len(args) != 1:
+        print("usage: python -c 'from rei.service.warm import main; main()' SOCKET", file=sys.stderr)
+        return 2
+    _server_socket = args[0]
+    return serve(Path(args[0]))
+
+
+__all__ = ["SOCKET_ENV", "SOCKET_NAME", "WarmProcess", "delegate", "main", "serve", "source_fingerprint"]
