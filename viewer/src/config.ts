@@ -9,10 +9,12 @@ export interface WorldObject {
   readonly name: string;
   readonly category: Category;
   readonly type: string;
-  readonly shape: "BOX" | "CYLINDER" | "MESH";
+  readonly shape: "BOX" | "CYLINDER" | "MESH" | "POLYGON";
   readonly size: readonly number[];
   readonly pose: readonly number[];
   readonly colour?: readonly number[];
+  /** A POLYGON object's outline about its pose (concave or not); absent for every other shape. */
+  readonly footprint?: RobotFootprint;
 }
 
 /** A robot's outline on the floor in its own frame (x forward, y left), as world.json gives a robot read from a

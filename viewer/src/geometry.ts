@@ -80,12 +80,31 @@ export function placed(points: readonly (readonly [number, number])[], x: number
   return points.map(([px, py]) => [x + px * c - py * s, y + px * s + py * c] as [number, number]);
 }
 
-/** Whether world point (px, py) lies on the body's footprint (a turned box, or a disc for a cylinder). */
+/** A POLYGON object's outline in the world (its footprint placed at its pose and turned by its yaw); null for
+ * every other body, and for a footprint that does not read (then its bounding box is drawn). */
+export function objectOutline(body: WorldObject): [number, number][] | null {
+  const own = body.shape === "POLYGON" ? robotOutline(body.footprint) : null;
+  if (own === null || own.type !== "polygon") return null;
+  const [x = 0, y = 0, , yaw = 0] = body.pose;
+  return placed(own.points, x, y, yaw);
+}
+
+/** Whether world point (px, py) lies on the body's footprint (a turned box, a disc for a cylinder, a polygon). */
 export function contains(body: WorldObject, px: number, py: number): boolean {
   const [x = 0, y = 0, , yaw = 0] = body.pose;
   const [sx = 0, sy = 0] = body.size;
   const dx = px - x;
   const dy = py - y;
+  const own = objectOutline(body);
+  if (own !== null) {  // even-odd crossings of a ray towards +x
+    let inside = false;
+    for (let i = 0, j = own.length - 1; i < own.length; j = i++) {
+      const [xi = 0, yi = 0] = own[i] ?? [];
+      const [xj = 0, yj = 0] = own[j] ?? [];
+      if ((yi > py) !== (yj > py) && px < ((xj - xi) * (py - yi)) / (yj - yi) + xi) inside = !inside;
+    }
+    return inside;
+  }
   if (body.shape === "CYLINDER") return Math.hypot(dx, dy) <= sx / 2;
   const c = Math.cos(-yaw);
   const s = Math.sin(-yaw);

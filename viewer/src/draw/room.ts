@@ -3,7 +3,7 @@
 // humans' trajectories drawn faintly. Drawn once per resize into its own canvas, then copied each frame.
 import type { Occupancy, PathSpec, World, WorldObject } from "../config";
 import type { Transform } from "../geometry";
-import { boxCorners } from "../geometry";
+import { boxCorners, objectOutline } from "../geometry";
 import { cssColour, FLOOR, FLOOR_EDGE, HUMAN, WALL } from "./colours";
 
 const ORDER: Readonly<Record<string, number>> = { FLOOR: 0, STATIC: 1, DYNAMIC: 2, WALL: 3 };
@@ -12,6 +12,12 @@ function outline(ctx: CanvasRenderingContext2D, tf: Transform, body: WorldObject
   const [x = 0, y = 0, , yaw = 0] = body.pose;
   const [sx = 0, sy = 0] = body.size;
   ctx.beginPath();
+  const own = body.shape === "POLYGON" ? objectOutline(body) : null;
+  if (own !== null) {  // furniture on a polygon: the polygon itself, not its bounding box
+    for (const [cx, cy] of own) ctx.lineTo(tf.x(cx), tf.y(cy));
+    ctx.closePath();
+    return;
+  }
   if (body.shape === "CYLINDER") {
     ctx.arc(tf.x(x), tf.y(y), (sx / 2) * tf.scale, 0, 2 * Math.PI);
     return;

@@ -45,14 +45,15 @@ export interface Room {
 
 export interface Footprint {
   type: string;
-  shape: "box" | "cylinder";
+  shape: "box" | "cylinder" | "polygon";
   sizeX: number;
   sizeY: number;
   height: number;
   colour: string | null;
   /** A robot type read from a URDF or xacro description: its file (relative to the case), arguments, lidar link. */
   description?: { file: string; args: Record<string, string>; lidar: string | null } | null;
-  /** Its outline in the robot's frame as world.json's robot.footprint (the server reads it); null: draw the box. */
+  /** Its outline in the robot's frame as world.json's robot.footprint (the server reads it), or a polygon type's
+   * polygon about the item's place (the engine sends it); null: draw the box. */
   outline?: RobotFootprint | null;
 }
 
@@ -184,7 +185,7 @@ export interface Issue {
 export interface PaletteType {
   name: string;
   category: "object" | "dynamic" | "human" | "robot" | "floor" | "wall";
-  shape: "box" | "cylinder";
+  shape: "box" | "cylinder" | "polygon";
   sizeX: number;
   sizeY: number;
   colour: string | null;

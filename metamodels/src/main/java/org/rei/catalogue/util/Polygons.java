@@ -75,7 +75,8 @@ public final class Polygons {
 		double[][] out = new double[p.length][];
 		for (int i = 0; i < p.length; i++) {
 			double[] q = p[reverse ? (p.length - 1 - i + 1) % p.length : i];
-			out[i] = new double[] { q[0] - cx, q[1] - cy };
+			// to the picometre: 0.6 - 0.7 is -0.09999999999999998, where the text said 0.1 less than 0.7
+			out[i] = new double[] { Math.round((q[0] - cx) * 1e12) / 1e12, Math.round((q[1] - cy) * 1e12) / 1e12 };
 		}
 		return out;
 	}

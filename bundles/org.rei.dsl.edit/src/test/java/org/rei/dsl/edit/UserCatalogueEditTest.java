@@ -85,4 +85,33 @@ class UserCatalogueEditTest {
 	private static List<String> codes(EditResult result) {
 		return result.issues().stream().map(ValidationIssue::code).toList();
 	}
+
+	/**
+	 * examples/corner_desk.rei's desk stands on a polygon: the diagram sends its bounding box's sizes and the
+	 * polygon about the item's place (as world.json's footprint), the palette the bounding box; an edit moves it as
+	 * any furniture, and a box's footprint has no outline in the JSON.
+	 */
+	@Test
+	void aPolygonTypeIsDrawnAsItsPolygon() {
+		RoomDocument document = Texts.open("examples/corner_desk.rei");
+		Diagram diagram = document.diagram();
+		Diagram.Item desk = diagram.objects().stream().filter(o -> o.name().equals("desk")).findFirst().orElseThrow();
+		Diagram.Footprint footprint = desk.footprint();
+		assertEquals("polygon", footprint.shape());
+		assertEquals(1.6, footprint.sizeX(), 1e-9);
+		assertEquals(1.4, footprint.sizeY(), 1e-9);
+		assertEquals("polygon", footprint.outline().type());
+		double[][] expected = { { -0.8, -0.7 }, { 0.8, -0.7 }, { 0.8, -0.1 }, { -0.2, -0.1 }, { -0.2, 0.7 },
+				{ -0.8, 0.7 } };
+		for (int i = 0; i < expected.length; i++) {
+			org.junit.jupiter.api.Assertions.assertArrayEquals(expected[i], footprint.outline().points()[i], 1e-9);
+		}
+		String json = org.rei.dsl.edit.diagram.DiagramJson.write(diagram);
+		assertTrue(json.contains("\"shape\":\"polygon\""), json);
+		assertTrue(json.contains("\"outline\":{\"type\":\"polygon\",\"points\":[[-0.8,-0.7],"), json);
+		assertEquals(3, json.split("\"outline\":\\{").length, json); // the desk's and the sofa's only
+		PaletteType type = document.palette().stream().filter(t -> t.name().equals("CornerDesk")).findFirst()
+				.orElseThrow();
+		assertEquals(new PaletteType("CornerDesk", "object", "polygon", 1.6, 1.4, "#A0785A"), type);
+	}
 }

@@ -12,6 +12,7 @@ import org.eclipse.emf.ecore.EObject;
 import org.eclipse.xtext.documentation.IEObjectDocumentationProvider;
 import org.rei.catalogue.Lidar;
 import org.rei.catalogue.ObjectType;
+import org.rei.catalogue.util.Polygons;
 import org.rei.catalogue.RobotType;
 import org.rei.context.Behaviour;
 import org.rei.context.ControlPoint;
@@ -94,6 +95,15 @@ public class ReiDocumentationProvider implements IEObjectDocumentationProvider {
 	}
 
 	private static String objectType(ObjectType t) {
+		if (Polygons.isPolygon(t) && t.getVertices().size() >= 3) { // its bounding box and area, its vertices' count
+			double[][] p = Polygons.points(t);
+			double[] b = Polygons.bounds(p);
+			return String.format(Locale.ROOT, "**%s** (%s): polygon of %d vertices, %s m^2, %s x %s m, %s m high, "
+					+ "%s kg", t.getName(), t.getCategory().getLiteral(), p.length,
+					num(Math.round(Math.abs(Polygons.doubleArea(p)) / 2 * 1e4) / 1e4),
+					num(Math.round((b[2] - b[0]) * 1e6) / 1e6), num(Math.round((b[3] - b[1]) * 1e6) / 1e6),
+					num(t.getSizeZ()), num(t.getMass()));
+		}
 		return String.format(Locale.ROOT, "**%s** (%s): %s %s x %s x %s m, %s kg", t.getName(),
 				t.getCategory().getLiteral(), t.getShape().getLiteral().toLowerCase(Locale.ROOT), num(t.getSizeX()),
 				num(t.getSizeY()), num(t.getSizeZ()), num(t.getMass()))

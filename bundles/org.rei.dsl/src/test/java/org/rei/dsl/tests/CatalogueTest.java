@@ -98,6 +98,8 @@ class CatalogueTest {
 		assertEquals(List.of(-0.5, -0.25, 0.5, -0.25, 0.0, 0.75), wedge.getVertices().stream()
 				.flatMap(v -> java.util.stream.Stream.of(v.getX(), v.getY())).toList());
 		assertEquals(0.4, wedge.getSizeZ());
+		assertEquals("**Wedge** (STATIC): polygon of 3 vertices, 0.5 m^2, 1 x 1 m, 0.4 m high, 0 kg",
+				new org.rei.dsl.documentation.ReiDocumentationProvider().getDocumentation(wedge));
 		assertEquals(List.of(), files.validate(file));
 		assertEquals(List.of(), files.validate(ReiFiles.repository().resolve("examples/corner_desk.rei")));
 	}

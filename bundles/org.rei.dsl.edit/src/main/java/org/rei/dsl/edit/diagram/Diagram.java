@@ -44,16 +44,29 @@ public record Diagram(String testCase, Room room, List<Item> objects, Item robot
 	}
 
 	/**
-	 * What a catalogue type says about an element's outline: {@code box} or {@code cylinder}, sizes in metres; a robot
-	 * type read from a URDF or xacro description also names it ({@code description}, else null), whose outline only
-	 * REI's Python reader computes (the room editor's server adds it).
+	 * What a catalogue type says about an element's outline: {@code box}, {@code cylinder} or {@code polygon}, sizes
+	 * in metres (a polygon's its bounding box's); a robot type read from a URDF or xacro description also names it
+	 * ({@code description}, else null), whose outline only REI's Python reader computes (the room editor's server
+	 * adds it). A polygon type's {@code outline} is its polygon about the item's place, as world.json's footprint
+	 * (left out of the JSON for every other type).
 	 */
 	public record Footprint(String type, String shape, double sizeX, double sizeY, double height, String colour,
-			Description description) {
+			Description description,
+			@com.fasterxml.jackson.annotation.JsonInclude(com.fasterxml.jackson.annotation.JsonInclude.Include.NON_NULL)
+			Outline outline) {
 
 		public Footprint(String type, String shape, double sizeX, double sizeY, double height, String colour) {
-			this(type, shape, sizeX, sizeY, height, colour, null);
+			this(type, shape, sizeX, sizeY, height, colour, null, null);
 		}
+
+		public Footprint(String type, String shape, double sizeX, double sizeY, double height, String colour,
+				Description description) {
+			this(type, shape, sizeX, sizeY, height, colour, description, null);
+		}
+	}
+
+	/** A polygon outline, {@code type} "polygon", its {@code [x, y]} points counter-clockwise. */
+	public record Outline(String type, double[][] points) {
 	}
 
 	/**

@@ -16,6 +16,7 @@ import org.rei.catalogue.Catalogue;
 import org.rei.catalogue.ObjectType;
 import org.rei.catalogue.RobotType;
 import org.rei.catalogue.util.Catalogues;
+import org.rei.catalogue.util.Polygons;
 import org.rei.catalogue.util.RobotDescriptions;
 import org.rei.context.AsciiLayout;
 import org.rei.context.BuildingBlock;
@@ -212,6 +213,12 @@ public final class DiagramBuilder {
 				: defaultType == null ? null : Catalogues.find(defaults, defaultType).orElse(null);
 		if (effective == null) {
 			return null;
+		}
+		if (Polygons.isPolygon(effective) && effective.getVertices().size() >= 3) { // as world.json places it
+			double[] b = Polygons.bounds(Polygons.points(effective));
+			return new Diagram.Footprint(effective.getName(), "polygon", b[2] - b[0], b[3] - b[1],
+					effective.getSizeZ(), effective.getColour(), null,
+					new Diagram.Outline("polygon", Polygons.centred(effective)));
 		}
 		return new Diagram.Footprint(effective.getName(), effective.getShape().getLiteral().toLowerCase(),
 				effective.getSizeX(), effective.getSizeY(), effective.getSizeZ(), effective.getColour(),

@@ -35,9 +35,14 @@ public final class Palette {
 				.getScope(testCase, ContextPackage.Literals.SIMULATION_OBJECT__TYPE).getAllElements()) {
 			EObject resolved = EcoreUtil.resolve(description.getEObjectOrProxy(), testCase);
 			if (resolved instanceof ObjectType type && !type.eIsProxy() && type.getName() != null) {
+				double[] size = { type.getSizeX(), type.getSizeY() };
+				if (org.rei.catalogue.util.Polygons.isPolygon(type) && !type.getVertices().isEmpty()) {
+					double[] b = org.rei.catalogue.util.Polygons.bounds(org.rei.catalogue.util.Polygons.points(type));
+					size = new double[] { b[2] - b[0], b[3] - b[1] }; // a polygon's bounding box
+				}
 				types.add(new PaletteType(type.getName(), category(type.getCategory()),
-						type.getShape() == null ? null : type.getShape().getLiteral().toLowerCase(), type.getSizeX(),
-						type.getSizeY(), type.getColour()));
+						type.getShape() == null ? null : type.getShape().getLiteral().toLowerCase(), size[0], size[1],
+						type.getColour()));
 			}
 		}
 		return types;
