@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: EPL-2.0
 """A holonomic robot (#41, item 3: catalogue 'drive holonomic'): it strafes sideways to a goal on a script that
 commands the sideways speed vy alone, its heading unchanged, where a differential robot given the same script does
-not move (its vy is limited to 0, docs/robots.md#drives). Real processes: the Java generator and the simulator."""
+not move (its vy is limited to 0, docs/robots.md#drives); the reference navigation strafes it to that goal too. Real processes: the Java generator and the simulator."""
 
 from __future__ import annotations
 
@@ -75,6 +75,26 @@ def test_a_differential_robot_ignores_vy(run_cli, tmp_path: Path) -> None:
     _, _, still = strafe(run_cli, tmp_path / "still", "Diff", "7.6  0 0 0\n")
     assert np.array_equal(poses, still)
     assert np.max(np.abs(poses[:, 2] - poses[0, 2])) < 0.005
+
+
+def test_the_reference_navigation_strafes_a_holonomic_robot_to_a_goal_at_its_side(run_cli, tmp_path: Path) -> None:
+    """The reference navigation (rei.sut.nav) drives the holonomic robot to the goal 2 m to its left by its sideways
+    speed, its heading kept (0.03 degrees measured, at most 0.01 rad allowed) and its x within 5 mm; the
+    differential robot on the same goal must turn a quarter round first."""
+    (tmp_path / "bases.rei").write_text(CATALOGUE, encoding="utf-8")
+    turned = {}
+    for robot_type in ("Omni", "Diff"):
+        case = tmp_path / f"{robot_type}.rei"
+        case.write_text(CASE.replace("TYPE", robot_type), encoding="utf-8")
+        out = tmp_path / robot_type
+        result = run_cli("sim", case, "-o", out, "--no-router", "--controller", "nav")
+        assert result.returncode == 0 and "mission succeeded" in result.stdout, result.stdout + result.stderr
+        poses = np.array([[m["robot"]["pose"][0], m["robot"]["pose"][1], m["robot"]["pose"][-1]]
+                          for m in read_recording(out / "streams" / "state.msgpack")])
+        turned[robot_type] = float(np.max(np.abs(poses[:, 2])))
+        if robot_type == "Omni":
+            assert poses[-1, 1] - poses[0, 1] > 1.8 and np.max(np.abs(poses[:, 0] - 0.5)) < 0.005
+    assert turned["Omni"] < 0.01 and turned["Diff"] > 1.0, turned
 
 
 def test_a_stuck_wheel_is_refused_for_a_holonomic_robot_and_an_unknown_drive_in_world_json(run_cli,

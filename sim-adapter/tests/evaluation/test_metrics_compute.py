@@ -7,6 +7,7 @@ tests/simulation/test_navigation_metrics.py."""
 from __future__ import annotations
 
 import json
+import math
 import shutil
 from pathlib import Path
 from typing import Any
@@ -133,3 +134,31 @@ def test_spl_is_zero_on_failure_and_null_without_a_planned_path(tmp_path: Path) 
     assert failed["success"] is False and failed["spl"] == 0.0
     walled = compute_metrics(_run(tmp_path / "b", states, goals=[(0.0, 1.0)], success=False))  # inside a wall
     assert walled["success"] is False and walled["spl"] is None
+
+
+def test_the_shortest_path_of_a_described_robot_takes_its_outline(tmp_path: Path) -> None:
+    """SPL's shortest path plans with the robot's outline as the navigation does (its radii about its origin): a
+    round robot of radius 0.17 fits through a 0.44 m gap in a wall across the room, from (1, 1) to (5, 1); a box
+    robot of its bounding square (0.34 m, circumscribed radius 0.24) does not, and neither did the round robot
+    when its bounding box was planned."""
+    from rei.artifacts.world import read_world
+    from rei.evaluation.metrics.compute import _shortest_path
+
+    def world(footprint: dict[str, Any] | None) -> Path:
+        data = json.loads((FIXTURE / "world.json").read_text())
+        data["objects"] = [o for o in data["objects"] if o["category"] in ("FLOOR", "WALL")]
+        for name, y0, y1 in (("low", 0.0, 1.78), ("high", 2.22, 4.0)):  # the wall at x = 3, a gap at y = 2
+            data["objects"].append({"name": name, "category": "STATIC", "type": "Wall", "shape": "BOX",
+                                    "size": [0.1, y1 - y0, 1.0], "pose": [3.0, (y0 + y1) / 2, 0.5, 0.0],
+                                    "mass": 0.0, "inertia": [0, 0, 0], "colour": [1, 1, 1, 1], "floor": "F_1_0"})
+        data["robot"]["size"] = [0.34, 0.34, 0.2]
+        if footprint is not None:
+            data["robot"]["footprint"] = footprint
+        path = tmp_path / ("round.json" if footprint else "square.json")
+        path.write_text(json.dumps(data))
+        return path
+
+    round_ = _shortest_path(read_world(world({"type": "circle", "x": 0.0, "y": 0.0, "radius": 0.17})),
+                            (1.0, 1.0), [(5.0, 1.0)])
+    assert round_ is not None and 2 * math.hypot(2.0, 1.0) <= round_ < 2 * math.hypot(2.0, 1.0) + 0.05
+    assert _shortest_path(read_world(world(None)), (1.0, 1.0), [(5.0, 1.0)]) is None

@@ -117,6 +117,23 @@ def test_hello_s_outline_is_the_footprint_as_world_json_writes_it() -> None:
     assert all(isinstance(v, float) for point in protocol.outline(square)["points"] for v in point)
 
 
+def test_a_controller_s_static_map_takes_a_described_robot_s_outline_and_drive_from_hello() -> None:
+    """rei nav-sut plans as the in-process navigation does: with a described robot's outline (a circle as the
+    polygon around it) and its holonomic drive; a box robot's outline, its footprint rectangle, leaves it planned by
+    its size, as before."""
+    from rei.artifacts.world import CircleFootprint, PolygonFootprint, footprint_polygon
+
+    box = PolygonFootprint(((-0.2, -0.15), (0.2, -0.15), (0.2, 0.15), (-0.2, 0.15)))
+    hello = {"map": {"bounds": [0, 0, 4, 4], "obstacles": []},
+             "robot": {"footprint": [0.4, 0.3], "outline": protocol.outline(box), "drive": "differential"}}
+    static_map = protocol.read_static_map(hello)
+    assert static_map is not None and static_map.outline is None and not static_map.holonomic
+    hello["robot"].update(outline=protocol.outline(CircleFootprint(0.0, 0.0, 0.17)), drive="holonomic")
+    static_map = protocol.read_static_map(hello)
+    assert static_map is not None and static_map.holonomic
+    assert static_map.outline == footprint_polygon(CircleFootprint(0.0, 0.0, 0.17))
+
+
 def test_statuses_follow_the_action_server_s_states() -> None:
     assert protocol.check_status({"goal_id": 1, "status": "SUCCEEDED", "text": "there"}, current_goal=1) == \
         Status(1, NavStatus.SUCCEEDED, "there")

@@ -241,3 +241,25 @@ def test_the_nav_controller_plans_with_the_robots_own_footprint_unless_told_othe
     told = ControllerRegistry(()).create("nav:footprint_x=0.3,footprint_y=0.3")
     told.reset(burger, Pose2D(2.0, 2.0, 0.0))
     assert (told.config.footprint_x, told.config.footprint_y) == (0.3, 0.3)  # type: ignore[attr-defined]
+
+
+def test_the_nav_controller_plans_with_a_described_robot_s_outline_radii() -> None:
+    """A robot read from its description (StaticMap.outline) is planned by its outline's radii about its origin,
+    as Nav2 takes them from a footprint polygon: the farthest vertex and the nearest edge; its bounding box
+    centred on the origin (what it was planned with before) would have reached only 0.113 m where the Burger-like
+    outline's back corners reach 0.135 m. A box robot keeps its box's radii; a round robot's are its circle's."""
+    burger = ((-0.102, -0.089), (0.038, -0.089), (0.038, 0.089), (-0.102, 0.089))  # off its origin, as the Burger
+    described = dataclasses.replace(rect_room(4, 4), robot_size=(0.14, 0.178), outline=burger)
+    nav = NavController(footprint=None)
+    nav.reset(described, Pose2D(2.0, 2.0, 0.0))
+    assert nav.config.circumscribed_radius == pytest.approx(math.hypot(0.102, 0.089), abs=1e-12)
+    assert nav.config.inscribed_radius == pytest.approx(0.038, abs=1e-12)  # the front edge
+    assert 0.5 * math.hypot(0.14, 0.178) < nav.config.circumscribed_radius - 0.02
+    box = NavController(footprint=None)
+    box.reset(dataclasses.replace(described, outline=None), Pose2D(2.0, 2.0, 0.0))
+    assert (box.config.circumscribed_radius, box.config.inscribed_radius) == (0.5 * math.hypot(0.14, 0.178), 0.07)
+    from rei.artifacts.world import CircleFootprint, footprint_polygon
+
+    round_ = dataclasses.replace(described, robot_size=(0.34, 0.34),
+                                 outline=footprint_polygon(CircleFootprint(0.0, 0.0, 0.17)))
+    assert round_.robot_radii == pytest.approx((0.17 / math.cos(math.pi / 64), 0.17), abs=1e-12)

@@ -11,12 +11,13 @@ argument, the text after ``name:`` on the command line).
 from __future__ import annotations
 
 import enum
+import math
 from abc import ABC, abstractmethod
 from dataclasses import dataclass
 
 import numpy as np
 
-from rei.artifacts.world import Category, WorldSpec
+from rei.artifacts.world import Category, WorldSpec, footprint_polygon
 from rei.geometry import Pose2D, Twist2D
 
 
@@ -79,6 +80,12 @@ class StaticMap:
     #: Where the lidar sits on the robot, ``(x, y, yaw)`` in its frame: a scan's beams start there and its angle 0
     #: is that yaw (a robot read from a description; a box robot's lidar is at its centre, facing ahead).
     lidar: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    #: A robot read from its description: its outline on the floor in its own frame, a convex polygon
+    #: counter-clockwise (a circle as the 64-gon around it); None for a box robot, whose footprint is
+    #: ``robot_size`` centred on its origin.
+    outline: tuple[tuple[float, float], ...] | None = None
+    #: The robot's drive takes a sideways speed ``vy`` (``drive holonomic``).
+    holonomic: bool = False
 
     @classmethod
     def of_world(cls, world: WorldSpec) -> StaticMap:
@@ -86,9 +93,28 @@ class StaticMap:
         footprint: one definition for the simulation's map and the metrics' shortest path (SPL)."""
         obstacles = tuple((o.pose[0], o.pose[1], o.pose[3], o.size[0], o.size[1]) for o in world.objects
                           if o.category in (Category.WALL, Category.STATIC))
-        lidar = world.robot.lidar
-        return cls(bounds=world.bounds, obstacles=obstacles, robot_size=(world.robot.size[0], world.robot.size[1]),
-                   lidar=(lidar.x, lidar.y, lidar.yaw))
+        robot = world.robot
+        lidar = robot.lidar
+        outline = None if robot.footprint is None else footprint_polygon(robot.footprint)
+        return cls(bounds=world.bounds, obstacles=obstacles, robot_size=(robot.size[0], robot.size[1]),
+                   lidar=(lidar.x, lidar.y, lidar.yaw), outline=outline, holonomic=robot.drive.kind == "holonomic")
+
+    @property
+    def robot_radii(self) -> tuple[float, float]:
+        """The robot's circumscribed and inscribed radii about its origin (Nav2's footprint radii): its outline's
+        farthest vertex and nearest edge (0 when the origin is outside it), or a box robot's half diagonal and
+        half width."""
+        if self.outline is None:
+            sx, sy = self.robot_size
+            return 0.5 * math.hypot(sx, sy), 0.5 * min(sx, sy)
+        points = self.outline
+        far = max(math.hypot(x, y) for x, y in points)
+        near = math.inf
+        for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1], strict=True):
+            length = math.hypot(x1 - x0, y1 - y0)
+            if length > 0:
+                near = min(near, ((x1 - x0) * (0.0 - y0) - (y1 - y0) * (0.0 - x0)) / length)  # > 0: inside
+        return far, max(near, 0.0)
 
 
 class Controller(ABC):

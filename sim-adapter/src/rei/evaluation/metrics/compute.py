@@ -401,8 +401,9 @@ def _shortest_path(world: WorldSpec, start: tuple[float, float], goals: Sequence
     from rei.sut.nav.grid import CostGrid
 
     static_map = StaticMap.of_world(world)
+    far, near = static_map.robot_radii if static_map.outline is not None else (0.0, 0.0)  # a box robot's: its box
     config = NavConfig(footprint_x=static_map.robot_size[0], footprint_y=static_map.robot_size[1],
-                       inflation_margin=0.0, cost_scale=0.0)
+                       outline_circumscribed=far, outline_inscribed=near, inflation_margin=0.0, cost_scale=0.0)
     grid = CostGrid(static_map, config)
     total = 0.0
     points = [start, *goals]

@@ -21,7 +21,7 @@ from typing import Any
 
 import numpy as np
 
-from rei.artifacts.world import FOOTPRINT_TYPES, CircleFootprint, PolygonFootprint
+from rei.artifacts.world import FOOTPRINT_TYPES, CircleFootprint, PolygonFootprint, footprint_polygon
 from rei.geometry import Pose2D, Twist2D
 from rei.sut.api import LaserScan, NavGoal, NavStatus, Observation, StaticMap
 
@@ -153,7 +153,25 @@ def read_static_map(hello: Mapping[str, Any]) -> StaticMap | None:
     return StaticMap(bounds=tuple(float(v) for v in data["bounds"]),  # type: ignore[arg-type]
                      obstacles=tuple(tuple(float(v) for v in box) for box in data["obstacles"]),  # type: ignore[misc]
                      robot_size=(float(size_x), float(size_y)),
-                     lidar=(float(lidar.get("x", 0.0)), float(lidar.get("y", 0.0)), float(lidar.get("yaw", 0.0))))
+                     lidar=(float(lidar.get("x", 0.0)), float(lidar.get("y", 0.0)), float(lidar.get("yaw", 0.0))),
+                     outline=_described_outline(hello["robot"].get("outline"), (float(size_x), float(size_y))),
+                     holonomic=hello["robot"].get("drive") == "holonomic")
+
+
+def _described_outline(data: Any, size: tuple[float, float]) -> tuple[tuple[float, float], ...] | None:
+    """``hello``'s ``robot.outline`` as StaticMap.outline: a circle as the polygon around it (as world.json's
+    footprint is read); None without one, or when it is the ``footprint`` rectangle centred on the origin (a box
+    robot, whose footprint is its size, as the in-process controllers get it)."""
+    if not isinstance(data, Mapping):
+        return None
+    polygon, circle = FOOTPRINT_TYPES
+    if data.get("type") == circle:
+        return footprint_polygon(CircleFootprint(float(data["x"]), float(data["y"]), float(data["radius"])))
+    if data.get("type") != polygon:
+        return None
+    points = tuple((float(x), float(y)) for x, y in data["points"])
+    hx, hy = size[0] / 2, size[1] / 2
+    return None if set(points) == {(-hx, -hy), (hx, -hy), (hx, hy), (-hx, hy)} else points
 
 
 def read_occupancy(hello: Mapping[str, Any], case_dir: Path | None = None) -> Path | None:

@@ -23,6 +23,12 @@ class NavConfig:
     acc_angular: float = 3.2
     footprint_x: float = 0.281
     footprint_y: float = 0.306
+    # A robot read from its description: its outline's circumscribed and inscribed radii about its origin
+    # (rei.sut.api.StaticMap.robot_radii); 0: the footprint_x x footprint_y box's, centred on the origin.
+    outline_circumscribed: float = 0.0
+    outline_inscribed: float = 0.0
+    # The drive takes a sideways speed: the controller strafes towards its path instead of turning first.
+    holonomic: bool = False
 
     # Global planner: occupancy grid, inflation, cost gradient that keeps paths away from obstacles.
     resolution: float = 0.05
@@ -75,10 +81,14 @@ class NavConfig:
 
     @property
     def circumscribed_radius(self) -> float:
+        if self.outline_circumscribed > 0:
+            return self.outline_circumscribed
         return 0.5 * math.hypot(self.footprint_x, self.footprint_y)
 
     @property
     def inscribed_radius(self) -> float:
+        if self.outline_circumscribed > 0:
+            return self.outline_inscribed
         return 0.5 * min(self.footprint_x, self.footprint_y)
 
     @property

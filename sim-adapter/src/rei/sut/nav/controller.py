@@ -101,6 +101,11 @@ class NavController(Controller):
         if self._robots_footprint:
             self.config = dataclasses.replace(self.config, footprint_x=static_map.robot_size[0],
                                               footprint_y=static_map.robot_size[1])
+            if static_map.outline is not None:  # a described robot: its outline's radii, not its bounding box's
+                far, near = static_map.robot_radii
+                self.config = dataclasses.replace(self.config, outline_circumscribed=far, outline_inscribed=near)
+        if static_map.holonomic:
+            self.config = dataclasses.replace(self.config, holonomic=True)
         self._grid = CostGrid(static_map, self.config)
         self._localizer = Localizer(self._grid, self.config.match_gate) if self.config.localize else None
         self._scan_t, self._pose = None, None
@@ -189,6 +194,12 @@ class NavController(Controller):
         carrot = self._to_robot(pose, carrot_world[None, :])[0]
         error = math.atan2(carrot[1], carrot[0])
         moving = self._moving(pose)
+        v_cap = math.sqrt(2.0 * 0.5 * max(to_end - 0.5 * reach, 0.0)) + 0.03
+        if self.config.holonomic and self._mode != _ROTATE:
+            cmd = self._strafe(dt, carrot, points, moving, v_cap)
+            if cmd is not None:
+                self._mode, self._blocked_since, self._replanned_in_block = _FOLLOW, None, False
+                return cmd
         wants_turn = self._mode == _ROTATE or abs(error) > self.config.rotate_threshold
         if (wants_turn and math.hypot(*carrot) > 0.05 and abs(error) > 0.25
                 and self._dwa.rotation_safe(points, xyyaw) and self._dwa.standing_safe(moving)):
@@ -199,7 +210,6 @@ class NavController(Controller):
 
         hi = int(np.searchsorted(path.s, path.s[self._idx] + self.config.lookahead + 0.5))
         window = self._to_robot(pose, path.points[self._idx: hi + 1])
-        v_cap = math.sqrt(2.0 * 0.5 * max(to_end - 0.5 * reach, 0.0)) + 0.03
         choice = self._dwa.choose(
             xyyaw, self._last_cmd.v, self._last_cmd.w, dt, points, window, carrot, v_cap, final, moving
         )
@@ -244,6 +254,31 @@ class NavController(Controller):
         self._mode = _FOLLOW
         self._try_replan(pose, sensed=True)
         return None
+
+    def _strafe(self, dt: float, carrot: np.ndarray, points: np.ndarray,
+                moving: tuple[np.ndarray, np.ndarray] | None, v_cap: float) -> Twist2D | None:
+        """A holonomic robot moves straight at the carrot with its heading kept (forward and sideways speeds, no
+        turn), as long as no tracked person is near and the robot's circumscribed circle, swept along that line
+        for ``sim_time``, keeps ``min_clearance`` from every scan point; None otherwise, and the dynamic window
+        (which turns and drives) decides."""
+        cfg = self.config
+        distance = float(math.hypot(*carrot))
+        if distance < 1e-6 or moving is not None:
+            return None
+        u = carrot / distance
+        speed = min(cfg.max_linear, v_cap)
+        ahead = min(distance, speed * cfg.sim_time)
+        if len(points):
+            along = np.clip(points @ u, 0.0, ahead)
+            gap = np.hypot(points[:, 0] - along * u[0], points[:, 1] - along * u[1]) - cfg.circumscribed_radius
+            if float(gap.min()) < cfg.min_clearance:
+                return None
+        last = self._last_cmd
+        step = cfg.acc_linear * dt
+        v = min(max(speed * float(u[0]), last.v - step), last.v + step)
+        vy = min(max(speed * float(u[1]), last.vy - step), last.vy + step)
+        w = min(max(0.0, last.w - cfg.acc_angular * dt), last.w + cfg.acc_angular * dt)  # come to a stop turning
+        return self._send(v, w, vy)
 
     def _rotate(self, error: float, dt: float) -> Twist2D:
         cfg = self.config
@@ -299,8 +334,8 @@ class NavController(Controller):
         self._path = None
         return self._send(0.0, 0.0)
 
-    def _send(self, v: float, w: float) -> Twist2D:
-        self._last_cmd = Twist2D(v, w)
+    def _send(self, v: float, w: float, vy: float = 0.0) -> Twist2D:
+        self._last_cmd = Twist2D(v, w, vy)
         return self._last_cmd
 
     def _scan_local(self, scan: LaserScan) -> np.ndarray:
