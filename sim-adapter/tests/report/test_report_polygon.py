@@ -9,8 +9,12 @@ import math
 import re
 from pathlib import Path
 
+import pytest
+from mcap.reader import make_reader
 from polygon_desk import C_DESK, add_polygon_desk
 
+from rei.geometry import yaw_of_quaternion
+from rei.report import write_mcap
 from rei.report.html import render_report
 from rei.report.map_svg import _world_layer
 from rei.report.run_data import load_run
@@ -44,3 +48,21 @@ def test_the_map_draws_the_desks_polygon_turned_with_it(tmp_path: Path) -> None:
     wall = next(o for o in world["objects"] if o["category"] == "WALL")
     corners = box_corners(wall["pose"][0], wall["pose"][1], wall["size"][0], wall["size"][1], wall["pose"][3])
     assert f'points="{tf.points_attr(corners)}"' in _world_layer(world, tf)
+
+
+def test_run_mcap_draws_the_desk_as_its_prisms_edges(tmp_path: Path) -> None:
+    """run.mcap's /world has the desk as the edges of its polygon's prism (SceneUpdate lines), placed and turned,
+    from the floor to its height; a box stays a cube."""
+    out = make_run(tmp_path / "run")
+    pose = (3.5, 1.5, 0.375, math.pi / 2)
+    add_polygon_desk(out / "case", pose=pose)
+    with open(write_mcap(out), "rb") as f:
+        (world,) = [json.loads(m.data) for _, channel, m in make_reader(f).iter_messages() if channel.topic == "/world"]
+    entities = {e["id"]: e for e in world["entities"]}
+    bottom, top, upright = entities["table1"]["lines"]
+    place = bottom["pose"]["position"]
+    turn = yaw_of_quaternion(*(bottom["pose"]["orientation"][a] for a in "xyzw"))
+    assert (place["x"], place["y"], place["z"], turn) == pytest.approx((pose[0], pose[1], 0.0, pose[3]))
+    assert [(p["x"], p["y"]) for p in bottom["points"]] == [pytest.approx(p) for p in C_DESK]
+    assert {p["z"] for p in top["points"]} == {0.75} and len(upright["points"]) == 2 * len(C_DESK)
+    assert "cubes" in entities["W_0_0_bottom"] and "lines" not in entities["W_0_0_bottom"]

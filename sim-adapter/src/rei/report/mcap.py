@@ -132,6 +132,12 @@ class _McapRun:
             except (KeyError, TypeError, ValueError):
                 continue
             alpha = 0.6 if body["category"] == "WALL" else None
+            footprint = body.get("footprint")
+            if body.get("shape") == "POLYGON" and isinstance(footprint, dict) and len(footprint.get("points") or ()) >= 3:
+                # furniture on a polygon: the edges of its prism, as a described robot's outline is drawn
+                entities.append(fg.outline_entity(t, str(body.get("name")), footprint, size[2],
+                                                  (x, y, z - size[2] / 2), yaw, body.get("colour")))
+                continue
             entities.append(fg.body_entity(t, str(body.get("name")), str(body.get("shape")), size, (x, y, z), yaw,
                                            body.get("colour"), alpha))
         for goal in self.data.goals:
