@@ -193,3 +193,23 @@ def test_a_long_robot_turning_its_front_into_a_person_is_at_fault(tmp_path: Path
     assert collision.approach == pytest.approx(max(expected), abs=1e-3)
     assert collision.approach > 0.3 and collision.robot_at_fault
     assert (measured.metrics["collisions_robot_at_fault"], measured.metrics["collisions_person_at_fault"]) == (1, 0)
+
+
+def test_a_rectangle_person_is_judged_from_the_nearest_points_of_both_shapes() -> None:
+    """The long robot at the origin turns at 1 rad/s; a person's rectangle 1 m by 0.1 m, its near end at x 1.1 and
+    y 0.15 to 0.25, is apart from it. The nearest points are the outline's front corner (0.9, 0.1) and her corner
+    (1.1, 0.15): the corner moves at (-0.1, 0.9) m/s, 0.121 m/s along them, at fault; measured towards her centre
+    (1.6, 0.2), as for a round person there, it would be 0.028 m/s."""
+    from rei.evaluation.metrics.social import person_collisions
+
+    t, pose = np.array([0.0, DT]), np.zeros((2, 3))
+    collides = np.array([[False], [True]])
+    person = np.array([[[1.6, 0.2, 0.0]], [[1.6, 0.2, 0.0]]])
+    rate = np.array([1.0, 1.0])
+    corner, velocity = np.array([0.9, 0.1]), np.array([-0.1, 0.9])
+    for circle, towards in ((False, np.array([1.1, 0.15])), (True, np.array([1.6, 0.2]))):
+        (found,) = person_collisions(t, pose, np.zeros((2, 2)), person, ["h"], collides, np.array(LONG), rate,
+                                     np.array([[1.0, 0.1, circle]]))
+        direction = (towards - corner) / np.hypot(*(towards - corner))
+        assert found.approach == pytest.approx(float(velocity @ direction), abs=1e-12)
+        assert found.robot_at_fault is not circle, found
