@@ -104,10 +104,15 @@ public class HeadlessGenerator {
 		StringBuilder json = new StringBuilder("{\"name\": ").append(quote(catalogue.getName())).append(", \"types\": [");
 		String separator = "";
 		for (ObjectType type : catalogue.getOwnedTypes()) {
+			double[] size = { type.getSizeX(), type.getSizeY() };
+			if (org.rei.catalogue.util.Polygons.isPolygon(type)) { // a polygon by its bounding box, which holds it
+				double[] b = org.rei.catalogue.util.Polygons.bounds(org.rei.catalogue.util.Polygons.points(type));
+				size = new double[] { b[2] - b[0], b[3] - b[1] };
+			}
 			json.append(separator).append("\n  {\"name\": ").append(quote(type.getName()))
 					.append(", \"category\": ").append(quote(type.getCategory().getName()))
 					.append(", \"shape\": ").append(quote(type.getShape().getName()))
-					.append(", \"size\": [").append(type.getSizeX()).append(", ").append(type.getSizeY()).append(", ")
+					.append(", \"size\": [").append(size[0]).append(", ").append(size[1]).append(", ")
 					.append(type.getSizeZ()).append("], \"mass\": ").append(type.getMass())
 					.append(", \"colour\": ").append(quote(type.getColour())).append('}');
 			separator = ",";
