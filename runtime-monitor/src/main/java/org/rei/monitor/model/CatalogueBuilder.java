@@ -52,4 +52,26 @@ public final class CatalogueBuilder {
 		}
 		return catalogue;
 	}
+
+	/**
+	 * A POLYGON type's vertices, which monitor.json does not list: its first object's footprint in world.json (the
+	 * polygon about the bounding box's centre, counter-clockwise), so the runtime model's furniture has its
+	 * polygon for queries over the model; the monitor's distances take the footprint itself.
+	 */
+	public static void addPolygons(Catalogue catalogue, org.rei.monitor.config.World world) {
+		for (org.rei.monitor.config.World.WorldObject o : world.objects()) {
+			if (o.footprint() == null || o.footprint().points() == null) {
+				continue;
+			}
+			Catalogues.find(catalogue, o.type()).filter(t -> t.getShape() == Shape.POLYGON && t.getVertices().isEmpty())
+					.ifPresent(t -> {
+						for (double[] p : o.footprint().points()) {
+							org.rei.catalogue.Vertex v = CatalogueFactory.eINSTANCE.createVertex();
+							v.setX(p[0]);
+							v.setY(p[1]);
+							t.getVertices().add(v);
+						}
+					});
+		}
+	}
 }

@@ -64,6 +64,7 @@ public final class RuntimeModelUpdater {
 
 	private RuntimeModelUpdater(String runId, World world, MonitorSpec spec) {
 		catalogue = CatalogueBuilder.build(spec);
+		CatalogueBuilder.addPolygons(catalogue, world);
 		model = RT.createRuntimeModel();
 		model.setRunId(runId);
 		grid = new FloorGrid(world.floorSize());

@@ -60,8 +60,13 @@ class PolygonObjectTest {
 							new double[] { 3.5, 1.0, 0.375, 0 }, o.floor(), Shape.polygon(C_DESK)));
 		}
 		World w = room.world();
+		org.rei.monitor.config.MonitorSpec m = room.monitor();
+		List<org.rei.monitor.config.MonitorSpec.CatalogueEntry> types = new ArrayList<>(m.catalogue());
+		types.add(new org.rei.monitor.config.MonitorSpec.CatalogueEntry("CornerDesk", "STATIC", "POLYGON",
+				new double[] { 1.0, 1.4, 0.75 }, 30));
 		return new CaseReader.Case(new World(w.testcase(), w.environment(), w.floorSize(), w.floors(), objects,
-				w.robot()), room.monitor());
+				w.robot()), new org.rei.monitor.config.MonitorSpec(m.testcase(), m.robot(), m.epsClose(),
+						m.epsCollision(), m.topics(), types));
 	}
 
 	@Test
@@ -90,6 +95,12 @@ class PolygonObjectTest {
 			}
 			// in the notch: COLLISION with the robot's front at the notch's back, 0.6 m past the bounding box's face
 			assertTrue(robotX(geom.get(1).t()) + Traces.HALF_X > 3.5, geom.get(1).toString());
+			// the runtime model's desk has its type's polygon (for queries over the model)
+			var desk = run.monitor.model().model().getOwnedConcreteEnvironment().getOwnedObjects().stream()
+					.filter(o -> o.getName().equals("desk")).findFirst().orElseThrow();
+			assertEquals(org.rei.catalogue.Shape.POLYGON, desk.getType().getShape());
+			assertEquals(C_DESK.length, desk.getType().getVertices().size());
+			assertEquals(0.1, desk.getType().getVertices().get(5).getX(), 1e-12);
 		}
 	}
 
