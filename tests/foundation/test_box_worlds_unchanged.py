@@ -1,20 +1,17 @@
 # SPDX-License-Identifier: EPL-2.0
 """Polygon furniture (docs/language.md#catalogues) changed nothing for boxes and cylinders: a case of box and
 cylinder furniture, a user catalogue's types, a dynamic object, a human and the Waffle generates the very bytes,
-and simulates the very states, that the generator and the simulator gave before polygons existed (the SHA-256
-below were taken from the commit before them, 1713603)."""
+and records the very state and mission streams, that the generator and the simulator gave before polygons existed
+(the SHA-256 below were taken from the commit before them, 1713603)."""
 
 from __future__ import annotations
 
 import hashlib
-import math
-import struct
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-from rei.geometry import Twist2D
-from rei.sim.simulation import Simulation
+from rei.run import MissionRunOptions, run_mission
 
 CATALOGUE = """\
 catalogue Shapes {
@@ -45,24 +42,11 @@ BEFORE = {
     "world.json": "68ffa45f5e9adf4b205f1dcee3fdc62f212ade46489920a2cd700a39e3ca07d8",
     "world.sdf": "59393a0d1d2cdc5f6c66ccac674dbc1db410decb21113f35c226801518830675",
 }
-#: 3 s of a weaving drive, seed 3: every state's poses, twists, ranges and contacts.
-STATES_BEFORE = "cab53d19015b2fae822c8fdb6e64e027786099e6eca6d8f0ac0ebecc28351ec8"
-
-
-def _states_digest(case: Path) -> str:
-    digest = hashlib.sha256()
-    with Simulation(case, seed=3) as sim:
-        for _ in range(round(3.0 * sim.physics_rate)):
-            sim.step(Twist2D(0.25, 0.6 * math.sin(1.5 * sim.t)))
-            s = sim.state()
-            numbers = [s.t, *s.robot.pose, *s.robot.twist, s.robot.laser_min]
-            for o in s.objects:
-                numbers += [*o.pose, *o.twist]
-            digest.update(struct.pack(f"<{len(numbers)}d", *numbers))
-            if s.robot.laser_ranges is not None:
-                digest.update(s.robot.laser_ranges.tobytes())
-            digest.update(repr(s.contacts).encode())
-    return digest.hexdigest()
+#: The recorded streams of a 4 s weaving drive (a script), seed 3.
+STREAMS_BEFORE = {
+    "state.msgpack": "910a7d78aea6d210168ace6596ee0b389602d6d155b3353368d633bbed80998a",
+    "mission.msgpack": "ce23ee089dbfcd884c65ac4a8fda135c46e23fc77f53bdd49a683643c3389658",
+}
 
 
 def test_boxes_and_cylinders_generate_and_simulate_as_before(tmp_path: Path, run_cli: Callable[..., Any]) -> None:
@@ -72,4 +56,10 @@ def test_boxes_and_cylinders_generate_and_simulate_as_before(tmp_path: Path, run
     assert result.returncode == 0, result.stderr
     found = {name: hashlib.sha256((tmp_path / "out" / name).read_bytes()).hexdigest() for name in BEFORE}
     assert found == BEFORE
-    assert _states_digest(tmp_path / "out") == STATES_BEFORE
+    script = tmp_path / "weave.script"
+    script.write_text("2.0 0.25 0.6\n2.0 0.25 -0.6\n", encoding="utf-8")
+    run_mission(tmp_path / "out", tmp_path / "run", MissionRunOptions(controller=f"script:{script}", seed=3),
+                run_id="boxes")
+    recorded = {name: hashlib.sha256((tmp_path / "run" / "streams" / name).read_bytes()).hexdigest()
+                for name in STREAMS_BEFORE}
+    assert recorded == STREAMS_BEFORE

@@ -9,7 +9,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.function.DoubleUnaryOperator;
 
 import org.junit.jupiter.api.Test;
 import org.rei.monitor.config.CaseReader;
@@ -27,8 +26,6 @@ import org.rei.monitor.wire.StateMessage;
  */
 class PolygonObjectTest {
 
-	private static final double CLOSE = 0.25;
-	private static final double COLLISION = 0.01;
 	/** The desk about its centre (3.5, 1.0), counter-clockwise; its notch 0.7 m wide and 0.6 m deep opens to -x. */
 	private static final double[][] C_DESK = { { -0.5, -0.7 }, { 0.5, -0.7 }, { 0.5, 0.7 }, { -0.5, 0.7 },
 			{ -0.5, 0.35 }, { 0.1, 0.35 }, { 0.1, -0.35 }, { -0.5, -0.35 } };
@@ -83,13 +80,13 @@ class PolygonObjectTest {
 			trace.forEach(run.monitor::onState);
 			assertEquals(List.of("SIG_GEOM_FAR_TRANSIT_CLOSE", "SIG_GEOM_CLOSE_TRANSIT_COLLISION",
 					"SIG_GEOM_COLLISION_TRANSIT_CLOSE", "SIG_GEOM_CLOSE_TRANSIT_FAR"), run.names("SIG_GEOM_"));
-			List<double[]> exact = crossings(PolygonObjectTest::oracle, 20);
+			// the thresholds are the test room's, as in ScriptedTraceTest: close 0.25, collision 0.01
+			List<double[]> exact = ScriptedTraceTest.crossings(PolygonObjectTest::oracle, 20);
 			assertEquals(4, exact.size());
 			List<Signal> geom = run.of("SIG_GEOM_");
 			for (int i = 0; i < 4; i++) {
 				Signal s = geom.get(i);
-				assertTrue(s.t() >= exact.get(i)[0] - 1e-3 && s.t() < exact.get(i)[0] + Traces.DT + 1e-3,
-						s + " should come within one sample after " + exact.get(i)[0]);
+				ScriptedTraceTest.assertWithinOneSample(exact.get(i)[0], s);
 				assertEquals("desk", s.object());
 				assertEquals(oracle(s.t()), s.distance(), 1e-9, s.toString());
 			}
@@ -102,22 +99,5 @@ class PolygonObjectTest {
 			assertEquals(C_DESK.length, desk.getType().getVertices().size());
 			assertEquals(0.1, desk.getType().getVertices().get(5).getX(), 1e-12);
 		}
-	}
-
-	private static List<double[]> crossings(DoubleUnaryOperator gap, double end) {
-		List<double[]> out = new ArrayList<>();
-		int state = state(gap.applyAsDouble(0));
-		for (double t = 0; t <= end; t += 1e-4) {
-			int s = state(gap.applyAsDouble(t));
-			if (s != state) {
-				out.add(new double[] { t, state, s });
-				state = s;
-			}
-		}
-		return out;
-	}
-
-	private static int state(double d) {
-		return d < COLLISION ? 2 : d < CLOSE ? 1 : 0;
 	}
 }

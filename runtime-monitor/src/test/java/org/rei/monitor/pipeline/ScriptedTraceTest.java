@@ -30,7 +30,7 @@ class ScriptedTraceTest {
 	}
 
 	/** Times at which the state (FAR 0, CLOSE 1, COLLISION 2) of gap(t) changes, on a 0.1 ms grid. */
-	private static List<double[]> crossings(DoubleUnaryOperator gap, double end) {
+	static List<double[]> crossings(DoubleUnaryOperator gap, double end) {
 		List<double[]> out = new ArrayList<>();
 		int state = state(gap.applyAsDouble(0));
 		for (double t = 0; t <= end; t += 1e-4) {
@@ -47,7 +47,7 @@ class ScriptedTraceTest {
 		return d < COLLISION ? 2 : d < CLOSE ? 1 : 0;
 	}
 
-	private static void assertWithinOneSample(double exact, Signal s) {
+	static void assertWithinOneSample(double exact, Signal s) {
 		assertTrue(s.t() >= exact - 1e-3 && s.t() < exact + Traces.DT + 1e-3,
 				s + " should come within one sample after " + exact);
 	}
