@@ -54,8 +54,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     User errors (a `CommandError`, a `ToolchainError`) become a `rei: error: ...` line on stderr (one per problem
     of the input) and a non-zero exit code; anything else is a bug and keeps its traceback.
     """
+    command_line = argv is None  # not a campaign worker's call: the run's CPU is counted as the worker's
     argv = sys.argv[1:] if argv is None else list(argv)
-    if argv[:1] == ["run"] and (code := _warm_run(argv)) is not None:
+    if command_line and argv[:1] == ["run"] and (code := _warm_run(argv)) is not None:
         return code
     parser = build_parser(_command_module(argv))
     args = parser.parse_args(argv)
