@@ -54,3 +54,20 @@ def test_the_static_clearance_is_to_the_polygon_not_its_bounding_box(polygon_cas
     inside = np.array([[C_DESK_POSE[0] + 0.1 - 0.05 - ROBOT[0] / 2, C_DESK_POSE[1], 0.0]])
     _, gaps = _static_gaps(statics, inside, ROBOT, 0.25)
     assert abs(gaps[0, 0] - 0.05) < 1e-9
+
+
+def test_ear_clipping_covers_concave_polygons_exactly() -> None:
+    """rei.geometry.triangulate (the simulator's prism caps, the metrics' pieces): n - 2 triangles of positive
+    area inside the polygon whose areas add up to its own, also with straight corners and many notches."""
+    from rei.geometry import triangulate
+
+    star = [(math.cos(k * math.pi / 5) * (1 if k % 2 == 0 else 0.4),
+             math.sin(k * math.pi / 5) * (1 if k % 2 == 0 else 0.4)) for k in range(10)]
+    comb = [(0, 0), (5, 0), (5, 2), (4, 2), (4, 1), (3, 1), (3, 2), (2, 2), (2, 1), (1, 1), (1, 2), (0, 2)]
+    straight = [(0, 0), (1, 0), (2, 0), (3, 0), (3, 2), (2, 2), (2, 1), (1, 1), (1, 2), (0, 2), (0, 1)]
+    for points in (C_DESK, star, comb, straight):
+        whole = Polygon(points)
+        pieces = [Polygon([points[i] for i in t]) for t in triangulate(points)]
+        assert len(pieces) == len(points) - 2
+        assert all(p.area > 0 and whole.buffer(1e-9).contains(p) for p in pieces)
+        assert abs(sum(p.area for p in pieces) - whole.area) < 1e-9
