@@ -155,7 +155,9 @@ class Watch:
         self._lock = threading.Lock()
 
     def poll(self) -> None:
-        with self._lock:
+        """Notices the nodes that joined and reads the answers of those asked; Ray's node list out of reach (its
+        head busy, a node being lost) only puts it off."""
+        with contextlib.suppress(Exception), self._lock:
             if self._asked:
                 ready, _ = self._ray.wait(list(self._asked), num_returns=len(self._asked), timeout=0)
                 for ref in ready:
@@ -176,7 +178,10 @@ class Watch:
         with self._lock:
             self._known.add(node_id)
             if node_id not in self.unfit:
-                node = next((n for n in self._ray.nodes() if n["NodeID"] == node_id), {"NodeID": node_id})
+                try:
+                    node = next(n for n in self._ray.nodes() if n["NodeID"] == node_id)
+                except Exception:  # noqa: BLE001 - named by its id alone
+                    node = {"NodeID": node_id}
                 self._unfit(node, lacks)
 
     def _unfit(self, node: dict[str, Any], lacks: list[str]) -> None:
@@ -195,7 +200,10 @@ class Watch:
     def nowhere(self) -> str | None:
         """Why no alive node can take a run: each offering ``RESOURCE`` is unfit (what each lacks); None: one can."""
         with self._lock:
-            alive = [node["NodeID"] for node in offering(self._ray.nodes())]
+            try:
+                alive = [node["NodeID"] for node in offering(self._ray.nodes())]
+            except Exception:  # noqa: BLE001 - Ray's node list out of reach: try the run again
+                return None
             if alive and all(node in self.unfit for node in alive):
                 return "no Ray node can run REI's runs: " + "; ".join(self.unfit[node] for node in alive)
             return None
