@@ -246,3 +246,19 @@ def _convex_gap(vx: np.ndarray, vy: np.ndarray, piece: np.ndarray) -> np.ndarray
     fx, fy = np.broadcast_to(px, (vx.shape[0], len(px))), np.broadcast_to(py, (vx.shape[0], len(py)))
     apart = np.minimum(to_edges(vx, vy, fx, fy), to_edges(fx, fy, vx, vy))
     return np.where(overlap < 0, apart, -overlap)
+
+
+def polygon_distance(px: np.ndarray, py: np.ndarray, polygon: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """For points ``(px, py)`` (any shape) and a polygon ``(K, 2)``, convex or not: each point's distance to the
+    polygon's outline, and whether it lies inside (even-odd crossings of a ray towards +x)."""
+    px, py = np.asarray(px, dtype=float), np.asarray(py, dtype=float)
+    edge = np.full(px.shape, np.inf)
+    inside = np.zeros(px.shape, dtype=bool)
+    for (ax, ay), (bx, by) in zip(polygon, np.roll(polygon, -1, axis=0), strict=True):
+        ex, ey = bx - ax, by - ay
+        t = np.clip(((px - ax) * ex + (py - ay) * ey) / (ex * ex + ey * ey), 0.0, 1.0)
+        edge = np.minimum(edge, np.hypot(px - ax - t * ex, py - ay - t * ey))
+        crosses = (ay > py) != (by > py)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            inside ^= crosses & (px < ax + (py - ay) * ex / np.where(crosses, ey, 1.0))
+    return edge, inside

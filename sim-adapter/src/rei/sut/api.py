@@ -86,18 +86,25 @@ class StaticMap:
     outline: tuple[tuple[float, float], ...] | None = None
     #: The robot's drive takes a sideways speed ``vy`` (``drive holonomic``).
     holonomic: bool = False
+    #: Furniture on a polygon: per obstacle, its polygon in the world (counter-clockwise, convex or not), which
+    #: the obstacle's rectangle (its bounding box) holds; None for a rectangle. Empty when no obstacle has one.
+    #: REI's navigation and the /map raster take the polygon; the external SUT protocol sends the rectangles.
+    polygons: tuple[tuple[tuple[float, float], ...] | None, ...] = ()
 
     @classmethod
     def of_world(cls, world: WorldSpec) -> StaticMap:
-        """Walls and STATIC objects of ``world`` as footprint rectangles, the floors' bounds and the robot's
-        footprint: one definition for the simulation's map and the metrics' shortest path (SPL)."""
-        obstacles = tuple((o.pose[0], o.pose[1], o.pose[3], o.size[0], o.size[1]) for o in world.objects
-                          if o.category in (Category.WALL, Category.STATIC))
+        """Walls and STATIC objects of ``world`` as footprint rectangles (and a POLYGON object's polygon), the
+        floors' bounds and the robot's footprint: one definition for the simulation's map and the metrics'
+        shortest path (SPL)."""
+        statics = [o for o in world.objects if o.category in (Category.WALL, Category.STATIC)]
+        obstacles = tuple((o.pose[0], o.pose[1], o.pose[3], o.size[0], o.size[1]) for o in statics)
+        polygons = tuple(o.outline for o in statics) if any(o.outline for o in statics) else ()
         robot = world.robot
         lidar = robot.lidar
         outline = None if robot.footprint is None else footprint_polygon(robot.footprint)
         return cls(bounds=world.bounds, obstacles=obstacles, robot_size=(robot.size[0], robot.size[1]),
-                   lidar=(lidar.x, lidar.y, lidar.yaw), outline=outline, holonomic=robot.drive.kind == "holonomic")
+                   lidar=(lidar.x, lidar.y, lidar.yaw), outline=outline, holonomic=robot.drive.kind == "holonomic",
+                   polygons=polygons)
 
     @property
     def robot_radii(self) -> tuple[float, float]:

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rei.geometry import Pose2D
+from rei.geometry import Pose2D, polygon_distance
 from rei.maps import OccupancyMap, merge_rectangles
 from rei.sut.api import StaticMap
 
@@ -42,8 +42,8 @@ class Raster:
 
 
 def rasterize(static_map: StaticMap, resolution: float = MAP_RESOLUTION, margin: float = MAP_MARGIN) -> Raster:
-    """The static map's rectangles rasterized: a cell is occupied where its centre is inside an obstacle; the grid
-    reaches ``margin`` beyond the floors."""
+    """The static map's rectangles (and polygons) rasterized: a cell is occupied where its centre is inside an
+    obstacle; the grid reaches ``margin`` beyond the floors."""
     xmin, ymin, xmax, ymax = static_map.bounds
     x0, y0 = xmin - margin, ymin - margin
     width = math.ceil((xmax - xmin + 2 * margin) / resolution)
@@ -51,11 +51,15 @@ def rasterize(static_map: StaticMap, resolution: float = MAP_RESOLUTION, margin:
     cx = x0 + (np.arange(width) + 0.5) * resolution
     cy = y0 + (np.arange(height) + 0.5) * resolution
     occupied = np.zeros((height, width), dtype=bool)
-    for x, y, yaw, size_x, size_y in static_map.obstacles:
+    for k, (x, y, yaw, size_x, size_y) in enumerate(static_map.obstacles):
         reach = math.hypot(size_x, size_y) / 2  # only the cells around the box: a big map has many boxes
         cols = slice(max(0, int((x - reach - x0) / resolution)), min(width, int((x + reach - x0) / resolution) + 1))
         rows = slice(max(0, int((y - reach - y0) / resolution)), min(height, int((y + reach - y0) / resolution) + 1))
         dx, dy = np.meshgrid(cx[cols] - x, cy[rows] - y)
+        polygon = static_map.polygons[k] if static_map.polygons else None
+        if polygon is not None:  # furniture on a polygon: the cells inside the polygon, not its bounding box
+            occupied[rows, cols] |= polygon_distance(dx + x, dy + y, np.asarray(polygon, dtype=float))[1]
+            continue
         u = math.cos(yaw) * dx + math.sin(yaw) * dy
         v = -math.sin(yaw) * dx + math.cos(yaw) * dy
         occupied[rows, cols] |= (np.abs(u) <= size_x / 2) & (np.abs(v) <= size_y / 2)

@@ -12,6 +12,7 @@ import math
 
 import numpy as np
 
+from rei.geometry import polygon_distance
 from rei.sut.api import StaticMap
 from rei.sut.nav.config import NavConfig
 
@@ -43,8 +44,12 @@ class CostGrid:
         inside = np.minimum.outer(np.minimum(ys - ymin, ymax - ys), np.minimum(xs - xmin, xmax - xs))
         dist = np.clip(inside, 0.0, self.cap)
         surface = np.full_like(dist, self.cap)
-        for obstacle in static_map.obstacles:
-            self._stamp_rectangle(dist, surface, xs, ys, obstacle)
+        for k, obstacle in enumerate(static_map.obstacles):
+            polygon = static_map.polygons[k] if static_map.polygons else None
+            if polygon is not None:
+                self._stamp_polygon(dist, surface, xs, ys, obstacle, polygon)
+            else:
+                self._stamp_rectangle(dist, surface, xs, ys, obstacle)
         self.distance = dist.astype(np.float32)
         self.surface = np.maximum(surface, -self.cap)
         self._surface_flat = self.surface.ravel()
@@ -77,6 +82,24 @@ class CostGrid:
         # their union, so only outlines the laser can see are zero.
         signed = d + np.minimum(np.maximum(lx, ly), 0.0)
         np.minimum(surface[j0:j1, i0:i1], signed, out=surface[j0:j1, i0:i1])
+
+    def _stamp_polygon(self, dist: np.ndarray, surface: np.ndarray, xs: np.ndarray, ys: np.ndarray,
+                       obstacle: tuple[float, float, float, float, float],
+                       polygon: tuple[tuple[float, float], ...]) -> None:
+        """Furniture on a polygon: its cells' distance to the polygon itself (0 inside, minus the depth on the
+        signed surface), over the region its bounding box's rectangle reaches."""
+        cx, cy, _yaw, sx, sy = obstacle
+        reach = 0.5 * math.hypot(sx, sy) + self.cap
+        i0, j0 = self.world_to_cell(cx - reach, cy - reach)
+        i1, j1 = self.world_to_cell(cx + reach, cy + reach)
+        i0, i1 = max(i0, 0), min(i1 + 1, self.width)
+        j0, j1 = max(j0, 0), min(j1 + 1, self.height)
+        if i0 >= i1 or j0 >= j1:
+            return
+        px, py = np.meshgrid(xs[i0:i1], ys[j0:j1])
+        edge, inside = polygon_distance(px, py, np.asarray(polygon, dtype=float))
+        np.minimum(dist[j0:j1, i0:i1], np.where(inside, 0.0, edge), out=dist[j0:j1, i0:i1])
+        np.minimum(surface[j0:j1, i0:i1], np.where(inside, -edge, edge), out=surface[j0:j1, i0:i1])
 
     def cost_from_distance(self, distance: np.ndarray) -> np.ndarray:
         """Cell cost: 1 in the open, rising quadratically to ``1 + cost_scale`` at the inflation radius, ``inf``
