@@ -78,7 +78,7 @@ def _request(path: Path, argv: Sequence[str], fds: Sequence[int], env: dict[str,
         connection.settimeout(FORK_TIMEOUT)
         connection.connect(str(path))
         request = {"argv": list(argv), "cwd": cwd or os.getcwd(), "env": dict(os.environ if env is None else env),
-                   "fingerprint": source_fingerprint()}
+                   "umask": _umask(), "fingerprint": source_fingerprint()}
         socket.send_fds(connection, [json.dumps(request).encode() + b"\n"], list(fds))
         answer = json.loads(_read_line(connection) or b"null")
     except (OSError, ValueError):
@@ -88,6 +88,15 @@ def _request(path: Path, argv: Sequence[str], fds: Sequence[int], env: dict[str,
         connection.close()
         return None
     return connection, answer["pid"]
+
+
+def _umask() -> int:
+    """This process's umask, read without setting it (another thread may be creating files)."""
+    with contextlib.suppress(OSError, StopIteration, ValueError), open("/proc/self/status", encoding="ascii") as status:
+        return int(next(line for line in status if line.startswith("Umask:")).split()[1], 8)
+    mask = os.umask(0o077)
+    os.umask(mask)
+    return mask
 
 
 def _read_line(connection: socket.socket) -> bytes:
@@ -252,9 +261,17 @@ def _start(connection: socket.socket, running: dict[int, socket.socket], fingerp
                 raise ValueError("the request ended early")
             message += chunk
         request = json.loads(message)
+        if not isinstance(request, dict):
+            raise TypeError("not a JSON object")
+        if request.get("fingerprint") != fingerprint:  # first: other code's request may have other fields
+            _close_all(fds)
+            _answer(connection, {"error": "stale"})
+            connection.close()
+            return "stale"
         argv = [str(arg) for arg in request["argv"]]
         env = {str(k): str(v) for k, v in dict(request["env"]).items()}
         cwd = str(request["cwd"])
+        umask = int(request["umask"])
         if len(fds) != 3:
             raise ValueError(f"expected 3 file descriptors, got {len(fds)}")
     except (OSError, ValueError, TypeError, KeyError) as error:
@@ -262,17 +279,12 @@ def _start(connection: socket.socket, running: dict[int, socket.socket], fingerp
         _answer(connection, {"error": f"bad request: {error}"})
         connection.close()
         return None
-    if request.get("fingerprint") != fingerprint:
-        _close_all(fds)
-        _answer(connection, {"error": "stale"})
-        connection.close()
-        return "stale"
     _flush_all()
     pid = os.fork()
     if pid == 0:
         for inherited in (*keep, *running.values(), connection):
             inherited.close()
-        _become(argv, env, cwd, fds)  # never returns
+        _become(argv, env, cwd, fds, umask)  # never returns
     _close_all(fds)
     with contextlib.suppress(OSError):  # also here: a signal to the group right after the answer reaches it
         os.setpgid(pid, pid)
@@ -281,7 +293,7 @@ def _start(connection: socket.socket, running: dict[int, socket.socket], fingerp
     return None
 
 
-def _become(argv: list[str], env: dict[str, str], cwd: str, fds: list[int]) -> None:
+def _become(argv: list[str], env: dict[str, str], cwd: str, fds: list[int], umask: int) -> None:
     """In the forked child: the requester's streams, folder and environment, then ``rei.cli.main``; exits the
     process as the interpreter would (exit functions run, non-daemon threads joined)."""
     code = 1
@@ -302,9 +314,11 @@ def _become(argv: list[str], env: dict[str, str], cwd: str, fds: list[int]) -> N
         sys.stderr = sys.__stderr__ = open(2, "w", buffering=1, encoding="utf-8", errors="backslashreplace",  # noqa: SIM115
                                            closefd=False)
         os.chdir(cwd)
+        os.umask(umask)  # the user's file modes, not the service's
         os.environ.clear()
         os.environ.update(env)
         os.environ[SOCKET_ENV] = os.environ.get(SOCKET_ENV) or _server_socket
+        time.tzset()  # the time module read TZ when the server imported it
         sys.argv = argv
         from rei.cli import main
 
@@ -418,6 +432,10 @@ def main(argv: list[str] | None = None) -> int:
         print("usage: python -c 'from rei.service.warm import main; main()' SOCKET", file=sys.stderr)
         return 2
     _server_socket = args[0]
+    # ``python -c`` put the current folder first on sys.path, which in a fork is the user's: a module of theirs
+    # would shadow a library the command imports later (a console script's first entry is its own folder)
+    while "" in sys.path:
+        sys.path.remove("")
     return serve(Path(args[0]))
 
 

@@ -1,0 +1,107 @@
+# SPDX-License-Identifier: EPL-2.0
+"""rei.service.warm's server and client without a service: a real server (its preload cut to rei.cli) whose
+``rei.cli.main`` is replaced by a probe that reports the forked command's process state, compared with what the
+requester has; and the client's handling of a server that goes."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import time
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+
+from rei.service import warm
+
+#: The server as the service starts it, with a probe for ``rei probe``: what the forked command sees, as JSON.
+_SERVER = """
+import json, os, sys, time
+import rei.service.warm as warm
+import rei.cli
+
+warm.PRELOAD = ("rei.cli",)
+real = rei.cli.main
+
+def probe(argv):
+    if argv[:1] != ["probe"]:
+        return real(argv)
+    status = open("/proc/self/status").read()
+    print(json.dumps({
+        "path": sys.path, "cwd": os.getcwd(), "argv": sys.argv, "tzname": list(time.tzname),
+        "umask": next(line.split()[1] for line in status.splitlines() if line.startswith("Umask:")),
+        "fds": sorted(int(fd) for fd in os.listdir("/proc/self/fd")), "env": dict(os.environ)}))
+    return int(argv[1]) if argv[1:] else 0
+
+rei.cli.main = probe
+sys.exit(warm.main())
+"""
+
+
+@pytest.fixture
+def server(tmp_path: Path) -> Iterator[Path]:
+    """A warm Python serving ``tmp_path/warm.sock``, started in ``tmp_path/home`` (as the service does, in its
+    folder) with this test's environment."""
+    home = tmp_path / "home"
+    home.mkdir()
+    path = tmp_path / warm.SOCKET_NAME
+    with open(tmp_path / "warm.log", "wb") as log:
+        process = subprocess.Popen([sys.executable, "-c", _SERVER, str(path)], cwd=home, stdin=subprocess.PIPE,
+                                   stdout=log, stderr=subprocess.STDOUT)
+    deadline = time.monotonic() + 60
+    while not path.exists():
+        assert process.poll() is None and time.monotonic() < deadline, (tmp_path / "warm.log").read_text()
+        time.sleep(0.05)
+    yield path
+    assert process.stdin is not None
+    process.stdin.close()
+    process.wait(30)
+
+
+def _probe(path: Path, cwd: Path, env: dict[str, str], *args: str) -> tuple[dict, int]:
+    """``rei probe ARGS`` forked by the server with a pipe for its stdout: what it reported, its wait status."""
+    read, write = os.pipe()
+    with open(os.devnull, "rb") as null:
+        sent = warm._request(path, ["rei", "probe", *args], [null.fileno(), write, 2], env, str(cwd))
+    os.close(write)
+    assert sent is not None
+    connection, _ = sent
+    with open(read, "rb") as output:
+        report = output.read()
+    status = warm._status(connection, 30.0)
+    connection.close()
+    assert status is not None
+    return json.loads(report), status
+
+
+def test_a_forked_command_has_the_requesters_folder_environment_and_argv(server: Path, tmp_path: Path) -> None:
+    work = tmp_path / "work"
+    work.mkdir()
+    report, status = _probe(server, work, {**os.environ, "REI_PROBE": "1"}, "3")
+    assert os.waitstatus_to_exitcode(status) == 3
+    assert report["cwd"] == str(work) and report["argv"] == ["rei", "probe", "3"]
+    assert report["env"]["REI_PROBE"] == "1" and report["env"][warm.SOCKET_ENV] == str(server)
+    # its standard streams and nothing else of the server's (its socket, the connections, its input)
+    assert report["fds"][:3] == [0, 1, 2]
+    assert len(report["fds"]) <= 4, report["fds"]  # os.listdir's own
+
+
+def test_a_forked_command_imports_nothing_from_the_users_folder(server: Path, tmp_path: Path) -> None:
+    """A console script's sys.path starts with its own folder; the server's ``-c`` put the current folder there,
+    which in the fork is the user's: a ``numpy.py`` of theirs would be imported instead of numpy."""
+    report, _ = _probe(server, tmp_path, dict(os.environ))
+    assert "" not in report["path"] and str(tmp_path) not in report["path"], report["path"]
+
+
+def test_a_forked_command_has_the_requesters_umask_and_time_zone(server: Path, tmp_path: Path) -> None:
+    """Files a run writes get the user's mode, and its local times the user's zone, not the service's."""
+    previous = os.umask(0o027)
+    try:
+        report, _ = _probe(server, tmp_path, {**os.environ, "TZ": "America/New_York"})
+    finally:
+        os.umask(previous)
+    assert report["umask"] == "0027"
+    assert report["tzname"] == ["EST", "EDT"]
