@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import json
 import os
+import socket
 import subprocess
 import sys
 import time
@@ -105,3 +106,49 @@ def test_a_forked_command_has_the_requesters_umask_and_time_zone(server: Path, t
         os.umask(previous)
     assert report["umask"] == "0027"
     assert report["tzname"] == ["EST", "EDT"]
+
+
+def _sent_request(fingerprint: str, *, hang_up: bool = False) -> tuple[socket.socket, socket.socket]:
+    """A request as ``_request`` sends it, on a socket pair: (the requester's end, the server's end)."""
+    ours, theirs = socket.socketpair()
+    request = {"argv": ["rei", "run"], "cwd": "/", "env": {}, "umask": 0o022, "fingerprint": fingerprint}
+    with open(os.devnull, "rb") as null:
+        socket.send_fds(ours, [json.dumps(request).encode() + b"\n"], [null.fileno()] * 3)
+    if hang_up:
+        ours.close()
+    return ours, theirs
+
+
+def _open_fds() -> set[str]:
+    return set(os.listdir("/proc/self/fd"))
+
+
+def test_a_failed_fork_fails_its_request_alone(monkeypatch: pytest.MonkeyPatch) -> None:
+    """No memory or processes left: the request is answered with the error and the server goes on (an exception
+    out of its loop would stop every command it runs), leaking none of the passed streams."""
+    before = _open_fds()
+
+    def fork() -> int:
+        raise BlockingIOError(11, "Resource temporarily unavailable")
+
+    monkeypatch.setattr(os, "fork", fork)
+    ours, theirs = _sent_request(warm.source_fingerprint())
+    running: dict[int, socket.socket] = {}
+    assert warm._start(theirs, running, warm.source_fingerprint(), keep=()) is None
+    assert running == {} and theirs.fileno() == -1
+    assert "cannot fork" in json.loads(ours.makefile("rb").readline())["error"]
+    ours.close()
+    assert _open_fds() <= before
+
+
+def test_no_fork_for_a_requester_that_stopped_waiting(monkeypatch: pytest.MonkeyPatch) -> None:
+    """It runs the command itself after FORK_TIMEOUT: a fork now would be a second run into its folder."""
+    before = _open_fds()
+
+    def fork() -> int:
+        raise AssertionError("forked for a requester that went")
+
+    monkeypatch.setattr(os, "fork", fork)
+    _, theirs = _sent_request(warm.source_fingerprint(), hang_up=True)
+    assert warm._start(theirs, {}, warm.source_fingerprint(), keep=()) is None
+    assert theirs.fileno() == -1 and _open_fds() <= before

@@ -229,7 +229,12 @@ def serve(path: Path) -> int:
             while serving:
                 for key, _ in selector.select(_TICK):
                     if key.fileobj is listener:
-                        connection, _ = listener.accept()
+                        try:
+                            connection, _ = listener.accept()
+                        except OSError:  # out of file descriptors: the commands running go on, this waits
+                            traceback.print_exc()
+                            time.sleep(_TICK)
+                            continue
                         if _start(connection, running, fingerprint, keep=(listener, selector)) == "stale":
                             serving = False
                     elif not os.read(sys.stdin.fileno(), 4096):
@@ -279,18 +284,42 @@ def _start(connection: socket.socket, running: dict[int, socket.socket], fingerp
         _answer(connection, {"error": f"bad request: {error}"})
         connection.close()
         return None
-    _flush_all()
-    pid = os.fork()
+    if _hung_up(connection):  # its requester stopped waiting (FORK_TIMEOUT) and runs the command itself
+        _close_all(fds)
+        connection.close()
+        return None
+    try:
+        _flush_all()
+        pid = os.fork()
+    except OSError as error:  # no memory or processes left: this request fails, the commands running go on
+        _close_all(fds)
+        _answer(connection, {"error": f"cannot fork: {error}"})
+        connection.close()
+        return None
     if pid == 0:
-        for inherited in (*keep, *running.values(), connection):
-            inherited.close()
-        _become(argv, env, cwd, fds, umask)  # never returns
+        try:
+            for inherited in (*keep, *running.values(), connection):
+                inherited.close()
+            _become(argv, env, cwd, fds, umask)  # never returns
+        finally:
+            os._exit(1)  # never back into the server's loop
     _close_all(fds)
     with contextlib.suppress(OSError):  # also here: a signal to the group right after the answer reaches it
         os.setpgid(pid, pid)
     running[pid] = connection
     _answer(connection, {"pid": pid})
     return None
+
+
+def _hung_up(connection: socket.socket) -> bool:
+    """Whether the other side has closed the connection (it sends nothing after its request)."""
+    try:
+        connection.setblocking(False)
+        return connection.recv(1, socket.MSG_PEEK) == b""
+    except (BlockingIOError, InterruptedError):
+        return False
+    except OSError:
+        return True
 
 
 def _become(argv: list[str], env: dict[str, str], cwd: str, fds: list[int], umask: int) -> None:
@@ -372,14 +401,7 @@ def _watch_requesters(running: dict[int, socket.socket], orphans: dict[int, floa
             if now - orphans[pid] > ORPHAN_GRACE:
                 _signal_group(pid, signal.SIGKILL)
             continue
-        try:
-            connection.setblocking(False)
-            gone = connection.recv(1) == b""
-        except (BlockingIOError, InterruptedError):
-            gone = False
-        except OSError:
-            gone = True
-        if gone:
+        if _hung_up(connection):
             orphans[pid] = now
             _signal_group(pid, signal.SIGTERM)
 
