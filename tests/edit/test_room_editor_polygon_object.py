@@ -15,13 +15,13 @@ from playwright.sync_api import Page
 from test_room_editor_robot_outline import _points, _same_ring
 
 REPO = Path(__file__).resolve().parents[2]
-# examples/catalogues/corner_office.rei's CornerDesk, its bounding box (1.6 x 1.4) centred on the origin
-DESK = [(0, 0), (1.6, 0), (1.6, 0.6), (0.6, 0.6), (0.6, 1.4), (0, 1.4)]
+# examples/catalogues/corner_office.rei's CornerDesk, its bounding box (2.2 x 2.0) centred on the floor's centre
+DESK = [(0, 0), (2.2, 0), (2.2, 0.7), (0.7, 0.7), (0.7, 2.0), (0, 2.0)]
 
 
 def _placed(x: float, y: float, yaw_degrees: float) -> list[tuple[float, float]]:
     c, s = math.cos(math.radians(yaw_degrees)), math.sin(math.radians(yaw_degrees))
-    return [(x + c * (u - 0.8) - s * (v - 0.7), y + s * (u - 0.8) + c * (v - 0.7)) for u, v in DESK]
+    return [(x + c * (u - 1.1) - s * (v - 1.0), y + s * (u - 1.1) + c * (v - 1.0)) for u, v in DESK]
 
 
 def test_a_corner_desk_is_drawn_as_its_polygon_and_turns_with_its_yaw(open_editor, page: Page,
@@ -40,7 +40,7 @@ def test_a_corner_desk_is_drawn_as_its_polygon_and_turns_with_its_yaw(open_edito
     drawn = _points(body.get_attribute("points"))
     assert _same_ring(drawn, _placed(x, y, 0)), drawn
     # not the bounding box: six corners, one of them inside the box (the open corner's)
-    assert len(drawn) == 6 and any(math.dist(p, (x + 0.8 - 1.0, y + 0.7 - 0.8)) < 2e-3 for p in drawn)
+    assert len(drawn) == 6 and any(math.dist(p, (x - 0.4, y - 0.3)) < 2e-3 for p in drawn)
 
     answer = editor.apply({"op": "rotateObject", "name": "desk", "yawDegrees": 90})
     assert next(o for o in answer["diagram"]["objects"] if o["name"] == "desk")["yaw"] == 90

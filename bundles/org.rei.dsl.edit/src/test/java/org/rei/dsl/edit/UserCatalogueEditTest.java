@@ -98,20 +98,20 @@ class UserCatalogueEditTest {
 		Diagram.Item desk = diagram.objects().stream().filter(o -> o.name().equals("desk")).findFirst().orElseThrow();
 		Diagram.Footprint footprint = desk.footprint();
 		assertEquals("polygon", footprint.shape());
-		assertEquals(1.6, footprint.sizeX(), 1e-9);
-		assertEquals(1.4, footprint.sizeY(), 1e-9);
+		assertEquals(2.2, footprint.sizeX(), 1e-9);
+		assertEquals(2.0, footprint.sizeY(), 1e-9);
 		assertEquals("polygon", footprint.outline().type());
-		double[][] expected = { { -0.8, -0.7 }, { 0.8, -0.7 }, { 0.8, -0.1 }, { -0.2, -0.1 }, { -0.2, 0.7 },
-				{ -0.8, 0.7 } };
+		double[][] expected = { { -1.1, -1.0 }, { 1.1, -1.0 }, { 1.1, -0.3 }, { -0.4, -0.3 }, { -0.4, 1.0 },
+				{ -1.1, 1.0 } };
 		for (int i = 0; i < expected.length; i++) {
 			org.junit.jupiter.api.Assertions.assertArrayEquals(expected[i], footprint.outline().points()[i], 1e-9);
 		}
 		String json = org.rei.dsl.edit.diagram.DiagramJson.write(diagram);
 		assertTrue(json.contains("\"shape\":\"polygon\""), json);
-		assertTrue(json.contains("\"outline\":{\"type\":\"polygon\",\"points\":[[-0.8,-0.7],"), json);
+		assertTrue(json.contains("\"outline\":{\"type\":\"polygon\",\"points\":[[-1.1,-1.0],"), json);
 		assertEquals(3, json.split("\"outline\":\\{").length, json); // the desk's and the sofa's only
 		PaletteType type = document.palette().stream().filter(t -> t.name().equals("CornerDesk")).findFirst()
 				.orElseThrow();
-		assertEquals(new PaletteType("CornerDesk", "object", "polygon", 1.6, 1.4, "#A0785A"), type);
+		assertEquals(new PaletteType("CornerDesk", "object", "polygon", 2.2, 2.0, "#A0785A"), type);
 	}
 }
