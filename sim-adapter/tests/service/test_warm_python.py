@@ -7,9 +7,11 @@ from __future__ import annotations
 
 import json
 import os
+import signal
 import socket
 import subprocess
 import sys
+import threading
 import time
 from collections.abc import Iterator
 from pathlib import Path
@@ -152,3 +154,57 @@ def test_no_fork_for_a_requester_that_stopped_waiting(monkeypatch: pytest.Monkey
     _, theirs = _sent_request(warm.source_fingerprint(), hang_up=True)
     assert warm._start(theirs, {}, warm.source_fingerprint(), keep=()) is None
     assert theirs.fileno() == -1 and _open_fds() <= before
+
+
+def test_poll_does_not_wait_for_another_threads_wait() -> None:
+    """As Popen's: the pipeline may poll the simulation while another thread waits for it."""
+    ours, theirs = socket.socketpair()
+    process = warm.WarmProcess(ours, os.getpid(), None, None)
+    waiter = threading.Thread(target=process.wait, args=(3.0,))
+    waiter.start()
+    time.sleep(0.2)
+    started = time.monotonic()
+    assert process.poll() is None
+    assert time.monotonic() - started < 1.0
+    theirs.sendall(json.dumps({"status": 3 << 8}).encode() + b"\n")
+    waiter.join()
+    assert process.poll() == 3 and process.wait() == 3
+    theirs.close()
+
+
+def test_a_command_whose_server_went_is_ended_as_reported() -> None:
+    """Its status is lost with the server: it is reported killed, so it must be."""
+    command = subprocess.Popen(["sleep", "60"], start_new_session=True)
+    ours, theirs = socket.socketpair()
+    process = warm.WarmProcess(ours, command.pid, None, None)
+    theirs.close()
+    assert process.wait(5.0) == -signal.SIGKILL
+    assert command.wait(5) == -signal.SIGKILL
+
+
+def test_a_delegated_command_whose_server_went_returns_once_the_command_has_ended(
+        tmp_path: Path, capfd: pytest.CaptureFixture[str]) -> None:
+    """The run goes on without the server (it writes to the command's streams): the command returns after it."""
+    command = subprocess.Popen(["sleep", "1.5"], start_new_session=True)
+    listener = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+    listener.bind(str(tmp_path / warm.SOCKET_NAME))
+    listener.listen(1)
+
+    def serve_once() -> None:  # forks nothing: answers with the pid of the command above, then goes
+        connection, _ = listener.accept()
+        _, fds, _, _ = socket.recv_fds(connection, 1 << 20, 3)
+        for fd in fds:
+            os.close(fd)
+        connection.sendall(json.dumps({"pid": command.pid}).encode() + b"\n")
+        connection.close()
+
+    server = threading.Thread(target=serve_once)
+    server.start()
+    started = time.monotonic()
+    try:
+        assert warm.delegate(["run", "x.rei"], tmp_path) == 1
+    finally:
+        server.join()
+        listener.close()
+    assert time.monotonic() - started > 1.0 and command.poll() == 0
+    assert "exit code is lost" in capfd.readouterr().err

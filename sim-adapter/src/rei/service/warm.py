@@ -40,6 +40,8 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import IO, Any
 
+from rei.lifetime import stat_fields
+
 #: Imported once, before the first fork: what ``rei run`` and ``rei sim`` import on their way to the first step.
 PRELOAD = ("rei.cli", "rei.cli.run", "rei.cli.sim", "rei.run.pipeline", "rei.run.mission_run", "rei.sim",
            "rei.wamp.client", "rei.evaluation", "rei.report", "rei.sut.registry", "rei.service.client", "pybullet")
@@ -111,7 +113,9 @@ def _read_line(connection: socket.socket) -> bytes:
 
 def _status(connection: socket.socket, timeout: float | None) -> int | None:
     """The command's wait status once it ended (-1: the server went first), None if not within ``timeout``."""
-    if timeout is not None and not select.select([connection], [], [], timeout)[0]:
+    poll = select.poll()  # not select(): a process with many files open has descriptors past FD_SETSIZE
+    poll.register(connection, select.POLLIN)
+    if timeout is not None and not poll.poll(max(timeout, 0.0) * 1000):
         return None
     try:
         connection.settimeout(None)
@@ -124,24 +128,47 @@ def _status(connection: socket.socket, timeout: float | None) -> int | None:
         return -1
 
 
+def _await_gone(pid: int) -> None:
+    """Until process ``pid``, not this one's child, has ended (a zombie has)."""
+    while (fields := stat_fields(pid)) is not None and fields[0] != "Z":
+        time.sleep(_TICK)
+
+
 def delegate(argv: Sequence[str], folder: Path) -> int | None:
     """``rei ARGV`` run by the service's warm Python with this process's standard streams, its signals passed on;
     its exit code, or None when the service has no warm Python for this REI (the caller runs the command itself)."""
-    sent = _request(folder / SOCKET_NAME, [sys.argv[0], *argv], (0, 1, 2), None, None)
-    if sent is None:
-        return None
-    connection, pid = sent
+    forked: list[int] = []
+    pending: list[int] = []
 
     def forward(signum: int, _frame: object) -> None:
+        if not forked:  # Ctrl-C while the request is on its way: passed on once the command runs
+            pending.append(signum)
+            return
         with contextlib.suppress(ProcessLookupError):
-            os.killpg(pid, signum)
+            os.killpg(forked[0], signum)
 
-    for signum in _FORWARDED:
-        signal.signal(signum, forward)
-    status = _status(connection, None)
-    connection.close()
+    previous = {signum: signal.signal(signum, forward) for signum in _FORWARDED}
+    try:
+        sent = _request(folder / SOCKET_NAME, [sys.argv[0], *argv], (0, 1, 2), None, None)
+        if sent is not None:
+            connection, pid = sent
+            forked.append(pid)
+            for signum in pending:
+                forward(signum, None)
+            status = _status(connection, None)
+            connection.close()
+    finally:
+        for signum, handler in previous.items():
+            signal.signal(signum, handler)
+    if sent is None:
+        for signum in pending:  # the command runs here: as if they came now
+            signal.raise_signal(signum)
+        return None
     if status is None or status < 0:
-        print("rei: the service's warm Python ended before the run; see the service's log", file=sys.stderr)
+        # the run goes on without the server (reparented): the command ends with it, its exit code unknown
+        print("rei: the service's warm Python ended before the run; its exit code is lost (see the service's log)",
+              file=sys.stderr, flush=True)
+        _await_gone(pid)
         return 1
     code = os.waitstatus_to_exitcode(status)
     return code if code >= 0 else 128 - code
@@ -192,17 +219,31 @@ class WarmProcess:
         return cls(sent[0], sent[1], pipes.get("w"), pipes.get("r"))
 
     def poll(self) -> int | None:
-        return self.wait(0.0)
+        """As Popen's: never blocks, also not while another thread waits (then: None, or the code it got)."""
+        if not self._lock.acquire(blocking=False):
+            return self.returncode
+        try:
+            return self._ended(0.0)
+        finally:
+            self._lock.release()
 
     def wait(self, timeout: float | None = None) -> int | None:
         with self._lock:
-            if self.returncode is None:
-                status = _status(self._connection, timeout)
-                if status is None:  # not ended within ``timeout``
-                    return None
-                self.returncode = -signal.SIGKILL if status < 0 else os.waitstatus_to_exitcode(status)
-                self._connection.close()
-            return self.returncode
+            return self._ended(timeout)
+
+    def _ended(self, timeout: float | None) -> int | None:
+        if self.returncode is None:
+            status = _status(self._connection, timeout)
+            if status is None:  # not ended within ``timeout``
+                return None
+            if status < 0:  # the server went first: the command's status is lost, so it is ended for sure
+                with contextlib.suppress(ProcessLookupError, PermissionError):
+                    os.killpg(self.pid, signal.SIGKILL)
+                self.returncode = -signal.SIGKILL
+            else:
+                self.returncode = os.waitstatus_to_exitcode(status)
+            self._connection.close()
+        return self.returncode
 
 
 # -- the server's side ---------------------------------------------------------------------------------------------
