@@ -30,6 +30,12 @@ warm.PRELOAD = ("rei.cli",)
 real = rei.cli.main
 
 def probe(argv):
+    if argv[:1] == ["interrupt"]:
+        raise KeyboardInterrupt
+    if argv[:1] == ["exit-in-a-thread's-time"]:
+        import threading
+        threading.Thread(target=lambda: (time.sleep(0.5), print("the thread's line", flush=True))).start()
+        sys.exit(4)
     if argv[:1] != ["probe"]:
         return real(argv)
     status = open("/proc/self/status").read()
@@ -66,9 +72,15 @@ def server(tmp_path: Path) -> Iterator[Path]:
 
 def _probe(path: Path, cwd: Path, env: dict[str, str], *args: str) -> tuple[dict, int]:
     """``rei probe ARGS`` forked by the server with a pipe for its stdout: what it reported, its wait status."""
+    output, status = _command(path, cwd, env, "probe", *args)
+    return json.loads(output), status
+
+
+def _command(path: Path, cwd: Path, env: dict[str, str], *args: str) -> tuple[bytes, int]:
+    """``rei ARGS`` forked by the server with a pipe for its stdout: its output and wait status."""
     read, write = os.pipe()
     with open(os.devnull, "rb") as null:
-        sent = warm._request(path, ["rei", "probe", *args], [null.fileno(), write, 2], env, str(cwd))
+        sent = warm._request(path, ["rei", *args], [null.fileno(), write, 2], env, str(cwd))
     os.close(write)
     assert sent is not None
     connection, _ = sent
@@ -77,7 +89,7 @@ def _probe(path: Path, cwd: Path, env: dict[str, str], *args: str) -> tuple[dict
     status = warm._status(connection, 30.0)
     connection.close()
     assert status is not None
-    return json.loads(report), status
+    return report, status
 
 
 def test_a_forked_command_has_the_requesters_folder_environment_and_argv(server: Path, tmp_path: Path) -> None:
@@ -208,3 +220,11 @@ def test_a_delegated_command_whose_server_went_returns_once_the_command_has_ende
         listener.close()
     assert time.monotonic() - started > 1.0 and command.poll() == 0
     assert "exit code is lost" in capfd.readouterr().err
+
+
+def test_a_forked_command_ends_as_the_interpreter_would(server: Path, tmp_path: Path) -> None:
+    """An uncaught Ctrl-C: killed by SIGINT (a shell's 130, as Python does); sys.exit: non-daemon threads first."""
+    _, status = _command(server, tmp_path, dict(os.environ), "interrupt")
+    assert os.WIFSIGNALED(status) and os.WTERMSIG(status) == signal.SIGINT
+    output, status = _command(server, tmp_path, dict(os.environ), "exit-in-a-thread's-time")
+    assert os.waitstatus_to_exitcode(status) == 4 and output == b"the thread's line\n"

@@ -366,7 +366,7 @@ def _hung_up(connection: socket.socket) -> bool:
 def _become(argv: list[str], env: dict[str, str], cwd: str, fds: list[int], umask: int) -> None:
     """In the forked child: the requester's streams, folder and environment, then ``rei.cli.main``; exits the
     process as the interpreter would (exit functions run, non-daemon threads joined)."""
-    code = 1
+    code, interrupted = 1, False
     try:
         os.setpgid(0, 0)  # a group of its own: the requester's signals and its hang-up reach all it started
         signal.signal(signal.SIGTERM, signal.SIG_DFL)
@@ -393,25 +393,31 @@ def _become(argv: list[str], env: dict[str, str], cwd: str, fds: list[int], umas
         from rei.cli import main
 
         code = main(argv[1:])
-        for thread in threading.enumerate():
-            if thread is not threading.main_thread() and not thread.daemon:
-                thread.join()
     except SystemExit as stop:
         if stop.code is None or isinstance(stop.code, int):
             code = stop.code or 0
         else:
             print(stop.code, file=sys.stderr)
             code = 1
+    except KeyboardInterrupt:  # the interpreter's way: its traceback, then killed by SIGINT (the shell sees 130)
+        traceback.print_exc()
+        interrupted = True
     except BaseException:  # noqa: BLE001 - the requester's stderr gets it
         traceback.print_exc()
         code = 1
     finally:
+        # what the interpreter's exit does, whatever ended the command: non-daemon threads joined, exit functions
+        for thread in threading.enumerate():
+            if thread is not threading.main_thread() and not thread.daemon:
+                with contextlib.suppress(KeyboardInterrupt):
+                    thread.join()
         with contextlib.suppress(BaseException):
             atexit._run_exitfuncs()
-        for stream in (sys.stdout, sys.stderr):
-            with contextlib.suppress(OSError, ValueError):
-                stream.flush()
-        _flush_all()
+        with contextlib.suppress(BaseException):
+            _flush_all()
+        if interrupted:
+            signal.signal(signal.SIGINT, signal.SIG_DFL)
+            os.kill(os.getpid(), signal.SIGINT)
         os._exit(code)
 
 
@@ -483,8 +489,9 @@ def _flush_all() -> None:
     """Python's and C's output buffers: a fork would copy what they hold into the child."""
     import ctypes
 
-    sys.stdout.flush()
-    sys.stderr.flush()
+    for stream in (sys.stdout, sys.stderr):
+        with contextlib.suppress(OSError, ValueError):  # a reader gone: the other buffers are still flushed
+            stream.flush()
     ctypes.CDLL(None).fflush(None)
 
 
