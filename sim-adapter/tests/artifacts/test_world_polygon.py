@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: EPL-2.0
-"""world.json's POLYGON objects: the footprint is read about the object's pose and placed by its outline; a
-POLYGON object without a polygon is refused, naming the member."""
+"""world.json's POLYGON objects: the footprint is read about the object's pose (counter-clockwise, whichever way it
+was written) and placed by its outline; a POLYGON object without a polygon, or one without area, is refused, naming
+the member."""
 
 from __future__ import annotations
 
@@ -22,10 +23,14 @@ def test_the_footprint_is_read_and_placed(room_copy: Path) -> None:
     assert desk.outline is not None
     assert [pytest.approx(p) for p in desk.outline] == [(3.5 - v, 1.0 + u) for u, v in C_DESK]
     assert read_world(room_copy / "world.json").object("h1").outline is None
+    # written clockwise (by hand): read counter-clockwise, from the same first vertex
+    add_polygon_desk(room_copy, points=(C_DESK[0], *C_DESK[:0:-1]))
+    assert read_world(room_copy / "world.json").object("table1").footprint == PolygonFootprint(tuple(C_DESK))
 
 
 @pytest.mark.parametrize("footprint", [None, {"type": "circle", "x": 0, "y": 0, "radius": 0.5},
-                                       {"type": "polygon", "points": [[0, 0], [1, 0]]}])
+                                       {"type": "polygon", "points": [[0, 0], [1, 0]]},
+                                       {"type": "polygon", "points": [[0, 0], [1, 0], [2, 0]]}])
 def test_a_polygon_object_needs_its_polygon(room_copy: Path, footprint: object) -> None:
     add_polygon_desk(room_copy)
     world = json.loads((room_copy / "world.json").read_text(encoding="utf-8"))

@@ -372,6 +372,12 @@ def _object(o: Fields) -> ObjectSpec:
         footprint = _footprint(o.child("footprint"))
         if not isinstance(footprint, PolygonFootprint):
             raise o.error("a POLYGON object's footprint is a polygon", "footprint")
+        points = footprint.points
+        twice_area = sum(points[i - 1][0] * points[i][1] - points[i][0] * points[i - 1][1] for i in range(len(points)))
+        if twice_area == 0:
+            raise o.error("a POLYGON object's footprint has no area", "footprint")
+        if twice_area < 0:  # the generator writes it counter-clockwise; a hand-written one may go the other way
+            footprint = PolygonFootprint(points[:1] + points[:0:-1])
     return ObjectSpec(
         name=o.text("name"),
         category=category,
