@@ -20,6 +20,8 @@ import pytest
 
 from rei.service import warm
 
+#: What a Python's standard streams are (an expression).
+_STREAMS = "[[s.encoding, s.errors, s.line_buffering, s.write_through] for s in (sys.stdin, sys.stdout, sys.stderr)]"
 #: The server as the service starts it, with a probe for ``rei probe``: what the forked command sees, as JSON.
 _SERVER = """
 import json, os, sys, time
@@ -42,12 +44,13 @@ def probe(argv):
     print(json.dumps({
         "path": sys.path, "cwd": os.getcwd(), "argv": sys.argv, "tzname": list(time.tzname),
         "umask": next(line.split()[1] for line in status.splitlines() if line.startswith("Umask:")),
-        "fds": sorted(int(fd) for fd in os.listdir("/proc/self/fd")), "env": dict(os.environ)}))
+        "fds": sorted(int(fd) for fd in os.listdir("/proc/self/fd")), "env": dict(os.environ),
+        "streams": STREAMS}))
     return int(argv[1]) if argv[1:] else 0
 
 rei.cli.main = probe
 sys.exit(warm.main())
-"""
+""".replace("STREAMS", _STREAMS)
 
 
 @pytest.fixture
@@ -125,7 +128,7 @@ def test_a_forked_command_has_the_requesters_umask_and_time_zone(server: Path, t
 def _sent_request(fingerprint: str, *, hang_up: bool = False) -> tuple[socket.socket, socket.socket]:
     """A request as ``_request`` sends it, on a socket pair: (the requester's end, the server's end)."""
     ours, theirs = socket.socketpair()
-    request = {"argv": ["rei", "run"], "cwd": "/", "env": {}, "umask": 0o022, "fingerprint": fingerprint}
+    request = {"argv": ["rei", "run"], "cwd": "/", "env": dict(os.environ), "umask": 0o022, "fingerprint": fingerprint}
     with open(os.devnull, "rb") as null:
         socket.send_fds(ours, [json.dumps(request).encode() + b"\n"], [null.fileno()] * 3)
     if hang_up:
@@ -228,3 +231,24 @@ def test_a_forked_command_ends_as_the_interpreter_would(server: Path, tmp_path: 
     assert os.WIFSIGNALED(status) and os.WTERMSIG(status) == signal.SIGINT
     output, status = _command(server, tmp_path, dict(os.environ), "exit-in-a-thread's-time")
     assert os.waitstatus_to_exitcode(status) == 4 and output == b"the thread's line\n"
+
+
+def test_a_requester_with_other_interpreter_settings_runs_its_command_itself(server: Path, tmp_path: Path) -> None:
+    """PYTHONPATH and the like are read at an interpreter's start: a fork would have the service's."""
+    with open(os.devnull, "rb") as null:
+        fds = [null.fileno()] * 3
+        assert warm._request(server, ["rei", "probe"], fds, {**os.environ, "PYTHONPATH": str(tmp_path)},
+                             str(tmp_path)) is None
+        assert warm._request(server, ["rei", "probe"], fds, {**os.environ, "PYTHONHASHSEED": "7"},
+                             str(tmp_path)) is None
+    report, _ = _probe(server, tmp_path, dict(os.environ))  # the server goes on
+    assert report["cwd"] == str(tmp_path)
+
+
+def test_a_forked_commands_standard_streams_are_an_interpreters(server: Path, tmp_path: Path) -> None:
+    """Encoding, errors, buffering (PYTHONUNBUFFERED, PYTHONIOENCODING) as a Python started with the same
+    environment and the same files makes them."""
+    report, _ = _probe(server, tmp_path, dict(os.environ))
+    fresh = subprocess.run([sys.executable, "-c", f"import json, sys; print(json.dumps({_STREAMS}))"],
+                           stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, check=True)
+    assert report["streams"] == json.loads(fresh.stdout)

@@ -26,6 +26,7 @@ from __future__ import annotations
 import atexit
 import contextlib
 import importlib
+import io
 import json
 import os
 import select
@@ -36,7 +37,7 @@ import sys
 import threading
 import time
 import traceback
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import IO, Any
 
@@ -325,6 +326,13 @@ def _start(connection: socket.socket, running: dict[int, socket.socket], fingerp
         _answer(connection, {"error": f"bad request: {error}"})
         connection.close()
         return None
+    if (differ := _interpreter_settings(env) ^ _interpreter_settings(os.environ)):
+        # read once, at the interpreter's start (PYTHONPATH, PYTHONHASHSEED, PYTHONWARNINGS, ...): a fork would
+        # run with the service's; the requester runs the command itself
+        _close_all(fds)
+        _answer(connection, {"error": f"other interpreter settings: {', '.join(sorted({k for k, _ in differ}))}"})
+        connection.close()
+        return None
     if _hung_up(connection):  # its requester stopped waiting (FORK_TIMEOUT) and runs the command itself
         _close_all(fds)
         connection.close()
@@ -352,6 +360,12 @@ def _start(connection: socket.socket, running: dict[int, socket.socket], fingerp
     return None
 
 
+def _interpreter_settings(env: Mapping[str, str]) -> set[tuple[str, str]]:
+    """What an interpreter reads from its environment once, as it starts: its PYTHON* settings and its locale."""
+    return {(name, value) for name, value in env.items()
+            if name.startswith("PYTHON") or name in ("LANG", "LC_ALL", "LC_CTYPE")}
+
+
 def _hung_up(connection: socket.socket) -> bool:
     """Whether the other side has closed the connection (it sends nothing after its request)."""
     try:
@@ -377,12 +391,9 @@ def _become(argv: list[str], env: dict[str, str], cwd: str, fds: list[int], umas
         for target, fd in enumerate(fds):
             os.dup2(fd, target)
         _close_all([fd for fd in fds if fd > 2])
-        # as the interpreter makes them at its start: stdout line-buffered on a terminal, stderr always
-        sys.stdin = sys.__stdin__ = open(0, encoding="utf-8", closefd=False)  # noqa: SIM115
-        sys.stdout = sys.__stdout__ = open(1, "w", buffering=1 if os.isatty(1) else -1, encoding="utf-8",  # noqa: SIM115
-                                           closefd=False)
-        sys.stderr = sys.__stderr__ = open(2, "w", buffering=1, encoding="utf-8", errors="backslashreplace",  # noqa: SIM115
-                                           closefd=False)
+        sys.stdin = sys.__stdin__ = _standard_stream(0)
+        sys.stdout = sys.__stdout__ = _standard_stream(1)
+        sys.stderr = sys.__stderr__ = _standard_stream(2)
         os.chdir(cwd)
         os.umask(umask)  # the user's file modes, not the service's
         os.environ.clear()
@@ -421,7 +432,23 @@ def _become(argv: list[str], env: dict[str, str], cwd: str, fds: list[int], umas
         os._exit(code)
 
 
+def _standard_stream(fd: int) -> io.TextIOWrapper:
+    """Standard stream ``fd`` as the interpreter makes it at its start (CPython's create_stdio): the server's
+    encoding and errors (the same locale and PYTHON* settings as the requester's), line-buffered on a terminal (stderr
+    always), written through with PYTHONUNBUFFERED, no newline translation."""
+    buffered = not _unbuffered
+    raw = io.FileIO(fd, "r" if fd == 0 else "w", closefd=False)
+    raw.name = ("<stdin>", "<stdout>", "<stderr>")[fd]
+    binary = raw if fd and not buffered else (io.BufferedReader(raw) if fd == 0 else io.BufferedWriter(raw))
+    encoding, errors = _stdio[fd]
+    return io.TextIOWrapper(binary, encoding, errors, newline="\n",
+                            line_buffering=buffered and (fd == 2 or raw.isatty()), write_through=not buffered)
+
+
 _server_socket = ""
+#: The server's standard streams' encoding and errors, as its interpreter chose them.
+_stdio = [("utf-8", "strict"), ("utf-8", "strict"), ("utf-8", "backslashreplace")]
+_unbuffered = False
 
 
 def _reap(running: dict[int, socket.socket], orphans: dict[int, float]) -> None:
@@ -496,12 +523,14 @@ def _flush_all() -> None:
 
 
 def main(argv: list[str] | None = None) -> int:
-    global _server_socket
+    global _server_socket, _stdio, _unbuffered
     args = sys.argv[1:] if argv is None else argv
     if len(args) != 1:
         print("usage: python -c 'from rei.service.warm import main; main()' SOCKET", file=sys.stderr)
         return 2
     _server_socket = args[0]
+    _stdio = [(stream.encoding, stream.errors or "strict") for stream in (sys.stdin, sys.stdout, sys.stderr)]
+    _unbuffered = sys.stdout.write_through  # PYTHONUNBUFFERED, -u: not in sys.flags
     # ``python -c`` put the current folder first on sys.path, which in a fork is the user's: a module of theirs
     # would shadow a library the command imports later (a console script's first entry is its own folder)
     while "" in sys.path:
