@@ -22,7 +22,6 @@ A client that hangs up does not stop the worker: the campaign stops workers by s
 
 from __future__ import annotations
 
-import ctypes
 import importlib
 import json
 import os
@@ -34,13 +33,12 @@ import socket
 import subprocess
 import sys
 import tempfile
-import threading
 import time
-import traceback
 from collections.abc import Mapping
 from pathlib import Path
-from typing import Any, Self
+from typing import Any, NoReturn, Self
 
+from rei.forks import answer, flush_all, reset_signals, run_as_interpreter, stop_all
 from rei.processes import close_and_reap
 from rei.run.jvm import tail
 
@@ -214,7 +212,7 @@ def serve(path: Path) -> int:
         _loop(listener, running)
     finally:  # whatever ended the loop, the workers do not outlive the server
         listener.close()
-        _stop_all(running)
+        stop_all(running, lambda: _reap(running), tick=_TICK)
     return 0
 
 
@@ -230,7 +228,7 @@ def _loop(listener: socket.socket, running: dict[int, socket.socket]) -> None:
                     try:
                         _start(connection, running, keep=(listener, selector))
                     except Exception as error:  # noqa: BLE001 - one failed fork (no memory, no fds) is that run's
-                        _answer(connection, {"error": f"cannot fork: {error}"})
+                        answer(connection, {"error": f"cannot fork: {error}"})
                         connection.close()
                 elif not os.read(sys.stdin.fileno(), 4096):
                     serving = False
@@ -243,31 +241,26 @@ def _start(connection: socket.socket, running: dict[int, socket.socket], keep: t
         request = json.loads(connection.makefile("rb").readline())
         run_dir, env = Path(request["run_dir"]), {str(k): str(v) for k, v in dict(request.get("env", {})).items()}
     except (OSError, ValueError, TypeError, KeyError) as error:
-        _answer(connection, {"error": f"bad request: {error}"})
+        answer(connection, {"error": f"bad request: {error}"})
         connection.close()
         return
-    _flush_all()
+    flush_all()
     pid = os.fork()
     if pid == 0:
         for inherited in (*keep, *running.values(), connection):
             inherited.close()
         _become_worker(run_dir, env)  # never returns
     running[pid] = connection
-    _answer(connection, {"pid": pid})
+    answer(connection, {"pid": pid})
 
 
-def _become_worker(run_dir: Path, env: Mapping[str, str]) -> None:
+def _become_worker(run_dir: Path, env: Mapping[str, str]) -> NoReturn:
     """In the forked child: what ``subprocess.Popen(worker_command, start_new_session=True, ...)`` would set up,
-    then the worker itself; exits the process with its code."""
-    code = 1
-    try:
+    then the worker itself; exits the process as its interpreter would (``rei.forks.run_as_interpreter``)."""
+
+    def worker() -> int:
         os.setsid()
-        # as in a new interpreter: SIGPIPE and SIGXFSZ ignored (writes raise instead), Ctrl-C a KeyboardInterrupt
-        signal.signal(signal.SIGTERM, signal.SIG_DFL)
-        signal.signal(signal.SIGCHLD, signal.SIG_DFL)
-        signal.signal(signal.SIGINT, signal.default_int_handler)
-        signal.signal(signal.SIGPIPE, signal.SIG_IGN)
-        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+        reset_signals()
         run_dir.mkdir(parents=True, exist_ok=True)
         log = os.open(run_dir / WORKER_LOG, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o644)
         null = os.open(os.devnull, os.O_RDONLY)
@@ -280,35 +273,9 @@ def _become_worker(run_dir: Path, env: Mapping[str, str]) -> None:
         os.environ.update(env)
         from rei.campaign.worker import main
 
-        code = main([str(run_dir)])
-        for thread in threading.enumerate():  # what the interpreter's own exit would wait for
-            if thread is not threading.main_thread() and not thread.daemon:
-                thread.join()
-    except SystemExit as stop:  # as the interpreter reports it
-        if stop.code is None or isinstance(stop.code, int):
-            code = stop.code or 0
-        else:
-            print(stop.code, file=sys.stderr)
-            code = 1
-    except BaseException:  # noqa: BLE001 - the worker's log gets it, the campaign sees a crash
-        traceback.print_exc()
-        code = 1
-    finally:
-        for stream in (sys.stdout, sys.stderr):
-            try:
-                stream.flush()
-            except (OSError, ValueError):
-                pass
-        _flush_all()
-        os._exit(code)  # never back into the server's loop in this process
+        return main([str(run_dir)])
 
-
-def _flush_all() -> None:
-    """Python's and C's output buffers (pybullet prints with printf): a fork would copy what they hold into the
-    child, and ``os._exit`` would drop what the child wrote."""
-    sys.stdout.flush()
-    sys.stderr.flush()
-    ctypes.CDLL(None).fflush(None)
+    run_as_interpreter(worker)
 
 
 def _reap(running: dict[int, socket.socket]) -> None:
@@ -322,37 +289,8 @@ def _reap(running: dict[int, socket.socket]) -> None:
             return
         connection = running.pop(pid, None)
         if connection is not None:
-            _answer(connection, {"status": status, "cpu": round(usage.ru_utime + usage.ru_stime, 3)})
+            answer(connection, {"status": status, "cpu": round(usage.ru_utime + usage.ru_stime, 3)})
             connection.close()
-
-
-def _stop_all(running: dict[int, socket.socket]) -> None:
-    """The campaign has gone: its workers go too (SIGTERM, then SIGKILL after 3 s)."""
-    for pid in running:
-        _signal_group(pid, signal.SIGTERM)
-    deadline = time.monotonic() + 3.0
-    while running and time.monotonic() < deadline:
-        _reap(running)
-        time.sleep(_TICK)
-    for pid in running:
-        _signal_group(pid, signal.SIGKILL)
-    while running:
-        _reap(running)
-        time.sleep(_TICK)
-
-
-def _signal_group(pid: int, sig: int) -> None:
-    try:
-        os.killpg(pid, sig)
-    except ProcessLookupError:
-        pass
-
-
-def _answer(connection: socket.socket, message: dict[str, Any]) -> None:
-    try:
-        connection.sendall(json.dumps(message).encode() + b"\n")
-    except OSError:  # the client hung up: the campaign stops its worker by process group
-        pass
 
 
 def main(argv: list[str] | None = None) -> int:

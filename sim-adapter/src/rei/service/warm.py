@@ -23,7 +23,6 @@ A requester that hangs up before its command ended (killed) takes the command wi
 
 from __future__ import annotations
 
-import atexit
 import contextlib
 import importlib
 import io
@@ -39,8 +38,9 @@ import time
 import traceback
 from collections.abc import Mapping, Sequence
 from pathlib import Path
-from typing import IO, Any
+from typing import IO, Any, NoReturn
 
+from rei.forks import answer, flush_all, reset_signals, run_as_interpreter, signal_group, stop_all
 from rei.lifetime import stat_fields
 
 #: Imported once, before the first fork: what ``rei run`` and ``rei sim`` import on their way to the first step.
@@ -277,8 +277,11 @@ def serve(path: Path) -> int:
                             traceback.print_exc()
                             time.sleep(_TICK)
                             continue
-                        if _start(connection, running, fingerprint, keep=(listener, selector)) == "stale":
-                            serving = False
+                        try:
+                            serving = _start(connection, running, fingerprint, keep=(listener, selector)) != "stale"
+                        except Exception:  # noqa: BLE001 - one request's failure is its own: the others' go on
+                            traceback.print_exc()
+                            connection.close()
                     elif not os.read(sys.stdin.fileno(), 4096):
                         serving = False
                 _reap(running, orphans)
@@ -292,7 +295,7 @@ def serve(path: Path) -> int:
             time.sleep(_TICK)
     finally:
         listener.close()
-        _stop_all(running)
+        stop_all(running, lambda: _reap(running, {}))  # only after an error: the loop above waits for them
     return 0
 
 
@@ -312,7 +315,7 @@ def _start(connection: socket.socket, running: dict[int, socket.socket], fingerp
             raise TypeError("not a JSON object")
         if request.get("fingerprint") != fingerprint:  # first: other code's request may have other fields
             _close_all(fds)
-            _answer(connection, {"error": "stale"})
+            answer(connection, {"error": "stale"})
             connection.close()
             return "stale"
         argv = [str(arg) for arg in request["argv"]]
@@ -323,14 +326,14 @@ def _start(connection: socket.socket, running: dict[int, socket.socket], fingerp
             raise ValueError(f"expected 3 file descriptors, got {len(fds)}")
     except (OSError, ValueError, TypeError, KeyError) as error:
         _close_all(fds)
-        _answer(connection, {"error": f"bad request: {error}"})
+        answer(connection, {"error": f"bad request: {error}"})
         connection.close()
         return None
     if (differ := _interpreter_settings(env) ^ _interpreter_settings(os.environ)):
         # read once, at the interpreter's start (PYTHONPATH, PYTHONHASHSEED, PYTHONWARNINGS, ...): a fork would
         # run with the service's; the requester runs the command itself
         _close_all(fds)
-        _answer(connection, {"error": f"other interpreter settings: {', '.join(sorted({k for k, _ in differ}))}"})
+        answer(connection, {"error": f"other interpreter settings: {', '.join(sorted({k for k, _ in differ}))}"})
         connection.close()
         return None
     if _hung_up(connection):  # its requester stopped waiting (FORK_TIMEOUT) and runs the command itself
@@ -338,11 +341,11 @@ def _start(connection: socket.socket, running: dict[int, socket.socket], fingerp
         connection.close()
         return None
     try:
-        _flush_all()
+        flush_all()
         pid = os.fork()
     except OSError as error:  # no memory or processes left: this request fails, the commands running go on
         _close_all(fds)
-        _answer(connection, {"error": f"cannot fork: {error}"})
+        answer(connection, {"error": f"cannot fork: {error}"})
         connection.close()
         return None
     if pid == 0:
@@ -356,7 +359,7 @@ def _start(connection: socket.socket, running: dict[int, socket.socket], fingerp
     with contextlib.suppress(OSError):  # also here: a signal to the group right after the answer reaches it
         os.setpgid(pid, pid)
     running[pid] = connection
-    _answer(connection, {"pid": pid})
+    answer(connection, {"pid": pid})
     return None
 
 
@@ -377,17 +380,13 @@ def _hung_up(connection: socket.socket) -> bool:
         return True
 
 
-def _become(argv: list[str], env: dict[str, str], cwd: str, fds: list[int], umask: int) -> None:
+def _become(argv: list[str], env: dict[str, str], cwd: str, fds: list[int], umask: int) -> NoReturn:
     """In the forked child: the requester's streams, folder and environment, then ``rei.cli.main``; exits the
-    process as the interpreter would (exit functions run, non-daemon threads joined)."""
-    code, interrupted = 1, False
-    try:
+    process as the interpreter would (``rei.forks.run_as_interpreter``)."""
+
+    def command() -> int:
         os.setpgid(0, 0)  # a group of its own: the requester's signals and its hang-up reach all it started
-        signal.signal(signal.SIGTERM, signal.SIG_DFL)
-        signal.signal(signal.SIGCHLD, signal.SIG_DFL)
-        signal.signal(signal.SIGINT, signal.default_int_handler)
-        signal.signal(signal.SIGPIPE, signal.SIG_IGN)
-        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+        reset_signals()
         for target, fd in enumerate(fds):
             os.dup2(fd, target)
         _close_all([fd for fd in fds if fd > 2])
@@ -403,33 +402,9 @@ def _become(argv: list[str], env: dict[str, str], cwd: str, fds: list[int], umas
         sys.argv = argv
         from rei.cli import main
 
-        code = main(argv[1:])
-    except SystemExit as stop:
-        if stop.code is None or isinstance(stop.code, int):
-            code = stop.code or 0
-        else:
-            print(stop.code, file=sys.stderr)
-            code = 1
-    except KeyboardInterrupt:  # the interpreter's way: its traceback, then killed by SIGINT (the shell sees 130)
-        traceback.print_exc()
-        interrupted = True
-    except BaseException:  # noqa: BLE001 - the requester's stderr gets it
-        traceback.print_exc()
-        code = 1
-    finally:
-        # what the interpreter's exit does, whatever ended the command: non-daemon threads joined, exit functions
-        for thread in threading.enumerate():
-            if thread is not threading.main_thread() and not thread.daemon:
-                with contextlib.suppress(KeyboardInterrupt):
-                    thread.join()
-        with contextlib.suppress(BaseException):
-            atexit._run_exitfuncs()
-        with contextlib.suppress(BaseException):
-            _flush_all()
-        if interrupted:
-            signal.signal(signal.SIGINT, signal.SIG_DFL)
-            os.kill(os.getpid(), signal.SIGINT)
-        os._exit(code)
+        return main(argv[1:])
+
+    run_as_interpreter(command)
 
 
 def _standard_stream(fd: int) -> io.TextIOWrapper:
@@ -463,7 +438,7 @@ def _reap(running: dict[int, socket.socket], orphans: dict[int, float]) -> None:
         orphans.pop(pid, None)
         connection = running.pop(pid, None)
         if connection is not None:
-            _answer(connection, {"status": status})
+            answer(connection, {"status": status})
             connection.close()
 
 
@@ -473,53 +448,17 @@ def _watch_requesters(running: dict[int, socket.socket], orphans: dict[int, floa
     for pid, connection in running.items():
         if pid in orphans:
             if now - orphans[pid] > ORPHAN_GRACE:
-                _signal_group(pid, signal.SIGKILL)
+                signal_group(pid, signal.SIGKILL)
             continue
         if _hung_up(connection):
             orphans[pid] = now
-            _signal_group(pid, signal.SIGTERM)
-
-
-def _stop_all(running: dict[int, socket.socket]) -> None:
-    """The service has gone: so do the commands still running (SIGTERM, SIGKILL after 3 s)."""
-    for pid in running:
-        _signal_group(pid, signal.SIGTERM)
-    deadline = time.monotonic() + 3.0
-    while running and time.monotonic() < deadline:
-        _reap(running, {})
-        time.sleep(0.05)
-    for pid in running:
-        _signal_group(pid, signal.SIGKILL)
-    while running:
-        _reap(running, {})
-        time.sleep(0.05)
-
-
-def _signal_group(pid: int, sig: int) -> None:
-    with contextlib.suppress(ProcessLookupError, PermissionError):
-        os.killpg(pid, sig)
-
-
-def _answer(connection: socket.socket, message: dict[str, Any]) -> None:
-    with contextlib.suppress(OSError):
-        connection.setblocking(True)
-        connection.sendall(json.dumps(message).encode() + b"\n")
+            signal_group(pid, signal.SIGTERM)
 
 
 def _close_all(fds: Sequence[int]) -> None:
     for fd in fds:
         with contextlib.suppress(OSError):
             os.close(fd)
-
-
-def _flush_all() -> None:
-    """Python's and C's output buffers: a fork would copy what they hold into the child."""
-    import ctypes
-
-    for stream in (sys.stdout, sys.stderr):
-        with contextlib.suppress(OSError, ValueError):  # a reader gone: the other buffers are still flushed
-            stream.flush()
-    ctypes.CDLL(None).fflush(None)
 
 
 def main(argv: list[str] | None = None) -> int:
