@@ -126,11 +126,28 @@ def test_ctrl_c_reaches_a_warm_run_which_ends_as_interrupted_and_leaves_nothing(
         time.sleep(0.1)
 
 
-def test_a_warm_python_of_other_code_refuses_and_ends(warm_service: Any) -> None:
-    """The user edited or updated REI: the warm Python's modules are not theirs (the command runs itself, and the
-    service starts a new warm Python)."""
-    folder, _ = warm_service
+def _warm_pids(folder: Path) -> set[int]:
+    found = set()
+    for entry in Path("/proc").glob("[0-9]*"):
+        try:
+            command = (entry / "cmdline").read_bytes().split(b"\0")
+            zombie = "Z" in (entry / "stat").read_text().split(")")[1][:3]
+        except OSError:
+            continue
+        if str(folder / SOCKET_NAME).encode() in command and not zombie:
+            found.add(int(entry.name))
+    return found
+
+
+def test_a_warm_python_of_other_code_refuses_and_is_replaced_at_once_while_its_run_goes_on(
+        warm_service: Any, repo_root: Path, tmp_path: Path) -> None:
+    """The user edited or updated REI: the warm Python's modules are not theirs (the command runs itself). It
+    stays for the run it forked, which ends as usual, and the service starts a new one meanwhile."""
+    folder, first = warm_service
     warm = _warm_pid(folder)
+    out = tmp_path / "out"
+    process = _rei(repo_root, "run", repo_root / "examples" / "simple_navigation.rei", "-o", out)
+    _await_stepping(out, process)
     with socket.socket(socket.AF_UNIX, socket.SOCK_STREAM) as connection:
         connection.settimeout(30)
         connection.connect(str(folder / SOCKET_NAME))
@@ -138,15 +155,14 @@ def test_a_warm_python_of_other_code_refuses_and_ends(warm_service: Any) -> None
         socket.send_fds(connection, [json.dumps(request).encode() + b"\n"], [0, 1, 2])
         assert json.loads(connection.makefile("rb").readline()) == {"error": "stale"}
     deadline = time.monotonic() + 30
-    while Path(f"/proc/{warm}").exists() and "Z" not in Path(f"/proc/{warm}/stat").read_text().split(")")[1][:3]:
-        assert time.monotonic() < deadline
+    while len(pids := _warm_pids(folder)) < 2:  # the new one starts while the run goes on in the old one
+        assert process.poll() is None and time.monotonic() < deadline, (pids, process.poll())
         time.sleep(0.1)
+    assert warm in pids
+    stdout, stderr = process.communicate(timeout=RUN_TIMEOUT_S)
+    assert process.returncode == 0, stdout + stderr
+    assert _verdicts(out) == _verdicts(first)
     deadline = time.monotonic() + 120
-    while True:  # the service has started a new one
-        try:
-            if _warm_pid(folder) != warm:
-                break
-        except AssertionError:
-            pass
+    while warm in _warm_pids(folder) or not (folder / SOCKET_NAME).exists():  # the old one ends, the new serves
         assert time.monotonic() < deadline
         time.sleep(0.2)

@@ -47,6 +47,8 @@ _TICK = 0.2
 #: Spare routers kept ready: runs back to back (a campaign of warm runs, a script) come faster than a router starts
 #: (~3.5 s), so with one spare every other run waited for the next to come up (measured: 0.87 s of a 4 s run).
 SPARE_ROUTERS = 2
+#: Seconds before a warm Python that failed is started again, doubling up to the most.
+WARM_RETRY_MIN, WARM_RETRY_MAX = 1.0, 300.0
 #: Seconds a stopping service waits for the runs that hold its routers (they stop them at their end).
 RUNS_DRAIN = 1800.0
 
@@ -64,6 +66,9 @@ class Service:
         self.jvms_up = threading.Event()
         self.fingerprint = fingerprint()
         self.warm: subprocess.Popen[bytes] | None = None  # rei.service.warm: runs forked from a warm Python
+        self.warm_serving = False  # its socket has appeared
+        self.warm_retry, self.warm_delay = 0.0, WARM_RETRY_MIN  # when the next may start, after a failed one
+        self.retired: list[subprocess.Popen[bytes]] = []  # warm Pythons that no longer serve, with runs going on
 
     def run(self) -> int:
         private_dir(self.folder)
@@ -137,12 +142,29 @@ class Service:
                              name="service-warm-up", daemon=True).start()
 
     def _keep_warm(self) -> None:
-        """The warm Python runs are forked from (rei.service.warm); a new one when it ended (it ends itself on a
-        request from code newer than its own)."""
-        if self.warm is not None and self.warm.poll() is None:
+        """The warm Python runs are forked from (rei.service.warm): a new one when it ended, or stopped serving (on a
+        request from other code its name goes; it stays until the runs it forked have ended, and a new one serves
+        meanwhile). One that failed is started again after a delay that doubles: each start imports for seconds."""
+        self.retired = [process for process in self.retired if process.poll() is None]
+        warm = self.warm
+        if warm is not None:
+            if warm.poll() is None:
+                if (self.folder / WARM_SOCKET).exists():
+                    self.warm_serving, self.warm_delay = True, WARM_RETRY_MIN
+                    return
+                if not self.warm_serving:
+                    return  # still importing
+                _say("the warm Python stopped serving (other code); a new one serves while its runs end")
+                self.retired.append(warm)
+            else:
+                _say(f"the warm Python ended (code {warm.returncode})")
+                if warm.returncode != 0 or not self.warm_serving:
+                    self.warm_retry = time.monotonic() + self.warm_delay
+                    self.warm_delay = min(2 * self.warm_delay, WARM_RETRY_MAX)
+            self.warm = None
+        if time.monotonic() < self.warm_retry:
             return
-        if self.warm is not None:
-            _say(f"the warm Python ended (code {self.warm.returncode}); starting a new one")
+        self.warm_serving = False
         with open(self.folder / "warm.log", "ab") as log:
             self.warm = subprocess.Popen(
                 [sys.executable, "-c", "import sys; from rei.service.warm import main; sys.exit(main())",
@@ -150,10 +172,11 @@ class Service:
                 start_new_session=True)
 
     def _release_warm(self) -> None:
-        """No more forks; the runs forked already go on (the warm Python exits after the last)."""
-        if self.warm is not None and self.warm.stdin is not None:
-            with contextlib.suppress(OSError):
-                self.warm.stdin.close()
+        """No more forks; the runs forked already go on (a warm Python exits after its last)."""
+        for warm in (self.warm, *self.retired):
+            if warm is not None and warm.stdin is not None:
+                with contextlib.suppress(OSError):
+                    warm.stdin.close()
 
     def _drop_dead_spares(self) -> None:
         with self.lock:

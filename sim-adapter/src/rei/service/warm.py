@@ -261,6 +261,7 @@ def serve(path: Path) -> int:
     listener.bind(str(path) + ".new")
     listener.listen(16)
     os.rename(str(path) + ".new", path)  # requesters find the name once it accepts
+    name = os.stat(path)
     running: dict[int, socket.socket] = {}
     orphans: dict[int, float] = {}  # pid -> when its requester went
     try:
@@ -289,6 +290,9 @@ def serve(path: Path) -> int:
         # the service stops (or this code is stale): no more forks (a requester then runs its command itself; a
         # new server's name replaces this one's), but the commands running are users' runs: they go on
         listener.close()
+        with contextlib.suppress(OSError):
+            if os.path.samestat(os.stat(path), name):  # stale: the service starts a new server when it is gone
+                os.unlink(path)
         while running:
             _reap(running, orphans)
             _watch_requesters(running, orphans)
