@@ -252,3 +252,21 @@ def test_a_forked_commands_standard_streams_are_an_interpreters(server: Path, tm
     fresh = subprocess.run([sys.executable, "-c", f"import json, sys; print(json.dumps({_STREAMS}))"],
                            stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, check=True)
     assert report["streams"] == json.loads(fresh.stdout)
+
+
+def test_the_fingerprint_changes_with_a_module_and_only_with_one(tmp_path: Path) -> None:
+    package = tmp_path / "rei"
+    (package / "sub" / "__pycache__").mkdir(parents=True)
+    (package / "a.py").write_text("A = 1\n")
+    module = package / "sub" / "b.py"
+    module.write_text("B = 1\n")
+    first = warm.source_fingerprint(package)
+    (package / "sub" / "__pycache__" / "b.cpython-311.pyc").write_bytes(b"compiled")
+    (package / "data.json").write_text("{}")
+    assert warm.source_fingerprint(package) == first
+    os.utime(module, ns=(module.stat().st_atime_ns, module.stat().st_mtime_ns + 1))  # edited, same size
+    second = warm.source_fingerprint(package)
+    assert second != first
+    (package / "sub" / "c.py").write_text("")
+    assert warm.source_fingerprint(package) not in (first, second)
+    assert warm.source_fingerprint() == warm.source_fingerprint(Path(warm.__file__).resolve().parents[1])

@@ -59,15 +59,25 @@ _TICK = 0.2
 _FORWARDED = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT)
 
 
-def source_fingerprint() -> str:
-    """What this Python's REI is: its package folder and every module's size and modification time (~2 ms). A
-    server made from other code (the user edited or updated REI) refuses, so no run uses stale modules."""
-    root = Path(__file__).resolve().parents[1]
-    entries = sorted(f"{path.relative_to(root)}|{stat.st_size}|{stat.st_mtime_ns}"
-                     for path in root.rglob("*.py") if (stat := path.stat()))
+def source_fingerprint(root: Path | None = None) -> str:
+    """What this Python's REI is: its package folder (``root``) and every module's size and modification time. A
+    server made from other code (the user edited or updated REI) refuses, so no run uses stale modules. Every
+    ``rei run`` computes it twice (its request, its simulation's): os.scandir, ~2 ms for 235 modules (pathlib's
+    rglob took 7-23 ms)."""
     import hashlib
 
-    return hashlib.sha256("\n".join([str(root), sys.executable, *entries]).encode()).hexdigest()[:16]
+    top = str(root or Path(__file__).resolve().parents[1])
+    entries, folders = [], [top]
+    while folders:
+        with os.scandir(folders.pop()) as found:
+            for entry in found:
+                if entry.is_dir(follow_symlinks=False):
+                    if entry.name != "__pycache__":
+                        folders.append(entry.path)
+                elif entry.name.endswith(".py"):
+                    stat = entry.stat()
+                    entries.append(f"{entry.path[len(top) + 1:]}|{stat.st_size}|{stat.st_mtime_ns}")
+    return hashlib.sha256("\n".join([top, sys.executable, *sorted(entries)]).encode()).hexdigest()[:16]
 
 
 # -- the requester's side ------------------------------------------------------------------------------------------
