@@ -11,6 +11,7 @@ import contextlib
 import ctypes
 import json
 import os
+import select
 import signal
 import socket
 import sys
@@ -88,6 +89,39 @@ def answer(connection: socket.socket, message: dict[str, Any]) -> None:
         connection.sendall(json.dumps(message).encode() + b"\n")
 
 
+class Lines:
+    """A requester's side: the server's answers, a JSON line each, from its socket, each within a timeout. Whole
+    lines only: two answers may come in one read (a command that ended at once: its pid and its status), and a
+    socket file's buffer is undefined after a timeout."""
+
+    def __init__(self, connection: socket.socket) -> None:
+        self._connection, self._buffer = connection, b""
+        connection.setblocking(True)  # the timeouts are the poll's
+        self._poll = select.poll()  # not select(): a process with many files open has descriptors past FD_SETSIZE
+        self._poll.register(connection, select.POLLIN)
+
+    def read(self, timeout: float | None) -> bytes | None:
+        """The next line; b"" once the other side closed; None when none came within ``timeout`` seconds (None:
+        no limit)."""
+        deadline = None if timeout is None else time.monotonic() + timeout
+        while b"\n" not in self._buffer:
+            wait = None if deadline is None else max(deadline - time.monotonic(), 0.0) * 1000
+            if not self._poll.poll(wait):
+                return None
+            try:
+                chunk = self._connection.recv(4096)
+            except OSError:
+                chunk = b""
+            if not chunk:
+                return b""
+            self._buffer += chunk
+        line, self._buffer = self._buffer.split(b"\n", 1)
+        return line + b"\n"
+
+    def close(self) -> None:
+        self._connection.close()
+
+
 def stop_all(running: dict[int, Any], reap: Callable[[], None], grace: float = 3.0, tick: float = 0.05) -> None:
     """The server's children's groups stopped: SIGTERM, SIGKILL after ``grace`` seconds; ``reap`` takes the ended
     ones out of ``running``."""
@@ -104,4 +138,4 @@ def stop_all(running: dict[int, Any], reap: Callable[[], None], grace: float = 3
         time.sleep(tick)
 
 
-__all__ = ["answer", "flush_all", "reset_signals", "run_as_interpreter", "signal_group", "stop_all"]
+__all__ = ["Lines", "answer", "flush_all", "reset_signals", "run_as_interpreter", "signal_group", "stop_all"]

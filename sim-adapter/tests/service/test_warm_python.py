@@ -18,6 +18,7 @@ from pathlib import Path
 
 import pytest
 
+from rei.forks import Lines
 from rei.service import warm
 
 #: What a Python's standard streams are (an expression).
@@ -29,6 +30,7 @@ import rei.service.warm as warm
 import rei.cli
 
 warm.PRELOAD = ("rei.cli",)
+warm.source_fingerprint = lambda root=None: "this-test"  # others may edit REI's modules meanwhile
 real = rei.cli.main
 
 def probe(argv):
@@ -54,9 +56,10 @@ sys.exit(warm.main())
 
 
 @pytest.fixture
-def server(tmp_path: Path) -> Iterator[Path]:
+def server(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Path]:
     """A warm Python serving ``tmp_path/warm.sock``, started in ``tmp_path/home`` (as the service does, in its
     folder) with this test's environment."""
+    monkeypatch.setattr(warm, "source_fingerprint", lambda root=None: "this-test")
     home = tmp_path / "home"
     home.mkdir()
     path = tmp_path / warm.SOCKET_NAME
@@ -174,7 +177,7 @@ def test_no_fork_for_a_requester_that_stopped_waiting(monkeypatch: pytest.Monkey
 def test_poll_does_not_wait_for_another_threads_wait() -> None:
     """As Popen's: the pipeline may poll the simulation while another thread waits for it."""
     ours, theirs = socket.socketpair()
-    process = warm.WarmProcess(ours, os.getpid(), None, None)
+    process = warm.WarmProcess(Lines(ours), os.getpid(), None, None)
     waiter = threading.Thread(target=process.wait, args=(3.0,))
     waiter.start()
     time.sleep(0.2)
@@ -191,7 +194,7 @@ def test_a_command_whose_server_went_is_ended_as_reported() -> None:
     """Its status is lost with the server: it is reported killed, so it must be."""
     command = subprocess.Popen(["sleep", "60"], start_new_session=True)
     ours, theirs = socket.socketpair()
-    process = warm.WarmProcess(ours, command.pid, None, None)
+    process = warm.WarmProcess(Lines(ours), command.pid, None, None)
     theirs.close()
     assert process.wait(5.0) == -signal.SIGKILL
     assert command.wait(5) == -signal.SIGKILL
@@ -270,3 +273,35 @@ def test_the_fingerprint_changes_with_a_module_and_only_with_one(tmp_path: Path)
     (package / "sub" / "c.py").write_text("")
     assert warm.source_fingerprint(package) not in (first, second)
     assert warm.source_fingerprint() == warm.source_fingerprint(Path(warm.__file__).resolve().parents[1])
+
+
+def _answering(tmp_path: Path, *lines: dict) -> threading.Thread:
+    """A server on ``tmp_path/warm.sock`` that answers one request with ``lines``, in one write, and goes."""
+    listener = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+    listener.bind(str(tmp_path / warm.SOCKET_NAME))
+    listener.listen(1)
+
+    def answer() -> None:
+        with listener:
+            connection, _ = listener.accept()
+            with connection:
+                _, fds, _, _ = socket.recv_fds(connection, 1 << 20, 3)
+                for fd in fds:
+                    os.close(fd)
+                connection.sendall(b"".join(json.dumps(line).encode() + b"\n" for line in lines))
+                connection.recv(1)  # until the requester hangs up
+
+    thread = threading.Thread(target=answer)
+    thread.start()
+    return thread
+
+
+def test_a_command_that_ended_at_once_is_not_run_again(tmp_path: Path) -> None:
+    """Its pid and its status in one read: the pid is taken, the status kept for later (the requester took the two
+    lines for a bad answer and ran the command a second time itself)."""
+    server = _answering(tmp_path, {"pid": 4242}, {"status": 2 << 8})
+    sent = warm._request(tmp_path / warm.SOCKET_NAME, ["rei", "run"], [0, 1, 2], dict(os.environ), str(tmp_path))
+    assert sent is not None and sent[1] == 4242
+    process = warm.WarmProcess(*sent, None, None)
+    assert process.wait(5.0) == 2
+    server.join()

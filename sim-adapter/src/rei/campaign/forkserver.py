@@ -25,7 +25,6 @@ from __future__ import annotations
 import importlib
 import json
 import os
-import select
 import selectors
 import shutil
 import signal
@@ -38,7 +37,7 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import Any, NoReturn, Self
 
-from rei.forks import answer, flush_all, reset_signals, run_as_interpreter, stop_all
+from rei.forks import Lines, answer, flush_all, reset_signals, run_as_interpreter, stop_all
 from rei.processes import close_and_reap
 from rei.run.jvm import tail
 
@@ -109,7 +108,7 @@ class ForkServer:
     def fork(self, run_dir: Path, env: Mapping[str, str] | None = None) -> ForkedWorker:
         """A worker for ``run_dir``, running once this returns."""
         connection = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
-        lines = _Lines(connection)
+        lines = Lines(connection)
         try:
             connection.settimeout(FORK_TIMEOUT)
             connection.connect(str(self.socket))
@@ -142,7 +141,7 @@ class ForkServer:
 class ForkedWorker:
     """A worker the fork server started: its pid (and process group) and, once it ended, its status and CPU."""
 
-    def __init__(self, pid: int, lines: _Lines, run_dir: Path) -> None:
+    def __init__(self, pid: int, lines: Lines, run_dir: Path) -> None:
         self.pid = pid
         self._lines, self._run_dir = lines, run_dir
         self._ended: tuple[int, float] | None = None
@@ -171,32 +170,6 @@ class ForkedWorker:
         with open(self._run_dir / WORKER_LOG, "a", encoding="utf-8") as log:
             log.write("campaign: the fork server ended before this worker; the worker was killed\n")
         return signal.SIGKILL, 0.0  # a wait status: killed by SIGKILL
-
-
-class _Lines:
-    """Lines from a socket, each within a timeout (a socket file's buffer is undefined after a timeout)."""
-
-    def __init__(self, connection: socket.socket) -> None:
-        self._connection, self._buffer = connection, b""
-
-    def read(self, timeout: float) -> bytes | None:
-        """The next line; b"" once the other side closed; None when none came within ``timeout`` seconds."""
-        deadline = time.monotonic() + timeout
-        while b"\n" not in self._buffer:
-            if not select.select([self._connection], [], [], max(deadline - time.monotonic(), 0.0))[0]:
-                return None
-            try:
-                chunk = self._connection.recv(4096)
-            except OSError:
-                chunk = b""
-            if not chunk:
-                return b""
-            self._buffer += chunk
-        line, self._buffer = self._buffer.split(b"\n", 1)
-        return line + b"\n"
-
-    def close(self) -> None:
-        self._connection.close()
 
 
 def serve(path: Path) -> int:

@@ -28,7 +28,6 @@ import importlib
 import io
 import json
 import os
-import select
 import selectors
 import signal
 import socket
@@ -40,7 +39,7 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import IO, Any, NoReturn
 
-from rei.forks import answer, flush_all, reset_signals, run_as_interpreter, signal_group, stop_all
+from rei.forks import Lines, answer, flush_all, reset_signals, run_as_interpreter, signal_group, stop_all
 from rei.lifetime import stat_fields
 
 #: Imported once, before the first fork: what ``rei run`` and ``rei sim`` import on their way to the first step.
@@ -84,23 +83,26 @@ def source_fingerprint(root: Path | None = None) -> str:
 
 
 def _request(path: Path, argv: Sequence[str], fds: Sequence[int], env: dict[str, str] | None,
-             cwd: str | None) -> tuple[socket.socket, int] | None:
-    """Sends the request; the connection and the command's pid, or None when there is no (fitting) server."""
+             cwd: str | None) -> tuple[Lines, int] | None:
+    """Sends the request; the server's answers to come and the command's pid, or None when there is no (fitting)
+    server."""
     connection = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+    lines = Lines(connection)
     try:
         connection.settimeout(FORK_TIMEOUT)
         connection.connect(str(path))
         request = {"argv": list(argv), "cwd": cwd or os.getcwd(), "env": dict(os.environ if env is None else env),
                    "umask": _umask(), "fingerprint": source_fingerprint()}
         socket.send_fds(connection, [json.dumps(request).encode() + b"\n"], list(fds))
-        answer = json.loads(_read_line(connection) or b"null")
+        connection.settimeout(None)  # the answers' timeouts are Lines.read's
+        answer = json.loads(lines.read(FORK_TIMEOUT) or b"null")
     except (OSError, ValueError):
         connection.close()
         return None
     if not isinstance(answer, dict) or not isinstance(answer.get("pid"), int):
         connection.close()
         return None
-    return connection, answer["pid"]
+    return lines, answer["pid"]
 
 
 def _umask() -> int:
@@ -112,27 +114,11 @@ def _umask() -> int:
     return mask
 
 
-def _read_line(connection: socket.socket) -> bytes:
-    data = b""
-    while not data.endswith(b"\n"):
-        chunk = connection.recv(1024)
-        if not chunk:
-            break
-        data += chunk
-    return data
-
-
-def _status(connection: socket.socket, timeout: float | None) -> int | None:
+def _status(lines: Lines, timeout: float | None) -> int | None:
     """The command's wait status once it ended (-1: the server went first), None if not within ``timeout``."""
-    poll = select.poll()  # not select(): a process with many files open has descriptors past FD_SETSIZE
-    poll.register(connection, select.POLLIN)
-    if timeout is not None and not poll.poll(max(timeout, 0.0) * 1000):
+    line = lines.read(timeout)
+    if line is None:
         return None
-    try:
-        connection.settimeout(None)
-        line = _read_line(connection)
-    except OSError:
-        return -1
     try:
         return int(json.loads(line)["status"])
     except (ValueError, KeyError, TypeError):
@@ -162,12 +148,12 @@ def delegate(argv: Sequence[str], folder: Path) -> int | None:
     try:
         sent = _request(folder / SOCKET_NAME, [sys.argv[0], *argv], (0, 1, 2), None, None)
         if sent is not None:
-            connection, pid = sent
+            lines, pid = sent
             forked.append(pid)
             for signum in pending:
                 forward(signum, None)
-            status = _status(connection, None)
-            connection.close()
+            status = _status(lines, None)
+            lines.close()
     finally:
         for signum, handler in previous.items():
             signal.signal(signum, handler)
@@ -190,9 +176,9 @@ class WarmProcess:
     Python: ``pid`` (also its process group), ``stdin``/``stdout`` pipes (text, line-buffered), ``poll``, ``wait``
     and ``returncode`` (negative: killed by that signal)."""
 
-    def __init__(self, connection: socket.socket, pid: int, stdin: IO[str] | None, stdout: IO[str] | None) -> None:
+    def __init__(self, lines: Lines, pid: int, stdin: IO[str] | None, stdout: IO[str] | None) -> None:
         self.pid, self.stdin, self.stdout = pid, stdin, stdout
-        self._connection = connection
+        self._lines = lines
         self.returncode: int | None = None
         self._lock = threading.Lock()
 
@@ -244,7 +230,7 @@ class WarmProcess:
 
     def _ended(self, timeout: float | None) -> int | None:
         if self.returncode is None:
-            status = _status(self._connection, timeout)
+            status = _status(self._lines, timeout)
             if status is None:  # not ended within ``timeout``
                 return None
             if status < 0:  # the server went first: the command's status is lost, so it is ended for sure
@@ -253,7 +239,7 @@ class WarmProcess:
                 self.returncode = -signal.SIGKILL
             else:
                 self.returncode = os.waitstatus_to_exitcode(status)
-            self._connection.close()
+            self._lines.close()
         return self.returncode
 
 
