@@ -25,7 +25,7 @@ from rei.service import warm
 _STREAMS = "[[s.encoding, s.errors, s.line_buffering, s.write_through] for s in (sys.stdin, sys.stdout, sys.stderr)]"
 #: The server as the service starts it, with a probe for ``rei probe``: what the forked command sees, as JSON.
 _SERVER = """
-import json, os, sys, time
+import json, os, resource, signal, sys, time
 import rei.service.warm as warm
 import rei.cli
 
@@ -47,10 +47,13 @@ def probe(argv):
         "path": sys.path, "cwd": os.getcwd(), "argv": sys.argv, "tzname": list(time.tzname),
         "umask": next(line.split()[1] for line in status.splitlines() if line.startswith("Umask:")),
         "fds": sorted(int(fd) for fd in os.listdir("/proc/self/fd")), "env": dict(os.environ),
-        "streams": STREAMS}))
+        "streams": STREAMS, "nice": os.getpriority(os.PRIO_PROCESS, 0), "cpus": sorted(os.sched_getaffinity(0)),
+        "core": resource.getrlimit(resource.RLIMIT_CORE),
+        "signals": {s.name: str(signal.getsignal(s)) for s in (signal.SIGHUP, signal.SIGQUIT, signal.SIGINT)}}))
     return int(argv[1]) if argv[1:] else 0
 
 rei.cli.main = probe
+signal.signal(signal.SIGQUIT, signal.SIG_IGN)  # as a service started by a command that ignored it
 sys.exit(warm.main())
 """.replace("STREAMS", _STREAMS)
 
@@ -131,7 +134,8 @@ def test_a_forked_command_has_the_requesters_umask_and_time_zone(server: Path, t
 def _sent_request(fingerprint: str, *, hang_up: bool = False) -> tuple[socket.socket, socket.socket]:
     """A request as ``_request`` sends it, on a socket pair: (the requester's end, the server's end)."""
     ours, theirs = socket.socketpair()
-    request = {"argv": ["rei", "run"], "cwd": "/", "env": dict(os.environ), "umask": 0o022, "fingerprint": fingerprint}
+    request = {"argv": ["rei", "run"], "cwd": "/", "env": dict(os.environ), "process": warm._attributes(),
+               "fingerprint": fingerprint}
     with open(os.devnull, "rb") as null:
         socket.send_fds(ours, [json.dumps(request).encode() + b"\n"], [null.fileno()] * 3)
     if hang_up:
@@ -305,3 +309,25 @@ def test_a_command_that_ended_at_once_is_not_run_again(tmp_path: Path) -> None:
     process = warm.WarmProcess(*sent, None, None)
     assert process.wait(5.0) == 2
     server.join()
+
+
+def test_a_forked_command_takes_on_what_a_child_of_the_requester_would_inherit(server: Path, tmp_path: Path) -> None:
+    """nohup, nice, taskset, ulimit -c: the requester's, not the service's (whose SIGQUIT is ignored here)."""
+    script = f"""
+import json, os, resource, signal, sys
+sys.path.insert(0, {str(Path(__file__).parent)!r})
+import test_warm_python as t
+from rei.service import warm
+warm.source_fingerprint = lambda root=None: "this-test"
+signal.signal(signal.SIGHUP, signal.SIG_IGN)
+os.nice(3)
+os.sched_setaffinity(0, {{0}})
+resource.setrlimit(resource.RLIMIT_CORE, (0, resource.getrlimit(resource.RLIMIT_CORE)[1]))
+print(json.dumps(t._probe(__import__("pathlib").Path({str(server)!r}), __import__("pathlib").Path("/"),
+                          dict(os.environ))[0]))
+"""
+    report = json.loads(subprocess.run([sys.executable, "-c", script], stdout=subprocess.PIPE, check=True).stdout)
+    assert report["signals"] == {"SIGHUP": str(signal.SIG_IGN), "SIGQUIT": str(signal.SIG_DFL),
+                                 "SIGINT": str(signal.default_int_handler)}
+    assert report["nice"] == os.getpriority(os.PRIO_PROCESS, 0) + 3
+    assert report["cpus"] == [0] and report["core"][0] == 0

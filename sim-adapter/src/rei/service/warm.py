@@ -92,7 +92,7 @@ def _request(path: Path, argv: Sequence[str], fds: Sequence[int], env: dict[str,
         connection.settimeout(FORK_TIMEOUT)
         connection.connect(str(path))
         request = {"argv": list(argv), "cwd": cwd or os.getcwd(), "env": dict(os.environ if env is None else env),
-                   "umask": _umask(), "fingerprint": source_fingerprint()}
+                   "process": _attributes(), "fingerprint": source_fingerprint()}
         socket.send_fds(connection, [json.dumps(request).encode() + b"\n"], list(fds))
         connection.settimeout(None)  # the answers' timeouts are Lines.read's
         answer = json.loads(lines.read(FORK_TIMEOUT) or b"null")
@@ -103,6 +103,39 @@ def _request(path: Path, argv: Sequence[str], fds: Sequence[int], env: dict[str,
         connection.close()
         return None
     return lines, answer["pid"]
+
+
+#: What a child inherits from the process that starts it, besides its streams, folder and environment.
+_LIMITS = ("RLIMIT_AS", "RLIMIT_CORE", "RLIMIT_CPU", "RLIMIT_DATA", "RLIMIT_FSIZE", "RLIMIT_MEMLOCK", "RLIMIT_NOFILE",
+           "RLIMIT_NPROC", "RLIMIT_STACK")
+
+
+def _attributes() -> dict[str, Any]:
+    """This process's umask, ignored signals, niceness, CPUs and resource limits: what its child would inherit
+    (``nohup``, ``nice``, ``taskset``, ``ulimit``), which the forked command takes on instead of the service's."""
+    import resource
+
+    return {"umask": _umask(), "ignored": [int(s) for s in _FORWARDED if signal.getsignal(s) == signal.SIG_IGN],
+            "nice": os.getpriority(os.PRIO_PROCESS, 0), "cpus": sorted(os.sched_getaffinity(0)),
+            "limits": {name: resource.getrlimit(getattr(resource, name)) for name in _LIMITS}}
+
+
+def _adopt(attributes: dict[str, Any]) -> None:
+    """In the child: the requester's attributes (``_attributes``); a limit or priority it may not take (above the
+    service's own) stays the service's."""
+    import resource
+
+    os.umask(int(attributes["umask"]))
+    for signum in _FORWARDED:  # also those the service was started ignoring
+        default = signal.default_int_handler if signum == signal.SIGINT else signal.SIG_DFL
+        signal.signal(signum, signal.SIG_IGN if signum in attributes["ignored"] else default)
+    with contextlib.suppress(OSError):
+        os.setpriority(os.PRIO_PROCESS, 0, int(attributes["nice"]))
+    with contextlib.suppress(OSError, ValueError):
+        os.sched_setaffinity(0, attributes["cpus"])
+    for name, (soft, hard) in attributes["limits"].items():
+        with contextlib.suppress(OSError, ValueError, AttributeError):
+            resource.setrlimit(getattr(resource, name), (soft, hard))
 
 
 def _umask() -> int:
@@ -144,7 +177,9 @@ def delegate(argv: Sequence[str], folder: Path) -> int | None:
         with contextlib.suppress(ProcessLookupError):
             os.killpg(forked[0], signum)
 
-    previous = {signum: signal.signal(signum, forward) for signum in _FORWARDED}
+    # one the command ignores (nohup) it leaves to the run, which ignores it too (``_attributes``)
+    previous = {signum: signal.signal(signum, forward) for signum in _FORWARDED
+                if signal.getsignal(signum) != signal.SIG_IGN}
     try:
         sent = _request(folder / SOCKET_NAME, [sys.argv[0], *argv], (0, 1, 2), None, None)
         if sent is not None:
@@ -321,7 +356,7 @@ def _start(connection: socket.socket, running: dict[int, socket.socket], fingerp
         argv = [str(arg) for arg in request["argv"]]
         env = {str(k): str(v) for k, v in dict(request["env"]).items()}
         cwd = str(request["cwd"])
-        umask = int(request["umask"])
+        attributes = dict(request["process"])
         if len(fds) != 3:
             raise ValueError(f"expected 3 file descriptors, got {len(fds)}")
     except (OSError, ValueError, TypeError, KeyError) as error:
@@ -352,7 +387,7 @@ def _start(connection: socket.socket, running: dict[int, socket.socket], fingerp
         try:
             for inherited in (*keep, *running.values(), connection):
                 inherited.close()
-            _become(argv, env, cwd, fds, umask)  # never returns
+            _become(argv, env, cwd, fds, attributes)  # never returns
         finally:
             os._exit(1)  # never back into the server's loop
     _close_all(fds)
@@ -380,7 +415,7 @@ def _hung_up(connection: socket.socket) -> bool:
         return True
 
 
-def _become(argv: list[str], env: dict[str, str], cwd: str, fds: list[int], umask: int) -> NoReturn:
+def _become(argv: list[str], env: dict[str, str], cwd: str, fds: list[int], attributes: dict[str, Any]) -> NoReturn:
     """In the forked child: the requester's streams, folder and environment, then ``rei.cli.main``; exits the
     process as the interpreter would (``rei.forks.run_as_interpreter``)."""
 
@@ -394,7 +429,7 @@ def _become(argv: list[str], env: dict[str, str], cwd: str, fds: list[int], umas
         sys.stdout = sys.__stdout__ = _standard_stream(1)
         sys.stderr = sys.__stderr__ = _standard_stream(2)
         os.chdir(cwd)
-        os.umask(umask)  # the user's file modes, not the service's
+        _adopt(attributes)  # the user's file modes, nohup, nice, ulimit: not the service's
         os.environ.clear()
         os.environ.update(env)
         os.environ[SOCKET_ENV] = os.environ.get(SOCKET_ENV) or _server_socket
