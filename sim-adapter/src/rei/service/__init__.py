@@ -4,11 +4,13 @@
 A run needs a router (Crossbar: ~4 s to start), a monitor (a JVM compiling its rules: ~4 s) and its case generated
 (a JVM: ~2 s). The service keeps them ready between runs:
 
-* two **spare routers** (``daemon.SPARE_ROUTERS``), each started for a run id of its own with fresh secrets, the
-  older of which the next run takes over whole (``rei.wamp.router.Router.adopt``): every run still has its own
+* three **spare routers** (``daemon.SPARE_ROUTERS``), each started for a run id of its own with fresh secrets, the
+  oldest of which the next run takes over whole (``rei.wamp.router.Router.adopt``): every run still has its own
   router, credentials and URIs, and the service starts the next spare at once;
 * a **warm monitor JVM** and a **warm generator JVM** (``rei.run.jvm.JarServer``), in which each run's monitor and
-  generation run as commands, with their classes loaded and rule bases built.
+  generation run as commands, with their classes loaded and rule bases built;
+* a **warm Python** (``rei.service.warm``) that has imported the run, the simulation and the evaluator: a warm
+  ``rei run`` and its simulation are forked from it.
 
 It is started on demand by ``rei run`` (``rei.service.client.connect``), stops itself after ``IDLE_SECONDS`` without
 a request, and is replaced when it died: the next run notices, says so in one line and starts a new one. Its folder

@@ -44,9 +44,11 @@ from rei.toolchain import ToolchainError
 from rei.wamp.router import Router, RouterError
 
 _TICK = 0.2
-#: Spare routers kept ready: runs back to back (a campaign of warm runs, a script) come faster than a router starts
-#: (~3.5 s), so with one spare every other run waited for the next to come up (measured: 0.87 s of a 4 s run).
-SPARE_ROUTERS = 2
+#: Spare routers kept ready, each slot refilled by a thread of its own as soon as it is taken: runs back to back (a
+#: campaign of warm runs, a script) come faster than a router starts (~3.5 s, more at load). With one spare every
+#: other run waited for the next (0.87 s of a 4 s run); with two refilled one at a time, warm runs forked from the
+#: warm Python (~3.5 s) waited 1.2 s each from the third on (load 7).
+SPARE_ROUTERS = 3
 #: Seconds before a warm Python that failed is started again, doubling up to the most.
 WARM_RETRY_MIN, WARM_RETRY_MAX = 1.0, 300.0
 #: Seconds a stopping service waits for the runs that hold its routers (they stop them at their end).
@@ -58,6 +60,10 @@ class Service:
         self.folder, self.idle = folder, idle
         self.jvms: dict[str, JarServer | None] = {"monitor": None, "cli": None}
         self.spares: list[Router] = []  # oldest first
+        self.starting = 0  # spares being started
+        self.handed_any = False
+        self.fillers: list[threading.Thread] = []
+        self.gone = threading.Event()  # set only as the process ends: see _fill
         self.handed: list[tuple[Router, int]] = []  # routers runs took over, with the run's pid
         self.lock = threading.Lock()
         self.spare_ready = threading.Condition(self.lock)
@@ -93,6 +99,7 @@ class Service:
                 self._loop()  # starts the spare router at once, on this thread (it dies with this thread)
             finally:
                 self.stopping.set()  # no more hand-overs
+                self._await_starts()
                 self._discard_spares()
                 # a new service may start now; this one stays for the runs that hold its routers
                 control.close()
@@ -110,12 +117,15 @@ class Service:
         while not self.stopping.is_set():
             for role in self.jvms if self.jvms_up.is_set() else ():
                 self._keep_jvm(role)
-            if self.jvms_up.is_set():
+            if self.jvms_up.is_set() and (self.spares or self.handed_any):  # after the first run's router
                 self._keep_warm()
             self._reap_handed()
             self._drop_dead_spares()
-            if len(self.spares) < SPARE_ROUTERS:
-                self._start_spare()  # one per turn: the JVMs and the runs' routers are looked after meanwhile
+            if not self.fillers:
+                self.fillers = [threading.Thread(target=self._fill, name=f"service-spare-{slot}", daemon=True)
+                                for slot in range(SPARE_ROUTERS)]
+                for filler in self.fillers:
+                    filler.start()
             with self.lock:
                 idle = time.monotonic() - self.last_request > self.idle and not self.handed
             if idle:
@@ -186,6 +196,36 @@ class Service:
             _say("a spare router ended; starting a new one")
             self._discard(router)
 
+    def _fill(self) -> None:
+        """A slot's thread: starts a spare whenever fewer are ready or starting than SPARE_ROUTERS. It never returns
+        while the process lives: a router dies with the thread that started it (``die_with_parent``), and routers
+        handed to runs must outlive a stopping service's main loop."""
+        while not self.stopping.is_set():
+            with self.lock:
+                # until the first spare is up, one start at a time: the run that started the service waits for it
+                wanted = len(self.spares) + self.starting < SPARE_ROUTERS and (
+                    self.starting == 0 or bool(self.spares) or self.handed_any)
+                if wanted:
+                    self.starting += 1
+            if not wanted:
+                self.stopping.wait(_TICK)
+                continue
+            try:
+                self._start_spare()
+            finally:
+                with self.lock:
+                    self.starting -= 1
+        self.gone.wait()
+
+    def _await_starts(self) -> None:
+        """Until the spares being started are up (and discarded by their threads: the service stops)."""
+        deadline = time.monotonic() + 60.0
+        while time.monotonic() < deadline:
+            with self.lock:
+                if not self.starting:
+                    return
+            time.sleep(0.05)
+
     def _start_spare(self) -> None:
         run_id = secrets.token_hex(6)
         # not niced: the run that takes it over could not raise its priority again (measured: nice 10 while a run
@@ -199,8 +239,11 @@ class Service:
             self.stopping.wait(5.0)  # not in a tight loop
             return
         with self.lock:
-            self.spares.append(router)
-            self.spare_ready.notify_all()
+            if not self.stopping.is_set():
+                self.spares.append(router)
+                self.spare_ready.notify_all()
+                return
+        self._discard(router)  # started while the service stopped: nobody will take it
 
     def _reap_handed(self) -> None:
         with self.lock:
@@ -313,6 +356,7 @@ class Service:
             router = ready[0]
             self.spares.remove(router)
             self.handed.append((router, owner))
+            self.handed_any = True
         return router.describe()
 
 
