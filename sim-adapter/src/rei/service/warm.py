@@ -295,10 +295,18 @@ def serve(path: Path) -> int:
     name = os.stat(path)
     running: dict[int, socket.socket] = {}
     orphans: dict[int, float] = {}  # pid -> when its requester went
+    # a command's end wakes the loop at once (its requester, `rei run` waiting for its simulation or the user for
+    # the run, waited up to a tick for it): SIGCHLD writes to this socket
+    wake, waker = socket.socketpair()
+    wake.setblocking(False)
+    waker.setblocking(False)
+    signal.set_wakeup_fd(waker.fileno(), warn_on_full_buffer=False)
+    signal.signal(signal.SIGCHLD, lambda _signum, _frame: None)
     try:
         with selectors.DefaultSelector() as selector:
             selector.register(listener, selectors.EVENT_READ)
             selector.register(sys.stdin.fileno(), selectors.EVENT_READ)
+            selector.register(wake, selectors.EVENT_READ)
             serving = True
             while serving:
                 for key, _ in selector.select(_TICK):
@@ -310,10 +318,14 @@ def serve(path: Path) -> int:
                             time.sleep(_TICK)
                             continue
                         try:
-                            serving = _start(connection, running, fingerprint, keep=(listener, selector)) != "stale"
+                            serving = _start(connection, running, fingerprint,
+                                             keep=(listener, selector, wake, waker)) != "stale"
                         except Exception:  # noqa: BLE001 - one request's failure is its own: the others' go on
                             traceback.print_exc()
                             connection.close()
+                    elif key.fileobj is wake:
+                        with contextlib.suppress(BlockingIOError):
+                            wake.recv(4096)
                     elif not os.read(sys.stdin.fileno(), 4096):
                         serving = False
                 _reap(running, orphans)
@@ -385,6 +397,7 @@ def _start(connection: socket.socket, running: dict[int, socket.socket], fingerp
         return None
     if pid == 0:
         try:
+            signal.set_wakeup_fd(-1)  # the server's, closed here: nothing may write to its number once reused
             for inherited in (*keep, *running.values(), connection):
                 inherited.close()
             _become(argv, env, cwd, fds, attributes)  # never returns
