@@ -331,3 +331,19 @@ print(json.dumps(t._probe(__import__("pathlib").Path({str(server)!r}), __import_
                                  "SIGINT": str(signal.default_int_handler)}
     assert report["nice"] == os.getpriority(os.PRIO_PROCESS, 0) + 3
     assert report["cpus"] == [0] and report["core"][0] == 0
+
+
+def test_a_command_with_a_standard_stream_closed_runs_itself(tmp_path: Path) -> None:
+    """``rei run <&-``: the request's socket would be its standard input, passed to the run, which would then hold
+    the requester's end (its death unnoticed) and read the server's answers."""
+    listener = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+    listener.bind(str(tmp_path / warm.SOCKET_NAME))
+    listener.listen(1)
+    listener.setblocking(False)
+    script = f"import os; os.close(0); from pathlib import Path; from rei.service import warm; " \
+             f"print(warm.delegate(['run', 'x.rei'], Path({str(tmp_path)!r})))"
+    done = subprocess.run([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True, timeout=60, check=True)
+    assert done.stdout == "None\n"
+    with pytest.raises(BlockingIOError):  # it did not even ask
+        listener.accept()
+    listener.close()

@@ -167,6 +167,11 @@ def _await_gone(pid: int) -> None:
 def delegate(argv: Sequence[str], folder: Path) -> int | None:
     """``rei ARGV`` run by the service's warm Python with this process's standard streams, its signals passed on;
     its exit code, or None when the service has no warm Python for this REI (the caller runs the command itself)."""
+    for fd in (0, 1, 2):
+        try:
+            os.fstat(fd)
+        except OSError:  # closed (``<&-``): the request's socket would take its number and the run hold it
+            return None
     forked: list[int] = []
     pending: list[int] = []
 
