@@ -347,3 +347,51 @@ def test_a_command_with_a_standard_stream_closed_runs_itself(tmp_path: Path) -> 
     with pytest.raises(BlockingIOError):  # it did not even ask
         listener.accept()
     listener.close()
+
+
+_DELEGATE = "import sys; from pathlib import Path; from rei.service import warm; sys.exit(warm.delegate(['run'], Path(sys.argv[1])))"
+
+
+def test_a_command_whose_run_was_killed_by_a_signal_is_killed_by_it(tmp_path: Path) -> None:
+    """As the run by itself: its parent sees the signal, not an exit code (bash stops a loop only for that)."""
+    server = _answering(tmp_path, {"pid": os.getpid()}, {"status": signal.SIGKILL})
+    done = subprocess.run([sys.executable, "-c", _DELEGATE, str(tmp_path)], timeout=60, check=False)
+    server.join()
+    assert done.returncode == -signal.SIGKILL
+
+
+def _state(pid: int) -> str:
+    return Path(f"/proc/{pid}/stat").read_text().rpartition(")")[2].split()[0]
+
+
+def _await_state(pid: int, state: str) -> None:
+    deadline = time.monotonic() + 10
+    while _state(pid) != state:
+        assert time.monotonic() < deadline, (pid, _state(pid), state)
+        time.sleep(0.02)
+
+
+def test_ctrl_z_stops_the_run_with_the_command_and_fg_goes_on_with_both(tmp_path: Path) -> None:
+    run = subprocess.Popen(["sleep", "60"], start_new_session=True)
+    listener = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+    listener.bind(str(tmp_path / warm.SOCKET_NAME))
+    listener.listen(1)
+    command = subprocess.Popen([sys.executable, "-c", _DELEGATE, str(tmp_path)])
+    try:
+        connection, _ = listener.accept()
+        _, fds, _, _ = socket.recv_fds(connection, 1 << 20, 3)
+        for fd in fds:
+            os.close(fd)
+        connection.sendall(json.dumps({"pid": run.pid}).encode() + b"\n")
+        time.sleep(0.5)  # the command waits for the run's end
+        command.send_signal(signal.SIGTSTP)
+        _await_state(command.pid, "T")
+        _await_state(run.pid, "T")
+        command.send_signal(signal.SIGCONT)
+        _await_state(run.pid, "S")
+    finally:
+        run.kill()
+        command.kill()
+        run.wait()
+        command.wait()
+        listener.close()

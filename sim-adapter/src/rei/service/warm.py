@@ -182,9 +182,18 @@ def delegate(argv: Sequence[str], folder: Path) -> int | None:
         with contextlib.suppress(ProcessLookupError):
             os.killpg(forked[0], signum)
 
+    def suspend(_signum: int, _frame: object) -> None:  # Ctrl-Z: the run stops with the command, goes on with it
+        if forked:
+            signal_group(forked[0], signal.SIGSTOP)
+        signal.signal(signal.SIGTSTP, signal.SIG_DFL)
+        os.kill(os.getpid(), signal.SIGTSTP)  # stopped here until the shell's SIGCONT (fg, bg)
+        signal.signal(signal.SIGTSTP, suspend)
+        if forked:
+            signal_group(forked[0], signal.SIGCONT)
+
     # one the command ignores (nohup) it leaves to the run, which ignores it too (``_attributes``)
-    previous = {signum: signal.signal(signum, forward) for signum in _FORWARDED
-                if signal.getsignal(signum) != signal.SIG_IGN}
+    previous = {signum: signal.signal(signum, suspend if signum == signal.SIGTSTP else forward)
+                for signum in (*_FORWARDED, signal.SIGTSTP) if signal.getsignal(signum) != signal.SIG_IGN}
     try:
         sent = _request(folder / SOCKET_NAME, [sys.argv[0], *argv], (0, 1, 2), None, None)
         if sent is not None:
@@ -208,7 +217,23 @@ def delegate(argv: Sequence[str], folder: Path) -> int | None:
         _await_gone(pid)
         return 1
     code = os.waitstatus_to_exitcode(status)
+    if code < 0:  # killed by a signal: so is the command, as the run by itself would be (a parent sees that, not an
+        _die_by(-code)  # exit code: a shell stops a loop of commands only for a SIGINT death)
     return code if code >= 0 else 128 - code
+
+
+def _die_by(signum: int) -> None:
+    """This process ended by signal ``signum`` (without a core dump of its own: the run's was the one)."""
+    import resource
+
+    flush_all()
+    with contextlib.suppress(OSError, ValueError):
+        resource.setrlimit(resource.RLIMIT_CORE, (0, resource.getrlimit(resource.RLIMIT_CORE)[1]))
+    with contextlib.suppress(OSError, ValueError):  # SIGKILL's cannot be set
+        signal.signal(signum, signal.SIG_DFL)
+    with contextlib.suppress(OSError, ValueError):
+        signal.pthread_sigmask(signal.SIG_UNBLOCK, [signum])
+        os.kill(os.getpid(), signum)
 
 
 class WarmProcess:
