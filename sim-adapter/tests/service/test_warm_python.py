@@ -21,6 +21,8 @@ import pytest
 from rei.forks import Lines
 from rei.service import warm
 
+#: A pid that no process has (above Linux's most): what a test's command may signal without harm.
+_NO_PROCESS = 4_194_305
 #: What a Python's standard streams are (an expression).
 _STREAMS = "[[s.encoding, s.errors, s.line_buffering, s.write_through] for s in (sys.stdin, sys.stdout, sys.stderr)]"
 #: The server as the service starts it, with a probe for ``rei probe``: what the forked command sees, as JSON.
@@ -181,7 +183,7 @@ def test_no_fork_for_a_requester_that_stopped_waiting(monkeypatch: pytest.Monkey
 def test_poll_does_not_wait_for_another_threads_wait() -> None:
     """As Popen's: the pipeline may poll the simulation while another thread waits for it."""
     ours, theirs = socket.socketpair()
-    process = warm.WarmProcess(Lines(ours), os.getpid(), None, None)
+    process = warm.WarmProcess(Lines(ours), _NO_PROCESS, None, None)
     waiter = threading.Thread(target=process.wait, args=(3.0,))
     waiter.start()
     time.sleep(0.2)
@@ -354,7 +356,7 @@ _DELEGATE = "import sys; from pathlib import Path; from rei.service import warm;
 
 def test_a_command_whose_run_was_killed_by_a_signal_is_killed_by_it(tmp_path: Path) -> None:
     """As the run by itself: its parent sees the signal, not an exit code (bash stops a loop only for that)."""
-    server = _answering(tmp_path, {"pid": os.getpid()}, {"status": signal.SIGKILL})
+    server = _answering(tmp_path, {"pid": _NO_PROCESS}, {"status": signal.SIGKILL})
     done = subprocess.run([sys.executable, "-c", _DELEGATE, str(tmp_path)], timeout=60, check=False)
     server.join()
     assert done.returncode == -signal.SIGKILL
