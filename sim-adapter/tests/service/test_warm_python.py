@@ -397,3 +397,16 @@ def test_ctrl_z_stops_the_run_with_the_command_and_fg_goes_on_with_both(tmp_path
         run.wait()
         command.wait()
         listener.close()
+
+
+def test_an_interrupted_start_leaks_no_pipe(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    def interrupted(*_args: object) -> None:
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(warm, "_request", interrupted)
+    monkeypatch.setenv(warm.SOCKET_ENV, str(tmp_path / warm.SOCKET_NAME))
+    with open(os.devnull, "w") as log:
+        before = _open_fds()
+        with pytest.raises(KeyboardInterrupt):
+            warm.WarmProcess.start(["sim"], stdin_pipe=True, stdout=None, stderr=log, env={}, cwd=None)
+        assert _open_fds() <= before

@@ -267,17 +267,20 @@ class WarmProcess:
             read, write = os.pipe()
             theirs.append(write)
             ours.append(("r", read))
+        sent = None
         try:
             fds = [theirs[0], child_out if child_out is not None else theirs[1], stderr.fileno()]
             sent = _request(Path(path), ["rei", *argv], fds, env, str(cwd) if cwd else None)
         finally:
             for fd in theirs:
                 os.close(fd)
+            if sent is None:  # also when interrupted (Ctrl-C as the run starts)
+                for _, fd in ours:
+                    os.close(fd)
         if sent is None:
-            for _, fd in ours:
-                os.close(fd)
             return None
-        pipes = {mode: open(fd, mode, buffering=1, encoding="utf-8") for mode, fd in ours}  # noqa: SIM115 - the caller closes them
+        # as Popen(text=True) makes them: the locale's encoding, which the child's streams have too
+        pipes = {mode: open(fd, mode, buffering=1) for mode, fd in ours}  # noqa: SIM115 - the caller closes them
         return cls(sent[0], sent[1], pipes.get("w"), pipes.get("r"))
 
     def poll(self) -> int | None:
