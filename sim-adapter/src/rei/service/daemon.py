@@ -62,6 +62,7 @@ class Service:
         self.spares: list[Router] = []  # oldest first
         self.starting = 0  # spares being started
         self.handed_any = False
+        self.runs_ended = False  # a run that took a router has ended
         self.fillers: list[threading.Thread] = []
         self.gone = threading.Event()  # set only as the process ends: see _fill
         self.handed: list[tuple[Router, int]] = []  # routers runs took over, with the run's pid
@@ -117,7 +118,8 @@ class Service:
         while not self.stopping.is_set():
             for role in self.jvms if self.jvms_up.is_set() else ():
                 self._keep_jvm(role)
-            if self.jvms_up.is_set() and (self.spares or self.handed_any):  # after the first run's router
+            # not while the run that started the service goes on: its imports (~1.5 s of CPU) would slow that run
+            if self.jvms_up.is_set() and (self.runs_ended or (self.spares and not self.handed)):
                 self._keep_warm()
             self._reap_handed()
             self._drop_dead_spares()
@@ -202,9 +204,12 @@ class Service:
         handed to runs must outlive a stopping service's main loop."""
         while not self.stopping.is_set():
             with self.lock:
-                # until the first spare is up, one start at a time: the run that started the service waits for it
+                # all at once when no run goes on, or when runs back to back have used up all spares but one (a
+                # start takes longer than a warm run); else one at a time, and so during the run that started the
+                # service (it waits for the first spare, and the others' start would slow its simulation)
+                idle = self.handed_any and not self.handed
                 wanted = len(self.spares) + self.starting < SPARE_ROUTERS and (
-                    self.starting == 0 or bool(self.spares) or self.handed_any)
+                    self.starting == 0 or idle or (self.runs_ended and len(self.spares) < 2))
                 if wanted:
                     self.starting += 1
             if not wanted:
@@ -258,6 +263,7 @@ class Service:
     def _forget(self, router: Router) -> None:
         with self.lock:
             self.handed = [(r, o) for r, o in self.handed if r is not router]
+            self.runs_ended = True
         # still here when the run's folder is on another file system (the run copied it at its end)
         folder = self.folder / "routers" / str(router.run_id)
         if folder.is_dir():
