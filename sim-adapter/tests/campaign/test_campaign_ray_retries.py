@@ -30,7 +30,7 @@ def test_lost_tasks_are_tried_again_and_recorded_once(tmp_path: Path) -> None:
         import ray
 
         def stand_in(task: dict[str, Any], case: dict[str, bytes], extra: dict[str, bytes], fields: dict[str, Any],
-                     attempt: int) -> dict[str, Any]:
+                     attempt: int, needs: tuple[bool, bool] = (False, False)) -> dict[str, Any]:
             assert case == {"world.json": b"{}"}  # the case folder arrived
             if task["key"] == "always-lost" or (task["key"] == "once-lost" and attempt == 1):
                 raise ConnectionError("the node is gone")

@@ -8,6 +8,7 @@ import argparse
 import os
 import signal
 import threading
+import types
 from pathlib import Path
 from typing import Any
 
@@ -45,14 +46,16 @@ def test_the_workers_are_stopped_before_the_pool_waits_for_them(raised: type[Bas
         def close(self) -> None:
             closed.append(True)
 
-    def make_pool(workers: int, ray: str | None, out: Path, stop: threading.Event) -> ClosingPool:
+    def make_pool(workers: int, ray: str | None, out: Path, stop: threading.Event, router: bool = False,
+                  people: bool = False) -> ClosingPool:
         pools.append(ClosingPool(stop))
         return pools[-1]
 
     monkeypatch.setattr(search_run, "Search", FailingSearch)
     monkeypatch.setattr(search_run, "make_pool", make_pool)
+    spec = types.SimpleNamespace(humans=False, case=None, rooms=None, sut=None)  # what run_search reads itself
     with pytest.raises(raised):
-        search_run.run_search(Any, tmp_path, ray="somewhere")  # type: ignore[arg-type]
+        search_run.run_search(spec, tmp_path, ray="somewhere")  # type: ignore[arg-type]
     assert closed == [True]
     assert pools[0].stop_at_close is True
 
