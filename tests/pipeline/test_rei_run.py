@@ -114,8 +114,11 @@ def test_killing_the_simulation_is_an_error_that_keeps_every_signal_and_leaves_n
 
 
 def _is_simulation_of(proc: Path, out: Path) -> bool:
+    """The run's simulation writes its errors to OUT/simulation.log, whether started as `python -m rei.cli sim` or
+    forked from the service's warm Python (whose command line it keeps)."""
     try:
-        argv = (proc / "cmdline").read_bytes().split(b"\0")
+        return os.readlink(proc / "fd" / "2") == str(out / "simulation.log")
     except OSError:
         return False
-    return b"rei.cli" in argv and b"sim" in argv and str(out).encode() in argv and sys.executable.encode() != b""
+
+
