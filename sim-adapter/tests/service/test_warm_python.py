@@ -378,7 +378,9 @@ def test_ctrl_z_stops_the_run_with_the_command_and_fg_goes_on_with_both(tmp_path
     listener = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
     listener.bind(str(tmp_path / warm.SOCKET_NAME))
     listener.listen(1)
-    command = subprocess.Popen([sys.executable, "-c", _DELEGATE, str(tmp_path)])
+    # a process group of its own in the test's session, as a shell's job is: in an orphaned group (the test's own
+    # under a CI runner without a terminal) the kernel discards a stop signal whose action is the default
+    command = subprocess.Popen([sys.executable, "-c", _DELEGATE, str(tmp_path)], process_group=0)
     try:
         connection, _ = listener.accept()
         _, fds, _, _ = socket.recv_fds(connection, 1 << 20, 3)
