@@ -172,7 +172,7 @@ class Workbench:
         self.page.locator(".quick-input-list .monaco-list-row", has_text=title).first.wait_for()
         self.page.keyboard.press("Enter")
 
-    def hover(self, line: str, word: str, timeout_s: float = 30.0) -> str:
+    def hover(self, line: str, word: str, timeout_s: float = 60.0) -> str:
         """Point the mouse at `word` in the editor's `line` until a hover naming it shows; the hover's text."""
         at = self.word_centre(line, word)
         # Only a hover on screen: the workbench keeps a hidden one's last content.
