@@ -55,6 +55,16 @@ class CostGrid:
         self._surface_flat = self.surface.ravel()
         self.cost = self.cost_from_distance(self.distance)
 
+    def _reach(self, cx: float, cy: float, sx: float, sy: float) -> tuple[int, int, int, int] | None:
+        """The cells (i0, i1, j0, j1, ends excluded) an obstacle's rectangle of sizes sx, sy about (cx, cy) reaches
+        within the cap; None when none is on the grid."""
+        reach = 0.5 * math.hypot(sx, sy) + self.cap
+        i0, j0 = self.world_to_cell(cx - reach, cy - reach)
+        i1, j1 = self.world_to_cell(cx + reach, cy + reach)
+        i0, i1 = max(i0, 0), min(i1 + 1, self.width)
+        j0, j1 = max(j0, 0), min(j1 + 1, self.height)
+        return None if i0 >= i1 or j0 >= j1 else (i0, i1, j0, j1)
+
     def _stamp_rectangle(
         self,
         dist: np.ndarray,
@@ -64,13 +74,10 @@ class CostGrid:
         obstacle: tuple[float, float, float, float, float],
     ) -> None:
         cx, cy, yaw, sx, sy = obstacle
-        reach = 0.5 * math.hypot(sx, sy) + self.cap
-        i0, j0 = self.world_to_cell(cx - reach, cy - reach)
-        i1, j1 = self.world_to_cell(cx + reach, cy + reach)
-        i0, i1 = max(i0, 0), min(i1 + 1, self.width)
-        j0, j1 = max(j0, 0), min(j1 + 1, self.height)
-        if i0 >= i1 or j0 >= j1:
+        window = self._reach(cx, cy, sx, sy)
+        if window is None:
             return
+        i0, i1, j0, j1 = window
         dx = xs[i0:i1][None, :] - cx
         dy = ys[j0:j1][:, None] - cy
         c, s = math.cos(yaw), math.sin(yaw)
@@ -89,13 +96,10 @@ class CostGrid:
         """Furniture on a polygon: its cells' distance to the polygon itself (0 inside, minus the depth on the
         signed surface), over the region its bounding box's rectangle reaches."""
         cx, cy, _yaw, sx, sy = obstacle
-        reach = 0.5 * math.hypot(sx, sy) + self.cap
-        i0, j0 = self.world_to_cell(cx - reach, cy - reach)
-        i1, j1 = self.world_to_cell(cx + reach, cy + reach)
-        i0, i1 = max(i0, 0), min(i1 + 1, self.width)
-        j0, j1 = max(j0, 0), min(j1 + 1, self.height)
-        if i0 >= i1 or j0 >= j1:
+        window = self._reach(cx, cy, sx, sy)
+        if window is None:
             return
+        i0, i1, j0, j1 = window
         px, py = np.meshgrid(xs[i0:i1], ys[j0:j1])
         edge, inside = polygon_distance(px, py, np.asarray(polygon, dtype=float))
         np.minimum(dist[j0:j1, i0:i1], np.where(inside, 0.0, edge), out=dist[j0:j1, i0:i1])
