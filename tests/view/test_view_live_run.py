@@ -104,10 +104,12 @@ def test_the_page_follows_a_real_run(cli_jar: Path, rei_script: Path, repo_root:
             if state["condition"] == "ended":
                 break
             time.sleep(0.1)
-        # The mission topic's END can arrive before the monitor's last signals: give those a moment.
+        # The mission topic's END can arrive before the monitor's last signals, and a signal received is listed at
+        # the page's next frame: give both a moment.
         final = page.state()
         deadline = time.monotonic() + 10.0
-        while not any(s["signal"] == "SIG_MISSION_END" for s in final["signals"]) and time.monotonic() < deadline:
+        while (not any(s["signal"] == "SIG_MISSION_END" for s in final["signals"])
+               or any(s["shownAtMs"] is None for s in final["signals"])) and time.monotonic() < deadline:
             time.sleep(0.1)
             final = page.state()
         page.page.screenshot(path=str(SHOTS / "live-run-end.png"))
