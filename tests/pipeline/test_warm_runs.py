@@ -95,6 +95,10 @@ def test_a_warm_run_and_its_simulation_are_forked_and_give_the_runs_results(warm
     forked = _children(warm)
     assert len(forked) == 2, forked
     assert all(os.getpgid(pid) == pid for pid in forked)
+    # each shows its own command line, as it would have run by itself: ps and a check for leftovers find them
+    titles = sorted(Path(f"/proc/{pid}/cmdline").read_bytes().decode() for pid in forked)
+    assert [title.split()[1] for title in titles] == ["run", "sim"], titles
+    assert all(str(out) in title and str(folder) not in title for title in titles), titles
     stdout, stderr = process.communicate(timeout=RUN_TIMEOUT_S)
     assert process.returncode == 0, stdout + stderr
     assert "total utility +69" in stdout and "report: " in stdout  # its output reached the command's stdout
@@ -108,8 +112,8 @@ def test_a_warm_run_and_its_simulation_are_forked_and_give_the_runs_results(warm
     assert answers[0] == answers[1] and answers[0][1] == 2 and "missing.rei" in answers[0][0][1], answers
 
 
-def test_ctrl_c_reaches_a_warm_run_which_ends_as_interrupted_and_leaves_nothing(warm_service: Any, repo_root: Path,
-                                                                               tmp_path: Path) -> None:
+def test_ctrl_c_reaches_a_warm_run_which_ends_as_interrupted_and_leaves_nothing(
+        warm_service: Any, repo_root: Path, tmp_path: Path, processes_mentioning: Any) -> None:
     folder, _ = warm_service
     warm = _warm_pid(folder)
     out = tmp_path / "out"
@@ -124,6 +128,7 @@ def test_ctrl_c_reaches_a_warm_run_which_ends_as_interrupted_and_leaves_nothing(
     while _children(warm):
         assert time.monotonic() < deadline, _children(warm)
         time.sleep(0.1)
+    assert processes_mentioning(out) == []
 
 
 def _warm_pids(folder: Path) -> set[int]:

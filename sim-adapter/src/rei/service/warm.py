@@ -29,6 +29,7 @@ import io
 import json
 import os
 import selectors
+import shlex
 import signal
 import socket
 import sys
@@ -38,6 +39,8 @@ import traceback
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import IO, Any, NoReturn
+
+from setproctitle import setproctitle
 
 from rei.forks import Lines, answer, flush_all, reset_signals, run_as_interpreter, signal_group, stop_all
 from rei.lifetime import stat_fields
@@ -467,6 +470,8 @@ def _become(argv: list[str], env: dict[str, str], cwd: str, fds: list[int], attr
 
     def command() -> int:
         os.setpgid(0, 0)  # a group of its own: the requester's signals and its hang-up reach all it started
+        # its own command line, not the server's: what ps, top and a check for what a run left behind look for
+        setproctitle(shlex.join(argv))
         reset_signals()
         for target, fd in enumerate(fds):
             os.dup2(fd, target)
