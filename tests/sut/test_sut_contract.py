@@ -60,6 +60,7 @@ CATALOGUE = f"""catalogue ContractTypes {{
     lidar beams 90 range 0.12 to 3.5 rate 5
   robot type OmniProbe : urdf "{ROUND_BOT}" mass 1.8 drive holonomic
     lidar link "laser" beams 90 range 0.12 to 3.5 rate 5
+  type Wedge : object polygon (0,0) (0.6,0) (0,0.6) height 0.5
 }}
 """
 CASE = """import "types.rei"
@@ -110,9 +111,20 @@ def read_doc(text: str) -> dict[str, Message]:
             if len(cells) == 3 and cells[0].startswith("`"):
                 path = cells[0].strip("`")
                 message.rows.append(Row(tuple(path.rstrip("?").split(".")), path.endswith("?"),
-                                        tuple(a.strip().strip("`") for a in cells[1].replace("\\|", "|").split("|"))))
+                                        alternatives(cells[1].replace("\\|", "|"))))
         message.examples = [json.loads(block) for block in re.findall(r"```json\n(.*?)```", body, flags=re.DOTALL)]
     return messages
+
+
+def alternatives(union: str) -> tuple[str, ...]:
+    """The sides of a type's ``|`` outside parentheses: ``(float[2][] | nil)[] | nil`` has two."""
+    sides, depth, start = [], 0, 0
+    for i, char in enumerate(union + "|"):
+        depth += {"(": 1, ")": -1}.get(char, 0)
+        if char == "|" and depth == 0:
+            sides.append(union[start:i].strip().strip("`"))
+            start = i + 1
+    return tuple(sides)
 
 
 def type_errors(value: Any, alternative: str) -> bool:
@@ -124,6 +136,10 @@ def type_errors(value: Any, alternative: str) -> bool:
         return not simple[alternative]
     if alternative.startswith('"'):
         return value != alternative.strip('"')
+    listed = re.fullmatch(r"\((.*)\)\[\]", alternative)  # (A | B)[]: a list, each element one of them
+    if listed:
+        return not isinstance(value, list) or any(
+            all(type_errors(item, side) for side in alternatives(listed[1])) for item in value)
     array = re.fullmatch(r"float((?:\[\d*\])+)", alternative)
     assert array, f"docs/sut.md: unknown type {alternative!r}"
     sizes = re.findall(r"\[(\d*)\]", array[1])[::-1]  # outermost first
@@ -232,7 +248,9 @@ def test_what_rei_sends_and_takes_is_what_the_document_says(
     # the lockstep run's room is the same room made from an occupancy map (all free, 6 x 4 m), so that hello's
     # map carries its occupancy too
     map_case = tmp_path / "contract_map.rei"
-    map_case.write_text(CASE.replace("room Lab size 6 x 4 {", 'room Lab occupancy "lab.yaml" {'))
+    # and furniture on a polygon, so that it carries map.polygons
+    map_case.write_text(CASE.replace("room Lab size 6 x 4 {", 'room Lab occupancy "lab.yaml" {\n'
+                                     "    object wedge : Wedge on F_3_3"))
     (tmp_path / "lab.pgm").write_bytes(b"P5\n120 80\n255\n" + bytes([254]) * (120 * 80))
     (tmp_path / "lab.yaml").write_text("image: lab.pgm\nresolution: 0.05\norigin: [0.0, 0.0, 0.0]\nnegate: 0\n"
                                        "occupied_thresh: 0.65\nfree_thresh: 0.196\n")
@@ -254,6 +272,12 @@ def test_what_rei_sends_and_takes_is_what_the_document_says(
     received, sim = runs[lockstep]
     hello = received[0][1]
     assert hello["map"]["occupancy"] == "map.yaml"  # relative to REI_CASE_DIR, the run's case folder
+    # one polygon entry per obstacle: the wedge's, in the world, where its bounding box (its obstacle) stands
+    polygons, obstacles = hello["map"]["polygons"], hello["map"]["obstacles"]
+    assert len(polygons) == len(obstacles) and sum(p is not None for p in polygons) == 1
+    wedge, box = next((p, o) for p, o in zip(polygons, obstacles, strict=True) if p is not None)
+    assert [v for vertex in wedge for v in vertex] == pytest.approx([3.2, 3.2, 3.8, 3.2, 3.2, 3.8])
+    assert box == pytest.approx([3.5, 3.5, 0.0, 0.6, 0.6])
     ticks = [p for name, p in received if name == "tick"]
     assert [p["tick"] for p in ticks] == list(range(len(ticks)))
     assert ticks[0]["odom"]["pose"] == hello["start"] and ticks[1]["odom"]["pose"] != hello["start"]

@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: EPL-2.0
 """Furniture on a polygon in the static map: REI's navigation plans around the polygon (its distance field is the
 distance to the polygon, as shapely measures it) and the /map raster fills the polygon, not its bounding box, so
-the open notch of a C-shaped desk is free to plan into; the external SUT protocol keeps the bounding box."""
+the open notch of a C-shaped desk is free to plan into; an external SUT gets the bounding box
+as its obstacle and the polygon beside it."""
 
 from __future__ import annotations
 
@@ -56,3 +57,25 @@ def test_the_notch_is_free_in_the_distance_field_the_plan_and_the_raster(polygon
     with pytest.raises(PlanningError):
         plan(CostGrid(boxes, NavConfig()), CostGrid(boxes, NavConfig()).cost, (1.0, 1.0), NOTCH, 0.05)
     assert rasterize(boxes).occupied[row, col]
+
+
+def test_hello_offers_the_polygon_beside_its_rectangle(polygon_case: Path, room: Path) -> None:
+    """An external SUT's static map: the desk's rectangle among the obstacles and its polygon in map.polygons,
+    which REI's kit reads back into StaticMap.polygons (rei nav-sut plans with it); a world of boxes has no such
+    member."""
+    from rei.geometry import Pose2D
+    from rei.sut.external.protocol import hello_answer, read_static_map
+
+    def hello(case: Path) -> dict:
+        static_map = StaticMap.of_world(read_world(case / "world.json"))
+        return hello_answer(run_id="r", clock="lockstep", control_rate=10.0, deadline=1.0, start=Pose2D(1.0, 1.0),
+                            robot={"footprint": [0.281, 0.306]}, goals=2, static_map=static_map)
+
+    answer = hello(polygon_case)
+    polygons = answer["map"]["polygons"]
+    assert len(polygons) == len(answer["map"]["obstacles"]) and sum(p is not None for p in polygons) == 1
+    read = read_static_map(answer)
+    assert read is not None and read.polygons == StaticMap.of_world(read_world(polygon_case / "world.json")).polygons
+    grid = CostGrid(read, NavConfig())  # rei nav-sut plans into the notch as the in-process navigation does
+    assert np.hypot(*np.subtract(plan(grid, grid.cost, (1.0, 1.0), NOTCH, 0.05).end, NOTCH)) <= 0.05
+    assert "polygons" not in hello(room)["map"] and read_static_map(hello(room)).polygons == ()  # type: ignore[union-attr]

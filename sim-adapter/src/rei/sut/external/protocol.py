@@ -80,6 +80,9 @@ def hello_answer(*, run_id: str, clock: str, control_rate: float, deadline: floa
             "obstacles": [[float(v) for v in box] for box in static_map.obstacles],
         },
     }
+    if static_map is not None and static_map.polygons:  # furniture on a polygon; a world of boxes has no member
+        answer["map"]["polygons"] = [None if polygon is None else [[float(x), float(y)] for x, y in polygon]
+                                     for polygon in static_map.polygons]
     if static_map is not None and occupancy is not None:
         answer["map"]["occupancy"] = occupancy
     return answer
@@ -155,7 +158,9 @@ def read_static_map(hello: Mapping[str, Any]) -> StaticMap | None:
                      robot_size=(float(size_x), float(size_y)),
                      lidar=(float(lidar.get("x", 0.0)), float(lidar.get("y", 0.0)), float(lidar.get("yaw", 0.0))),
                      outline=_described_outline(hello["robot"].get("outline"), (float(size_x), float(size_y))),
-                     holonomic=hello["robot"].get("drive") == "holonomic")
+                     holonomic=hello["robot"].get("drive") == "holonomic",
+                     polygons=tuple(None if polygon is None else tuple((float(x), float(y)) for x, y in polygon)
+                                    for polygon in data.get("polygons") or ()))
 
 
 def _described_outline(data: Any, size: tuple[float, float]) -> tuple[tuple[float, float], ...] | None:
