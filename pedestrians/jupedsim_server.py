@@ -14,8 +14,9 @@ each other, the walls, the furniture and, for those who see it, the robot, and i
 between the stops of a route.
 
 Requests:
-``init``  ``dt``, ``seed``, ``floors`` ``[[x0, y0, x1, y1], ...]``, ``obstacles`` ``[[x, y, yaw, sx, sy, circle],
-          ...]``, ``movers`` ``[[x, y, radius, robot], ...]`` (the robot and the bodies on rails: seen, not moved),
+``init``  ``dt``, ``seed``, ``floors`` ``[[x0, y0, x1, y1], ...]``, ``obstacles`` ``[[x, y, yaw, sx, sy, circle,
+          outline?], ...]`` (``outline``: furniture on a polygon, its vertices in the world; the rectangle is then
+          its bounding box), ``movers`` ``[[x, y, radius, robot], ...]`` (the robot and the bodies on rails: seen, not moved),
           ``people`` ``[{name, x, y, radius, speed, sees_robot, stops: [[x, y], ...], loop, time_gap?}, ...]``
           (``time_gap``: the model's time headway to the person ahead, for a group that walks closer than
           strangers; the model's own 1.06 s otherwise).
@@ -52,7 +53,7 @@ import shapely
 from shapely.geometry import Point, Polygon, box
 from shapely.ops import nearest_points
 
-PROTOCOL = 1
+PROTOCOL = 2
 #: A puppet is steered to where its original is; it may not go faster than this (m/s) to catch up.
 PUPPET_SPEED = 5.0
 #: How far inside the walkable area a target outside it is put (m).
@@ -60,7 +61,7 @@ INSIDE = 0.05
 
 
 def walkable_area(floors: list[list[float]], obstacles: list[list[Any]]) -> Any:
-    """The floors less every obstacle's footprint (rectangles turned by their yaw, or discs)."""
+    """The floors less every obstacle's footprint (rectangles turned by their yaw, discs, or polygons)."""
     area = shapely.union_all([box(*f) for f in floors])
     blocked = [_footprint(*o) for o in obstacles]
     if blocked:
@@ -68,7 +69,10 @@ def walkable_area(floors: list[list[float]], obstacles: list[list[Any]]) -> Any:
     return shapely.set_precision(area, 1e-6)
 
 
-def _footprint(x: float, y: float, yaw: float, sx: float, sy: float, circle: bool) -> Any:
+def _footprint(x: float, y: float, yaw: float, sx: float, sy: float, circle: bool,
+               outline: list[list[float]] | None = None) -> Any:
+    if outline:
+        return Polygon(outline)
     if circle:
         return Point(x, y).buffer(sx / 2, quad_segs=8)
     c, s = math.cos(yaw), math.sin(yaw)

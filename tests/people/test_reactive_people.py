@@ -63,6 +63,28 @@ def test_a_person_who_sees_the_robot_walks_around_it_to_its_stop(run_cli, write_
     assert math.dist(place(states[-1], "ann"), (5.5, 2.5)) < 0.2
 
 
+def test_a_person_walks_into_the_open_side_of_furniture_on_a_polygon(run_cli, write_rei, tmp_path: Path) -> None:
+    # a C-shaped desk, 3 x 3 m, open to +x: F_3_2's centre is inside its bounding box, 0.7 m from each of its arms
+    write_rei("desks.rei", "catalogue Desks {\n  type CDesk : object polygon (0,0) (3,0) (3,0.8) (0.8,0.8) (0.8,2.2)"
+                           " (3,2.2) (3,3) (0,3) height 0.75\n}\n")
+    source = write_rei("desk.rei", """import "desks.rei"
+testcase Desk {
+  room Lab size 7 x 5 {
+    object desk : CDesk on F_2_2
+    human ann route [F_6_2, F_3_2] speed 1.0 avoids
+    robot tb3 : Waffle on F_6_0
+  }
+  mission Go { goto F_5_0 goto F_6_0 }
+}
+""")
+    folder = tmp_path / "desk-case"
+    result = run_cli("generate", source, "-o", folder)
+    assert result.returncode == 0, result.stderr
+    states = still_robot(folder, 8.0)
+    assert math.dist(place(states[-1], "ann"), (3.5, 2.5)) < 0.2  # not held at the bounding box's side, x = 4
+    assert not any(s.contacts for s in states)
+
+
 def test_a_person_who_ignores_the_robot_walks_into_it(run_cli, write_rei, tmp_path: Path) -> None:
     folder = case(run_cli, write_rei, tmp_path, "human ann route [F_0_2, F_5_2] speed 1.0 ignores")
     states = still_robot(folder, 8.0)

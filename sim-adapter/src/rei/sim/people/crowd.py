@@ -201,7 +201,9 @@ def _init(world: WorldSpec, people: Sequence[PersonSpec], places: Sequence[Point
           speeds: Sequence[float], movers: Sequence[Mover], seed: int) -> dict:
     floors = [[f.center[0] - world.floor_size / 2, f.center[1] - world.floor_size / 2,
                f.center[0] + world.floor_size / 2, f.center[1] + world.floor_size / 2] for f in world.floors]
-    obstacles = [[o.pose[0], o.pose[1], o.pose[3], o.size[0], o.size[1], o.shape is Shape.CYLINDER]
+    # furniture on a polygon brings its outline: people walk into a corner desk's open corner, not round its box
+    obstacles = [[o.pose[0], o.pose[1], o.pose[3], o.size[0], o.size[1], o.shape is Shape.CYLINDER,
+                  *([[list(v) for v in o.outline]] if o.outline else [])]
                  for o in world.objects if o.category.value in ("WALL", "STATIC")]
     return {"op": "init", "protocol": PROTOCOL, "dt": DT, "seed": seed, "floors": floors, "obstacles": obstacles,
             "movers": [[m.x, m.y, m.radius, m.robot] for m in movers],

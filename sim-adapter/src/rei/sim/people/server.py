@@ -26,7 +26,7 @@ from rei.toolchain import ToolchainError, find_repo_root
 
 #: Environment variable naming the people server's Python; wins over the repository's .venv-people.
 PYTHON_ENV = "REI_PEOPLE_PYTHON"
-PROTOCOL = 1
+PROTOCOL = 2
 INIT_TIMEOUT = 60.0
 STEP_TIMEOUT = 10.0
 _STDERR_TAIL = 4000
