@@ -12,11 +12,32 @@ from rei.campaign.nodes import Watch
 
 
 class Nodes:
+    """Ray's node list, and its tasks as far as the node check uses them (asked: the node ids; never answered)."""
+
     def __init__(self, *nodes: dict[str, Any]) -> None:
         self.list = list(nodes)
+        self.asked: list[str] = []
 
     def nodes(self) -> list[dict[str, Any]]:
         return self.list
+
+    def remote(self, **_options: Any) -> Any:
+        ray = self
+
+        class Check:
+            def __init__(self, _function: Any) -> None:
+                pass
+
+            def options(self, scheduling_strategy: Any) -> Any:
+                ray.asked.append(scheduling_strategy.node_id)
+                return self
+
+            def remote(self, *_args: Any) -> object:
+                return object()
+        return Check
+
+    def wait(self, refs: list[Any], num_returns: int, timeout: float) -> tuple[list[Any], list[Any]]:
+        return [], refs
 
 
 def _node(digit: str, rei: float = 1.0) -> dict[str, Any]:
@@ -39,6 +60,24 @@ def test_a_node_a_run_found_unfit_is_said_once_and_kept_off_the_later_runs() -> 
     fit["Alive"] = False
     assert watch.nowhere() == ("no Ray node can run REI's runs: node 10.0.0.11 (bbbbbbbbbbbb): java not found on "
                                "PATH; install a Java 17+ runtime or set JAVA_HOME")
+
+
+def test_the_runs_at_a_time_follow_the_nodes_that_join_leave_or_cannot_run_them() -> None:
+    """What `rei search --ray` keeps in flight: a node that joins mid-search is asked and its slots count at once
+    (its task checks it too), one found unfit or lost no longer counts."""
+    first, late = _node("a"), _node("b", rei=2.0)  # 1 and 2 runs at a time (each the fewer of CPUs and 'rei')
+    ray = Nodes(first)
+    watch = Watch(ray, {first["NodeID"]}, router=False, people=False, log=[].append, every=0.0)
+    assert watch.slots == 1
+    ray.list.append(late)
+    watch.poll()
+    assert watch.slots == 3 and ray.asked == [late["NodeID"]]
+    watch.refused(late["NodeID"], ["no java"])
+    watch.poll()
+    assert watch.slots == 1 and ray.asked == [late["NodeID"]]  # asked once
+    first["Alive"] = False
+    watch.poll()
+    assert watch.slots == 0
 
 
 def test_the_nodes_are_asked_for_jupedsim_when_the_campaign_moves_people() -> None:

@@ -153,7 +153,7 @@ class RayBackend:
                  log: Callable[[str], None] = print, router: bool = False, people: bool = False) -> None:
         import ray
 
-        from rei.campaign.nodes import RESOURCE, Watch, check_cluster, slots
+        from rei.campaign.nodes import RESOURCE, Watch, check_cluster
 
         if attempts < 1:
             raise ValueError(f"attempts must be >= 1, got {attempts}")
@@ -200,7 +200,6 @@ class RayBackend:
             self.close()
             raise NodesUnfitError(f"{len({name for name, _ in problems})} of {nodes} Ray node(s) cannot run "
                                   "REI's runs:\n" + "\n".join(f"{name}: {lack}" for name, lack in problems))
-        self.workers = max(1, slots(ray.nodes()))
         # a node that joins later is checked before it gets a run: by the driver when it notices it, or by the
         # run's task that lands there first (it then returns without running, and the run goes elsewhere)
         self._needs = (router, people)
@@ -208,6 +207,11 @@ class RayBackend:
         # a CPU and a 'rei' each: only the nodes offering it get runs; max_retries=0: REI tries a lost task again
         # itself (above); Ray's own retry would hide the attempt
         self._remote = ray.remote(num_cpus=1, resources={RESOURCE: 1}, max_retries=0)(run_shipped)
+
+    @property
+    def workers(self) -> int:
+        """Runs at a time on the nodes that can take them, followed while runs go on (``Watch.poll``)."""
+        return max(1, self._watch.slots)
 
     def warm_up(self) -> None:
         pass

@@ -145,6 +145,9 @@ class Watch:
     def __init__(self, ray: Any, fit: set[str], router: bool, people: bool, log: Callable[[str], None],
                  every: float = 2.0) -> None:
         self._ray = ray
+        #: runs the nodes that can take them take at a time, as of the latest ``poll``: a search keeps that many
+        #: candidates in flight, so a node that joins gets work and one lost or unfit gets none
+        self.slots = slots(ray.nodes())
         self._needs = (router, people)
         self._log = log
         self._every = every
@@ -168,7 +171,9 @@ class Watch:
             if time.monotonic() < self._next:
                 return
             self._next = time.monotonic() + self._every
-            for node in offering(self._ray.nodes()):
+            nodes = offering(self._ray.nodes())
+            self.slots = sum(_slots(node) for node in nodes if node["NodeID"] not in self.unfit)
+            for node in nodes:
                 if node["NodeID"] not in self._known:
                     self._known.add(node["NodeID"])
                     self._asked[ask(self._ray, node, *self._needs)] = node
@@ -217,7 +222,11 @@ def offering(nodes: list[dict[str, Any]]) -> list[dict[str, Any]]:
 
 def slots(nodes: list[dict[str, Any]]) -> int:
     """How many runs the nodes take at a time: per node the fewer of its CPUs and its ``RESOURCE``."""
-    return sum(int(min(node["Resources"]["CPU"], node["Resources"][RESOURCE])) for node in offering(nodes))
+    return sum(_slots(node) for node in offering(nodes))
+
+
+def _slots(node: dict[str, Any]) -> int:
+    return int(min(node["Resources"]["CPU"], node["Resources"][RESOURCE]))
 
 
 class NodesUnfitError(RuntimeError):

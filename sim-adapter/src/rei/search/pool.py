@@ -23,6 +23,9 @@ from rei.campaign.forkserver import ForkServer
 from rei.campaign.plan import RunTask
 from rei.campaign.supervise import Outcome, supervise
 
+#: Candidates in flight on a Ray cluster at most (a thread of the driver's each).
+MAX_IN_FLIGHT = 512
+
 
 class Pool(Protocol):
     name: str
@@ -69,9 +72,14 @@ class RayPool:
     def __init__(self, address: str, workers: int, stop: threading.Event, router: bool = False,
                  people: bool = False) -> None:
         self._backend = connect_ray(address, workers, router=router, people=people)
-        self.workers = self._backend.workers
         self._stop = stop
-        self._threads = ThreadPoolExecutor(self.workers, thread_name_prefix="rei-search-ray")
+        # a thread per run in flight, however many nodes join: the search bounds them by ``workers``
+        self._threads = ThreadPoolExecutor(MAX_IN_FLIGHT, thread_name_prefix="rei-search-ray")
+
+    @property
+    def workers(self) -> int:
+        """The cluster's runs at a time now: a node that joins mid-search raises it (the backend's node watch)."""
+        return min(self._backend.workers, MAX_IN_FLIGHT)
 
     def submit(self, task: RunTask) -> Future[Outcome]:
         return self._threads.submit(self._one, task)
