@@ -88,3 +88,29 @@ def test_a_case_s_latency_off_the_control_periods_is_refused_before_the_run(run_
     assert result.returncode == 2 and not (tmp_path / "out" / "streams").exists()
     assert ("mission.xml: faults: a command latency of 0.15 s is not a whole number of control periods at 10 Hz "
             "(periods of 0.1 s)") in result.stderr
+
+
+def test_rei_run_refuses_a_case_s_latency_off_the_control_periods_before_its_monitor_starts(
+        run_cli, tmp_path: Path) -> None:
+    case = tmp_path / "late.rei"
+    case.write_text(CASE.replace("delay 0.2s", "delay 0.15s"))
+    out = tmp_path / "out"
+    result = run_cli("run", case, "-o", out, timeout=300)
+    # before: the run started, its simulation exited with 2 and every verdict was an ERROR of the run
+    assert result.returncode == 2, result.stdout + result.stderr
+    assert ("mission.xml: faults: a command latency of 0.15 s is not a whole number of control periods at 10 Hz "
+            "(periods of 0.1 s)") in result.stderr
+    assert not (out / "monitor.log").exists() and not (out / "summary.json").exists()
+    assert not (out / "streams").exists()
+
+
+def test_rei_run_refuses_a_stuck_wheel_of_a_holonomic_robot_before_its_monitor_starts(
+        run_cli, repo_root: Path, tmp_path: Path) -> None:
+    omni = repo_root / "bundles" / "org.rei.dsl" / "src" / "test" / "resources" / "catalogues" / "omni.rei"
+    case = tmp_path / "omni.rei"
+    case.write_text(f'import "{omni}"\n' + CASE.split("  faults {")[0].replace("r : Waffle", "r : Omni") + "}\n")
+    out = tmp_path / "out"
+    result = run_cli("run", case, "-o", out, "--fault", "drive:stuck,wheel=left,from=1", timeout=300)
+    assert result.returncode == 2, result.stdout + result.stderr
+    assert "robot: r is holonomic, and a stuck wheel is a fault of a differential drive" in result.stderr
+    assert not (out / "monitor.log").exists() and not (out / "summary.json").exists()

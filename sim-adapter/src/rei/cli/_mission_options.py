@@ -114,6 +114,22 @@ def check_collector_objects(args: argparse.Namespace, case_dir: Path) -> None:
         raise CommandError(f"{args.collector}: {error}") from None
 
 
+def check_case_faults(args: argparse.Namespace, case_dir: Path) -> None:
+    """The generated case's faults, with --fault's, are ones the run can have (CommandError, exit 2, if not): what
+    the simulation would refuse once the monitor runs (rei.run.mission_run.check_faults) is refused before."""
+    from rei.artifacts import ArtifactError, read_mission
+
+    try:
+        if not args.fault and not read_mission(case_dir / "mission.xml").faults:
+            return  # nothing to check: the simulation's modules stay unloaded
+        from rei.artifacts import read_case
+        from rei.run.mission_run import MissionRunOptions, check_faults
+
+        check_faults(read_case(case_dir), MissionRunOptions(fault=args.fault))
+    except ArtifactError as error:
+        raise CommandError(str(error)) from None
+
+
 def sut_options(args: argparse.Namespace, *, router_url: str | None = None,
                 auth_file: Path | None = None) -> SutOptions | None:
     """The external SUT the arguments ask for (None: the in-process --controller); CommandError if wrong."""

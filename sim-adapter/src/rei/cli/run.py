@@ -24,6 +24,7 @@ from typing import TYPE_CHECKING, Any, Self
 from rei.cli._case import case_folder, case_target, prepare_output, valid_run_id
 from rei.cli._mission_options import (
     add_mission_options,
+    check_case_faults,
     check_collector_objects,
     check_mission_options,
     collector_config,
@@ -104,6 +105,7 @@ def run(args: argparse.Namespace) -> int:
     with _Warm(args, out, hold) as warm:
         case_dir = case_folder(Path(args.case), out, server=warm.cli)
         check_collector_objects(args, case_dir)
+        check_case_faults(args, case_dir)
         # the first run of a service: its spare router was starting meanwhile
         router, held = warm.taken()
         run_id = router.run_id if router is not None else args.run_id or secrets.token_hex(6)

@@ -18,7 +18,7 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from rei.artifacts import ArtifactError, read_case
+from rei.artifacts import ArtifactError, Case, read_case
 from rei.geometry import Twist2D
 from rei.mission import MissionEvent, MissionExecutor, TaskResult, mission_info
 from rei.sim.faults import FaultClock, FaultSchedule, as_schedule, fault_fields
@@ -93,6 +93,22 @@ Progress = Callable[[float, int, int], None]
 """Called about once per simulated second with (sim time, tasks done, tasks in the mission)."""
 
 
+def check_faults(case: Case, options: MissionRunOptions) -> None:
+    """Raise ``ArtifactError`` for faults this run cannot have: a command latency that is not whole control periods
+    at its rate (the case's; --fault's are checked with the options), a stuck wheel of a holonomic robot (the
+    language refuses the case's own, not a --fault's). `rei run` calls it once the case is generated, so that such
+    a run is refused before its monitor and simulation start."""
+    try:
+        FaultSchedule(case.mission.faults).commands([], options.control_rate)
+    except ValueError as error:
+        raise ArtifactError(case.mission.path, f"faults: {error}") from None
+    robot = case.world.robot
+    if robot.drive.holonomic and any(f.kind == "stuck" for f in (FaultSchedule(case.mission.faults)
+                                                                + as_schedule(options.fault)).faults):
+        raise ArtifactError(case.world.path, f"robot: {robot.name} is holonomic, and a stuck wheel is a fault "
+                                             "of a differential drive (it has no left or right wheel)")
+
+
 def run_mission(
     case_dir: Path,
     out_dir: Path,
@@ -111,16 +127,7 @@ def run_mission(
     An external SUT that breaks the run (``SutError``) ends it early: the result carries the error, and everything
     published until then is recorded."""
     case = read_case(case_dir)
-    try:  # the case's command latencies must be whole control periods at this run's rate (--fault's are checked)
-        FaultSchedule(case.mission.faults).commands([], options.control_rate)
-    except ValueError as error:
-        raise ArtifactError(case_dir / "mission.xml", f"faults: {error}") from None
-    robot = case.world.robot
-    if robot.drive.holonomic and any(f.kind == "stuck" for f in (FaultSchedule(case.mission.faults)
-                                                                + as_schedule(options.fault)).faults):
-        # the language refuses the mission's own; a --fault's is refused here, before anything starts
-        raise ArtifactError(case_dir / "world.json", f"robot: {robot.name} is holonomic, and a stuck wheel is a fault "
-                                                     "of a differential drive (it has no left or right wheel)")
+    check_faults(case, options)
     time_limit = sum(goal.timeout for goal in case.mission.goals) + TIME_LIMIT_MARGIN
     control_every = max(1, round(options.physics_rate / options.control_rate))
     wall_start = time.perf_counter()
