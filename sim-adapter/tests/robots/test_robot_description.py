@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 import struct
+import warnings
 from pathlib import Path
 
 import pytest
@@ -301,3 +302,85 @@ def test_no_collision_shape_at_all(tmp_path: Path) -> None:
     message = str(caught.value)
     assert message.startswith(f"{path}: the robot has no collision shape")
     assert "package://nowhere/body.stl not found" in message
+
+
+# A collision mesh that is there but does not read, sizes that are not lengths, shapes without area: each an error
+# naming the file, the link's line and what is wrong (they were tracebacks, or a footprint of nan or of one point).
+MESH_URDF = """<?xml version="1.0"?>
+<robot name="m">
+  <link name="base_link">
+    <collision><geometry><mesh filename="{mesh}"/></geometry></collision>
+  </link>
+</robot>
+"""
+BAD_MESHES = {
+    "truncated.stl": (b"\0" * 80 + struct.pack("<I", 10) + b"\0" * 50,
+                      "does not read: a binary STL of 10 triangles needs 584 bytes, the file has 134"),
+    "empty.stl": (b"", "does not read: 0 bytes, less than a binary STL's 84-byte header"),
+    "no_triangles.stl": (b"\0" * 80 + struct.pack("<I", 0), "has no vertices"),
+    "letters.stl": ((b"solid s\n facet normal 0 0 1\n  outer loop\n   vertex 1 2 abc\n   vertex 0 0 0\n"
+                     b"   vertex 0 1 0\n  endloop\n endfacet\nendsolid s\n"),
+                    "does not read: an ASCII STL vertex that is not three numbers"),
+    "flat.obj": (b"# two coordinates\nv 1 2\nv 0 0 0\n", "does not read: line 2: a vertex is 'v X Y Z', not 'v 1 2'"),
+    "nothing.obj": (b"# no vertex\n", "has no vertices"),
+}
+
+
+@pytest.mark.parametrize("mesh", sorted(BAD_MESHES))
+def test_a_collision_mesh_that_does_not_read_is_an_error_at_its_link(tmp_path: Path, mesh: str) -> None:
+    data, what = BAD_MESHES[mesh]
+    (tmp_path / mesh).write_bytes(data)
+    path = _write(tmp_path, "robot.urdf", MESH_URDF.format(mesh=mesh))
+    with pytest.raises(DescriptionError) as caught:
+        load_description(path)
+    assert str(caught.value) == f"{path}:3: link base_link: collision mesh {mesh} ({tmp_path / mesh}) {what}"
+
+
+SHAPE_URDF = """<?xml version="1.0"?>
+<robot name="s">
+  <link name="base_link">
+    <collision><geometry><box size="0.3 0.2 0.1"/></geometry></collision>
+  </link>
+  <link name="arm">
+    <collision><geometry>{shape}</geometry></collision>
+  </link>
+  <joint name="arm_joint" type="fixed"><parent link="base_link"/><child link="arm"/></joint>
+</robot>
+"""
+
+
+@pytest.mark.parametrize(("shape", "what"), [
+    ('<box size="nan 0.2 0.1"/>', "the collision box's size must be finite and at least 0, not nan 0.2 0.1"),
+    ('<cylinder radius="-0.2" length="0.1"/>', "the collision cylinder's radius must be finite and at least 0, not -0.2"),
+    ('<cylinder radius="0.2" length="inf"/>', "the collision cylinder's length must be finite and at least 0, not inf"),
+    ('<sphere radius="-1"/>', "the collision sphere's radius must be finite and at least 0, not -1"),
+])
+def test_a_collision_size_that_is_not_a_length_is_an_error_at_its_link(tmp_path: Path, shape: str,
+                                                                        what: str) -> None:
+    path = _write(tmp_path, "robot.urdf", SHAPE_URDF.format(shape=shape))
+    with pytest.raises(DescriptionError) as caught:
+        load_description(path)
+    assert str(caught.value) == f"{path}:6: link arm: {what}"
+
+
+def test_collision_shapes_without_area_are_an_error_and_a_zero_size_part_is_not(tmp_path: Path) -> None:
+    # a zero-size box beside a real one adds a point inside the outline: harmless
+    robot = load_description(_write(tmp_path, "robot.urdf", SHAPE_URDF.format(shape='<box size="0 0 0"/>')))
+    assert isinstance(robot.footprint, Polygon) and robot.footprint.area == pytest.approx(0.06)
+    for name, shapes in (("point.urdf", '<box size="0 0 0"/>'), ("segment.urdf", '<box size="0.4 0 0.1"/>'),
+                         ("dot.urdf", '<sphere radius="0"/>')):
+        path = _write(tmp_path, name, f'<robot name="p"><link name="base_link"><collision><geometry>{shapes}'
+                                      "</geometry></collision></link></robot>")
+        with pytest.raises(DescriptionError) as caught:
+            load_description(path)
+        assert str(caught.value).startswith(f"{path}: the robot's collision shapes have no area on the floor "
+                                            "(base_link "), caught.value
+
+
+def test_a_continuous_joint_about_a_zero_axis_is_not_a_wheel(tmp_path: Path) -> None:
+    wheels = WHEEL.format(side="l", y=0.115) + WHEEL.format(side="r", y=-0.115).replace('xyz="0 1 0"', 'xyz="0 0 0"')
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # numpy's "invalid value encountered in divide" was printed, then nan
+        robot = load_description(_write(tmp_path, "round.urdf", ROUND.format(wheels=wheels)))
+    assert robot.drive is None
+    assert any(m.startswith("drive: 1 wheel joints") for m in robot.missing), robot.missing

@@ -190,8 +190,12 @@ def load_description(path: Path | str, args: Mapping[str, str] | None = None,
     parts: list[Part] = []
     for link in robot.links:
         for collision in link.collisions:
-            part = _project(link.name, frames[link.name] @ _origin(collision.origin), collision.geometry,
-                            resolver, warnings)
+            try:
+                part = _project(link.name, frames[link.name] @ _origin(collision.origin), collision.geometry,
+                                resolver, warnings)
+            except _ShapeError as error:
+                raise DescriptionError(path, f"link {link.name}: {error}",
+                                       _line_of_name(path, link.name, args or {})) from None
             if part is not None:
                 parts.append(part)
     if not parts:
@@ -199,6 +203,11 @@ def load_description(path: Path | str, args: Mapping[str, str] | None = None,
         raise DescriptionError(path, "the robot has no collision shape (its links' <collision> elements are "
                                      "what REI takes as its body and footprint)"
                                + (f"; left out: {'; '.join(left_out)}" if left_out else ""))
+    footprint = _footprint(parts)
+    if _flat(footprint):
+        # a point or a segment: no outline for the simulator's body, the monitor or the metrics to take
+        raise DescriptionError(path, "the robot's collision shapes have no area on the floor ("
+                                     + ", ".join(f"{p.link} {p.kind}" for p in parts) + ")")
     missing: list[str] = []
     lidar_pose = None
     if lidar is None:
@@ -214,7 +223,7 @@ def load_description(path: Path | str, args: Mapping[str, str] | None = None,
     if drive is None:
         missing.append(f"drive: {why}")
     missing.append("lidar beams, range and rate; speeds and accelerations; mass: not in a URDF")
-    return RobotDescription(path=path, name=robot.name, base_link=base, footprint=_footprint(parts),
+    return RobotDescription(path=path, name=robot.name, base_link=base, footprint=footprint,
                             parts=tuple(parts), lidar=lidar_pose, drive=drive, missing=tuple(missing),
                             warnings=tuple(dict.fromkeys(warnings)), links=tuple(links), urdf=text)
 
@@ -454,18 +463,37 @@ class _MeshResolver:
         return self.packages[name]
 
 
+class _ShapeError(Exception):
+    """A collision shape that cannot be projected: a size that is not a length, a mesh file that does not read."""
+
+
+def _lengths(kind: str, **sizes: Any) -> None:
+    """Refuse sizes that are not finite and at least 0: the URDF parser takes any float (nan, -0.2), and a nan
+    would reach world.json, a negative radius a circle of negative size."""
+    for name, value in sizes.items():
+        values = [float(v) for v in (value if isinstance(value, (list, tuple)) else [value])]
+        if not all(math.isfinite(v) and v >= 0 for v in values):
+            raise _ShapeError(f"the collision {kind}'s {name} must be finite and at least 0, not "
+                              + " ".join(f"{v:g}" for v in values))
+
+
 def _project(link: str, pose: np.ndarray, geometry: Any, resolver: _MeshResolver,
              warnings: list[str]) -> Part | None:
     """The projection onto the floor of one collision shape placed at ``pose`` (relative to the root link)."""
     rotation, centre = pose[:3, :3], pose[:3, 3]
+    if not np.all(np.isfinite(pose)):
+        raise _ShapeError("its pose is not finite (a joint's or the collision's <origin> has nan or inf)")
     kind = type(geometry).__name__.lower()
     if kind == "box":
+        _lengths(kind, size=geometry.size)
         hx, hy, hz = (s / 2 for s in geometry.size)
         corners = np.array([[sx * hx, sy * hy, sz * hz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)])
         return Part(link, kind, _hull(corners @ rotation.T + centre))
     if kind == "sphere":
+        _lengths(kind, radius=geometry.radius)
         return Part(link, kind, Circle(float(centre[0]), float(centre[1]), float(geometry.radius)))
     if kind == "cylinder":
+        _lengths(kind, radius=geometry.radius, length=geometry.length)
         axis = rotation[:, 2]
         r, h = float(geometry.radius), float(geometry.length) / 2
         if 1 - abs(axis[2]) < VERTICAL_TOLERANCE:
@@ -478,11 +506,18 @@ def _project(link: str, pose: np.ndarray, geometry: Any, resolver: _MeshResolver
         if found is None:
             warnings.append(f"link {link}: collision mesh {geometry.filename} not found: this shape is left out")
             return None
-        vertices = _mesh_vertices(found)
+        try:
+            vertices = _mesh_vertices(found)
+        except (ValueError, OSError) as error:
+            raise _ShapeError(f"collision mesh {geometry.filename} ({found}) does not read: {error}") from None
         if vertices is None:
             warnings.append(f"link {link}: collision mesh {geometry.filename}: only STL and OBJ meshes are read: "
                             "this shape is left out")
             return None
+        if len(vertices) == 0:
+            raise _ShapeError(f"collision mesh {geometry.filename} ({found}) has no vertices")
+        if geometry.scale is not None:
+            _lengths("mesh", scale=geometry.scale)
         scale = np.array(geometry.scale if geometry.scale is not None else (1.0, 1.0, 1.0), dtype=float)
         return Part(link, "mesh", _hull((vertices * scale) @ rotation.T + centre))
     warnings.append(f"link {link}: collision geometry {kind} not read: this shape is left out")
@@ -509,22 +544,46 @@ def _circle_points(circle: Circle) -> np.ndarray:
 
 
 def _mesh_vertices(path: Path) -> np.ndarray | None:
-    """The vertices of an STL (binary or ASCII) or OBJ mesh; None for other formats."""
+    """The vertices of an STL (binary or ASCII) or OBJ mesh; None for other formats. ValueError (with what is
+    wrong) for a file that does not read as its format: truncated, a vertex that is not three numbers."""
     suffix = path.suffix.lower()
     data = path.read_bytes()
     if suffix == ".stl":
         if data[:5].lower() == b"solid" and b"facet" in data[:1024]:
             numbers = re.findall(rb"vertex\s+(\S+)\s+(\S+)\s+(\S+)", data)
-            return np.array(numbers, dtype=float).reshape(-1, 3)
+            try:
+                vertices = np.array(numbers, dtype=float).reshape(-1, 3)
+            except ValueError:
+                raise ValueError("an ASCII STL vertex that is not three numbers") from None
+            return _finite(vertices)
+        if len(data) < 84:
+            raise ValueError(f"{len(data)} bytes, less than a binary STL's 84-byte header")
         count = int.from_bytes(data[80:84], "little")
         # Each triangle: normal, three vertices (float32 each), two attribute bytes.
+        if len(data) < 84 + 50 * count:
+            raise ValueError(f"a binary STL of {count} triangles needs {84 + 50 * count} bytes, the file has "
+                             f"{len(data)}")
         records = np.frombuffer(data, dtype=np.dtype([("n", "<f4", 3), ("v", "<f4", (3, 3)), ("a", "<u2")]),
                                 count=count, offset=84)
-        return records["v"].reshape(-1, 3).astype(float)
+        return _finite(records["v"].reshape(-1, 3).astype(float))
     if suffix == ".obj":
-        rows = [line.split()[1:4] for line in data.decode("utf-8", "replace").splitlines() if line.startswith("v ")]
-        return np.array(rows, dtype=float).reshape(-1, 3)
+        rows = []
+        for number, line in enumerate(data.decode("utf-8", "replace").splitlines(), 1):
+            if line.startswith("v "):
+                try:
+                    rows.append([float(v) for v in line.split()[1:4]])
+                except ValueError:
+                    rows.append([])
+                if len(rows[-1]) != 3:
+                    raise ValueError(f"line {number}: a vertex is 'v X Y Z', not {line.strip()!r}")
+        return _finite(np.array(rows, dtype=float).reshape(-1, 3))
     return None
+
+
+def _finite(vertices: np.ndarray) -> np.ndarray:
+    if not np.all(np.isfinite(vertices)):
+        raise ValueError("a vertex that is nan or inf")
+    return vertices
 
 
 def _hull(points: np.ndarray) -> Polygon:
@@ -580,6 +639,13 @@ def _footprint(parts: list[Part]) -> Outline:
     return _hull(points)
 
 
+def _flat(outline: Outline) -> bool:
+    """No area: a circle of radius 0, a polygon of fewer than three vertices (the hull of collinear points)."""
+    if isinstance(outline, Circle):
+        return outline.radius <= 0
+    return len(outline.points) < 3 or outline.area <= 0
+
+
 def _inside(outline: Outline, disc: Circle) -> bool:
     if isinstance(outline, Circle):
         return math.hypot(outline.x - disc.x, outline.y - disc.y) + outline.radius <= disc.radius + CONTAINS_TOLERANCE
@@ -605,7 +671,10 @@ def _drive(robot: Any, frames: dict[str, np.ndarray], links: dict[str, Any]) -> 
             continue
         frame = frames[joint.child]
         axis = frame[:3, :3] @ np.array(joint.axis if joint.axis is not None else (1.0, 0.0, 0.0), dtype=float)
-        axis = axis / np.linalg.norm(axis)
+        length = float(np.linalg.norm(axis))
+        if not math.isfinite(length) or length == 0:
+            continue  # an axis of "0 0 0" turns about nothing: not a wheel (and no division by 0)
+        axis = axis / length
         if abs(axis[2]) > AXLE_TOLERANCE:
             continue  # not a wheel on the floor (a turret, a steering joint)
         radii = [float(c.geometry.radius) for c in links[joint.child].collisions
