@@ -41,3 +41,21 @@ def test_the_blackout_requirement_tells_a_robot_that_stops_from_one_that_drives_
     assert again.returncode == 0, again.stdout + again.stderr
     assert _signals(out) == signals
     assert json.loads((out / "summary.json").read_text())["faults"] == summary["faults"]
+
+
+def test_windows_of_one_kind_inside_one_another_are_listed_as_scheduled(run_cli, repo_root: Path,
+                                                                        tmp_path: Path) -> None:
+    """The evaluator pairs each END with the fault that ends then (sim.json's schedule), not with the window that
+    began first: the inner blackout's END closed the outer window (summary.json read 2-6 and 4-10)."""
+    case = tmp_path / "nested.rei"
+    case.write_text((repo_root / "examples" / "faults" / "blackout.rei").read_text().replace(
+        "laser blackout from 4s to 7s", "laser blackout from 2s to 10s\n    laser blackout from 4s to 6s"))
+    out = tmp_path / "out"
+    result = run_cli("run", case, "-o", out, timeout=300)
+    assert result.returncode in (0, 1), result.stdout + result.stderr
+    assert [s for s in _signals(out) if "FAULT" in s[1]] == [
+        (2.0, "SIG_FAULT_LASER_BLACKOUT_BEGIN"), (4.0, "SIG_FAULT_LASER_BLACKOUT_BEGIN"),
+        (6.0, "SIG_FAULT_LASER_BLACKOUT_END"), (10.0, "SIG_FAULT_LASER_BLACKOUT_END")]
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["faults"] == [{"fault": "laser blackout", "begin": 2.0, "end": 10.0},
+                                 {"fault": "laser blackout", "begin": 4.0, "end": 6.0}]

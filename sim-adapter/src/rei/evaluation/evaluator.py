@@ -27,7 +27,7 @@ from pathlib import Path
 from typing import Any
 
 from rei.evaluation.context import CaseContext, VerdictSettings
-from rei.evaluation.faults import fault_windows
+from rei.evaluation.faults import fault_windows, run_schedule
 from rei.evaluation.junit import write_junit
 from rei.evaluation.log import EventLog, format_number
 from rei.evaluation.metrics import LIST_KEYS, NAMES, Measured, MetricsError, measure
@@ -277,7 +277,7 @@ class Evaluator:
                 tasks=_tasks(signals, self._task_reasons), verdicts=verdicts,
                 problems=(*problems, *self._notes, *metrics_notes), utility_source=self.utilities.source,
                 files={"events": EVENTS_FILE, "verdicts": VERDICTS_FILE},
-                metrics=metrics, metrics_error=metrics_error, faults=fault_windows(signals),
+                metrics=metrics, metrics_error=metrics_error, faults=fault_windows(signals, run_schedule(self.out_dir)),
             )
             self._log.close()
             properties = {"run_id": run_id, "testcase": testcase or "", "mission": mission or "",
