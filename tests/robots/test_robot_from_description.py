@@ -183,6 +183,20 @@ BAD = {
     "no-collision": (('<robot name="r">\n  <link name="base_footprint"/>\n  <link name="base_scan"/>\n'
                       '  <joint name="j" type="fixed"><parent link="base_footprint"/><child link="base_scan"/></joint>\n'
                       '</robot>\n'), "the robot has no collision shape"),
+    # the URDF parser takes nan: it reached world.json's footprint
+    "nan-size": (('<robot name="r">\n  <link name="base_footprint">\n'
+                  '    <collision><geometry><box size="nan 0.2 0.1"/></geometry></collision></link>\n'
+                  '  <link name="base_scan"/>\n'
+                  '  <joint name="j" type="fixed"><parent link="base_footprint"/><child link="base_scan"/>'
+                  '<origin xyz="0 0 0.2"/></joint>\n</robot>\n'),
+                 "robot.urdf:2: link base_footprint: the collision box's size must be finite and at least 0, not nan"),
+    # a lidar 2 cm up: generated, then the simulation failed (no body between 1 cm and the lidar)
+    "low-lidar": (('<robot name="r">\n  <link name="base_footprint">\n'
+                   '    <collision><geometry><box size="0.3 0.2 0.1"/></geometry></collision></link>\n'
+                   '  <link name="base_scan"/>\n'
+                   '  <joint name="j" type="fixed"><parent link="base_footprint"/><child link="base_scan"/>'
+                   '<origin xyz="0 0 0.02"/></joint>\n</robot>\n'),
+                  "the lidar's link base_scan is 0.0200 m above base_footprint"),
 }
 
 

@@ -92,3 +92,17 @@ def test_a_broken_pipe_that_is_not_the_output_keeps_its_traceback(monkeypatch: p
     monkeypatch.setattr(rei.cli.robot, "run", broken)
     with pytest.raises(BrokenPipeError):
         main(["robot", str(BURGER)])
+
+
+def test_for_the_generator_a_lidar_link_on_the_floor_is_an_error(tmp_path: Path,
+                                                                  capsys: pytest.CaptureFixture[str]) -> None:
+    # base_link is 0.010 m above base_footprint: the simulator's body (from 1 cm up to the lidar) would be nothing,
+    # and the simulation failed with a traceback after generation had succeeded.
+    urdf_out = tmp_path / "robot.urdf"
+    assert main(["robot", str(BURGER), "--lidar", "base_link", "--for-generator", str(urdf_out)]) == 1
+    assert capsys.readouterr().err == (
+        f"rei: error: {BURGER}: the lidar's link base_link is 0.0100 m above base_footprint: REI's robot reaches "
+        "from the floor up to its lidar and is at least 0.05 m high (is base_link the lidar's own link?)\n")
+    assert not urdf_out.exists()
+    assert main(["robot", str(BURGER), "--lidar", "base_scan", "--for-generator", str(urdf_out)]) == 0
+    assert capsys.readouterr().out.splitlines()[2] == "lidar -0.032 0.0 0.182 0.0"

@@ -20,6 +20,9 @@ from typing import Any
 
 from rei.cli.errors import EXIT_INVALID, EXIT_OK, CommandError
 
+#: The lowest lidar a described robot may have, m: a box robot's least height (the language's outOfRange rule).
+MIN_LIDAR_HEIGHT = 0.05
+
 
 def register(subparsers: argparse._SubParsersAction[Any]) -> None:
     """Add the `robot` subcommand."""
@@ -89,6 +92,13 @@ def _for_generator(robot: Any, urdf_out: Path) -> int:
     every float exact; the footprint is JSON the generator writes into world.json as it is."""
     if robot.lidar is None:
         raise CommandError(f"{robot.path}: the lidar's link is not named", exit_code=EXIT_INVALID)
+    if not robot.lidar.z >= MIN_LIDAR_HEIGHT:
+        # The simulator's body is the footprint extruded from 1 cm above the floor up to the lidar: a lidar link
+        # on the floor (the root link) or just above it gives no body, which only the simulation found out.
+        raise CommandError(f"{robot.path}: the lidar's link {robot.lidar.link} is {robot.lidar.z:.4f} m above "
+                           f"{robot.base_link}: REI's robot reaches from the floor up to its lidar and is at least "
+                           f"{MIN_LIDAR_HEIGHT} m high (is {robot.lidar.link} the lidar's own link?)",
+                           exit_code=EXIT_INVALID)
     try:
         urdf_out.write_text(robot.urdf, encoding="utf-8")
     except OSError as error:
