@@ -26,6 +26,34 @@ public class ReiValueConverters extends DefaultTerminalConverters {
 		return new DecimalConverter("s");
 	}
 
+	/** Whole numbers; one too large for an int says so (the default converter's message was "For input string"). */
+	@Override
+	@ValueConverter(rule = "INT")
+	public IValueConverter<Integer> INT() {
+		IValueConverter<Integer> base = super.INT();
+		return new IValueConverter<>() {
+			@Override
+			public Integer toValue(String string, INode node) {
+				String text = string == null ? "" : string.strip();
+				if (!text.isEmpty() && text.chars().allMatch(Character::isDigit)) {
+					try {
+						return Integer.valueOf(text);
+					} catch (NumberFormatException e) {
+						// no cause: the parser reports a cause's message instead of this one
+						throw new ValueConverterException("Expected a whole number of at most " + Integer.MAX_VALUE
+								+ " but found '" + text + "'", node, null);
+					}
+				}
+				return base.toValue(string, node);
+			}
+
+			@Override
+			public String toString(Integer value) {
+				return base.toString(value);
+			}
+		};
+	}
+
 	private static final class DecimalConverter extends AbstractNullSafeConverter<Double> {
 		private final String unit;
 
@@ -49,11 +77,17 @@ public class ReiValueConverters extends DefaultTerminalConverters {
 			if (!unit.isEmpty() && text.endsWith(unit)) {
 				text = text.substring(0, text.length() - unit.length()).strip();
 			}
+			double value;
 			try {
-				return Double.valueOf(text);
+				value = Double.parseDouble(text);
 			} catch (NumberFormatException e) {
 				throw new ValueConverterException("Expected a number but found '" + string + "'", node, e);
 			}
+			// hundreds of digits read as Infinity, which no check compares and the generator cannot write
+			if (!Double.isFinite(value)) {
+				throw new ValueConverterException("Expected a finite number but found '" + string + "'", node, null);
+			}
+			return value;
 		}
 
 		@Override

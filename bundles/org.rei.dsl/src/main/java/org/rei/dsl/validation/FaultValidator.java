@@ -110,7 +110,9 @@ public class FaultValidator extends ReiCheckBase {
 		case LOSS -> f.isSetProbability() ? null : "'probability'";
 		case SLIP -> f.isSetFraction() ? null : "'fraction'";
 		case STUCK -> f.isSetWheel() ? null : "'wheel' (left or right)";
-		case DRIFT -> f.isSetScale() || f.isSetBias() ? null : "'scale' or 'bias' (or both)";
+		// a scale of 1 and a bias of 0 change nothing, and the simulator refuses such a drift
+		case DRIFT -> (f.isSetScale() && f.getScale() != 1) || (f.isSetBias() && f.getBias() != 0) ? null
+				: "'scale' other than 1 or 'bias' other than 0";
 		case JUMP, KIDNAP -> (f.isSetDx() && f.getDx() != 0) || (f.isSetDy() && f.getDy() != 0)
 				|| (f.isSetDyaw() && f.getDyaw() != 0) ? null : "an offset: 'dx', 'dy' or 'dyaw' other than 0";
 		default -> null;
