@@ -102,7 +102,12 @@ def test_clock_publishes_each_edge_once_in_time_order() -> None:
     ("laser:blackout,sigma=1", "'sigma' is not a key of a laser blackout fault"),
     ("laser:smoke", "unknown laser fault 'smoke'"),
     ("laser:impulse,gain=0.8@10/0.2@5", "ramp times must increase"),
-    ("laser:impulse,gain=0.8@x", "time 'x' is not a number"),
+    ("laser:impulse,gain=0.8@x", "time 'x' is not a finite number of seconds"),
+    # the value as written, not without its 's' (before: "from '5m' is not a number")
+    ("laser:blackout,from=5ms", "from '5ms' is not a finite number of seconds"),
+    ("laser:noise,sigma=0.1,period=4s,pulse=1h", "pulse '1h' is not a finite number of seconds"),
+    ("laser:impulse,gain=0.8@3ms", "time '3ms' is not a finite number of seconds"),
+    ("laser:blackout,to=infs", "to 'infs' is not a finite number of seconds"),
     ("laser:blackout,from=-1", "'from' must be a time >= 0 s"),
     ("sonar:blackout", "SENSOR one of laser, odometry, drive, commands, pose"),
     ("odometry:drift", "needs scale= or bias="),

@@ -48,3 +48,12 @@ def number(text: str, what: str) -> float:
     if not math.isfinite(value):
         raise ValueError(f"{what} {text!r} is not a finite number")
     return value
+
+
+def seconds(text: str, what: str) -> float:
+    """A time written as ``5`` or ``5s`` (a spec's value); a ``ValueError`` quoting ``text`` as it was written (not
+    without its ``s``: ``5ms`` read as ``'5m' is not a number``)."""
+    try:
+        return number(text.removesuffix("s"), what)
+    except ValueError:
+        raise ValueError(f"{what} {text!r} is not a finite number of seconds") from None

@@ -21,7 +21,7 @@ import math
 from collections.abc import Iterable, Mapping
 
 from rei.sim.faults.impulse import PRESETS, LaserFault
-from rei.sim.faults.kind import number
+from rei.sim.faults.kind import number, seconds
 from rei.sim.faults.laser import Blackout, Freeze, Impulse, LaserKind, Occlusion, RangeNoise
 from rei.sim.faults.motion import WHEELS, Drift, Jump, Kidnap, Latency, Loss, Slip, Stuck
 from rei.sim.faults.schedule import Fault, FaultSchedule
@@ -221,11 +221,11 @@ def _a(sensor: str) -> str:
 
 
 def _seconds(fields: Mapping[str, str], key: str, default: float) -> float:
-    return number(fields[key].removesuffix("s"), key) if key in fields else default
+    return seconds(fields[key], key) if key in fields else default
 
 
 def _maybe_seconds(fields: Mapping[str, str], key: str) -> float | None:
-    return number(fields[key].removesuffix("s"), key) if key in fields else None
+    return seconds(fields[key], key) if key in fields else None
 
 
 def _duty(text: str) -> float:

@@ -16,7 +16,7 @@ import math
 from collections.abc import Iterator
 from dataclasses import dataclass
 
-from rei.sim.faults.kind import number, within
+from rei.sim.faults.kind import number, seconds, within
 
 EPS = 1e-9
 """Seconds by which a computed time may miss a scheduled edge and still count as on it."""
@@ -201,6 +201,6 @@ def parse_ramp(text: str) -> Ramp:
         value, at, t = (s.strip() for s in part.partition("@"))
         if not at:
             raise ValueError(f"{part!r}: expected value@seconds, e.g. 0.8@30")
-        points.append((number(t.removesuffix("s"), "time"), number(value, "value")))
+        points.append((seconds(t, "time"), number(value, "value")))
     return Ramp(tuple(points))
 
