@@ -11,12 +11,14 @@ from __future__ import annotations
 import json
 import math
 import re
+import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 from rei.artifacts.world import CircleFootprint, PolygonFootprint, read_world
+from rei.run.jvm import JarServer, run_jar
 from rei.wamp.recording import read_recording
 
 REPO = Path(__file__).resolve().parents[2]
@@ -214,3 +216,33 @@ def test_a_bad_description_is_an_error_at_the_catalogue_entry_and_nothing_is_gen
     assert f"{robots}:2:28: error: The robot's description does not read: " in result.stderr, result.stderr
     assert message in result.stderr, result.stderr
     assert not (tmp_path / "out").exists() or not any((tmp_path / "out").iterdir())
+
+
+def test_a_warm_generator_reads_a_description_again_when_a_file_it_includes_changed(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    # One JVM for many generations, as a campaign's, a search's and `rei run`'s background service: it kept the
+    # first read as long as the top file was unchanged, so an edited xacro include (or mesh) was not seen.
+    monkeypatch.setenv("REI_PYTHON", sys.executable)
+    body = tmp_path / "body.xacro"
+    (tmp_path / "bot.xacro").write_text(
+        '<robot name="bot" xmlns:xacro="http://ros.org/wiki/xacro">\n  <xacro:include filename="body.xacro"/>\n'
+        '  <link name="base_footprint"><collision><origin xyz="0 0 0.1"/>'
+        '<geometry><cylinder radius="${radius}" length="0.2"/></geometry></collision></link>\n'
+        '  <link name="laser"/>\n  <joint name="j" type="fixed"><parent link="base_footprint"/><child link="laser"/>'
+        '<origin xyz="0 0 0.25"/></joint>\n</robot>\n', encoding="utf-8")
+    (tmp_path / "robots.rei").write_text('catalogue Inc { robot type Bot : urdf "bot.xacro" mass 2 lidar link "laser" }\n',
+                                         encoding="utf-8")
+    case = tmp_path / "bot.rei"
+    case.write_text('import "robots.rei"\ntestcase Inc {\n  room Lab size 4 x 2 { robot b : Bot on F_0_0 }\n'
+                    '  mission M { goto F_1_0 goto F_3_1 }\n  monitor { close 0.25 collision 0.01 }\n}\n',
+                    encoding="utf-8")
+    with JarServer("cli", tmp_path / "server.log") as server:
+        for i, radius in enumerate(("0.15", "0.25", "0.2")):
+            body.write_text('<robot xmlns:xacro="http://ros.org/wiki/xacro">'
+                            f'<xacro:property name="radius" value="{radius}"/></robot>\n', encoding="utf-8")
+            out = tmp_path / f"out{i}"
+            result = run_jar("cli", ["generate", str(case), "-o", str(out), "--quiet"], tmp_path / f"g{i}.log",
+                             server=server.socket)
+            assert result.code == 0 and result.served, result.log_tail
+            footprint = read_world(out / "world.json").robot.footprint
+            assert isinstance(footprint, CircleFootprint) and footprint.radius == float(radius), (radius, footprint)

@@ -384,3 +384,19 @@ def test_a_continuous_joint_about_a_zero_axis_is_not_a_wheel(tmp_path: Path) -> 
         robot = load_description(_write(tmp_path, "round.urdf", ROUND.format(wheels=wheels)))
     assert robot.drive is None
     assert any(m.startswith("drive: 1 wheel joints") for m in robot.missing), robot.missing
+
+
+def test_sources_are_the_description_its_xacro_includes_and_its_collision_meshes(tmp_path: Path) -> None:
+    # what a reader that keeps reads (the generator's warm JVM) must watch to see an edit
+    (tmp_path / "mesh").mkdir()
+    triangle = struct.pack("<12f", 0, 0, 1, 0, 0, 0, 0.4, 0, 0, 0, 0.3, 0) + b"\0\0"
+    (tmp_path / "mesh" / "body.stl").write_bytes(b"\0" * 80 + struct.pack("<I", 1) + triangle)
+    _write(tmp_path, "props.xacro", '<robot xmlns:xacro="http://ros.org/wiki/xacro">'
+                                    '<xacro:property name="body" value="mesh/body.stl"/></robot>')
+    path = _write(tmp_path, "bot.xacro", '<robot name="b" xmlns:xacro="http://ros.org/wiki/xacro">'
+                                         '<xacro:include filename="props.xacro"/><link name="base_link">'
+                                         '<visual><geometry><mesh filename="mesh/visual.stl"/></geometry></visual>'
+                                         '<collision><geometry><mesh filename="${body}"/></geometry></collision>'
+                                         "</link></robot>")
+    robot = load_description(path)
+    assert robot.sources == (path, tmp_path / "props.xacro", tmp_path / "mesh" / "body.stl")

@@ -35,8 +35,9 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
     parser.add_argument("--json", action="store_true", help="print one JSON object instead of text")
     parser.add_argument("--for-generator", metavar="URDF_OUT", type=Path,
                         help="what the generator of world.json reads (lines 'footprint JSON', 'bounds XMIN YMIN XMAX "
-                        "YMAX', 'lidar X Y Z YAW', 'drive SEPARATION RADIUS' or 'drive none'), and the expanded URDF "
-                        "written to URDF_OUT (the simulator's body)")
+                        "YMAX', 'lidar X Y Z YAW', 'drive SEPARATION RADIUS' or 'drive none', then 'source PATH' for "
+                        "each file read: the description, its xacro includes, its collision meshes), and the expanded "
+                        "URDF written to URDF_OUT (the simulator's body)")
     parser.set_defaults(handler=run)
 
 
@@ -108,6 +109,8 @@ def _for_generator(robot: Any, urdf_out: Path) -> int:
     print("bounds " + " ".join(repr(float(v)) for v in robot.footprint.bounds))
     print("lidar " + " ".join(repr(float(v)) for v in (lidar.x, lidar.y, lidar.z, lidar.yaw)))
     print("drive none" if drive is None else f"drive {float(drive.wheel_separation)!r} {float(drive.wheel_radius)!r}")
+    for source in robot.sources:
+        print(f"source {source}")
     for warning in robot.warnings:
         print(f"rei: warning: {warning}", file=sys.stderr)
     return EXIT_OK

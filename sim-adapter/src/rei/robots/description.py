@@ -144,6 +144,9 @@ class RobotDescription:
     links: tuple[str, ...] = field(default=())
     #: The expanded URDF (after xacro).
     urdf: str = ""
+    #: Every file what was read depends on: the description, the files xacro included, the collision meshes read
+    #: (absolute). A reader that keeps what it read (the generator's JVM) reads again when one of them changes.
+    sources: tuple[Path, ...] = ()
 
     def to_json(self) -> dict[str, Any]:
         xmin, ymin, xmax, ymax = self.footprint.bounds
@@ -176,7 +179,8 @@ def load_description(path: Path | str, args: Mapping[str, str] | None = None,
     if not path.is_file():
         raise DescriptionError(path, "no such file" if not path.exists() else "not a file")
     warnings: list[str] = []
-    text = _expand(path.resolve(), dict(args or {}), warnings, shown=path)
+    sources = [path.resolve()]
+    text = _expand(path.resolve(), dict(args or {}), warnings, shown=path, sources=sources)
     robot = _parse_urdf(path, text, warnings, args or {})
     links = {link.name: link for link in robot.links}
     frames = _link_frames(path, robot, args or {})
@@ -198,6 +202,9 @@ def load_description(path: Path | str, args: Mapping[str, str] | None = None,
                                        _line_of_name(path, link.name, args or {})) from None
             if part is not None:
                 parts.append(part)
+            mesh = resolver.find(collision.geometry.filename) if _is_mesh(collision.geometry) else None
+            if mesh is not None:
+                sources.append(mesh.resolve())
     if not parts:
         left_out = [w for w in warnings if "collision" in w and "left out" in w]
         raise DescriptionError(path, "the robot has no collision shape (its links' <collision> elements are "
@@ -225,7 +232,8 @@ def load_description(path: Path | str, args: Mapping[str, str] | None = None,
     missing.append("lidar beams, range and rate; speeds and accelerations; mass: not in a URDF")
     return RobotDescription(path=path, name=robot.name, base_link=base, footprint=footprint,
                             parts=tuple(parts), lidar=lidar_pose, drive=drive, missing=tuple(missing),
-                            warnings=tuple(dict.fromkeys(warnings)), links=tuple(links), urdf=text)
+                            warnings=tuple(dict.fromkeys(warnings)), links=tuple(links), urdf=text,
+                            sources=tuple(dict.fromkeys(sources)))
 
 
 @dataclass(frozen=True, slots=True)
@@ -270,9 +278,10 @@ def _quaternion(roll: float, pitch: float, yaw: float) -> tuple[float, float, fl
 # --- xacro and URDF -------------------------------------------------------------------------------------------
 
 
-def _expand(path: Path, args: dict[str, str], warnings: list[str], shown: Path | None = None) -> str:
+def _expand(path: Path, args: dict[str, str], warnings: list[str], shown: Path | None = None,
+            sources: list[Path] | None = None) -> str:
     """The file after xacro, as XML text; ``shown``: ``path`` as the user wrote it, for its errors (xacro knows it
-    resolved, as its includes need)."""
+    resolved, as its includes need); the files xacro included are added to ``sources``."""
     import xacro
 
     # xacro keeps its state in module globals (file stack, includes): start each file afresh.
@@ -324,6 +333,8 @@ def _expand(path: Path, args: dict[str, str], warnings: list[str], shown: Path |
         warnings.append(f"xacro argument '{name}' is not declared by the file"
                         + (f" (it declares: {', '.join(sorted(declared))})" if declared else ""))
     warnings.extend(line.strip() for line in captured.getvalue().splitlines() if line.strip())
+    if sources is not None:
+        sources.extend(f.resolve() for f in included_files)
     return doc.toxml()
 
 

@@ -9,6 +9,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
@@ -26,8 +27,9 @@ import org.rei.context.layout.LayoutProblem;
  * The description is read by REI's Python reader ({@code rei robot FILE --for-generator URDF_OUT}: xacro and
  * ROS's URDF parser exist in Python only), run as {@code $REI_PYTHON -m rei.cli} ({@code python3} when unset; the
  * {@code rei} command sets it to its own interpreter). Its error, one line naming the file and its line, becomes
- * a problem positioned at the catalogue entry. Reads are kept per file, modification time and arguments, so a
- * campaign's JVM reads a description once.
+ * a problem positioned at the catalogue entry. Reads are kept per file and arguments, so a campaign's JVM reads a
+ * description once, and read again when a file the read depends on changed (the reader's {@code source} lines: the
+ * description, the files xacro included, the collision meshes): a warm JVM kept a footprint from an edited include.
  */
 public record RobotDescription(String footprintJson, double xmin, double ymin, double xmax, double ymax,
 		double lidarX, double lidarY, double lidarZ, double lidarYaw, Double wheelSeparation, Double wheelRadius,
@@ -37,7 +39,23 @@ public record RobotDescription(String footprintJson, double xmin, double ymin, d
 	public static final String PROBLEM_CODE = "org.rei.dsl.robotDescription";
 
 	private static final long TIMEOUT_SECONDS = 120;
-	private static final Map<List<Object>, RobotDescription> READ = new ConcurrentHashMap<>();
+	private static final Map<List<Object>, Read> READ = new ConcurrentHashMap<>();
+
+	/** A description as read, with the size and modification time of each file it was read from. */
+	private record Read(RobotDescription description, Map<Path, List<Long>> stamps) {
+		boolean fresh() {
+			return stamps.entrySet().stream().allMatch(e -> e.getValue().equals(stamp(e.getKey())));
+		}
+	}
+
+	/** Size and modification time; a file that is gone: [-1, -1]. */
+	private static List<Long> stamp(Path file) {
+		try {
+			return List.of(Files.size(file), Files.getLastModifiedTime(file).toMillis());
+		} catch (IOException e) {
+			return List.of(-1L, -1L);
+		}
+	}
 
 	/** The robot type's description, or a problem at its catalogue entry when it does not read. */
 	static RobotDescription read(RobotType type) throws GenerationException {
@@ -51,23 +69,19 @@ public record RobotDescription(String footprintJson, double xmin, double ymin, d
 			args.add("--arg");
 			args.add(type.getDescriptionArgNames().get(i) + ":=" + type.getDescriptionArgValues().get(i));
 		}
-		List<Object> key;
-		try {
-			key = List.of(file, Files.getLastModifiedTime(file).toMillis(), args, String.valueOf(lidar));
-		} catch (IOException e) {
-			throw problem(type, "Cannot read the robot's description '" + type.getDescription() + "': " + e);
-		}
-		RobotDescription known = READ.get(key);
-		if (known == null) {
+		List<Object> key = List.of(file.toAbsolutePath().normalize(), args, String.valueOf(lidar));
+		Read known = READ.get(key);
+		if (known == null || !known.fresh()) {
 			known = run(type, file, args, lidar);
 			READ.put(key, known);
 		}
-		return known;
+		return known.description();
 	}
 
-	private static RobotDescription run(RobotType type, Path file, List<String> args, String lidar)
+	private static Read run(RobotType type, Path file, List<String> args, String lidar)
 			throws GenerationException {
 		String python = System.getenv().getOrDefault("REI_PYTHON", "python3");
+		List<Long> before = stamp(file);
 		Path urdfOut;
 		Path output;
 		try {
@@ -96,7 +110,12 @@ public record RobotDescription(String footprintJson, double xmin, double ymin, d
 						.map(l -> l.substring("rei: error: ".length())).orElse(String.join(" ", lines).strip());
 				throw problem(type, "The robot's description does not read: " + error);
 			}
-			return parse(type, lines, Files.readString(urdfOut, StandardCharsets.UTF_8));
+			// the description stamped before the read; its sources are known only after it
+			Map<Path, List<Long>> stamps = new LinkedHashMap<>();
+			stamps.put(file, before);
+			lines.stream().filter(l -> l.startsWith("source ")).map(l -> Path.of(l.substring("source ".length())))
+					.forEach(source -> stamps.putIfAbsent(source, stamp(source)));
+			return new Read(parse(type, lines, Files.readString(urdfOut, StandardCharsets.UTF_8)), stamps);
 		} catch (IOException e) {
 			throw problem(type, "Cannot run REI's description reader (" + python + " -m rei.cli robot; set REI_PYTHON "
 					+ "to the Python that has REI installed): " + e.getMessage());
