@@ -158,6 +158,16 @@ def test_occlusion_reads_its_range_on_the_sector_only() -> None:
     assert np.all(np.isinf(far[90:101])) and far[89] == _scan()[89]
 
 
+def test_an_occlusion_of_a_whole_turn_hides_every_beam() -> None:
+    # before: the span's remainder, 0, left one beam occluded
+    for angles in ("0..360", "-180..180", "10..400"):
+        out = _laser(f"laser:occlusion,angles={angles},range=0.25").apply(0.0, _scan())
+        assert np.all(out == 0.25), angles
+    # counter-clockwise from the first to the second, as before: 30 to -30 is all but the 60 degrees ahead
+    out = _laser("laser:occlusion,angles=30..-30,range=0.25").apply(0.0, _scan())
+    assert (out == 0.25).sum() == 301 and out[0] == _scan()[0]
+
+
 def test_gaussian_noise_follows_its_definition() -> None:
     schedule = parse_faults("laser:noise,sigma=0.05")
     twin = np.random.default_rng(np.random.SeedSequence(4))

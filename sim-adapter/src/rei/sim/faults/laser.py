@@ -6,7 +6,8 @@
 * ``freeze``: every scan reads the scan delivered last before the window began (the same ranges, bit for bit);
 * ``blackout``: every beam reads no return (``inf``);
 * ``occlusion``: the beams whose angle lies in ``[angle_from, angle_to]`` (degrees, counter-clockwise from the
-  robot's forward axis, the sector running counter-clockwise from the first to the second) read ``range``;
+  robot's forward axis, the sector running counter-clockwise from the first to the second; a second a whole turn or
+  more after the first is every beam) read ``range``;
 * ``noise``: every beam with a return reads ``r + N(0, sigma^2)``, beams without a return stay without.
 
 Results below ``range_min`` read ``range_min``, results at or above ``range_max`` read ``inf`` (no return), as
@@ -102,8 +103,11 @@ class LaserEffect:
         self._in_sector: np.ndarray | None = None
         if isinstance(kind, Occlusion):
             angles = np.degrees(angle_min + angle_increment * np.arange(beams))
-            width = (kind.angle_to - kind.angle_from) % 360.0
-            self._in_sector = (angles - kind.angle_from) % 360.0 <= width + 1e-9
+            span = kind.angle_to - kind.angle_from
+            # a whole turn or more (0 to 360, -180 to 180) is every beam, not the one a remainder of 0 would leave
+            width = 360.0 if span >= 360.0 else span % 360.0
+            # both ends inside to within 1e-9 degrees (a beam at 30 degrees may compute as 29.999999999999996)
+            self._in_sector = (angles - kind.angle_from + 1e-9) % 360.0 <= width + 2e-9
 
     def apply(self, t: float, ranges: np.ndarray, starts: bool, last: np.ndarray | None) -> np.ndarray:
         """This scan while the fault is active; ``starts``: the first scan of a window; ``last``: the scan
