@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from rei.geometry import Pose2D, Twist2D
-from rei.sut.api import LaserScan, NavGoal, NavStatus, Observation
+from rei.sut.api import Controller, LaserScan, NavGoal, NavStatus, Observation, StaticMap
 from rei.sut.external import protocol
 from rei.sut.external.protocol import Command, Rejected, RobotLimits, Status
 
@@ -132,6 +132,53 @@ def test_a_controller_s_static_map_takes_a_described_robot_s_outline_and_drive_f
     static_map = protocol.read_static_map(hello)
     assert static_map is not None and static_map.holonomic
     assert static_map.outline == footprint_polygon(CircleFootprint(0.0, 0.0, 0.17))
+
+
+class _Keeps(Controller):
+    """A controller that keeps the map it was reset with and stands."""
+
+    static_map: StaticMap | None = None
+
+    def reset(self, static_map: StaticMap, start: Pose2D) -> None:
+        self.static_map = static_map
+
+    def set_goal(self, goal: NavGoal) -> None:
+        pass
+
+    def cancel(self) -> None:
+        pass
+
+    def step(self, observation: Observation) -> Twist2D:
+        return Twist2D(0.0, 0.0)
+
+    @property
+    def status(self) -> NavStatus:
+        return NavStatus.IDLE
+
+
+def test_a_controller_run_without_the_static_map_gets_the_robot_hello_describes() -> None:
+    """rei nav-sut SPEC without --sut-map: the controller's empty map had the robot's size alone, so its lidar sat
+    at the centre facing ahead (the Waffle's is 0.064 m back), a described robot was its bounding box and a
+    holonomic robot differential; now the robot is what the same hello gives with a map."""
+    from rei.artifacts.world import CircleFootprint, footprint_polygon
+    from rei.sut.client import ControllerSut, Session
+
+    robot = {"name": "bot", "footprint": [0.34, 0.34], "max_linear": 0.3, "max_angular": 2.0, "drive": "holonomic",
+             "max_lateral": 0.3, "outline": protocol.outline(CircleFootprint(0.0, 0.0, 0.17)),
+             "lidar": {"beams": 360, "range_min": 0.12, "range_max": 3.5, "rate": 10.0, "x": -0.064, "y": 0.01,
+                       "yaw": 0.5}}
+    hello = {"run_id": "r", "clock": "lockstep", "control_rate": 10.0, "deadline": 10.0, "start": [0.5, 0.5, 0.0],
+             "robot": robot, "goals": 1, "map": None}
+    controller = _Keeps()
+    ControllerSut(controller).on_start(Session.from_hello(hello))
+    kept = controller.static_map
+    assert kept is not None and kept.obstacles == ()
+    assert kept.robot_size == (0.34, 0.34) and kept.lidar == (-0.064, 0.01, 0.5) and kept.holonomic
+    assert kept.outline == footprint_polygon(CircleFootprint(0.0, 0.0, 0.17))
+    with_map = protocol.read_static_map({**hello, "map": {"bounds": [0, 0, 4, 4], "obstacles": []}})
+    assert with_map is not None
+    assert (kept.robot_size, kept.lidar, kept.outline, kept.holonomic) == (
+        with_map.robot_size, with_map.lidar, with_map.outline, with_map.holonomic)
 
 
 def test_statuses_follow_the_action_server_s_states() -> None:

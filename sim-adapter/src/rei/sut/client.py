@@ -168,9 +168,9 @@ class ControllerSut(SystemUnderTest):
             if self.needs_map:
                 raise SutConnectionError("this controller plans on the static map, which the run does not offer; "
                                          "start the run with --sut-map")
-            footprint = session.robot["footprint"]
-            static_map = StaticMap(bounds=(0.0, 0.0, 0.0, 0.0), obstacles=(),
-                                   robot_size=(float(footprint[0]), float(footprint[1])))
+            # the robot as hello gives it: with the size alone the lidar sat at the centre, facing ahead, a
+            # described robot was its bounding box and a holonomic one differential
+            static_map = protocol.robot_only_map(session.robot)
         self.controller.reset(static_map, session.start)
 
     def on_goal(self, goal: NavGoal) -> None:

@@ -151,16 +151,27 @@ def read_static_map(hello: Mapping[str, Any]) -> StaticMap | None:
     data = hello.get("map")
     if data is None:
         return None
-    size_x, size_y = hello["robot"]["footprint"]
-    lidar = hello["robot"].get("lidar", {})
     return StaticMap(bounds=tuple(float(v) for v in data["bounds"]),  # type: ignore[arg-type]
                      obstacles=tuple(tuple(float(v) for v in box) for box in data["obstacles"]),  # type: ignore[misc]
-                     robot_size=(float(size_x), float(size_y)),
-                     lidar=(float(lidar.get("x", 0.0)), float(lidar.get("y", 0.0)), float(lidar.get("yaw", 0.0))),
-                     outline=_described_outline(hello["robot"].get("outline"), (float(size_x), float(size_y))),
-                     holonomic=hello["robot"].get("drive") == "holonomic",
                      polygons=tuple(None if polygon is None else tuple((float(x), float(y)) for x, y in polygon)
-                                    for polygon in data.get("polygons") or ()))
+                                    for polygon in data.get("polygons") or ()),
+                     **_robot(hello["robot"]))
+
+
+def robot_only_map(robot: Mapping[str, Any]) -> StaticMap:
+    """No static map offered: an empty one with ``hello``'s ``robot`` as read with a map (its size, lidar place,
+    outline and drive), for a controller that takes its robot from a StaticMap (``rei nav-sut`` without
+    ``--sut-map``)."""
+    return StaticMap(bounds=(0.0, 0.0, 0.0, 0.0), obstacles=(), **_robot(robot))
+
+
+def _robot(robot: Mapping[str, Any]) -> dict[str, Any]:
+    """StaticMap's fields about the robot, from ``hello``'s ``robot``."""
+    size = (float(robot["footprint"][0]), float(robot["footprint"][1]))
+    lidar = robot.get("lidar", {})
+    return {"robot_size": size,
+            "lidar": (float(lidar.get("x", 0.0)), float(lidar.get("y", 0.0)), float(lidar.get("yaw", 0.0))),
+            "outline": _described_outline(robot.get("outline"), size), "holonomic": robot.get("drive") == "holonomic"}
 
 
 def _described_outline(data: Any, size: tuple[float, float]) -> tuple[tuple[float, float], ...] | None:
