@@ -158,6 +158,20 @@ def test_occlusion_reads_its_range_on_the_sector_only() -> None:
     assert np.all(np.isinf(far[90:101])) and far[89] == _scan()[89]
 
 
+@pytest.mark.parametrize(("spec", "jumps"), [
+    ("odometry:jump,dx=1,period=2,duty=100%", [0.0, 2.0, 4.0, 6.0]),  # before: at 0 s only
+    ("pose:kidnap,dx=1,from=0.5,period=2,pulse=1.999", [0.5, 2.5, 4.5, 6.5]),  # a gap no step falls in
+    ("odometry:jump,dx=1,from=1,period=2,pulse=1", [1.0, 3.0, 5.0]),
+])
+def test_a_jump_or_kidnap_acts_at_every_pulse_s_start_as_its_begin_event_says(spec: str, jumps: list[float]) -> None:
+    schedule = parse_faults(spec)
+    motion = schedule.motion()
+    acted = [n / 240 for n in range(240 * 7) if motion.jumps(n / 240) or motion.kidnaps(n / 240)]
+    assert [round(t, 6) for t in acted] == jumps
+    clock = FaultClock(schedule)
+    assert [round(e.t, 6) for e in clock.due(6.99) if e.begin] == jumps
+
+
 def test_an_occlusion_of_a_whole_turn_hides_every_beam() -> None:
     # before: the span's remainder, 0, left one beam occluded
     for angles in ("0..360", "-180..180", "10..400"):
@@ -239,14 +253,17 @@ def test_a_laser_fault_object_is_a_run_long_schedule() -> None:
 ])
 def test_a_window_answers_between_edges_as_its_timing_does_at_every_step(timing: Timing) -> None:
     """Window works its state out only near edges; stepped at 240 Hz it must answer active/began exactly as asking
-    the timing at every step does (a window that began: active now, not at the step before)."""
-    window, was = Window(timing), False
+    the timing at every step does (a window that began: active now, and not at the step before or a BEGIN edge
+    passed since: pulses as wide as their period begin anew at each period, as their events say)."""
+    begins = [e for e, begin in itertools.takewhile(lambda edge: edge[0] < 60.0, timing.edges()) if begin]
+    window, was, before = Window(timing), False, -math.inf
     for n in range(240 * 40):
         t = n / 240
         window.at(t)
         active = timing.active(t)
-        assert (window.active, window.began) == (active, active and not was), (n, t)
-        was = active
+        anew = any(before + 1e-9 < e <= t + 1e-9 for e in begins)
+        assert (window.active, window.began) == (active, active and (not was or anew)), (n, t)
+        was, before = active, t
     edges = [e for e, _ in itertools.takewhile(lambda edge: edge[0] < 60.0, timing.edges())]
     for t in [*np.linspace(0.0, 40.0, 997), *(e + d for e in edges if e < 40.0 for d in (0.0, -1e-12))]:
         following = min((e for e in edges if e > t), default=math.inf)

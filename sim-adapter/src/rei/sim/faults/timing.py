@@ -64,6 +64,12 @@ class Timing:
             return True
         return (t - self.start + EPS) % self.period < self.pulse
 
+    def pulse_number(self, t: float) -> int:
+        """The number of the pulse ``t`` falls in (0 without a pulse train), counted as :meth:`active` counts."""
+        if self.period is None:
+            return 0
+        return int(divmod(t - self.start + EPS, self.period)[0])
+
     def edges(self) -> Iterator[tuple[float, bool]]:
         """The window's edges in time order, ``(t, True)`` where it begins and ``(t, False)`` where it ends; none
         for a whole-run fault, endless for a pulse train without ``to``."""
@@ -118,10 +124,11 @@ class Timing:
 class Window:
     """A timing as a run's time passes (asked at times that never decrease): whether it is ``active`` and whether it
     ``began`` at the time last asked, for the kinds that act once a window (a freeze's held scan, a jump, a
-    kidnap). Between edges it answers from what it worked out last: the motion's faults ask at every physics
-    step."""
+    kidnap): active now and not when last asked, or in a pulse other than then (a pulse as wide as its period,
+    or one whose gap no step falls in, begins anew as its BEGIN event says). Between edges it answers from what
+    it worked out last: the motion's faults ask at every physics step."""
 
-    __slots__ = ("_t", "active", "began", "timing", "until")
+    __slots__ = ("_pulse", "_t", "active", "began", "timing", "until")
 
     def __init__(self, timing: Timing) -> None:
         self.timing = timing
@@ -129,6 +136,7 @@ class Window:
         self.began = False
         self.until = -math.inf  # from AHEAD before this time on, the state is worked out again
         self._t = -math.inf
+        self._pulse = -1
 
     def at(self, t: float) -> None:
         """Move to ``t``: ``active`` and ``began`` then answer for it."""
@@ -139,8 +147,9 @@ class Window:
             self.began = False
             return
         active = self.timing.active(t)
-        self.began = active and not self.active
-        self.active = active
+        pulse = self.timing.pulse_number(t)
+        self.began = active and (not self.active or pulse != self._pulse)
+        self.active, self._pulse = active, pulse
         self.until = self.timing.next_edge(t)
 
 
