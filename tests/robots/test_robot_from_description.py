@@ -199,6 +199,14 @@ BAD = {
                    '  <joint name="j" type="fixed"><parent link="base_footprint"/><child link="base_scan"/>'
                    '<origin xyz="0 0 0.02"/></joint>\n</robot>\n'),
                   "the lidar's link base_scan is 0.0200 m above base_footprint"),
+    # no wheel joints: the default wheels, 0.287 m apart, stuck out of the 0.14 m wide body, and pybullet's
+    # contacts with them were collisions 7 cm from the outline
+    "wheels-outside": (('<robot name="r">\n  <link name="base_footprint">\n'
+                        '    <collision><origin xyz="0 0 0.08"/><geometry><box size="0.3 0.14 0.12"/></geometry>'
+                        '</collision></link>\n  <link name="base_scan"/>\n'
+                        '  <joint name="j" type="fixed"><parent link="base_footprint"/><child link="base_scan"/>'
+                        '<origin xyz="0 0 0.17"/></joint>\n</robot>\n'),
+                       "the simulator's wheels (radius 0.033 m, 0.287 m apart"),
 }
 
 
@@ -237,7 +245,7 @@ def test_a_warm_generator_reads_a_description_again_when_a_file_it_includes_chan
                     '  mission M { goto F_1_0 goto F_3_1 }\n  monitor { close 0.25 collision 0.01 }\n}\n',
                     encoding="utf-8")
     with JarServer("cli", tmp_path / "server.log") as server:
-        for i, radius in enumerate(("0.15", "0.25", "0.2")):
+        for i, radius in enumerate(("0.2", "0.25", "0.22")):
             body.write_text('<robot xmlns:xacro="http://ros.org/wiki/xacro">'
                             f'<xacro:property name="radius" value="{radius}"/></robot>\n', encoding="utf-8")
             out = tmp_path / f"out{i}"

@@ -106,3 +106,48 @@ def test_for_the_generator_a_lidar_link_on_the_floor_is_an_error(tmp_path: Path,
     assert not urdf_out.exists()
     assert main(["robot", str(BURGER), "--lidar", "base_scan", "--for-generator", str(urdf_out)]) == 0
     assert capsys.readouterr().out.splitlines()[2] == "lidar -0.032 0.0 0.182 0.0"
+
+
+# A narrow robot whose wheel joints are not read (their collision shapes are meshes that are not there): the
+# simulator's wheels are then the entry's or the defaults, 0.287 m apart, 7 cm outside its 0.14 m wide body.
+NARROW = """<robot name="narrow">
+  <link name="base_footprint"><collision><origin xyz="0 0 0.08"/><geometry><box size="0.3 0.14 0.12"/></geometry>
+  </collision></link>
+  <link name="wheel_left_link"><collision><geometry><mesh filename="package://gone/wheel.stl"/></geometry>
+  </collision></link>
+  <joint name="wheel_left_joint" type="continuous"><parent link="base_footprint"/><child link="wheel_left_link"/>
+    <origin xyz="0 0.08 0.033" rpy="-1.5708 0 0"/><axis xyz="0 0 1"/></joint>
+  <link name="laser"/>
+  <joint name="laser_joint" type="fixed"><parent link="base_footprint"/><child link="laser"/>
+    <origin xyz="0 0 0.17"/></joint>
+</robot>
+"""
+
+
+def test_for_the_generator_wheels_outside_the_footprint_are_an_error(tmp_path: Path,
+                                                                     capsys: pytest.CaptureFixture[str]) -> None:
+    urdf = tmp_path / "narrow.urdf"
+    urdf.write_text(NARROW, encoding="utf-8")
+    out = tmp_path / "out.urdf"
+    assert main(["robot", str(urdf), "--lidar", "laser", "--wheels", "0.033", "0.287", "--for-generator",
+                 str(out)]) == 1
+    err = capsys.readouterr().err
+    assert err.startswith(f"rei: error: {urdf}: the simulator's wheels (radius 0.033 m, 0.287 m apart: the "
+                          "catalogue entry's 'wheels' or the defaults, as the description's wheels were not read: "
+                          "no wheel joint"), err
+    assert "reach outside the robot's footprint (y -0.0700 .. 0.0700 m)" in err
+    # 0.12 apart: the wheels' outer faces at 0.069, inside
+    assert main(["robot", str(urdf), "--lidar", "laser", "--wheels", "0.033", "0.12", "--for-generator",
+                 str(out)]) == 0
+    capsys.readouterr()
+    # a description whose wheels are read keeps them, whatever the entry says
+    assert main(["robot", str(BURGER), "--lidar", "base_scan", "--wheels", "0.033", "0.287", "--for-generator",
+                 str(out)]) == 0
+    assert "drive 0.16" in capsys.readouterr().out
+
+
+def test_the_wheel_width_checked_is_the_simulator_s() -> None:
+    from rei.cli.robot import SIM_WHEEL_WIDTH
+    from rei.sim.robot_model import WHEEL_WIDTH
+
+    assert SIM_WHEEL_WIDTH == WHEEL_WIDTH

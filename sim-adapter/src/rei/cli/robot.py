@@ -22,6 +22,8 @@ from rei.cli.errors import EXIT_INVALID, EXIT_OK, CommandError
 
 #: The lowest lidar a described robot may have, m: a box robot's least height (the language's outOfRange rule).
 MIN_LIDAR_HEIGHT = 0.05
+#: The simulator's wheels' width, m: rei.sim.robot_model.WHEEL_WIDTH (not imported here: it imports pybullet).
+SIM_WHEEL_WIDTH = 0.018
 
 
 def register(subparsers: argparse._SubParsersAction[Any]) -> None:
@@ -33,6 +35,9 @@ def register(subparsers: argparse._SubParsersAction[Any]) -> None:
                         help="a xacro argument, as on xacro's command line (repeatable); VALUE may be empty")
     parser.add_argument("--lidar", metavar="LINK", help="the lidar's link (e.g. base_scan)")
     parser.add_argument("--json", action="store_true", help="print one JSON object instead of text")
+    parser.add_argument("--wheels", nargs=2, type=float, metavar=("RADIUS", "SEPARATION"),
+                        help="with --for-generator: the catalogue entry's wheels (or the defaults), the simulator's "
+                        "when the description has no wheel joints; they must lie within the footprint")
     parser.add_argument("--for-generator", metavar="URDF_OUT", type=Path,
                         help="what the generator of world.json reads (lines 'footprint JSON', 'bounds XMIN YMIN XMAX "
                         "YMAX', 'lidar X Y Z YAW', 'drive SEPARATION RADIUS' or 'drive none', then 'source PATH' for "
@@ -59,7 +64,7 @@ def run(args: argparse.Namespace) -> int:
         print(json.dumps(robot.to_json(), indent=2))
         return EXIT_OK
     if args.for_generator is not None:
-        return _for_generator(robot, args.for_generator)
+        return _for_generator(robot, args.for_generator, args.wheels)
     for warning in robot.warnings:
         print(f"rei: warning: {warning}", file=sys.stderr)
     footprint = robot.footprint
@@ -88,9 +93,10 @@ def run(args: argparse.Namespace) -> int:
     return EXIT_OK
 
 
-def _for_generator(robot: Any, urdf_out: Path) -> int:
+def _for_generator(robot: Any, urdf_out: Path, wheels: list[float] | None = None) -> int:
     """Lines of numbers rather than JSON: the Java generator reads them without a JSON library. ``repr`` keeps
-    every float exact; the footprint is JSON the generator writes into world.json as it is."""
+    every float exact; the footprint is JSON the generator writes into world.json as it is. ``wheels``: the entry's
+    radius and separation, the simulator's wheels when the description's are not read."""
     if robot.lidar is None:
         raise CommandError(f"{robot.path}: the lidar's link is not named", exit_code=EXIT_INVALID)
     if not robot.lidar.z >= MIN_LIDAR_HEIGHT:
@@ -100,6 +106,8 @@ def _for_generator(robot: Any, urdf_out: Path) -> int:
                            f"{robot.base_link}: REI's robot reaches from the floor up to its lidar and is at least "
                            f"{MIN_LIDAR_HEIGHT} m high (is {robot.lidar.link} the lidar's own link?)",
                            exit_code=EXIT_INVALID)
+    if robot.drive is None and wheels is not None:
+        _wheels_within(robot, *wheels)
     try:
         urdf_out.write_text(robot.urdf, encoding="utf-8")
     except OSError as error:
@@ -114,3 +122,29 @@ def _for_generator(robot: Any, urdf_out: Path) -> int:
     for warning in robot.warnings:
         print(f"rei: warning: {warning}", file=sys.stderr)
     return EXIT_OK
+
+
+def _wheels_within(robot: Any, radius: float, separation: float) -> None:
+    """The simulator puts two wheels on the origin's axle; with the description's wheel joints not read, they are
+    the entry's or the defaults (0.287 m apart), and wheels outside the footprint touch furniture the monitor sees
+    the outline clear of (a collision 7 cm away) and stop the robot there."""
+    from rei.robots import Circle
+
+    footprint = robot.footprint
+    outer, inner = separation / 2 + SIM_WHEEL_WIDTH / 2, max(separation / 2 - SIM_WHEEL_WIDTH / 2, 0.0)
+    corners = [(x, y) for x in (-radius, radius) for y in (-outer, -inner, inner, outer)]
+    slack = 1e-6
+    if isinstance(footprint, Circle):
+        inside = all(math.hypot(x - footprint.x, y - footprint.y) <= footprint.radius + slack for x, y in corners)
+    else:
+        ring = list(footprint.points)
+        inside = all(((x1 - x0) * (y - y0) - (y1 - y0) * (x - x0)) / math.hypot(x1 - x0, y1 - y0) >= -slack
+                     for x, y in corners for (x0, y0), (x1, y1) in zip(ring, ring[1:] + ring[:1], strict=True))
+    if not inside:
+        why = next((m[len("drive: "):] for m in robot.missing if m.startswith("drive: ")), "not read")
+        _, ymin, _, ymax = footprint.bounds
+        raise CommandError(f"{robot.path}: the simulator's wheels (radius {radius:g} m, {separation:g} m apart: the "
+                           "catalogue entry's 'wheels' or the defaults, as the description's wheels were not read: "
+                           f"{why}) reach outside the robot's footprint (y {ymin:.4f} .. {ymax:.4f} m), where they "
+                           "would touch what the monitor sees the outline clear of: give the entry 'wheels RADIUS "
+                           "apart SEPARATION' within it", exit_code=EXIT_INVALID)

@@ -69,6 +69,9 @@ public record RobotDescription(String footprintJson, double xmin, double ymin, d
 			args.add("--arg");
 			args.add(type.getDescriptionArgNames().get(i) + ":=" + type.getDescriptionArgValues().get(i));
 		}
+		// the simulator's wheels when the description's are not read: the reader checks they lie in the footprint
+		args.addAll(List.of("--wheels", Double.toString(type.getWheelRadius()),
+				Double.toString(type.getWheelSeparation())));
 		List<Object> key = List.of(file.toAbsolutePath().normalize(), args, String.valueOf(lidar));
 		Read known = READ.get(key);
 		if (known == null || !known.fresh()) {
