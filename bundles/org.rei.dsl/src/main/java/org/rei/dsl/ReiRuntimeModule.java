@@ -11,6 +11,7 @@ import org.eclipse.xtext.validation.CompositeEValidator;
 import com.google.inject.Binder;
 import com.google.inject.name.Names;
 import org.eclipse.xtext.linking.ILinkingDiagnosticMessageProvider;
+import org.eclipse.xtext.parser.antlr.ISyntaxErrorMessageProvider;
 import org.eclipse.xtext.resource.DerivedStateAwareResource;
 import org.eclipse.xtext.resource.DerivedStateAwareResourceDescriptionManager;
 import org.eclipse.xtext.resource.IDerivedStateComputer;
@@ -21,6 +22,7 @@ import org.rei.dsl.conversion.ReiValueConverters;
 import org.rei.dsl.derived.RoomDerivedStateComputer;
 import org.rei.dsl.documentation.ReiDocumentationProvider;
 import org.rei.dsl.documentation.ReiLocationInFileProvider;
+import org.rei.dsl.parser.ReiSyntaxErrorMessageProvider;
 import org.rei.dsl.scoping.ReiLinkingDiagnosticMessageProvider;
 
 /** Guice bindings of the REI language (runtime, standalone and language server alike). */
@@ -49,6 +51,11 @@ public class ReiRuntimeModule extends AbstractReiRuntimeModule {
 	// Linking errors already say which reference is unresolved; EMF's generic proxy check would repeat them.
 	public void configureUseEObjectValidator(Binder binder) {
 		binder.bindConstant().annotatedWith(Names.named(CompositeEValidator.USE_EOBJECT_VALIDATOR)).to(false);
+	}
+
+	// A unit after a number, a part of the test case out of its place: said so, not as an unexpected token.
+	public Class<? extends ISyntaxErrorMessageProvider> bindISyntaxErrorMessageProvider() {
+		return ReiSyntaxErrorMessageProvider.class;
 	}
 
 	public Class<? extends ILinkingDiagnosticMessageProvider> bindILinkingDiagnosticMessageProvider() {
