@@ -207,6 +207,14 @@ BAD = {
                         '  <joint name="j" type="fixed"><parent link="base_footprint"/><child link="base_scan"/>'
                         '<origin xyz="0 0 0.17"/></joint>\n</robot>\n'),
                        "the simulator's wheels (radius 0.033 m, 0.287 m apart"),
+    # the catalogue's `arg namespace ""` for a file that declares `prefix`: generated as if not given
+    "undeclared-arg": (('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                        '  <xacro:arg name="prefix" default=""/>\n  <link name="$(arg prefix)base_footprint">\n'
+                        '    <collision><origin xyz="0 0 0.1"/><geometry><box size="0.4 0.4 0.2"/></geometry>'
+                        '</collision></link>\n  <link name="$(arg prefix)base_scan"/>\n'
+                        '  <joint name="j" type="fixed"><parent link="$(arg prefix)base_footprint"/>'
+                        '<child link="$(arg prefix)base_scan"/><origin xyz="0 0 0.2"/></joint>\n</robot>\n'),
+                       "xacro argument 'namespace' is not declared by the file (it declares: prefix)"),
 }
 
 

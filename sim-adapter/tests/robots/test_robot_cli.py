@@ -151,3 +151,13 @@ def test_the_wheel_width_checked_is_the_simulator_s() -> None:
     from rei.sim.robot_model import WHEEL_WIDTH
 
     assert SIM_WHEEL_WIDTH == WHEEL_WIDTH
+
+
+def test_for_the_generator_an_undeclared_xacro_argument_is_an_error(tmp_path: Path,
+                                                                    capsys: pytest.CaptureFixture[str]) -> None:
+    # `rei robot` warns (above); a catalogue's misspelt argument changed nothing, silently: the frames kept no prefix
+    out = tmp_path / "out.urdf"
+    assert main(["robot", str(BURGER), "--arg", "namespce:=tb3/", "--lidar", "base_scan", "--for-generator",
+                 str(out)]) == 1
+    assert capsys.readouterr().err == (f"rei: error: {BURGER}: xacro argument 'namespce' is not declared by the file "
+                                       "(it declares: namespace)\n")

@@ -400,3 +400,10 @@ def test_sources_are_the_description_its_xacro_includes_and_its_collision_meshes
                                          "</link></robot>")
     robot = load_description(path)
     assert robot.sources == (path, tmp_path / "props.xacro", tmp_path / "mesh" / "body.stl")
+
+
+def test_a_lidar_link_missing_for_a_misspelt_argument_says_so() -> None:
+    with pytest.raises(DescriptionError) as caught:
+        load_description(BURGER, {"namespce": "tb3/"}, lidar="tb3/base_scan")
+    assert str(caught.value) == (f"{BURGER}: no link named 'tb3/base_scan' for the lidar; did you mean 'base_scan'?; "
+                                 "xacro argument 'namespce' is not declared by the file (it declares: namespace)")

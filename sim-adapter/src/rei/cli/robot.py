@@ -108,6 +108,11 @@ def _for_generator(robot: Any, urdf_out: Path, wheels: list[float] | None = None
                            exit_code=EXIT_INVALID)
     if robot.drive is None and wheels is not None:
         _wheels_within(robot, *wheels)
+    # `rei robot` warns; a catalogue's argument the description never reads is a typo that changes nothing (an
+    # `arg namespce` left every frame without its prefix), and a generator's warnings reach nobody
+    undeclared = [w for w in robot.warnings if w.startswith("xacro argument '")]
+    if undeclared:
+        raise CommandError(f"{robot.path}: {undeclared[0]}", exit_code=EXIT_INVALID)
     try:
         urdf_out.write_text(robot.urdf, encoding="utf-8")
     except OSError as error:

@@ -222,8 +222,11 @@ def load_description(path: Path | str, args: Mapping[str, str] | None = None,
         missing.append("lidar: no link named as the lidar" + (f" (candidates: {', '.join(hint)})" if hint else ""))
     elif lidar not in links:
         close = difflib.get_close_matches(lidar, list(links), n=1, cutoff=0.6)
+        # a misspelt argument (namespce) is why a prefixed name is not there: say so beside the link
+        undeclared = [w for w in warnings if w.startswith("xacro argument '")]
         raise DescriptionError(path, f"no link named '{lidar}' for the lidar"
-                                     + (f"; did you mean '{close[0]}'?" if close else f" (links: {', '.join(links)})"))
+                                     + (f"; did you mean '{close[0]}'?" if close else f" (links: {', '.join(links)})")
+                                     + "".join(f"; {w}" for w in undeclared))
     else:
         lidar_pose = _lidar_pose(lidar, frames[lidar])
     drive, why = _drive(robot, frames, links)
