@@ -309,8 +309,13 @@ def _expand(path: Path, args: dict[str, str], warnings: list[str], shown: Path |
         detail = " ".join(detail.split())
         expression = re.search(r"when evaluating expression '(.*)'", detail)
         argument = re.search(r"Undefined substitution argument (\S+)", detail)
+        missing = re.match(r"No such file or directory: (\S+)", detail)
         line = None
-        if expression:
+        if missing:
+            # xacro says the path twice (its message and the OSError's); the line is the include's
+            detail = f"the included file {missing.group(1)} is not there"
+            line = _line_of(where, rf"<xacro:include\s[^>]*{re.escape(Path(missing.group(1)).name)}")
+        elif expression:
             # inside its ${...} first: the bare text ('a', 'width') may stand in any name or word before it
             line = _line_of(where, rf"\$\{{\s*{re.escape(expression.group(1))}\s*\}}") or _line_of(
                 where, re.escape(expression.group(1)))
