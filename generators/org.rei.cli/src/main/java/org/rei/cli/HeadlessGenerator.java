@@ -24,12 +24,14 @@ import org.eclipse.xtext.validation.IResourceValidator;
 import org.eclipse.xtext.validation.Issue;
 import org.rei.catalogue.Catalogue;
 import org.rei.catalogue.ObjectType;
+import org.rei.catalogue.RobotType;
 import org.rei.context.TestCase;
 import org.rei.context.layout.LayoutProblem;
 import org.rei.dsl.ReiStandaloneSetup;
 import org.rei.generator.ArtifactGenerator;
 import org.rei.generator.GenerationException;
 import org.rei.generator.GeneratorOptions;
+import org.rei.generator.RobotDescription;
 
 import com.google.inject.Injector;
 
@@ -89,7 +91,9 @@ public class HeadlessGenerator {
 
 	/**
 	 * Validates a catalogue file and describes its types as JSON for tools that furnish rooms with them
-	 * ({@code rei gen-rooms --catalogue}): name, category, shape, size [x, y, height], mass, colour.
+	 * ({@code rei gen-rooms --catalogue}): name, category, shape, size [x, y, height], mass, colour. A robot read from
+	 * its description: the rectangle centred on its origin that holds its footprint, and its lidar's height (a
+	 * description that does not read is an error at its entry).
 	 */
 	public CatalogueResult describeCatalogue(Path file) {
 		XtextResource resource = load(file);
@@ -105,15 +109,31 @@ public class HeadlessGenerator {
 		String separator = "";
 		for (ObjectType type : catalogue.getOwnedTypes()) {
 			double[] size = { type.getSizeX(), type.getSizeY() };
+			double height = type.getSizeZ();
 			if (org.rei.catalogue.util.Polygons.isPolygon(type)) { // a polygon by its bounding box, which holds it
 				double[] b = org.rei.catalogue.util.Polygons.bounds(org.rei.catalogue.util.Polygons.points(type));
 				size = new double[] { b[2] - b[0], b[3] - b[1] };
+			}
+			if (type instanceof RobotType robot && robot.getDescription() != null) {
+				// a described robot has no box (its sizes were the metamodel's 1 x 1 m): the rectangle centred on
+				// its origin that holds its footprint, as the rooms' check takes a robot, and its lidar's height
+				try {
+					RobotDescription d = RobotDescription.read(robot);
+					size = new double[] { 2 * Math.max(-d.xmin(), d.xmax()), 2 * Math.max(-d.ymin(), d.ymax()) };
+					height = d.lidarZ();
+				} catch (GenerationException e) {
+					List<Diagnostic> all = new ArrayList<>(diagnostics);
+					for (LayoutProblem problem : e.problems()) {
+						all.add(at(file, problem.element(), problem.feature(), problem.message(), problem.code()));
+					}
+					return new CatalogueResult(all, null);
+				}
 			}
 			json.append(separator).append("\n  {\"name\": ").append(quote(type.getName()))
 					.append(", \"category\": ").append(quote(type.getCategory().getName()))
 					.append(", \"shape\": ").append(quote(type.getShape().getName()))
 					.append(", \"size\": [").append(size[0]).append(", ").append(size[1]).append(", ")
-					.append(type.getSizeZ()).append("], \"mass\": ").append(type.getMass())
+					.append(height).append("], \"mass\": ").append(type.getMass())
 					.append(", \"colour\": ").append(quote(type.getColour())).append('}');
 			separator = ",";
 		}

@@ -58,7 +58,7 @@ public record RobotDescription(String footprintJson, double xmin, double ymin, d
 	}
 
 	/** The robot type's description, or a problem at its catalogue entry when it does not read. */
-	static RobotDescription read(RobotType type) throws GenerationException {
+	public static RobotDescription read(RobotType type) throws GenerationException {
 		Path file = RobotDescriptions.file(type);
 		if (file == null || !Files.isRegularFile(file)) {
 			throw problem(type, "Cannot read the robot's description '" + type.getDescription() + "': no such file");
