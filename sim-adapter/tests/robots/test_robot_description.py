@@ -417,3 +417,12 @@ def test_a_lidar_link_missing_for_a_misspelt_argument_says_so() -> None:
         load_description(BURGER, {"namespce": "tb3/"}, lidar="tb3/base_scan")
     assert str(caught.value) == (f"{BURGER}: no link named 'tb3/base_scan' for the lidar; did you mean 'base_scan'?; "
                                  "xacro argument 'namespce' is not declared by the file (it declares: namespace)")
+
+
+def test_a_joint_origin_that_is_not_finite_is_an_error_at_the_joint(tmp_path: Path) -> None:
+    # the lidar's joint: its pose went into world.json as nan
+    text = ROUND.format(wheels="").replace('<origin xyz="0.05 0 0.2"', '<origin xyz="0.05 0 nan"')
+    path = _write(tmp_path, "round.urdf", text)
+    with pytest.raises(DescriptionError) as caught:
+        load_description(path, lidar="laser")
+    assert str(caught.value) == f"{path}:8: not a valid URDF: joint 'laser_joint': its <origin> is not finite"

@@ -144,7 +144,7 @@ class RobotDescription:
     links: tuple[str, ...] = field(default=())
     #: The expanded URDF (after xacro).
     urdf: str = ""
-    #: Every file what was read depends on: the description, the files xacro included, the collision meshes read
+    #: Every file the read depends on: the description, the files xacro included, the collision meshes read
     #: (absolute). A reader that keeps what it read (the generator's JVM) reads again when one of them changes.
     sources: tuple[Path, ...] = ()
 
@@ -420,6 +420,10 @@ def _link_frames(path: Path, robot: Any, args: Mapping[str, str]) -> dict[str, n
         parent = pending.pop()
         for joint in children.get(parent, []):
             frames[joint.child] = frames[parent] @ _origin(joint.origin)
+            if not np.all(np.isfinite(frames[joint.child])):
+                # the parser takes nan and inf: they reached the lidar's pose in world.json
+                raise DescriptionError(path, f"not a valid URDF: joint '{joint.name}': its <origin> is not finite",
+                                       _line_of_name(path, joint.name, args))
             pending.append(joint.child)
     return frames
 
