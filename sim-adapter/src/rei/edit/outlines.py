@@ -4,7 +4,8 @@
 The edit engine (Java) knows such a robot type only by its description's file, xacro arguments and lidar link; the
 outline (the collision shapes projected to the floor: a polygon or a circle) is what REI's Python reader computes,
 the same one the generator writes into world.json's ``robot.footprint``. It is read once per description and kept
-while the file is unchanged: the page asks for the state after every edit.
+while the files it was read from are unchanged (the description, its xacro includes, its collision meshes): the
+page asks for the state after every edit.
 """
 
 from __future__ import annotations
@@ -13,12 +14,14 @@ import os
 from pathlib import Path
 from typing import Any
 
-_Key = tuple[str, tuple[tuple[str, str], ...], tuple[int, int]]
+_Key = tuple[str, tuple[tuple[str, str], ...]]
+#: Each file a read depends on, with its modification time and size (-1, -1: gone).
+_Stamps = tuple[tuple[Path, int, int], ...]
 
 
 class RobotOutlines:
     def __init__(self) -> None:
-        self._read: dict[_Key, dict[str, Any] | None] = {}
+        self._read: dict[_Key, tuple[_Stamps, dict[str, Any]]] = {}
 
     def of_diagram(self, diagram: dict[str, Any] | None, folder: Path) -> dict[str, Any] | None:
         """The diagram with its robot's footprint carrying ``outline`` (world.json's footprint JSON, or null for a
@@ -38,23 +41,39 @@ class RobotOutlines:
 
     def _outline(self, description: dict[str, Any]) -> dict[str, Any] | None:
         path = Path(description["file"])
-        try:
-            stat = path.stat()
-        except OSError:
+        if not path.is_file():
             return None
         args = tuple((str(k), str(v)) for k, v in (description.get("args") or {}).items())
-        key: _Key = (str(path), args, (stat.st_mtime_ns, stat.st_size))
-        if key not in self._read:
-            self._read[key] = _load(path, dict(args))
-        return self._read[key]
+        key: _Key = (str(path), args)
+        known = self._read.get(key)
+        # only the top file was stamped: an edited xacro include kept the old outline on the page
+        if known is None or known[0] != _stamps(p for p, _, _ in known[0]):
+            known = _load(path, dict(args))
+            if known is None:  # not kept: which files it would read again is not known until it reads
+                self._read.pop(key, None)
+                return None
+            self._read[key] = known
+        return known[1]
 
 
-def _load(path: Path, args: dict[str, str]) -> dict[str, Any] | None:
+def _stamps(paths: Any) -> _Stamps:
+    stamps = []
+    for path in paths:
+        try:
+            stat = path.stat()
+            stamps.append((path, stat.st_mtime_ns, stat.st_size))
+        except OSError:
+            stamps.append((path, -1, -1))
+    return tuple(stamps)
+
+
+def _load(path: Path, args: dict[str, str]) -> tuple[_Stamps, dict[str, Any]] | None:
     # xacro and the URDF parser: imported only for such a robot
     from rei.robots import DescriptionError, load_description
 
     try:
         # no lidar link: the outline does not depend on it, and a misnamed one (the validator's error) still draws
-        return load_description(path, args).footprint.to_json()
+        robot = load_description(path, args)
     except DescriptionError:
         return None
+    return _stamps(robot.sources), robot.footprint.to_json()
