@@ -66,6 +66,8 @@ MONITOR_START_TIMEOUT = 60.0
 MONITOR_DRAIN_TIMEOUT = 60.0
 #: Router deaths a run survives; one more and the run is an ERROR (a router that keeps dying is not a blip).
 MAX_ROUTER_RESTARTS = 3
+#: Seconds the mission's END signal may take to reach the evaluator after the monitor that sent it has exited.
+MONITOR_END_GRACE = 5.0
 
 
 @dataclass(frozen=True, slots=True)
@@ -209,9 +211,7 @@ class _Run:
         while sim.poll() is None:
             if self.router.poll() is not None:
                 _restart_router(self.router, evaluator, self.progress["t"])
-            # --until-end: a monitor that saw the mission's END may finish before the simulation has closed
-            if self.monitor_lost is None and monitor.poll() is not None and not (
-                    monitor.poll() == 0 and evaluator.ended):
+            if self.monitor_lost is None and monitor_lost(monitor.poll(), evaluator):
                 self.monitor_lost = f"{monitor.describe_exit()} at about {self.progress['t']:.1f} s simulated"
                 print(f"rei: the live {self.monitor_lost}; the simulation goes on and the run will be judged from "
                       "its recorded streams", flush=True)
@@ -295,6 +295,16 @@ class _Run:
                          monitor_config=self.monitor_config,
                          world=self.world, settings=VerdictSettings(humans=self.options.humans,
                                                                     laser=self.options.laser))
+
+
+def monitor_lost(code: int | None, evaluator: Any, grace: float = MONITOR_END_GRACE) -> bool:
+    """Whether a monitor that exited with ``code`` (None: it runs) before the simulation did left the run without its
+    signals. Not one that exited 0 after the mission's END (--until-end): the router delivers that END signal to
+    the evaluator a moment after the monitor has gone, so it is waited for (``grace`` seconds) before the run is
+    judged from its recording instead."""
+    if code is None:
+        return False
+    return not (code == 0 and evaluator.wait_for_end(grace))
 
 
 def _start_monitor(args: list[str], log: Path, server: Path | None) -> ManagedProcess | ServedCommand:
