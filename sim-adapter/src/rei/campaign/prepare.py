@@ -23,6 +23,8 @@ from rei.maps.references import map_path, map_reference, unescaped
 from rei.run.jvm import run_jar
 
 STAMP = ".source.sha256"
+#: The files a described robot was read from, written by the generator into the case folder (docs/artifacts.md).
+SOURCES = "robot.sources"
 
 
 @dataclass(frozen=True, slots=True)
@@ -41,7 +43,7 @@ def needs_generation(source: CaseSource, out: Path) -> bool:
     if _text_changed(source, rei):
         return True
     try:
-        return not _current(source.case_dir(out), source_digest(rei))
+        return not _current(source.case_dir(out), source_digest(rei, source.case_dir(out)))
     except OSError:
         return False  # prepare_case reports the unreadable file
 
@@ -55,20 +57,24 @@ def prepare_case(source: CaseSource, out: Path, *, server: Path | None = None) -
         assert source.text is not None
         rei.parent.mkdir(parents=True, exist_ok=True)
         rei.write_text(source.text, encoding="utf-8")
+    target = source.case_dir(out)
     try:
-        digest = source_digest(rei)
+        if _current(target, source_digest(rei, target)):
+            return Prepared(source.key, None, 0.0, False)
     except OSError as error:
         return Prepared(source.key, f"cannot read {error.filename}: {error.strerror or error}", 0.0, False)
-    target = source.case_dir(out)
-    if _current(target, digest):
-        return Prepared(source.key, None, 0.0, False)
     target.mkdir(parents=True, exist_ok=True)
     (target / STAMP).unlink(missing_ok=True)
+    (target / SOURCES).unlink(missing_ok=True)  # the generator writes it again for a described robot
     result = run_jar("cli", ["generate", str(rei), "-o", str(target), "--quiet"], target.parent / f"{source.key}.log",
                      server=server)
     if result.code != 0:
         return Prepared(source.key, f"{rei} could not be generated (exit {result.code}): {result.log_tail}",
                         result.cpu, True)
+    try:  # with the description's files, known now
+        digest = source_digest(rei, target)
+    except OSError as error:
+        return Prepared(source.key, f"cannot read {error.filename}: {error.strerror or error}", result.cpu, True)
     (target / STAMP).write_text(digest + "\n", encoding="utf-8")
     return Prepared(source.key, None, result.cpu, True)
 
@@ -88,9 +94,11 @@ def _current(target: Path, digest: str) -> bool:
 _IMPORT = re.compile(r'^\s*import\s+"((?:[^"\\]|\\.)*)"', re.MULTILINE)
 
 
-def source_digest(rei: Path) -> str:
-    """SHA-256 of the test case's text, of every catalogue it imports and of an occupancy room's map (its YAML and
-    image): a case is generated again when its catalogue or its map changed."""
+def source_digest(rei: Path, case_dir: Path | None = None) -> str:
+    """SHA-256 of the test case's text, of every catalogue it imports, of an occupancy room's map (its YAML and
+    image) and of the files its robot's description was read from when ``case_dir`` was generated (its
+    ``robot.sources``: the description, its xacro includes, its collision meshes): a case is generated again when
+    one of them changed."""
     text = rei.read_bytes()
     digest = hashlib.sha256(text)
     decoded = text.decode("utf-8", errors="replace")
@@ -103,6 +111,12 @@ def source_digest(rei: Path) -> str:
     for path in used:
         if path.is_file():  # a missing one fails the generation with the validator's message
             digest.update(b"\0" + path.read_bytes())
+    listed = case_dir / SOURCES if case_dir is not None else None
+    if listed is not None and listed.is_file():
+        for line in listed.read_text(encoding="utf-8").splitlines():
+            path = Path(line)
+            # one gone since: generated again, which then says what is missing
+            digest.update(b"\0" + path.read_bytes() if path.is_file() else b"\0gone " + line.encode())
     return digest.hexdigest()
 
 

@@ -46,6 +46,12 @@ public final class ArtifactGenerator {
 	/** The expanded URDF of a robot read from a description, in the case folder (world.json's robot.description). */
 	public static final String ROBOT_URDF = "robot.urdf";
 
+	/**
+	 * The files the description was read from (itself, what xacro included, the collision meshes), an absolute path
+	 * a line: what a campaign's resume checks besides the case and its catalogues before it keeps a generated case.
+	 */
+	public static final String ROBOT_SOURCES = "robot.sources";
+
 	private static final String TEMPLATE_FOLDER = "/org/rei/generator/templates/";
 
 	private final Map<String, EglModule> templates = new LinkedHashMap<>();
@@ -126,12 +132,16 @@ public final class ArtifactGenerator {
 		}
 		if (description != null) { // the simulator's body: the expanded description, as the case folder's own file
 			Path urdf = outputDir.resolve(ROBOT_URDF);
+			Path sources = outputDir.resolve(ROBOT_SOURCES);
 			try {
 				Files.writeString(urdf, description.urdf(), StandardCharsets.UTF_8);
+				Files.write(sources, description.sources().stream().map(p -> p.toAbsolutePath().toString()).toList(),
+						StandardCharsets.UTF_8);
 			} catch (IOException e) {
-				throw new GenerationException("cannot write " + urdf, e);
+				throw new GenerationException("cannot write " + urdf + " or " + sources, e);
 			}
 			written.add(urdf);
+			written.add(sources);
 		}
 		return written;
 	}

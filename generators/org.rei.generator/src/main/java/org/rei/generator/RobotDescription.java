@@ -33,7 +33,7 @@ import org.rei.context.layout.LayoutProblem;
  */
 public record RobotDescription(String footprintJson, double xmin, double ymin, double xmax, double ymax,
 		double lidarX, double lidarY, double lidarZ, double lidarYaw, Double wheelSeparation, Double wheelRadius,
-		String urdf) {
+		String urdf, List<Path> sources) {
 
 	/** The code of the problem a description that does not read gives. */
 	public static final String PROBLEM_CODE = "org.rei.dsl.robotDescription";
@@ -118,7 +118,8 @@ public record RobotDescription(String footprintJson, double xmin, double ymin, d
 			stamps.put(file, before);
 			lines.stream().filter(l -> l.startsWith("source ")).map(l -> Path.of(l.substring("source ".length())))
 					.forEach(source -> stamps.putIfAbsent(source, stamp(source)));
-			return new Read(parse(type, lines, Files.readString(urdfOut, StandardCharsets.UTF_8)), stamps);
+			return new Read(parse(type, lines, Files.readString(urdfOut, StandardCharsets.UTF_8),
+					List.copyOf(stamps.keySet())), stamps);
 		} catch (IOException e) {
 			throw problem(type, "Cannot run REI's description reader (" + python + " -m rei.cli robot; set REI_PYTHON "
 					+ "to the Python that has REI installed): " + e.getMessage());
@@ -135,7 +136,7 @@ public record RobotDescription(String footprintJson, double xmin, double ymin, d
 		}
 	}
 
-	private static RobotDescription parse(RobotType type, List<String> lines, String urdf)
+	private static RobotDescription parse(RobotType type, List<String> lines, String urdf, List<Path> sources)
 			throws GenerationException {
 		String footprint = null;
 		double[] bounds = null;
@@ -159,7 +160,7 @@ public record RobotDescription(String footprintJson, double xmin, double ymin, d
 			throw problem(type, "The description reader's answer lacks a line: " + lines);
 		}
 		return new RobotDescription(footprint, bounds[0], bounds[1], bounds[2], bounds[3], lidar[0], lidar[1],
-				lidar[2], lidar[3], drive == null ? null : drive[0], drive == null ? null : drive[1], urdf);
+				lidar[2], lidar[3], drive == null ? null : drive[0], drive == null ? null : drive[1], urdf, sources);
 	}
 
 	private static double[] numbers(String line, int count) {
