@@ -76,7 +76,8 @@ public class HeadlessGenerator {
 		}
 		Files.createDirectories(outputDir);
 		try {
-			return new Result(diagnostics, generator.generate(testCase, outputDir));
+			List<Path> written = generator.generate(testCase, outputDir);
+			return new Result(withDescriptionWarnings(file, testCase, diagnostics), written);
 		} catch (GenerationException e) {
 			List<Diagnostic> all = new ArrayList<>(diagnostics);
 			if (e.problems().isEmpty()) {
@@ -203,6 +204,26 @@ public class HeadlessGenerator {
 			}
 		}
 		return result;
+	}
+
+	/**
+	 * {@code diagnostics} and what the robot's description read but did not use (a visual mesh that is not there:
+	 * the simulator's body is the collision shapes), as warnings at its catalogue entry.
+	 */
+	private static List<Diagnostic> withDescriptionWarnings(Path file, TestCase testCase, List<Diagnostic> diagnostics)
+			throws GenerationException {
+		var robot = testCase.getOwnedEnvironment() == null ? null : testCase.getOwnedEnvironment().getOwnedRobot();
+		if (robot == null || !(robot.getType() instanceof RobotType type) || type.getDescription() == null) {
+			return diagnostics;
+		}
+		List<Diagnostic> all = new ArrayList<>(diagnostics);
+		for (String warning : RobotDescription.read(type).warnings()) { // read already: this generation's
+			Diagnostic error = at(file, type, null, "The robot's description: " + warning,
+					RobotDescription.PROBLEM_CODE);
+			all.add(new Diagnostic(error.file(), error.line(), error.column(), Diagnostic.Severity.WARNING,
+					error.message(), error.code()));
+		}
+		return all;
 	}
 
 	private static Diagnostic at(Path file, EObject element, EStructuralFeature feature, String message, String code) {

@@ -33,12 +33,13 @@ import org.rei.context.layout.LayoutProblem;
  */
 public record RobotDescription(String footprintJson, double xmin, double ymin, double xmax, double ymax,
 		double lidarX, double lidarY, double lidarZ, double lidarYaw, Double wheelSeparation, Double wheelRadius,
-		String urdf, List<Path> sources) {
+		String urdf, List<Path> sources, List<String> warnings) {
 
 	/** The code of the problem a description that does not read gives. */
 	public static final String PROBLEM_CODE = "org.rei.dsl.robotDescription";
 
 	private static final long TIMEOUT_SECONDS = 120;
+	private static final String WARNING = "rei: warning: ";
 	private static final Map<List<Object>, Read> READ = new ConcurrentHashMap<>();
 
 	/** A description as read, with the size and modification time of each file it was read from. */
@@ -159,8 +160,12 @@ public record RobotDescription(String footprintJson, double xmin, double ymin, d
 		if (footprint == null || bounds == null || lidar == null || (drive == null && !noDrive)) {
 			throw problem(type, "The description reader's answer lacks a line: " + lines);
 		}
+		// what the reader read but did not use (visual meshes that are not there): the generation's warnings
+		List<String> warnings = lines.stream().filter(l -> l.startsWith(WARNING))
+				.map(l -> l.substring(WARNING.length())).toList();
 		return new RobotDescription(footprint, bounds[0], bounds[1], bounds[2], bounds[3], lidar[0], lidar[1],
-				lidar[2], lidar[3], drive == null ? null : drive[0], drive == null ? null : drive[1], urdf, sources);
+				lidar[2], lidar[3], drive == null ? null : drive[0], drive == null ? null : drive[1], urdf, sources,
+				warnings);
 	}
 
 	private static double[] numbers(String line, int count) {
