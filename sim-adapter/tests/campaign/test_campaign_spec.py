@@ -203,3 +203,29 @@ def test_the_command_prints_every_mistake_on_its_own_line(tmp_path: Path, capsys
         (f"rei: error: {spec_file}:3:25: groups[0]: {tmp_path / 'nope.rei'} is neither a .rei file nor a "
          "generated case folder")]
     assert not (tmp_path / "out").exists()
+
+
+def test_every_mistake_of_a_group_s_room_settings_is_reported_at_its_value(tmp_path: Path) -> None:
+    """The generator stops at its first mistake; the spec names each setting's own, where it is written."""
+    from rei.campaign import load_spec
+
+    file = tmp_path / "c.yaml"
+    file.write_text("groups:\n"
+                    "  - name: g\n"
+                    "    rooms: {size: small, density: thick, humans: 9, count: 1}\n"
+                    "  - name: h\n"
+                    "    rooms: {size: medium, humans: two}\n"
+                    "  - name: i\n"
+                    "    rooms: {size: medium, humans: 1.5}\n")
+    with pytest.raises(SpecError) as raised:
+        load_spec(file)
+    assert str(raised.value).splitlines() == [
+        f"{file}:3:35: groups[0]: rooms: density must be one of dense, sparse, got 'thick'",
+        f"{file}:3:50: groups[0]: rooms: a small room holds 0 to 2 humans, got 9",
+        f"{file}:5:35: groups[1]: rooms: 'humans' must be an integer, got 'two'",
+        f"{file}:7:35: groups[2]: rooms: 'humans' must be an integer, got 1.5"]
+
+
+def test_humans_true_is_no_number_of_humans() -> None:
+    with pytest.raises(SpecError, match=r"'humans' must be an integer, got True"):
+        parse_spec(spec(groups=[{"name": "g", "rooms": {"size": "small", "humans": True}}]), base=EXAMPLES)

@@ -315,6 +315,10 @@ def _rooms(r: _Reader, base: Path) -> RoomSettings:
                      "file to furnish)")
     if not on_map and (r.get("floor_size") is not None or r.get("unknown_free") is not None):
         problems.add(f"{r.here()}: 'floor_size' and 'unknown_free' describe the floors of 'map': give the map too")
+    # density and humans are checked here, not only by the generator: it stops at its first mistake and takes
+    # a bool for a count (humans: true was one human) or names a Python comparison for a word
+    density = problems.read(lambda: _density(r), None)
+    humans = problems.read(lambda: _humans(r, size), None)
     count = problems.read(lambda: r.int("count", 1, minimum=1), 1)
     seed = problems.read(lambda: r.int("seed", 0, minimum=0), 0)
     floor_size = problems.read(lambda: r.number("floor_size", 1.0), 1.0)
@@ -328,13 +332,36 @@ def _rooms(r: _Reader, base: Path) -> RoomSettings:
     try:
         types = DEFAULT_TYPES if catalogue is None else room_types((base / str(catalogue)).resolve(),
                                                                     None if robot is None else str(robot))
-        settings = RoomSettings(size=size, density=r.get("density"), humans=r.get("humans"), count=count, seed=seed,
+        settings = RoomSettings(size=size, density=density, humans=humans, count=count, seed=seed,
                                 types=types, map=map_file, floor_size=floor_size, unknown_free=unknown_free,
                                 reactive=behaviour if people == "reactive" else None)
         settings.generate(1)  # checks them
     except (ValueError, TypeError, GenerationError, MapError) as error:
         raise SpecError(f"{r.named_in(str(error))}: {error}") from None
     return settings
+
+
+def _density(r: _Reader) -> str | None:
+    from rei.rooms import DENSITIES
+
+    if r.get("density") is None:
+        return None
+    density: str = r.str("density", None)
+    if density not in DENSITIES:
+        raise SpecError(f"{r.at('density')}: density must be one of {', '.join(DENSITIES)}, got {density!r}")
+    return density
+
+
+def _humans(r: _Reader, size: str | None) -> int | None:
+    """``humans``: a whole number from 0, at most what a room of ``size`` holds (a map room: any)."""
+    from rei.rooms import MAX_HUMANS
+
+    if r.get("humans") is None:
+        return None
+    humans = r.int("humans", 0, minimum=0)
+    if size in MAX_HUMANS and humans > MAX_HUMANS[size]:
+        raise SpecError(f"{r.at('humans')}: a {size} room holds 0 to {MAX_HUMANS[size]} humans, got {humans}")
+    return humans
 
 
 def _sut(r: _Reader, base: Path) -> ExternalSut | None:
