@@ -80,6 +80,7 @@ def run(args: argparse.Namespace) -> int:
     # Heavy imports here, so `rei --help` stays fast.
     from rei.artifacts import ArtifactError
     from rei.run import MissionRunOptions, run_mission
+    from rei.sim.people import PeopleError
     skip_exit_collection()  # `rei run` waits for this process's exit
     check_mission_options(args)
     _check_router_options(args)
@@ -111,6 +112,9 @@ def run(args: argparse.Namespace) -> int:
                                  progress=_PROGRESS[args.progress])
     except ArtifactError as error:
         raise CommandError(str(error)) from None
+    except PeopleError as error:  # a person the model refuses (where it stands, a stop off the area), a dead server
+        _clear_progress()
+        raise CommandError(str(error), EXIT_RUN_ERROR) from None
     _clear_progress()
     if result.error is not None:
         print(f"rei sim: error: {result.error}", file=sys.stderr, flush=True)
