@@ -117,3 +117,20 @@ def test_the_social_metrics_are_compared_in_their_better_direction(tmp_path: Pat
     assert by["social_time"].status is None and by["social_time"].paired.mean == 2.0
     assert by["path_irregularity_humans"].status is None  # no pair has it
     assert c.exit_code == 1
+
+
+def test_a_campaign_s_runs_are_those_it_planned_not_folders_an_edited_spec_left(tmp_path: Path) -> None:
+    """A resume whose spec dropped a repetition keeps the old run's folder; the campaign's runs.csv and summaries
+    leave it out, and so must a comparison (it was paired, and its change counted, before)."""
+    runs = {("r1", 0): {"clearance_static_min": 0.2}, ("r1", 1): {"clearance_static_min": 0.2}}
+    base = campaign(tmp_path / "a", runs)
+    cand = campaign(tmp_path / "b", {("r1", 0): {"clearance_static_min": 0.2},
+                                     ("r1", 1): {"clearance_static_min": 0.05}})
+    (cand / "campaign.json").write_text(json.dumps({"format": "rei-campaign/1", "runs": ["g__r1__base__r0"]}))
+    c = compare(base, cand)
+    assert [(b.key, k.key) for b, k in c.pairing.pairs] == [("g__r1__base__r0", "g__r1__base__r0")]
+    assert [r.key for r in c.pairing.only_baseline] == ["g__r1__base__r1"] and not c.pairing.only_candidate
+    assert c.exit_code == 0, "the left-over run's 0.15 m closer is no change of this campaign"
+    (cand / "campaign.json").write_text(json.dumps({"format": "rei-campaign/1", "runs": []}))
+    with pytest.raises(CompareError, match="0 only in the candidate"):
+        compare(base, cand)

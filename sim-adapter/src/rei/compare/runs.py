@@ -6,7 +6,8 @@ A side is a campaign folder (``OUT/runs/<key>/result.json``, as ``rei campaign``
 variant, seed and fault (the canonical text of the fault the run carried, rei.campaign.aggregate.fault_label,
 ``none`` without one) - the same room driven under the same conditions - so the difference of a pair is the change
 of the system under test alone: a variant whose fault changed between the two campaigns does not pair. Runs without a partner, and runs that ended in ERROR (they have no metrics) with
-their partner, are listed, never silently dropped.
+their partner, are listed, never silently dropped. A campaign's runs are the ones its last invocation planned
+(``campaign.json``): a run folder that a resume with an edited spec left behind is not one of them.
 """
 
 from __future__ import annotations
@@ -57,6 +58,9 @@ def load_side(folder: Path) -> list[Run]:
         raise CompareError(f"{folder}: no such folder")
     runs_dir = folder / "runs"
     results = sorted(runs_dir.glob(f"*/{RESULT_FILE}")) if runs_dir.is_dir() else []
+    planned = _planned(folder)
+    if planned is not None:  # a folder left by a variant, group or repetition the spec no longer has is no run of it
+        return [_campaign_run(path) for path in results if path.parent.name in planned]
     if results:
         return [_campaign_run(path) for path in results]
     if (folder / "summary.json").is_file():
@@ -91,6 +95,18 @@ def _campaign_run(path: Path) -> Run:
                    fault=fault_label(data.get("fault")))
     except (KeyError, TypeError, ValueError) as error:
         raise CompareError(f"{path}: not a campaign run's result ({error})") from None
+
+
+def _planned(folder: Path) -> frozenset[str] | None:
+    """The keys of the runs the campaign's last invocation planned (``campaign.json``'s ``runs``, the runs its
+    ``runs.csv`` and summaries are made of); None without that file (a campaign still in its first invocation)."""
+    path = folder / "campaign.json"
+    if not path.is_file():
+        return None
+    runs = _json(path).get("runs")
+    if not isinstance(runs, list):
+        raise CompareError(f"{path}: 'runs' is not a list of run keys")
+    return frozenset(map(str, runs))
 
 
 def _single_run(folder: Path) -> Run:
