@@ -55,3 +55,17 @@ def test_a_key_given_twice_does_not_hide_the_rest(folder: Path) -> None:
     text = "case: case.rei\nparameters: [{seed: [0, 9]}]\nobjectives: [utility]\nseed: 1\nseed: 2\nbudget: 0\n"
     assert error_of(text, folder).splitlines() == ["s.yaml:5:1: 'seed' is given twice",
                                                    "s.yaml:6:9: 'budget' must be >= 1, got 0"]
+
+
+def test_a_range_without_a_finite_end_and_a_negative_seed_are_refused_at_the_range(tmp_path: Path) -> None:
+    """Both were taken: an end at .inf stopped the search at its first candidate blaming the room editor's engine,
+    a seed below 0 made every run crash in its random generators."""
+    import shutil
+
+    shutil.copy(Path(__file__).resolve().parents[3] / "examples" / "search" / "crossing.rei", tmp_path)
+    text = ("case: crossing.rei\nparameters:\n  - {human: walker, start: [0, .inf]}\n  - {seed: [-5, 3]}\n"
+            "  - {object: bin1, yaw: [-.inf, 0]}\nobjectives: [utility]\n")
+    assert error_of(text, tmp_path).splitlines() == [
+        "s.yaml:3:28: a range's ends must be finite numbers, got [0, inf]",
+        "s.yaml:4:12: a run's seed is 0 or more, got [-5, 3]",
+        "s.yaml:5:25: a range's ends must be finite numbers, got [-inf, 0]"]

@@ -48,6 +48,7 @@ from __future__ import annotations
 
 import dataclasses
 import difflib
+import math
 import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -447,7 +448,10 @@ def _parameter(item: yaml.Node, loc: _Located, problems: located_yaml.Collector)
     if target == "furniture":
         return [_furniture(name_value, name_node, entry, item, loc)]
     if target == "seed":
-        return [Parameter("seed", "", "value", _range(name_value, name_node, loc, integer=True), loc.at(item))]
+        seeds = _range(name_value, name_node, loc, integer=True)
+        if seeds.low < 0:  # the run's random generators take none below 0: every run would crash
+            raise SpecError(f"{loc.at(name_node)}: a run's seed is 0 or more, got [{seeds.low:g}, {seeds.high:g}]")
+        return [Parameter("seed", "", "value", seeds, loc.at(item))]
     if target == "fault":
         return _fault(name_value, name_node, known, entry, item, loc, problems, any_key=bool(props))
     named = True
@@ -769,6 +773,8 @@ def _range(value: Any, node: yaml.Node, loc: _Located, integer: bool = False) ->
         what = "integers" if integer else "numbers"
         raise SpecError(f"{loc.at(node)}: expected a range [low, high] of two {what}, got {value!r}")
     low, high = value
+    if not all(math.isfinite(v) for v in value):  # an end at .inf reached the room editor's engine as no JSON
+        raise SpecError(f"{loc.at(node)}: a range's ends must be finite numbers, got [{low}, {high}]")
     if not low < high:
         raise SpecError(f"{loc.at(node)}: the range's low end must be below its high end, got [{low}, {high}]")
     return Range(float(low), float(high), integer)
