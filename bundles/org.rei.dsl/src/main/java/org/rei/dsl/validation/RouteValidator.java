@@ -10,6 +10,8 @@ import java.util.Map;
 import java.util.Set;
 
 import org.eclipse.xtext.validation.Check;
+import org.rei.catalogue.ObjectType;
+import org.rei.catalogue.Shape;
 import org.rei.context.ContextPackage;
 import org.rei.context.Environment;
 import org.rei.context.Floor;
@@ -18,6 +20,8 @@ import org.rei.context.PhysicalObject;
 import org.rei.context.Route;
 import org.rei.context.RouteStop;
 import org.rei.context.StaticObject;
+import org.rei.context.layout.FloorLayout;
+import org.rei.dsl.derived.RoomDesugaring;
 
 /**
  * Routes of people who see the robot: a walking speed a person can walk, no time before the run, stops a person
@@ -103,6 +107,85 @@ public class RouteValidator extends ReiCheckBase {
 						+ "': expected a free floor", stop, ContextPackage.Literals.ROUTE_STOP__FLOOR,
 						ReiIssueCodes.STOP_OCCUPIED);
 			}
+		}
+	}
+
+	/**
+	 * No stop under furniture that stands on another floor and reaches over this floor's centre (a banquet table 2.6
+	 * m long over the next floors): the person's place is the floor's centre, off the walkable area the simulation's
+	 * people have, and the run would stop at its start with "ann stands at (3.50, 2.50), outside the walkable area".
+	 * The footprints are those the crowds' places keep clear of (PeoplePlacement): rectangles turned by their yaw,
+	 * discs; furniture on a polygon is left to the run, whose open corner a person may stand in.
+	 */
+	@Check
+	public void checkStopsNotUnderFurniture(Human human) {
+		Route route = human.getOwnedRoute();
+		if (route == null || !(human.eContainer() instanceof Environment env)) {
+			return;
+		}
+		FloorLayout layout = layout(env);
+		for (RouteStop stop : route.getOwnedStops()) {
+			Floor floor = stop.getFloor();
+			if (floor == null || floor.eIsProxy() || layout.cellOf(floor).isEmpty()) {
+				continue;
+			}
+			double[] centre = layout.centreOf(floor);
+			for (PhysicalObject object : env.getOwnedObjects()) {
+				if (covers(object, floor, centre, layout)) {
+					error("Stop " + floor.getName() + " lies under '" + object.getName() + "' (on "
+							+ object.getFloor().getName() + "), which reaches over its centre: expected a floor a "
+							+ "person can stand on", stop, ContextPackage.Literals.ROUTE_STOP__FLOOR,
+							ReiIssueCodes.STOP_OCCUPIED);
+					break;
+				}
+			}
+		}
+	}
+
+	/** Whether furniture on another floor than {@code floor} covers the point {@code p}. */
+	private static boolean covers(PhysicalObject object, Floor floor, double[] p, FloorLayout layout) {
+		if (!(object instanceof StaticObject) || object.getFloor() == null || object.getFloor() == floor
+				|| object.getType() == null || object.getType().eIsProxy() || !object.getType().getVertices().isEmpty()
+				|| layout.cellOf(object.getFloor()).isEmpty()) {
+			return false;
+		}
+		ObjectType type = object.getType();
+		double[] at = layout.centreOf(object.getFloor());
+		double dx = p[0] - at[0];
+		double dy = p[1] - at[1];
+		if (type.getShape() == Shape.CYLINDER) {
+			return Math.hypot(dx, dy) < type.getSizeX() / 2;
+		}
+		double yaw = Math.toRadians(object.getYaw());
+		double u = Math.cos(yaw) * dx + Math.sin(yaw) * dy;
+		double v = -Math.sin(yaw) * dx + Math.cos(yaw) * dy;
+		return Math.abs(u) < type.getSizeX() / 2 && Math.abs(v) < type.getSizeY() / 2;
+	}
+
+	/** The room's layout, computed once per validation of the room (a map room's costs). */
+	private FloorLayout layout(Environment env) {
+		Map<Object, Object> context = getContext();
+		Object key = new LayoutKey(env);
+		FloorLayout cached = context == null ? null : (FloorLayout) context.get(key);
+		if (cached == null) {
+			cached = RoomDesugaring.layoutOf(env);
+			if (context != null) {
+				context.put(key, cached);
+			}
+		}
+		return cached;
+	}
+
+	/** The validation context's key of a room's layout: the room itself, by identity. */
+	private record LayoutKey(Environment environment) {
+		@Override
+		public boolean equals(Object other) {
+			return other instanceof LayoutKey key && key.environment == environment;
+		}
+
+		@Override
+		public int hashCode() {
+			return System.identityHashCode(environment);
 		}
 	}
 
