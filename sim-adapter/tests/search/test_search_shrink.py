@@ -80,3 +80,15 @@ def test_a_step_still_fails_the_same_way_only_with_every_requirement_the_event_v
                     run="original-run")
     assert [t.seed for t in pool.ran] == [7, 0]  # the bin removed, then the seed moved back
     assert result.removed == ["bin1"] and result.values["seed"] == 7 and result.kept == 1
+
+
+def test_a_step_that_could_not_be_generated_is_said_and_not_counted_as_a_simulation(tmp_path: Path) -> None:
+    """A generator that fails (its warm JVM's jar replaced, a full disk) made the shrink give up silently, and the
+    terminal said 'in 2 simulation(s)' with no run behind either."""
+    pool = FakePool(lambda text, seed, fault: ["walker"] if seed == 7 else [])
+    maker = FakeMaker(tmp_path, DIAGRAM, broken=("shrink-f1-1",))
+    lines: list[str] = []
+    result = shrink(FAILURE, {"bin1.floor": "F_2_0", "seed": 7, "fault.rate": 0.5}, space(), maker, pool, task_of,
+                    tmp_path, "f1", 10, log=lines.append, run="original-run")
+    assert lines[0] == "  shrink R1/walker/-: a step not simulated: shrink-f1-1 could not be generated (exit 1): disk full"
+    assert result.steps == len(pool.ran), "a step counts as a simulation only when it ran"

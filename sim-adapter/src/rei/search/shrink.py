@@ -92,16 +92,18 @@ def shrink(failure: Failure, values: Mapping[str, Any], space: Space, maker: Can
             events, known_run = seen[case]
             same = any(event.shows(failure) for event in events)
             return same, known_run if same else None, case
-        steps += 1
         case_dir, problem = maker.generate(candidate)
-        if problem is not None:
+        if problem is not None:  # nothing was simulated: said, and not counted as a simulation
+            log(f"  shrink {failure.signature}: a step not simulated: {problem}")
             return False, None, None
+        steps += 1
         run_dir = folder / "runs" / key
         task = task_of(f"shrink-{key}", candidate, case_dir, run_dir)
         outcome = pool.submit(task).result()
         result = make_result(task, outcome)
         write_result(task, result)
         if result.status != "COMPLETED":
+            log(f"  shrink {failure.signature} step {steps}: ended in ERROR, not kept: {result.error}")
             return False, None, None
         summary = json.loads((run_dir / "summary.json").read_text(encoding="utf-8"))
         found = failures_of(summary, run_dir, case_dir, space.floor_at)
