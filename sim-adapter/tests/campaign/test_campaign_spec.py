@@ -229,3 +229,18 @@ def test_every_mistake_of_a_group_s_room_settings_is_reported_at_its_value(tmp_p
 def test_humans_true_is_no_number_of_humans() -> None:
     with pytest.raises(SpecError, match=r"'humans' must be an integer, got True"):
         parse_spec(spec(groups=[{"name": "g", "rooms": {"size": "small", "humans": True}}]), base=EXAMPLES)
+
+
+def test_a_key_given_twice_is_a_mistake_at_its_second_place(tmp_path: Path) -> None:
+    """YAML keeps the last value silently: seed 2 ran, and count 2 generated two rooms."""
+    from rei.campaign import load_spec
+
+    file = tmp_path / "c.yaml"
+    file.write_text("seed: 1\nseed: 2\ngroups:\n  - name: g\n    rooms: {size: small, count: 1, count: 2}\n"
+                    "    repetitions: 0\n")
+    with pytest.raises(SpecError) as raised:
+        load_spec(file)
+    assert str(raised.value).splitlines() == [
+        f"{file}:2:1: 'seed' is given twice",
+        f"{file}:5:36: 'count' is given twice",
+        f"{file}:6:18: groups[0]: 'repetitions' must be >= 1, got 0"]

@@ -158,6 +158,7 @@ def parse_spec(data: Any, *, base: Path, where: str = "spec", default_name: str 
     one is skipped."""
     top = _Reader(data, where, node)
     problems = located_yaml.Collector()
+    problems.add(*_given_twice(node, where))
     with problems.check():
         top.only("name", "seed", "repetitions", "timeout", "mode", "controller", "sut", "report", "variants",
                  "groups", "patterns", "utilities")
@@ -198,6 +199,25 @@ def parse_spec(data: Any, *, base: Path, where: str = "spec", default_name: str 
     problems.add(*paths.problems)
     problems.raise_if_any(SpecError)
     return Spec(name, seed, timeout, mode, report, tuple(groups), patterns=patterns, utilities=utilities)
+
+
+def _given_twice(node: yaml.Node | None, file: str) -> list[str]:
+    """Every key given twice in a mapping under ``node``, at its second place: YAML keeps the last silently (a
+    pasted ``seed: 2`` below ``seed: 1`` ran seed 2), and the other mistakes would be placed at the first."""
+    problems: list[str] = []
+    if isinstance(node, yaml.MappingNode):
+        seen: set[str] = set()
+        for key, value in node.value:
+            name = str(located_yaml.scalar(key))
+            if name in seen:
+                line, column = located_yaml.position(key)
+                problems.append(f"{file}:{line}:{column}: '{name}' is given twice")
+            seen.add(name)
+            problems += _given_twice(value, file)
+    elif isinstance(node, yaml.SequenceNode):
+        for item in node.value:
+            problems += _given_twice(item, file)
+    return problems
 
 
 def _path(r: _Reader, key: str, base: Path, what: str) -> Path | None:
