@@ -163,6 +163,7 @@ class Walker:
         self._linger_until: float | None = None
         self._spent = False  # curious and blocking people react once
         self._rejoin = False  # back from a detour: ask for a new way to the next stop
+        self._home: list[Point] | None = None  # a standing person's way back to its place after a look
 
     @property
     def engaged(self) -> bool:
@@ -185,7 +186,7 @@ class Walker:
         if self._wait_until is not None and t < self._wait_until:
             return (0.0, [at])  # a model's walker keeps its heading at its target: standing is a speed of 0
         if self._done:
-            return (0.0, [at])
+            return self._go_home(at, robot)
         in_line = self._in_line(t, at)
         if in_line is not None:
             return (0.0 if math.dist(at, in_line) < ARRIVE_STOP else speed, self._around(at, in_line, robot))
@@ -198,6 +199,20 @@ class Walker:
         point = self._next(t, at)
         standing = self._done or (self._wait_until is not None and t < self._wait_until)
         return (0.0 if standing else speed, self._around(at, point, robot))
+
+    def _go_home(self, at: Point, robot: RobotView) -> tuple[float, list[tuple[float, ...]]]:
+        """A person done with its route stands; one who left its place to look at the robot or to stand in its
+        way walks back to it (a scared one stays away: back at its place it would be near the robot again)."""
+        if self._rejoin and self._spent:
+            self._rejoin = False
+            place = self._legs[self._leg][-1] if self._legs else (self.spec.route[-1].x, self.spec.route[-1].y)
+            self._home = self._route(at, place)[1:] if math.dist(at, place) > ARRIVE_STOP else None
+        while self._home and math.dist(at, self._home[0]) < (ARRIVE if len(self._home) > 1 else ARRIVE_STOP):
+            self._home.pop(0)
+        if not self._home:
+            self._home = None
+            return (0.0, [at])
+        return (self.speed, self._around(at, self._home[0], robot))
 
     def _in_line(self, t: float, at: Point) -> Point | None:
         """The place in line of a person on its way to a queue who has joined it, None when it walks on (not there
