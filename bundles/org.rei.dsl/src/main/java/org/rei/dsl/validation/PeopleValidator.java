@@ -16,6 +16,7 @@ import org.rei.context.Environment;
 import org.rei.context.Floor;
 import org.rei.context.Group;
 import org.rei.context.PhysicalObject;
+import org.rei.context.StaticObject;
 import org.rei.context.layout.FloorLayout;
 import org.rei.context.people.PeoplePlacement;
 import org.rei.dsl.derived.RoomDesugaring;
@@ -146,6 +147,38 @@ public class PeopleValidator extends ReiCheckBase {
 			error("Floor " + queue.getName() + " cannot be reached from the crowd's from floors (" + first.getName()
 					+ ") through neighbouring floors: the crowd queues on its way", crowd,
 					ContextPackage.Literals.CROWD__QUEUE, ReiIssueCodes.AREA_UNREACHABLE);
+		}
+	}
+
+	/**
+	 * Each person of a queue stands on its floor's centre: no furniture on it, none reaching over it from another
+	 * floor (the run would stop at its start, the queue's stop off the walkable area), as a route's stops
+	 * ({@link RouteValidator#checkStopsNotUnderFurniture}).
+	 */
+	@Check
+	public void checkQueueFree(Crowd crowd) {
+		Floor queue = crowd.getQueue();
+		if (queue == null || queue.eIsProxy() || !(crowd.eContainer() instanceof Environment env)) {
+			return;
+		}
+		FloorLayout layout = RoomDesugaring.layoutOf(env);
+		if (layout.cellOf(queue).isEmpty()) {
+			return;
+		}
+		double[] centre = layout.centreOf(queue);
+		for (PhysicalObject object : env.getOwnedObjects()) {
+			String problem = object instanceof StaticObject && object.getFloor() == queue
+					? "A queue's floor " + queue.getName() + " is occupied by '" + object.getName()
+							+ "': expected a free floor, where the first in line stands"
+					: RouteValidator.covers(object, queue, centre, layout)
+							? "A queue's floor " + queue.getName() + " lies under '" + object.getName() + "' (on "
+									+ object.getFloor().getName() + "), which reaches over its centre: expected a "
+									+ "floor a person can stand on"
+							: null;
+			if (problem != null) {
+				error(problem, crowd, ContextPackage.Literals.CROWD__QUEUE, ReiIssueCodes.STOP_OCCUPIED);
+				return;
+			}
 		}
 	}
 

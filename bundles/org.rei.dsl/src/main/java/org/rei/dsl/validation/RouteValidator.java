@@ -143,7 +143,7 @@ public class RouteValidator extends ReiCheckBase {
 	}
 
 	/** Whether furniture on another floor than {@code floor} covers the point {@code p}. */
-	private static boolean covers(PhysicalObject object, Floor floor, double[] p, FloorLayout layout) {
+	static boolean covers(PhysicalObject object, Floor floor, double[] p, FloorLayout layout) {
 		if (!(object instanceof StaticObject) || object.getFloor() == null || object.getFloor() == floor
 				|| object.getType() == null || object.getType().eIsProxy() || !object.getType().getVertices().isEmpty()
 				|| layout.cellOf(object.getFloor()).isEmpty()) {
