@@ -69,6 +69,9 @@ class RunTask:
     # YAML file (`rei run --utilities`); absolute paths, None: the defaults only / the declared utilities
     patterns: str | None = None
     utilities: str | None = None
+    #: the digest of what its case folder was generated from (rei.campaign.prepare's stamp), set once the cases
+    #: are prepared: a run of an earlier version of its case (its .rei edited since) is not finished
+    case_stamp: str | None = None
 
     def to_dict(self) -> dict[str, Any]:
         return asdict(self)

@@ -99,6 +99,8 @@ def finished_result(task: RunTask) -> RunResult | None:
     """The result of an earlier attempt at exactly this task (same task.json), or None."""
     run_dir = Path(task.run_dir)
     data, recorded = _json(run_dir / RESULT_FILE), _json(run_dir / "task.json")
+    if isinstance(recorded, dict) and "case_stamp" not in recorded:  # recorded before tasks carried it
+        recorded["case_stamp"] = task.case_stamp
     if data is None or recorded != task.to_dict():
         return None
     try:

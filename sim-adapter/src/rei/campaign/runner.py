@@ -15,6 +15,7 @@ are stopped, their runs stay unfinished, the summary covers the finished ones, a
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import shutil
 import threading
@@ -27,7 +28,7 @@ from typing import Any, Protocol
 from rei.campaign.aggregate import metric_rows, metrics_csv, runs_csv, summary_csv
 from rei.campaign.machine import Sample, usage
 from rei.campaign.plan import Plan, RunTask, plan_campaign
-from rei.campaign.prepare import Prepared, needs_generation, prepare_case
+from rei.campaign.prepare import STAMP, Prepared, needs_generation, prepare_case
 from rei.campaign.results import RunResult, finished_result, make_result, write_result
 from rei.campaign.spec import Spec
 from rei.campaign.supervise import Outcome
@@ -79,6 +80,7 @@ def run_campaign(spec: Spec, out: Path, backend: Backend, *, retry_errors: bool 
     try:
         backend.warm_up()
         prepared, prepare_cpu = _prepare(plan, out, prepare_workers, generator, log)
+        plan = stamped(plan, out)
         metrics["prepare"] = {"cases": len(plan.cases), "generated": sum(p.generated for p in prepared.values()),
                               "cpu": round(prepare_cpu, 3),
                               "wall": round(Sample.now().wall - start.wall, 3)}
@@ -118,6 +120,7 @@ def run_campaign(spec: Spec, out: Path, backend: Backend, *, retry_errors: bool 
     moved = getattr(backend, "moved", None)  # a Ray backend's bytes to and from the nodes
     if moved is not None:
         metrics["transfer"] = dict(moved)
+    plan = stamped(plan, out)  # as the cases are now (an interruption may have come before the first stamping)
     results = tuple(r for r in (finished_result(t) for t in plan.runs) if r is not None)
     metrics["campaign"] = usage(start, Sample.now(helpers))
     metrics["runs"] = _run_metrics(results)
@@ -139,6 +142,21 @@ def write_outputs(spec: Spec, out: Path, plan: Plan, result: CampaignResult) -> 
                 "runs": [t.key for t in plan.runs]}
     (out / "campaign.json").write_text(json.dumps(document, indent=2) + "\n", encoding="utf-8")
     write_campaign_report(out, spec.name, result.results, result.metrics, result.planned, navigation)
+
+
+def stamped(plan: Plan, out: Path) -> Plan:
+    """``plan`` with each run's ``case_stamp``: the stamp its case folder has now (None without one: a generated
+    folder given as the case, or a case that could not be generated), so that a run of another version of its case
+    does not count as finished."""
+    stamps = {}
+    for source in plan.cases:
+        folder = source.case_dir(out)
+        try:
+            stamps[str(folder)] = (folder / STAMP).read_text(encoding="utf-8").strip()
+        except OSError:
+            stamps[str(folder)] = None
+    return dataclasses.replace(plan, runs=tuple(dataclasses.replace(t, case_stamp=stamps.get(t.case_dir))
+                                                for t in plan.runs))
 
 
 def longest_first(tasks: list[RunTask]) -> list[RunTask]:
