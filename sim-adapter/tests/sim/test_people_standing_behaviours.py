@@ -57,3 +57,14 @@ def test_a_standing_scared_person_keeps_away() -> None:
     home = (1.0, 0.0)
     places = walk(standing(Behaviour.SCARED, home), 10.0, robot, home)
     assert math.dist(places[-1], (0.0, 0.0)) >= 1.5
+
+
+def test_a_loop_of_one_place_without_a_wait_stands_and_counts_no_arrival_every_step() -> None:
+    # route [F_4_0, F_4_0] loop: every step was an arrival (2416 in a 30 s run, sim.json growing 80 a second)
+    spec = PersonSpec("p", Behaviour.AVOIDS, 1.0, 0.0, True, (RouteStop("F", 1.0, 1.0, 0.0),
+                                                               RouteStop("F", 1.0, 1.0, 0.0)))
+    w = Walker(spec, 0.25, [[(1.0, 1.0), (1.0, 1.0)], [(1.0, 1.0), (1.0, 1.0)]], lambda a, b: [a, b])
+    far = RobotView(x=9.0, y=9.0, yaw=0.0, vx=0.0, vy=0.0, front=0.15, radius=0.21)
+    places = walk(w, 10.0, far, (1.0, 1.0))
+    assert places[-1] == (1.0, 1.0)
+    assert len(w.arrivals) <= 2

@@ -159,6 +159,9 @@ class Walker:
         self._wait_until: float | None = None
         self._started = False
         self._done = not self._legs
+        if spec.loop and not any(stop.wait > 0 for stop in spec.route) and all(
+                math.dist(point, self._legs[0][0]) < ARRIVE_STOP for leg in self._legs for point in leg):
+            self._done = True  # a loop round one place without a wait would arrive at every step: it stands there
         self._engaged: float | None = None  # when a curious or blocking person turned to the robot
         self._linger_until: float | None = None
         self._spent = False  # curious and blocking people react once
