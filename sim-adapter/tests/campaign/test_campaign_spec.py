@@ -244,3 +244,26 @@ def test_a_key_given_twice_is_a_mistake_at_its_second_place(tmp_path: Path) -> N
         f"{file}:2:1: 'seed' is given twice",
         f"{file}:5:36: 'count' is given twice",
         f"{file}:6:18: groups[0]: 'repetitions' must be >= 1, got 0"]
+
+
+def test_a_script_controller_is_a_file_relative_to_the_spec(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """As the spec's cases, patterns and SUT command are. It was read relative to the current folder at the check,
+    then relative to each run's own folder by the run: every run crashed ('short.txt: cannot read the script')."""
+    (tmp_path / "short.txt").write_text("1.0 0.1 0.0\n", encoding="utf-8")
+    elsewhere = tmp_path / "elsewhere"
+    elsewhere.mkdir()
+    monkeypatch.chdir(elsewhere)
+    parsed = parse_spec(spec(controller="script:short.txt", variants=[{"name": "a"}, {"name": "b",
+                                                                                       "controller": "script:short.txt"}]),
+                        base=tmp_path)
+    assert {v.controller for v in parsed.groups[0].variants} == {f"script:{tmp_path / 'short.txt'}"}
+
+
+def test_the_campaign_s_controller_option_takes_a_script_relative_to_the_current_folder(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from rei.cli.campaign import _with_controller
+
+    (tmp_path / "short.txt").write_text("1.0 0.1 0.0\n", encoding="utf-8")
+    monkeypatch.chdir(tmp_path)
+    replaced = _with_controller(parse_spec(spec(), base=EXAMPLES), "script:short.txt")
+    assert {v.controller for g in replaced.groups for v in g.variants} == {f"script:{tmp_path / 'short.txt'}"}

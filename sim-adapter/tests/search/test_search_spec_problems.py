@@ -69,3 +69,16 @@ def test_a_range_without_a_finite_end_and_a_negative_seed_are_refused_at_the_ran
         "s.yaml:3:28: a range's ends must be finite numbers, got [0, inf]",
         "s.yaml:4:12: a run's seed is 0 or more, got [-5, 3]",
         "s.yaml:5:25: a range's ends must be finite numbers, got [-inf, 0]"]
+
+
+def test_a_script_controller_is_a_file_relative_to_the_spec(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The candidates' runs build it in their own folders: relative to the current folder it was not found there."""
+    import shutil
+
+    from spec_helpers import parse
+
+    shutil.copy(Path(__file__).resolve().parents[3] / "examples" / "search" / "crossing.rei", tmp_path)
+    (tmp_path / "short.txt").write_text("1.0 0.1 0.0\n", encoding="utf-8")
+    monkeypatch.chdir(tmp_path.parent)
+    text = "case: crossing.rei\ncontroller: script:short.txt\nparameters:\n  - {seed: [0, 3]}\nobjectives: [utility]\n"
+    assert parse(text, tmp_path).controller == f"script:{tmp_path / 'short.txt'}"

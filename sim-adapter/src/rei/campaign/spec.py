@@ -167,7 +167,7 @@ def parse_spec(data: Any, *, base: Path, where: str = "spec", default_name: str 
     repetitions = problems.read(lambda: top.int("repetitions", 1, minimum=1), 1)
     timeout = problems.read(lambda: top.number("timeout", 600.0), 600.0)
     mode = problems.read(lambda: top.choice("mode", MODES, "replay"), "replay")
-    controller = problems.read(lambda: top.controller("controller", "nav"), "nav")
+    controller = problems.read(lambda: anchored(top.controller("controller", "nav", base), base), "nav")
     report = problems.read(lambda: top.bool("report", False), False)
     if top.get("controller") is not None and top.get("sut") is not None:
         problems.add(f"{top.key_at('sut')}: give either 'controller' (in-process) or 'sut' (external), not both")
@@ -218,6 +218,15 @@ def _given_twice(node: yaml.Node | None, file: str) -> list[str]:
         for item in node.value:
             problems += _given_twice(item, file)
     return problems
+
+
+def anchored(controller: str, base: Path) -> str:
+    """``controller`` with a ``script:FILE`` made absolute against ``base`` (the spec's folder, as its cases,
+    patterns and SUT command are): the runs build it in their own folders, where a relative file is not found."""
+    name, sep, file = controller.partition(":")
+    if name != "script" or not sep or not file or Path(file).is_absolute():
+        return controller
+    return f"script:{(base / file).resolve()}"
 
 
 def _path(r: _Reader, key: str, base: Path, what: str) -> Path | None:
@@ -447,7 +456,7 @@ def _variant(v: _Reader, controller: str, base: Path, sut: ExternalSut | None) -
             parse_faults(fault)
         except ValueError as error:
             problems.add(f"{v.at('fault')}: fault: {error}")
-    spec = problems.read(lambda: v.controller("controller", controller), controller)
+    spec = problems.read(lambda: anchored(v.controller("controller", controller, base), base), controller)
     behaviour = problems.read(lambda: _behaviour(v), None)
     if behaviour is not None and humans is False:  # its runs have no people to behave so: a mistake, not a no-op
         problems.add(f"{v.at('behaviour')}: 'behaviour' sets how the people behave and 'humans: false' leaves them "
@@ -574,13 +583,14 @@ class _Reader:
                  if (match := re.search(rf"\b{re.escape(str(key))}\b", message))]
         return self.at(min(named)[1]) if named else self.here()
 
-    def controller(self, key: str, default: str) -> str:
+    def controller(self, key: str, default: str, base: Path) -> str:
         """An in-process controller (``nav``, ``nav:max_linear=0.2``, ...) checked as `--controller` is: the run
-        would build the same, so a mistyped ``nav:`` parameter is refused here, with the known ones."""
+        would build the same, so a mistyped ``nav:`` parameter is refused here, with the known ones; a
+        ``script:FILE`` relative to ``base``."""
         from rei.sut.registry import controller_problem
 
         value = self.str(key, default)
-        problem = None if key not in self.data else controller_problem(value)
+        problem = None if key not in self.data else controller_problem(anchored(value, base))
         if problem is not None:
             raise SpecError(f"{self.at(key)}: {problem}")
         return value

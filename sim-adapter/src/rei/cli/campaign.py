@@ -133,8 +133,10 @@ def _run(args: argparse.Namespace) -> int:
 
 def _with_controller(spec: Any, controller: str) -> Any:
     """The spec with every variant run by ``controller`` (checked here, before any run)."""
+    from rei.campaign.spec import anchored
     from rei.sut.registry import controller_problem
 
+    controller = anchored(controller, Path.cwd())  # the runs build it in their own folders
     problem = controller_problem(controller)
     if problem is not None:
         raise CommandError(f"--controller {controller}: {problem}")

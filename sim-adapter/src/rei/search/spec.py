@@ -59,7 +59,16 @@ import yaml
 
 from rei import located_yaml
 from rei.artifacts.animation import Behaviour
-from rei.campaign.spec import ExternalSut, RoomSettings, SpecError, _Reader, _rooms, _sut, check_user_patterns
+from rei.campaign.spec import (
+    ExternalSut,
+    RoomSettings,
+    SpecError,
+    _Reader,
+    _rooms,
+    _sut,
+    anchored,
+    check_user_patterns,
+)
 from rei.evaluation.metrics import BY_NAME, NAMES, Better
 from rei.search import SAMPLERS
 from rei.sim.faults import SENSOR_KIND_KEYS, SENSORS, fault_from_fields
@@ -279,7 +288,8 @@ def parse_search_spec(text: str, *, base: Path, file: str = "spec", default_name
         rooms = problems.read(lambda: _room_settings(top["rooms"][1], base, loc), None)
     if "controller" in top and "sut" in top:
         problems.add(f"{loc.at(top['sut'][0])}: give either 'controller' (in-process) or 'sut' (external), not both")
-    controller = problems.read(lambda: reader.call("controller", lambda r: r.str("controller", "nav")), "nav")
+    controller = problems.read(lambda: anchored(reader.call("controller", lambda r: r.str("controller", "nav")), base),
+                               "nav")
     with problems.check():
         _check_controller(controller, loc.at(top["controller"][1]) if "controller" in top else file)
     sut = None
