@@ -30,3 +30,24 @@ testcase Edge {
     assert result.returncode == 2, result.stderr
     assert "Traceback" not in result.stderr, result.stderr
     assert "error: ann cannot stand at (3.25, 2.25)" in result.stderr, result.stderr
+
+
+def test_people_of_rooms_generated_on_half_metre_map_floors_can_stand_where_they_start(
+        run_cli, repo_root: Path, tmp_path: Path) -> None:
+    # rooms 1 and 2 of this command stopped at their start: 'person2 cannot stand at (2.75, 5.25): ... too close to
+    # agent', 'person4 cannot stand at (7.25, 4.25): ... too close to geometry boundaries'
+    from rei.geometry import Twist2D
+    from rei.sim.simulation import Simulation
+
+    rooms = tmp_path / "rooms"
+    result = run_cli("gen-rooms", "--map", repo_root / "examples" / "maps" / "two_rooms.yaml", "--floor-size", "0.5",
+                     "--density", "dense", "--humans", "6", "--people", "reactive", "--count", "2", "--seed", "4",
+                     "-o", rooms)
+    assert result.returncode == 0, result.stderr
+    for source in sorted(rooms.glob("*.rei")):
+        folder = tmp_path / source.stem
+        assert run_cli("generate", source, "-o", folder).returncode == 0
+        with Simulation(folder, seed=0) as sim:  # the people model places everyone, or raises
+            for _ in range(round(sim.physics_rate)):
+                sim.step(Twist2D(0.0, 0.0))
+            assert sim.crowd is not None and len(sim.crowd.walkers) == 6

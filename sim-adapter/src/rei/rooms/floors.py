@@ -112,18 +112,21 @@ def draw_walkers(rng: random.Random, humans: int, start: Cell, goals: Iterable[C
 
 
 def draw_people(rng: random.Random, humans: int, start: Cell, goals: Iterable[Cell], floors: Collection[Cell],
-                behaviour: str, tries: int) -> list[Person] | None:
+                behaviour: str, tries: int, stops_on: Collection[Cell] | None = None,
+                around: Callable[[Cell], Iterable[Cell]] | None = None) -> list[Person] | None:
     """People who see the robot, each on a route of 2 or 3 stops round which it loops: every stop a floor of
     ``floors`` away from the robot's start (and its neighbours), the goals and every other person's stops, each at
     least ``PEOPLE_LEG`` floors along the floors from the one before (and the last from the first), so a person
     walks across the room, and the pedestrian model finds its way between them around what the caller then places
     (the caller keeps furniture off the stops and every free floor reachable). ``behaviour``: theirs, or ``mixed``
-    (each drawn). None when a person's route is not found in ``tries`` draws."""
+    (each drawn). None when a person's route is not found in ``tries`` draws. ``stops_on``: the floors a stop may
+    be on (default: ``floors``); ``around``: the floors next to a stop that no other person's stop may be on (floors
+    smaller than two bodies: neighbouring starts would overlap)."""
     banned = {start, *neighbours(start), *goals}
     people: list[Person] = []
     for number in range(1, humans + 1):
         for _ in range(tries):
-            stops = _route(rng, floors, banned)
+            stops = _route(rng, floors, banned, stops_on)
             if stops is not None:
                 break
         else:
@@ -133,12 +136,13 @@ def draw_people(rng: random.Random, humans: int, start: Cell, goals: Iterable[Ce
         drawn = rng.choice(BEHAVIOURS)  # drawn whatever the setting, so a fixed behaviour keeps the same room
         people.append(Person(f"person{number}", tuple(zip(stops, waits, strict=True)), speed,
                              rng.randint(0, PEOPLE_START), drawn if behaviour == MIXED else behaviour))
-        banned |= set(stops)
+        banned |= set(stops) if around is None else {c for stop in stops for c in (stop, *around(stop))}
     return people
 
 
-def _route(rng: random.Random, floors: Collection[Cell], banned: Collection[Cell]) -> list[Cell] | None:
-    allowed = sorted(c for c in floors if c not in banned)
+def _route(rng: random.Random, floors: Collection[Cell], banned: Collection[Cell],
+           stops_on: Collection[Cell] | None = None) -> list[Cell] | None:
+    allowed = sorted(c for c in (floors if stops_on is None else stops_on) if c not in banned)
     if not allowed:
         return None
     stops = [rng.choice(allowed)]

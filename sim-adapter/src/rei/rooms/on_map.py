@@ -55,6 +55,9 @@ WALL_GAP = 0.03
 MAX_ATTEMPTS = 40
 #: Furniture edge allowed per floor edge (as MAX_FURNITURE / FLOOR in generated grid rooms).
 REACH = 1.2
+#: The radius (m) of a generated person (the default Human's), and the room it needs beyond it to stand.
+PERSON_RADIUS = 0.25
+PERSON_ROOM = 0.05
 
 
 def load_site(yaml: Path, floor_size: float = 1.0, unknown_free: bool = False) -> MapSite:
@@ -119,6 +122,11 @@ def generate_map_room(site: MapSite, density: str | None = None, humans: int | N
                           f"in {MAX_ATTEMPTS} attempts: {what}")
 
 
+def _ring(cell: Cell) -> list[Cell]:
+    """The eight floors round a floor."""
+    return [(cell[0] + dx, cell[1] + dy) for dx in (-1, 0, 1) for dy in (-1, 0, 1) if dx or dy]
+
+
 def generate_map_rooms(site: MapSite, density: str | None = None, humans: int | None = None, seed: int = 0,
                        count: int = 1, types: RoomTypes = DEFAULT_TYPES, check: bool = True,
                        reactive: str | None = None) -> list[Room]:
@@ -142,12 +150,18 @@ def _attempt(rng: random.Random, site: MapSite, area: list[Cell], furniture: dic
         people: list[Person] | None = []
     else:
         walkers = []
-        people = draw_people(rng, humans, start, goals, floors, reactive, tries=200)
+        # floors smaller than a body and its room (0.5 m): the people model refuses a person 0.25 m from a wall
+        # block or from another person, so a stop has free floors all round, none of them another's stop
+        small = site.floor_size < 2 * (PERSON_RADIUS + PERSON_ROOM)
+        roomy = {c for c in floors if all(n in floors for n in _ring(c))} if small else None
+        people = draw_people(rng, humans, start, goals, floors, reactive, tries=200, stops_on=roomy,
+                             around=_ring if small else None)
     if walkers is None or people is None:
         return None
     robot_cells = {start, *goals}
+    kept = _ring if reactive is not None and site.floor_size < 2 * (PERSON_RADIUS + PERSON_ROOM) else (lambda c: ())
     reserved = robot_cells | {c for walker in walkers for c in walker.cells()} | {
-        c for person in people for c in person.cells()}
+        c for person in people for stop in person.cells() for c in (stop, *kept(stop))}
     blocked = _blocked_table(site)
     weights = {name: types.weights[name] for name in furniture}
     wanted = max(1, round(SHARES[density] * len(area)))
