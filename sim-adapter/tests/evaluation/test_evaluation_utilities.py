@@ -65,21 +65,23 @@ def test_empty_yaml_means_defaults(tmp_path: Path) -> None:
 
 
 @pytest.mark.parametrize(("text", "expected"), [
-    ("SIG_GEOM_FAR_TRANSIT_CLOSED: -2\n", "unknown signal 'SIG_GEOM_FAR_TRANSIT_CLOSED'"),
-    ("SIG_MISSION_END: twenty\n", "SIG_MISSION_END: the utility must be a finite number, got 'twenty'"),
-    ("SIG_MISSION_END: true\n", "SIG_MISSION_END: the utility must be a finite number, got True"),
-    ("SIG_MISSION_END: .nan\n", "SIG_MISSION_END: the utility must be a finite number, got nan"),
-    ("SIG_MISSION_END: [1]\n", "SIG_MISSION_END: the utility must be a finite number, got [1]"),
-    ("- SIG_MISSION_END\n", "expected a mapping 'SIGNAL: utility', got list"),
-    ("SIG_MISSION_END: [\n", "not valid YAML"),
+    ("SIG_GEOM_FAR_TRANSIT_CLOSED: -2\n",
+     ":1:1: unknown signal 'SIG_GEOM_FAR_TRANSIT_CLOSED' (did you mean SIG_GEOM_FAR_TRANSIT_CLOSE?; known: "),
+    ("SIG_MISSION_END: twenty\n", ":1:18: SIG_MISSION_END: the utility must be a finite number, got 'twenty'"),
+    ("SIG_MISSION_END: true\n", ":1:18: SIG_MISSION_END: the utility must be a finite number, got True"),
+    ("SIG_MISSION_END: .nan\n", ":1:18: SIG_MISSION_END: the utility must be a finite number, got nan"),
+    ("SIG_MISSION_BEGIN: 2\nSIG_MISSION_END: [1]\n",
+     ":2:18: SIG_MISSION_END: the utility must be a finite number, got [1]"),
+    ("- SIG_MISSION_END\n", ": expected a mapping 'SIGNAL: utility', got list"),
+    ("SIG_MISSION_END: [\n", ":2:1: not valid YAML: expected the node content, but found '<stream end>'"),
 ])
 def test_bad_utility_files_name_file_and_key(tmp_path: Path, text: str, expected: str) -> None:
+    """At the key's or value's line and column (a YAML mistake too: it named a '<unicode string>' over 7 lines)."""
     path = tmp_path / "bad.yaml"
     path.write_text(text)
     with pytest.raises(UtilityError) as error:
         load_utilities(path)
-    assert str(error.value).startswith(f"{path}: ")
-    assert expected in str(error.value)
+    assert str(error.value).startswith(f"{path}{expected}")
 
 
 def test_missing_utility_file_is_an_error_naming_it(tmp_path: Path) -> None:

@@ -25,6 +25,7 @@ else 0, and is not counted.
 
 from __future__ import annotations
 
+import difflib
 import json
 import math
 import os
@@ -36,6 +37,7 @@ from typing import Any
 
 import yaml
 
+from rei import located_yaml
 from rei.evaluation.signals import DEFAULT_TRANSITIONS, FAULT_SIGNALS, KNOWN_SIGNALS, Transition
 
 #: Table 3 of the thesis, plus the documented defaults for the signals it does not list.
@@ -119,21 +121,26 @@ def load_utilities(path: str | os.PathLike[str] | None = None,
         text = path.read_text(encoding="utf-8")
     except OSError as error:
         raise UtilityError(f"{path}: cannot read the utility file: {error.strerror or error}") from None
+    # composed, so that a mistake names its line and column (a file of tens of signals is edited by hand)
     try:
-        data = yaml.safe_load(text)
-    except yaml.YAMLError as error:
-        raise UtilityError(f"{path}: not valid YAML: {error}") from None
-    if data is None:
-        data = {}
-    if not isinstance(data, dict):
-        raise UtilityError(f"{path}: expected a mapping 'SIGNAL: utility', got {type(data).__name__}")
-    for key, value in data.items():
+        node = located_yaml.compose(text, "not valid YAML")
+        if node is not None and not isinstance(node, yaml.MappingNode):
+            raise UtilityError(f"{path}: expected a mapping 'SIGNAL: utility', got "
+                               f"{type(located_yaml.value(node)).__name__}")
+        entries = [(k, located_yaml.scalar(k), v, located_yaml.value(v)) for k, v in node.value] if node else []
+    except located_yaml.LocatedError as error:
+        raise UtilityError(error.at(str(path))) from None
+    for key_node, key, value_node, value in entries:
         if key not in values:
-            known = ", ".join(sorted(values))
-            raise UtilityError(f"{path}: unknown signal {key!r} (known: {known})")
+            line, column = located_yaml.position(key_node)
+            near = difflib.get_close_matches(str(key), list(values), n=1)
+            hint = f"did you mean {near[0]}?; " if near else ""
+            raise UtilityError(f"{path}:{line}:{column}: unknown signal {key!r} ({hint}known: "
+                               f"{', '.join(sorted(values))})")
         if not _is_number(value):
-            raise UtilityError(f"{path}: {key}: the utility must be a finite number, got {value!r}")
-        values[key] = float(value)
+            line, column = located_yaml.position(value_node)
+            raise UtilityError(f"{path}:{line}:{column}: {key}: the utility must be a finite number, got {value!r}")
+        values[str(key)] = float(value)
     return UtilityTable(values, source=" + ".join((*sources, str(path))) if declared is not None else str(path))
 
 
