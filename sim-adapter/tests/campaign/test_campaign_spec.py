@@ -267,3 +267,19 @@ def test_the_campaign_s_controller_option_takes_a_script_relative_to_the_current
     monkeypatch.chdir(tmp_path)
     replaced = _with_controller(parse_spec(spec(), base=EXAMPLES), "script:short.txt")
     assert {v.controller for g in replaced.groups for v in g.variants} == {f"script:{tmp_path / 'short.txt'}"}
+
+
+def test_the_same_generated_room_in_two_groups_is_one_case(tmp_path: Path) -> None:
+    """Room 1 of seed 1 is the same whatever the count; only its header comment says 'room 1 of 2'. The campaign
+    was refused ('two different test cases ...; rename one file', no file to rename)."""
+    parsed = parse_spec(spec(groups=[{"name": "a", "rooms": {"size": "small", "count": 1, "seed": 1}},
+                                     {"name": "b", "rooms": {"size": "small", "count": 2, "seed": 1}}]), base=EXAMPLES)
+    plan = plan_campaign(parsed, tmp_path)
+    assert [c.key for c in plan.cases] == ["small_dense_h0_s1_01", "small_dense_h0_s1_02"]
+    assert [r.key for r in plan.runs] == ["a__small_dense_h0_s1_01__base__r0", "b__small_dense_h0_s1_01__base__r0",
+                                          "b__small_dense_h0_s1_02__base__r0"]
+    other = parse_spec(spec(groups=[{"name": "a", "rooms": {"size": "small", "count": 1, "seed": 1}},
+                                    {"name": "b", "rooms": {"size": "small", "count": 1, "seed": 1,
+                                                            "catalogue": "catalogues/office.rei"}}]), base=EXAMPLES)
+    with pytest.raises(SpecError, match="both named 'small_dense_h0_s1_01'.*give one group other room settings"):
+        plan_campaign(other, tmp_path)
