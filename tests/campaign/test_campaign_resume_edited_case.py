@@ -47,5 +47,7 @@ def test_an_edited_case_runs_again_and_one_that_no_longer_generates_is_an_error(
     broken = run_cli("campaign", spec, "-o", out, "--workers", "1", "--no-service", timeout=300)
     assert broken.returncode == 1, broken.stdout + broken.stderr
     assert "1/1 runs finished, 1 in ERROR" in broken.stdout, broken.stdout
+    # recorded now, not earlier: it said "1 finished already"
+    assert "0 finished already, 1 in ERROR (case not generated), 0 to run" in broken.stdout, broken.stdout
     row = runs(out)[key]
     assert row["status"] == "ERROR" and "could not be generated" in row["error"], row

@@ -85,6 +85,7 @@ def run_campaign(spec: Spec, out: Path, backend: Backend, *, retry_errors: bool 
                               "cpu": round(prepare_cpu, 3),
                               "wall": round(Sample.now().wall - start.wall, 3)}
         todo = []
+        ungenerated = 0  # runs recorded as ERROR now, their case not generated: not "finished already"
         # by the folder a run runs (a behaviour variant's case is not its room's: rei.campaign.plan)
         by_folder = {str(source.case_dir(out.resolve())): prepared[source.key] for source in plan.cases}
         for task in plan.runs:
@@ -99,11 +100,13 @@ def run_campaign(spec: Spec, out: Path, backend: Backend, *, retry_errors: bool 
                                                                encoding="utf-8")
                 _record(task, Outcome(task.key, None, False, False, 0.0, 0.0, problem, "-"), log, problem)
                 executed += 1
+                ungenerated += 1
                 continue
             todo.append(task)
         todo = longest_first(todo)
-        log(f"campaign {spec.name}: {len(plan.runs)} runs, {len(plan.runs) - len(todo)} finished already, "
-            f"{len(todo)} to run on {backend.workers} {backend.name} worker(s)")
+        not_generated = f", {ungenerated} in ERROR (case not generated)" if ungenerated else ""
+        log(f"campaign {spec.name}: {len(plan.runs)} runs, {len(plan.runs) - len(todo) - ungenerated} finished "
+            f"already{not_generated}, {len(todo)} to run on {backend.workers} {backend.name} worker(s)")
 
         def on_outcome(task: RunTask, outcome: Outcome) -> None:
             nonlocal executed
