@@ -142,6 +142,72 @@ public class RouteValidator extends ReiCheckBase {
 		}
 	}
 
+	/**
+	 * People who see the robot stand apart where they start: the pedestrian model refuses two bodies that touch
+	 * ("too close to agent"), which on floors smaller than two bodies (0.5 m for the default Human) two people on
+	 * neighbouring floors do. Each stands on its first stop's centre; its radius is its type's, as the simulation
+	 * gives it (a cylinder's, a box's circumradius).
+	 */
+	@Check
+	public void checkStartsApart(Environment env) {
+		List<Human> people = new java.util.ArrayList<>();
+		for (PhysicalObject object : env.getOwnedObjects()) {
+			if (object instanceof Human human && human.getOwnedRoute() != null
+					&& !human.getOwnedRoute().getOwnedStops().isEmpty()) {
+				Floor floor = human.getOwnedRoute().getOwnedStops().get(0).getFloor();
+				if (floor != null && !floor.eIsProxy()) {
+					people.add(human);
+				}
+			}
+		}
+		if (people.size() < 2) {
+			return;
+		}
+		FloorLayout layout = layout(env);
+		for (int j = 1; j < people.size(); j++) {
+			Human later = people.get(j);
+			Floor floor = later.getOwnedRoute().getOwnedStops().get(0).getFloor();
+			if (layout.cellOf(floor).isEmpty()) {
+				continue;
+			}
+			double[] at = layout.centreOf(floor);
+			for (int i = 0; i < j; i++) {
+				Human earlier = people.get(i);
+				Floor other = earlier.getOwnedRoute().getOwnedStops().get(0).getFloor();
+				if (other == floor || layout.cellOf(other).isEmpty()) {
+					continue; // one floor for two: the one-object-per-floor rule says so
+				}
+				double[] there = layout.centreOf(other);
+				double apart = Math.hypot(at[0] - there[0], at[1] - there[1]);
+				double need = radius(earlier) + radius(later);
+				if (apart <= need + 1e-9) {
+					error("'" + later.getName() + "' starts " + num(Math.round(apart * 1000) / 1000.0) + " m from '"
+							+ earlier.getName() + "' (on " + other.getName() + ", centre to centre): their bodies "
+							+ "touch, people need more than " + num(Math.round(need * 1000) / 1000.0)
+							+ " m between them to stand", later.getOwnedRoute().getOwnedStops().get(0),
+							ContextPackage.Literals.ROUTE_STOP__FLOOR, ReiIssueCodes.FLOOR_OCCUPIED);
+					break;
+				}
+			}
+		}
+	}
+
+	/** A person's radius in the pedestrian model: its type's (the default Human's when it names none). */
+	private static double radius(Human human) {
+		ObjectType type = human.getType();
+		if ((type == null || type.eIsProxy()) && human.eResource() != null
+				&& human.eResource().getResourceSet() != null) {
+			type = org.rei.catalogue.util.Catalogues
+					.find(org.rei.catalogue.util.Catalogues.loadDefault(human.eResource().getResourceSet()), "Human")
+					.orElse(null);
+		}
+		if (type == null || type.eIsProxy()) {
+			return 0.25;
+		}
+		return type.getShape() == Shape.CYLINDER ? type.getSizeX() / 2
+				: Math.hypot(type.getSizeX(), type.getSizeY()) / 2;
+	}
+
 	/** Whether furniture on another floor than {@code floor} covers the point {@code p}. */
 	static boolean covers(PhysicalObject object, Floor floor, double[] p, FloorLayout layout) {
 		if (!(object instanceof StaticObject) || object.getFloor() == null || object.getFloor() == floor
