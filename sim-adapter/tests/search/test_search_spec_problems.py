@@ -82,3 +82,21 @@ def test_a_script_controller_is_a_file_relative_to_the_spec(tmp_path: Path, monk
     monkeypatch.chdir(tmp_path.parent)
     text = "case: crossing.rei\ncontroller: script:short.txt\nparameters:\n  - {seed: [0, 3]}\nobjectives: [utility]\n"
     assert parse(text, tmp_path).controller == f"script:{tmp_path / 'short.txt'}"
+
+
+def test_a_metric_without_a_worse_side_needs_a_direction(tmp_path: Path) -> None:
+    """speed_mean and the social zone's time describe the drive: neither side is worse, and the search maximized
+    them without saying so (rei compare asks 'better:' for the same metrics)."""
+    import shutil
+
+    from spec_helpers import parse
+
+    shutil.copy(Path(__file__).resolve().parents[3] / "examples" / "search" / "crossing.rei", tmp_path)
+    text = ("case: crossing.rei\nparameters:\n  - {seed: [0, 3]}\nobjectives:\n  - {metric: speed_mean}\n"
+            "  - {metric: social_time}\nsampler: nsga2\n")
+    assert error_of(text, tmp_path).splitlines() == [
+        "s.yaml:5:14: speed_mean has no worse side of its own: give 'direction: minimize' or 'direction: maximize'",
+        "s.yaml:6:14: social_time has no worse side of its own: give 'direction: minimize' or 'direction: maximize'"]
+    chosen = parse(text.replace("{metric: speed_mean}", "{metric: speed_mean, direction: minimize}")
+                   .replace("{metric: social_time}", "{metric: social_time, direction: maximize}"), tmp_path)
+    assert [o.direction for o in chosen.objectives] == ["minimize", "maximize"]

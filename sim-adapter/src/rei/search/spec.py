@@ -886,6 +886,10 @@ def _objective(item: yaml.Node, loc: _Located, declared: frozenset[str] | None) 
         direction = problems.read(lambda: loc.value(direction_node), None)
         if direction not in DIRECTIONS:
             problems.add(f"{loc.at(direction_node)}: expected minimize or maximize, got {direction!r}")
+    elif kind == "metric" and value in NAMES and BY_NAME[value].better == Better.NEITHER:
+        # no side is worse for the robot (a speed, time in social space): it was maximized without a word
+        problems.add(f"{loc.at(value_node)}: {value} has no worse side of its own: give 'direction: minimize' or "
+                     f"'direction: maximize'")
     problems.raise_if_any(SpecError)
     if direction is None and kind == "metric":  # worse for the robot: away from the metric's better side
         direction = "minimize" if BY_NAME[value].better == Better.HIGHER else "maximize"
