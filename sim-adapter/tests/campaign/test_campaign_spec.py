@@ -283,3 +283,16 @@ def test_the_same_generated_room_in_two_groups_is_one_case(tmp_path: Path) -> No
                                                             "catalogue": "catalogues/office.rei"}}]), base=EXAMPLES)
     with pytest.raises(SpecError, match="both named 'small_dense_h0_s1_01'.*give one group other room settings"):
         plan_campaign(other, tmp_path)
+
+
+def test_a_case_that_is_no_path_is_placed_at_the_item(tmp_path: Path) -> None:
+    from rei.campaign import load_spec
+
+    file = tmp_path / "c.yaml"
+    file.write_text(f"groups:\n  - name: g\n    cases:\n      - {EXAMPLES / 'simple_navigation.rei'}\n      - 5\n"
+                    "      - {file: x.rei}\n")
+    with pytest.raises(SpecError) as raised:
+        load_spec(file)
+    assert str(raised.value).splitlines() == [
+        f"{file}:5:9: groups[0]: a case is a path to a .rei file or a generated case folder, got 5",
+        f"{file}:6:9: groups[0]: a case is a path to a .rei file or a generated case folder, got {{'file': 'x.rei'}}"]

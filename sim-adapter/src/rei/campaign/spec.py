@@ -306,10 +306,15 @@ def _group(r: _Reader, base: Path, controller: str, sut: ExternalSut | None, var
 
 def _cases(r: _Reader, raw: Any, base: Path) -> tuple[Path, ...]:
     """A group's ``cases``: .rei files or generated case folders, relative to ``base``, each a name of its own."""
-    if not isinstance(raw, list) or not raw or not all(isinstance(c, str) for c in raw):
+    if not isinstance(raw, list) or not raw:
         raise SpecError(f"{r.at('cases')}: 'cases' must be a non-empty list of paths")
-    cases = tuple((base / c).resolve() for c in raw)
     problems = located_yaml.Collector()
+    for i, case in enumerate(raw):  # at the item (a number, a mapping), not the list
+        if not isinstance(case, str) or not case:
+            problems.add(f"{r.item_at('cases', i)}: a case is a path to a .rei file or a generated case folder, "
+                         f"got {case!r}")
+    problems.raise_if_any(SpecError)
+    cases = tuple((base / c).resolve() for c in raw)
     for i, case in enumerate(cases):
         if not (case.is_file() and case.suffix == ".rei") and not (case / "world.json").is_file():
             problems.add(f"{r.item_at('cases', i)}: {case} is neither a .rei file nor a generated case folder")
