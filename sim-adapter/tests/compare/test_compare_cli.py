@@ -94,3 +94,17 @@ def test_compare_prints_every_mistake_of_the_thresholds_on_its_own_line(tmp_path
         f"rei: error: {tmp_path / 't.yaml'}:2:13: time: 'p' must be a significance level in (0, 1], got 0",
         f"rei: error: {tmp_path / 't.yaml'}:3:19: spl: 'worse_by' must be a number, got 'x'"]
     assert not (tmp_path / "cmp").exists()
+
+
+def test_an_output_that_is_a_file_is_a_usage_error_not_a_traceback(tmp_path: Path,
+                                                                     capsys: pytest.CaptureFixture[str]) -> None:
+    """rei compare, rei campaign and rei search with -o naming a file ended in FileExistsError's traceback (rei compare
+    after comparing everything)."""
+    taken = tmp_path / "taken"
+    taken.write_text("not a folder\n")
+    a = _side(tmp_path / "a", {"r1": "COMPLETED"})
+    search_spec = Path(__file__).resolve().parents[3] / "examples" / "search" / "crossing.yaml"
+    for argv in (["compare", str(a), str(a)], ["campaign", str(spec(tmp_path))], ["search", str(search_spec)]):
+        assert main([*argv, "-o", str(taken)]) == 2, argv
+        assert capsys.readouterr().err == f"rei: error: cannot write to {taken}: File exists\n", argv
+    assert taken.read_text() == "not a folder\n"

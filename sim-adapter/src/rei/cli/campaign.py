@@ -24,6 +24,7 @@ import dataclasses
 from pathlib import Path
 from typing import Any
 
+from rei.cli._case import prepare_output
 from rei.cli._pool_options import add_pool_options, workers_of
 from rei.cli.compare import add_compare_options, compare_and_report, load_thresholds_option
 from rei.cli.errors import EXIT_INVALID, EXIT_OK, CommandError
@@ -74,6 +75,7 @@ def _run(args: argparse.Namespace) -> int:
         thresholds = load_thresholds_option(args.thresholds)
     elif args.thresholds is not None:
         raise CommandError("--thresholds needs --compare BASELINE")
+    prepare_output(args.output)  # -o naming a file was a traceback
     if args.ray:
         from rei.campaign.backends import RayUnavailableError, connect_ray
         from rei.campaign.spec import spec_moves_people

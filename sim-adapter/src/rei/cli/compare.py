@@ -18,6 +18,7 @@ import argparse
 from pathlib import Path
 from typing import Any
 
+from rei.cli._case import prepare_output
 from rei.cli.errors import EXIT_OK, CommandError
 
 
@@ -58,6 +59,7 @@ def compare_and_report(baseline: Path, candidate: Path, out: Path, thresholds: A
         comparison = compare(baseline.resolve(), candidate.resolve(), thresholds)
     except CompareError as error:
         raise CommandError(str(error)) from None
+    prepare_output(out)  # -o naming a file was a traceback, after the comparison
     files = write_comparison(comparison, out.resolve())
     p = comparison.pairing
     print(f"compare: {len(p.pairs)} pair(s); {len(p.only_baseline)} run(s) only in the baseline, "

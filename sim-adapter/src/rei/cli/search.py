@@ -22,6 +22,7 @@ import threading
 from pathlib import Path
 from typing import Any
 
+from rei.cli._case import prepare_output
 from rei.cli._pool_options import add_pool_options, workers_of
 from rei.cli.errors import EXIT_OK, EXIT_RUN_ERROR, CommandError
 
@@ -64,6 +65,7 @@ def run(args: argparse.Namespace) -> int:
         check_resume(spec, args.output.resolve())  # before a Ray cluster is reached or a room generated
     except SpecError as error:
         raise CommandError(error.problems) from None
+    prepare_output(args.output)  # -o naming a file was a traceback
     stop = threading.Event()
     try:
         # SIGTERM unwinds (SystemExit) wherever it lands: the search then stops as on Ctrl-C, and during shrinking
