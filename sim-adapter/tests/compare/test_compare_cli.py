@@ -108,3 +108,19 @@ def test_an_output_that_is_a_file_is_a_usage_error_not_a_traceback(tmp_path: Pat
         assert main([*argv, "-o", str(taken)]) == 2, argv
         assert capsys.readouterr().err == f"rei: error: cannot write to {taken}: File exists\n", argv
     assert taken.read_text() == "not a folder\n"
+
+
+def test_a_campaign_its_planning_refuses_leaves_out_as_it_was(tmp_path: Path,
+                                                                capsys: pytest.CaptureFixture[str]) -> None:
+    """Two groups whose rooms share a name but not their text: refused, after OUT's spec.yaml had been replaced by
+    the refused spec (the runs there no longer had their spec beside them)."""
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "spec.yaml").write_text("the spec its runs ran\n")
+    catalogue = Path(__file__).resolve().parents[3] / "examples" / "catalogues" / "office.rei"
+    refused = tmp_path / "refused.yaml"
+    refused.write_text("groups:\n  - name: a\n    rooms: {size: small, count: 1, seed: 1}\n  - name: b\n"
+                       f"    rooms: {{size: small, count: 1, seed: 1, catalogue: {catalogue}}}\n")
+    assert main(["campaign", str(refused), "-o", str(out), "--no-service"]) == 2
+    assert "both named 'small_dense_h0_s1_01'" in capsys.readouterr().err
+    assert (out / "spec.yaml").read_text() == "the spec its runs ran\n"

@@ -68,11 +68,11 @@ def run_campaign(spec: Spec, out: Path, backend: Backend, *, retry_errors: bool 
     rei.lifetime.sigterm_unwinds (as `rei campaign` runs it), while the cases are prepared or the runs run
     interrupts the campaign: its outputs are still written, ``interrupted`` says so."""
     out = out.resolve()
+    start = Sample.now(helpers)
+    plan = plan_campaign(spec, out)  # first: a spec it refuses leaves OUT's spec.yaml as the runs there had it
     out.mkdir(parents=True, exist_ok=True)
     if spec.source is not None and spec.source.resolve() != (out / "spec.yaml"):
         shutil.copyfile(spec.source, out / "spec.yaml")
-    start = Sample.now(helpers)
-    plan = plan_campaign(spec, out)
     stop = threading.Event()
     executed = 0
     interrupted = False
