@@ -84,6 +84,17 @@ def test_bad_utility_files_name_file_and_key(tmp_path: Path, text: str, expected
     assert str(error.value).startswith(f"{path}{expected}")
 
 
+def test_every_mistake_of_a_utility_file_is_reported_at_once_each_at_its_place(tmp_path: Path) -> None:
+    path = tmp_path / "bad.yaml"
+    path.write_text("SIG_MISSION_BEGIN: 2\nSIG_MISION_END: 3\nSIG_MISSION_END: x\nSIG_MISSION_BEGIN: 4\n")
+    with pytest.raises(UtilityError) as error:
+        load_utilities(path)
+    lines = str(error.value).splitlines()
+    assert [line.split(": ", 1)[0] for line in lines] == [f"{path}:2:1", f"{path}:3:18", f"{path}:4:1"]
+    assert "did you mean SIG_MISSION_END?" in lines[0] and "got 'x'" in lines[1]
+    assert lines[2].endswith("'SIG_MISSION_BEGIN' is given twice")
+
+
 def test_missing_utility_file_is_an_error_naming_it(tmp_path: Path) -> None:
     with pytest.raises(UtilityError, match="missing.yaml: cannot read the utility file"):
         load_utilities(tmp_path / "missing.yaml")

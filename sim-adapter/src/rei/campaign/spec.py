@@ -195,7 +195,7 @@ def parse_spec(data: Any, *, base: Path, where: str = "spec", default_name: str 
             check_user_patterns(patterns, utilities)
         except SpecError as error:
             key = "patterns" if error.args[1:] == ("patterns",) else "utilities"
-            paths.add(f"{top.at(key)}: {error.args[0]}")
+            paths.add(*(f"{top.at(key)}: {line}" for line in str(error.args[0]).splitlines()))  # a mistake each
     problems.add(*paths.problems)
     problems.raise_if_any(SpecError)
     return Spec(name, seed, timeout, mode, report, tuple(groups), patterns=patterns, utilities=utilities)

@@ -42,7 +42,7 @@ def run(args: argparse.Namespace) -> int:
             recorded = out / UTILITIES_FILE
             load_utilities(args.utilities, load_declared_utilities(recorded) if recorded.is_file() else None)
         except UtilityError as error:
-            raise CommandError(str(error)) from None
+            raise CommandError(error.problems) from None
     from rei.service.client import running_monitor
 
     try:  # in the background service's warm monitor JVM when one runs (docs/performance.md)

@@ -85,7 +85,7 @@ def run(args: argparse.Namespace) -> int:
         try:
             load_utilities(args.utilities, declared)  # it may name the signals of the user's patterns
         except UtilityError as error:
-            raise CommandError(str(error)) from None
+            raise CommandError(error.problems) from None
     if args.run_id is not None and not valid_run_id(args.run_id):
         raise CommandError(f"--run-id {args.run_id!r}: expected letters, digits, '_' or '-'")
     out = Path(args.output).resolve()  # children and the router run in other working directories

@@ -63,8 +63,9 @@ DEFAULT_UTILITIES: Mapping[str, float] = MappingProxyType({
 assert set(DEFAULT_UTILITIES) == KNOWN_SIGNALS
 
 
-class UtilityError(ValueError):
-    """A utility file that can not be used; the message names the file and, where it applies, the key."""
+class UtilityError(located_yaml.Problems):
+    """A utility file that can not be used: each mistake names the file and, where it applies, the line and
+    column of its key or value (``problems``, one per mistake)."""
 
 
 class UtilityTable(Mapping[str, float]):
@@ -104,9 +105,9 @@ def load_utilities(path: str | os.PathLike[str] | None = None,
     """The defaults, overridden by the utilities the patterns ``declared`` (signal -> number, or None for a
     signal declared without one), overridden in turn by the mapping ``signal: number`` in the YAML file ``path``.
 
-    Only the listed signals change. A YAML key that is neither a known nor a declared signal, or a value that is
-    not a finite number, raises UtilityError naming the file and the key: a typo must not silently score a run
-    with the default. ``patterns`` names the declaring patterns in ``source`` ("Table 3 + patterns + FILE");
+    Only the listed signals change. A YAML key that is neither a known nor a declared signal, one given twice, or
+    a value that is not a finite number, raises UtilityError naming the file, line and column of each (a line
+    each): a typo must not silently score a run with the default. ``patterns`` names the declaring patterns in ``source`` ("Table 3 + patterns + FILE");
     without ``declared`` the source is "defaults" or the file, as before.
     """
     values = dict(DEFAULT_UTILITIES)
@@ -130,17 +131,26 @@ def load_utilities(path: str | os.PathLike[str] | None = None,
         entries = [(k, located_yaml.scalar(k), v, located_yaml.value(v)) for k, v in node.value] if node else []
     except located_yaml.LocatedError as error:
         raise UtilityError(error.at(str(path))) from None
+    # every mistake at once, each at its place, as rei validate reports a case's
+    problems: list[str] = []
+    given: set[object] = set()
     for key_node, key, value_node, value in entries:
-        if key not in values:
-            line, column = located_yaml.position(key_node)
+        line, column = located_yaml.position(key_node)
+        if key in given:  # YAML would keep the later silently
+            problems.append(f"{path}:{line}:{column}: {key!r} is given twice")
+        elif key not in values:
             near = difflib.get_close_matches(str(key), list(values), n=1)
             hint = f"did you mean {near[0]}?; " if near else ""
-            raise UtilityError(f"{path}:{line}:{column}: unknown signal {key!r} ({hint}known: "
-                               f"{', '.join(sorted(values))})")
-        if not _is_number(value):
+            problems.append(f"{path}:{line}:{column}: unknown signal {key!r} ({hint}known: "
+                            f"{', '.join(sorted(values))})")
+        elif not _is_number(value):
             line, column = located_yaml.position(value_node)
-            raise UtilityError(f"{path}:{line}:{column}: {key}: the utility must be a finite number, got {value!r}")
-        values[str(key)] = float(value)
+            problems.append(f"{path}:{line}:{column}: {key}: the utility must be a finite number, got {value!r}")
+        else:
+            values[str(key)] = float(value)
+        given.add(key)
+    if problems:
+        raise UtilityError.of(problems)
     return UtilityTable(values, source=" + ".join((*sources, str(path))) if declared is not None else str(path))
 
 

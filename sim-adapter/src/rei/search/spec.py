@@ -812,7 +812,7 @@ def _patterns(top: located_yaml.Entries, base: Path,
         declared = check_user_patterns(paths.get("patterns"), paths.get("utilities"))
     except SpecError as error:
         key = "patterns" if error.args[1:] == ("patterns",) else "utilities"
-        raise SpecError(f"{loc.at(top[key][1])}: {error.args[0]}") from None
+        raise SpecError.of([f"{loc.at(top[key][1])}: {line}" for line in str(error.args[0]).splitlines()]) from None
     return paths.get("patterns"), paths.get("utilities"), declared
 
 
