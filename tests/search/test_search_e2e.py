@@ -101,6 +101,9 @@ def test_candidates_that_are_not_valid_never_reach_the_simulator(searched: Searc
     assert {r["status"] for r in rejected} == {"invalid", "unplannable"}
     counts = searched.document["counts"]
     assert counts["invalid"] + counts["unplannable"] == len(rejected)
+    # the terminal's last progress line counts them as search.json does (it said 'invalid' for both)
+    last = [line for line in searched.second.stdout.splitlines() if " | failing " in line][-1]
+    assert f"invalid {counts['invalid']}, unplannable {counts['unplannable']}, errors " in last, last
     for record in rejected:
         assert record["problems"], record
         assert record["params"]["bin1.floor"] in ("F_1_1", "F_4_1")

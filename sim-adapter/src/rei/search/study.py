@@ -106,6 +106,7 @@ def check_resume(spec: SearchSpec, out: Path) -> None:
 class SearchProgress:
     simulated: int = 0
     invalid: int = 0
+    unplannable: int = 0  # apart from the invalid ones, as search.json and the last line count them
     errors: int = 0
     failing: int = 0
     #: The exit status the stop calls for, 0 when the search ran to its end: 130 after Ctrl-C, 143 (128 + the
@@ -205,8 +206,10 @@ class Search:
                 self._met |= {f["element"] for f in found}
                 self.progress.errors += trial.user_attrs.get("status") == "ERROR"
                 self.progress.failing += bool(found)
-            elif trial.user_attrs.get("status") in ("invalid", "unplannable"):
+            elif trial.user_attrs.get("status") == "invalid":
                 self.progress.invalid += 1
+            elif trial.user_attrs.get("status") == "unplannable":
+                self.progress.unplannable += 1
         done = self.progress.simulated
         self.log(f"search {self.spec.name} ({self.spec.sampler}): budget {self.spec.budget} evaluations, "
                  f"{done} finished already, {max(0, self.spec.budget - done)} to run on {self.pool.workers} "
@@ -285,7 +288,10 @@ class Search:
                        utilities=str(spec.utilities) if spec.utilities else None)
 
     def _invalid(self, trial: optuna.Trial, status: str, problems: tuple[str, ...]) -> None:
-        self.progress.invalid += 1
+        if status == "unplannable":
+            self.progress.unplannable += 1
+        else:
+            self.progress.invalid += 1
         trial.set_user_attr("key", self.key(trial.number))
         trial.set_user_attr("status", status)
         trial.set_user_attr("problems", list(problems))
@@ -387,7 +393,8 @@ class Search:
         if attrs.get("fault"):  # the run's fault as `rei run --fault` takes it (a searched fault's values)
             how = f"fault {attrs['fault']}; {how}"
         return (f"[{p.simulated}/{self.spec.budget}] {self.key(number)}: {how} | failing {p.failing}, "
-                f"invalid {p.invalid}, errors {p.errors}{', best ' + best if best else ''}")
+                f"invalid {p.invalid}, {f'unplannable {p.unplannable}, ' if p.unplannable else ''}errors {p.errors}"
+                f"{', best ' + best if best else ''}")
 
     def best_text(self) -> str:
         """The best value of each objective so far among the runs that have it ('-' when none has)."""
