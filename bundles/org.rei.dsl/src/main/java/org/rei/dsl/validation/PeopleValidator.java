@@ -9,7 +9,6 @@ import java.util.Map;
 import java.util.Set;
 
 import org.eclipse.xtext.validation.Check;
-import org.rei.catalogue.util.Catalogues;
 import org.rei.context.ContextPackage;
 import org.rei.context.Crowd;
 import org.rei.context.Environment;
@@ -19,7 +18,6 @@ import org.rei.context.PhysicalObject;
 import org.rei.context.StaticObject;
 import org.rei.context.layout.FloorLayout;
 import org.rei.context.people.PeoplePlacement;
-import org.rei.dsl.derived.RoomDesugaring;
 
 /**
  * Crowds and groups (docs/language.md, "Crowds and groups"): as many people as the statement can have and as its
@@ -161,7 +159,7 @@ public class PeopleValidator extends ReiCheckBase {
 		if (queue == null || queue.eIsProxy() || !(crowd.eContainer() instanceof Environment env)) {
 			return;
 		}
-		FloorLayout layout = RoomDesugaring.layoutOf(env);
+		FloorLayout layout = roomLayout(env);
 		if (layout.cellOf(queue).isEmpty()) {
 			return;
 		}
@@ -239,35 +237,9 @@ public class PeopleValidator extends ReiCheckBase {
 				|| floors.stream().anyMatch(f -> f == null || f.eIsProxy())) {
 			return null;
 		}
-		Map<Object, Object> context = getContext();
-		Key key = new Key(env);
-		Cached cached = context == null ? null : (Cached) context.get(key);
-		if (cached == null) {
-			FloorLayout layout = RoomDesugaring.layoutOf(env);
-			var defaultHuman = env.eResource() == null || env.eResource().getResourceSet() == null ? null
-					: Catalogues.find(Catalogues.loadDefault(env.eResource().getResourceSet()), "Human").orElse(null);
-			cached = new Cached(PeoplePlacement.of(env, layout, defaultHuman), layout);
-			if (context != null) {
-				context.put(key, cached);
-			}
-		}
-		FloorLayout layout = cached.layout();
-		return floors.stream().anyMatch(f -> layout.cellOf(f).isEmpty()) ? null : cached.placement();
-	}
-
-	/** The validation context's key of a room's placement: the room itself, by identity. */
-	private record Key(Environment environment) {
-		@Override
-		public boolean equals(Object other) {
-			return other instanceof Key key && key.environment == environment;
-		}
-
-		@Override
-		public int hashCode() {
-			return System.identityHashCode(environment);
-		}
-	}
-
-	private record Cached(PeoplePlacement placement, FloorLayout layout) {
+		FloorLayout layout = roomLayout(env);
+		PeoplePlacement placement = perRoom("people placement", env,
+				() -> PeoplePlacement.of(env, layout, defaultHuman(env)));
+		return floors.stream().anyMatch(f -> layout.cellOf(f).isEmpty()) ? null : placement;
 	}
 }

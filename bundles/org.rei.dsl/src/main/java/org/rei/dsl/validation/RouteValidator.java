@@ -21,7 +21,6 @@ import org.rei.context.Route;
 import org.rei.context.RouteStop;
 import org.rei.context.StaticObject;
 import org.rei.context.layout.FloorLayout;
-import org.rei.dsl.derived.RoomDesugaring;
 
 /**
  * Routes of people who see the robot: a walking speed a person can walk, no time before the run, stops a person
@@ -123,7 +122,7 @@ public class RouteValidator extends ReiCheckBase {
 		if (route == null || !(human.eContainer() instanceof Environment env)) {
 			return;
 		}
-		FloorLayout layout = layout(env);
+		FloorLayout layout = roomLayout(env);
 		for (RouteStop stop : route.getOwnedStops()) {
 			Floor floor = stop.getFloor();
 			if (floor == null || floor.eIsProxy() || layout.cellOf(floor).isEmpty()) {
@@ -163,7 +162,7 @@ public class RouteValidator extends ReiCheckBase {
 		if (people.size() < 2) {
 			return;
 		}
-		FloorLayout layout = layout(env);
+		FloorLayout layout = roomLayout(env);
 		for (int j = 1; j < people.size(); j++) {
 			Human later = people.get(j);
 			Floor floor = later.getOwnedRoute().getOwnedStops().get(0).getFloor();
@@ -195,11 +194,8 @@ public class RouteValidator extends ReiCheckBase {
 	/** A person's radius in the pedestrian model: its type's (the default Human's when it names none). */
 	private static double radius(Human human) {
 		ObjectType type = human.getType();
-		if ((type == null || type.eIsProxy()) && human.eResource() != null
-				&& human.eResource().getResourceSet() != null) {
-			type = org.rei.catalogue.util.Catalogues
-					.find(org.rei.catalogue.util.Catalogues.loadDefault(human.eResource().getResourceSet()), "Human")
-					.orElse(null);
+		if (type == null || type.eIsProxy()) {
+			type = defaultHuman(human);
 		}
 		if (type == null || type.eIsProxy()) {
 			return 0.25;
@@ -226,33 +222,6 @@ public class RouteValidator extends ReiCheckBase {
 		double u = Math.cos(yaw) * dx + Math.sin(yaw) * dy;
 		double v = -Math.sin(yaw) * dx + Math.cos(yaw) * dy;
 		return Math.abs(u) < type.getSizeX() / 2 && Math.abs(v) < type.getSizeY() / 2;
-	}
-
-	/** The room's layout, computed once per validation of the room (a map room's costs). */
-	private FloorLayout layout(Environment env) {
-		Map<Object, Object> context = getContext();
-		Object key = new LayoutKey(env);
-		FloorLayout cached = context == null ? null : (FloorLayout) context.get(key);
-		if (cached == null) {
-			cached = RoomDesugaring.layoutOf(env);
-			if (context != null) {
-				context.put(key, cached);
-			}
-		}
-		return cached;
-	}
-
-	/** The validation context's key of a room's layout: the room itself, by identity. */
-	private record LayoutKey(Environment environment) {
-		@Override
-		public boolean equals(Object other) {
-			return other instanceof LayoutKey key && key.environment == environment;
-		}
-
-		@Override
-		public int hashCode() {
-			return System.identityHashCode(environment);
-		}
 	}
 
 	/**
