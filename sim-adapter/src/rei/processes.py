@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import re
 import signal
 import subprocess
 import threading
@@ -110,7 +111,7 @@ class ManagedProcess:
             log.seek(0, os.SEEK_END)
             log.seek(max(0, log.tell() - _TAIL_BYTES))
             text = log.read().decode("utf-8", errors="replace").splitlines()
-        return "\n".join(text[-lines:])
+        return "\n".join(tail_with_cause(text, lines))
 
     def _group_alive(self) -> bool:
         """Whether a process of the group is still running (zombies aside; the leader is reaped here)."""
@@ -154,3 +155,20 @@ def close_and_reap(process: subprocess.Popen[bytes], timeout: float) -> float:
             process.kill()
         time.sleep(0.02)
     return 0.0
+
+
+# The line that says why a process died, where a backtrace follows it (Rust with RUST_BACKTRACE set, the JVM): the
+# log's last lines would be frames only.
+_CAUSE = re.compile(r"panicked at |^Exception in thread ")
+
+
+def tail_with_cause(text: list[str], lines: int) -> list[str]:
+    """The last ``lines`` lines of ``text``, led by the last panic or uncaught exception line and the line after it
+    when the backtrace below them is longer than the tail."""
+    tail = text[-lines:]
+    start = len(text) - len(tail)
+    causes = [i for i, line in enumerate(text[:start]) if _CAUSE.search(line)]
+    if not causes or lines < 4:
+        return tail
+    cause = text[causes[-1]:causes[-1] + 2]
+    return [*cause, "[...]", *text[-(lines - len(cause) - 1):]]
