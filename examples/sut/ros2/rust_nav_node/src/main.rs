@@ -456,10 +456,21 @@ async fn run(node: &mut Node, never_answer: bool) {
         let target = server.get_new_goal(new_goal.clone()).map(|g| pose2d(g.pose.pose.position, g.pose.pose.orientation));
         match target {
           Some(target) if goal.is_none() => {
-            let accepted = server.accept_goal(new_goal).await.expect("accept goal");
-            let handle = server.start_executing_goal(accepted).await.expect("execute goal");
-            println!("goal ({:.2}, {:.2}) accepted", target.x, target.y);
-            goal = Some(Goal { handle, target, started: last_clock });
+            // a DDS error here is the node's to report, not to die of: the client then says the goal went unanswered
+            let accepted = match server.accept_goal(new_goal).await {
+              Ok(accepted) => accepted,
+              Err(error) => {
+                println!("goal ({:.2}, {:.2}) not accepted: {error:?}", target.x, target.y);
+                continue;
+              }
+            };
+            match server.start_executing_goal(accepted).await {
+              Ok(handle) => {
+                println!("goal ({:.2}, {:.2}) accepted", target.x, target.y);
+                goal = Some(Goal { handle, target, started: last_clock });
+              }
+              Err(error) => println!("goal ({:.2}, {:.2}) accepted, not started: {error:?}", target.x, target.y),
+            }
           }
           _ => {
             println!("goal rejected: one is running");
