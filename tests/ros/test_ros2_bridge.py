@@ -93,6 +93,7 @@ def test_a_ros2_node_that_never_answers_a_goal_ends_the_run_in_error_naming_the_
     assert ("the navigate_to_pose action server (matched on ROS domain" in error
             and "did not answer goal 0's send_goal request within 10 s" in error), error
     assert "never answering goals" in (out / "ros" / "stack.log").read_text()
+    assert f"last lines of {out / 'ros' / 'stack.log'}:" in error and "never answering goals" in error, error
     assert processes_mentioning(out) == []
     _stack_gone(out)
 

@@ -165,7 +165,13 @@ class Ros2Bridge(RosBridge):
         elif time.monotonic() > deadline:
             raise SutConnectionError(
                 f"the {self.settings.action} action server (matched on ROS domain {self.domain}) did not answer "
-                f"goal {index}'s send_goal request within {ANSWER_TIMEOUT:g} s")
+                f"goal {index}'s send_goal request within {ANSWER_TIMEOUT:g} s{self._stack_says()}")
+
+    def _stack_says(self) -> str:
+        """The stack's last lines (where a node that could not take a goal says why), if REI started it."""
+        if self.stack is None:
+            return ""
+        return f"; last lines of {self.stack.log}:\n{self.stack.log_tail(10)}"
 
     def _await_server(self) -> None:
         """Until the stack's /clock subscription and NavigateToPose server are matched, in wall time; the start
