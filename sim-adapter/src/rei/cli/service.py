@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: EPL-2.0
 """`rei service status|start|stop`: the background service `rei run` uses (docs/performance.md).
 
-It keeps a spare router and warm monitor and generator JVMs ready between runs, starts on the first `rei run`,
+It keeps three spare routers and warm monitor and generator JVMs ready between runs, starts on the first `rei run`,
 and stops itself after 10 idle minutes. `status` says whether it runs and what it has ready (exit 0 running,
 1 not running); `start` starts it now; `stop` stops it and what it keeps (exit 0 whether or not it ran).
 """
