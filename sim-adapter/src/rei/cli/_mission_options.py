@@ -39,7 +39,7 @@ def add_mission_options(parser: argparse.ArgumentParser) -> None:
                         help="laser data in state messages: the minimum only (default), every range, or none")
     parser.add_argument("--collector", type=Path, metavar="FILE",
                         help="the data collector's settings (YAML: rate_hz, laser, contacts, odometry, nav_state, "
-                        "full_frame_period; docs/protocol.md); --state-rate and --laser override them")
+                        "full_frame_period, objects; docs/protocol.md); --state-rate and --laser override them")
     sut = parser.add_argument_group("external system under test (docs/sut.md)")
     how = sut.add_mutually_exclusive_group()
     how.add_argument("--sut", metavar="COMMAND", help="start COMMAND as the system under test (instead of "
