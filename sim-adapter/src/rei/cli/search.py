@@ -3,8 +3,9 @@
 that break the robot.
 
 The spec names a base case (a .rei file, or room settings as in campaign specs: generated into OUT/base/), the
-SUT, what may change (objects' floors and yaw, humans' paths and timing, the robot's start, goals, the seed, laser
-fault parameters) and what counts as worse (utility, time, navigation metrics, a requirement's verdict, a signal):
+SUT, what may change (objects' floors and yaw, extra furniture, humans' paths and timing, people's behaviour, a
+crowd's or group's size and rate, the robot's start, goals, the seed, a fault of the laser, odometry, drive, commands
+or pose) and what counts as worse (utility, time, navigation metrics, a requirement's verdict, a signal):
 docs/search.md. Candidates are the base case edited by the room
 editor's engine and checked by the language's validators and the navigability check; valid ones run on the
 campaign's workers (or Ray) while Optuna's sampler (tpe, cmaes, nsga2, qmc, or random as a baseline) picks the
