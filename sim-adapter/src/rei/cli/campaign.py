@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: EPL-2.0
 """`rei campaign SPEC.yaml -o OUT [--workers N | --ray ADDRESS]`: run many missions and summarize them.
 
-The spec lists test cases or room-generator settings, variants (humans on/off, faults such as laser:1%),
-repetitions and seeds (docs/campaigns.md). Runs go to worker processes on this machine (`--workers`, default:
+The spec lists test cases or room-generator settings, variants (humans on/off, faults such as laser:1%, the
+people's behaviour, a controller or an external SUT), repetitions and seeds (docs/campaigns.md). Runs go to worker processes on this machine (`--workers`, default:
 one per core) or to a Ray cluster (`--ray ADDRESS`, or `--ray local` for a Ray instance started here). A run
 that crashes or exceeds the spec's timeout is recorded as ERROR and the campaign goes on; an interrupted
 campaign resumes where it stopped when started again with the same OUT. When the background service of `rei run`
