@@ -2,7 +2,8 @@
 """`rei edit CASE.rei`: edit a test case's room as a diagram in the browser (docs/room-editor.md).
 
 Serves the editor on loopback and prints its address, which holds the session's token. Floors, walls, furniture,
-the robot, the humans' paths and the goals are edited in the diagram; Save writes the `.rei` file through the
+the robot, the humans' paths, the routes of people who see the robot, crowds and the goals are edited in the
+diagram; Save writes the `.rei` file through the
 language's serializer, keeping the text you did not touch. Runs until Ctrl-C; unsaved edits are then written to
 CASE.rei.unsaved, never dropped.
 """
