@@ -95,6 +95,10 @@ class Tick:
 class SystemUnderTest:
     """Callbacks of an external SUT; override ``on_tick`` and whichever others you need."""
 
+    # also the state of a subclass whose ``__init__`` does not call ``super().__init__()``
+    _goal: NavGoal | None = None
+    _report: tuple[int, NavStatus, str] | None = None
+
     def __init__(self) -> None:
         self._goal: NavGoal | None = None
         self._report: tuple[int, NavStatus, str] | None = None
@@ -291,7 +295,11 @@ def _serve(sut: SystemUnderTest, client: Any, run_id: str, session: Session,
             if new_scan and observation.scan is not None:
                 last_scan = observation.scan
                 sut.on_scan(observation.scan)
-            twist = sut.on_tick(Tick(int(payload["tick"]), observation, new_scan))
+            current = Tick(int(payload["tick"]), observation, new_scan)
+            twist = sut.on_tick(current)
+            if not isinstance(twist, Twist2D):  # else an AttributeError inside the kit, naming neither
+                raise TypeError(f"{type(sut).__name__}.on_tick returned {twist!r:.100} for tick {current.tick} "
+                                f"(t={current.t:.3f} s): it must return a Twist2D, e.g. Twist2D(0.2, 0.0)")
             send_status()
             command = {"tick": int(payload["tick"]), "v": float(twist.v), "w": float(twist.w)}
             if twist.vy != 0.0:  # only then: a differential robot's SUT sends what it always sent
