@@ -10,6 +10,7 @@ command stays, as on a robot base). The middleware's parts are the subclass's: `
 from __future__ import annotations
 
 import shlex
+import sys
 import threading
 import traceback
 
@@ -28,6 +29,9 @@ ACCEPT_TIMEOUT = 1.0
 PRE_START = 0.1
 #: The stack's output, in the bridge's ROS home.
 STACK_LOG = "stack.log"
+#: Control periods without a single /cmd_vel after which a bridge says so (once, in OUT/sut.log): a stack that
+#: publishes its commands on another topic leaves the robot standing and each tick waiting ``cmd_wait``.
+SILENT_TICKS = 20
 
 
 def session_occupancy(session: Session) -> OccupancyMap | None:
@@ -46,6 +50,8 @@ class RosBridge(SystemUnderTest):
     stack, or None) is watched at each tick. ``middleware`` names it in messages ("ROS", "ROS 2")."""
 
     middleware = "ROS"
+    program = "rei ros1-bridge"
+    cmd_topic = "/cmd_vel"
 
     def __init__(self, cmd_wait: float = CMD_WAIT, stack: ManagedProcess | None = None) -> None:
         super().__init__()
@@ -75,6 +81,24 @@ class RosBridge(SystemUnderTest):
         with self._lock:
             self._outcome[goal_index] = (status, text)
 
+    def twist_publishers(self) -> list[str]:
+        """Other topics the stack publishes velocity commands on (geometry_msgs/Twist), for the warning of a
+        silent /cmd_vel; none known by default."""
+        return []
+
+    def warn_silent(self, tick: Tick) -> None:
+        """No /cmd_vel in the first SILENT_TICKS periods: say where the stack's commands may have gone."""
+        try:
+            elsewhere = [topic for topic in self.twist_publishers() if topic != self.cmd_topic]
+        except Exception as error:  # noqa: BLE001 - only a hint: the warning goes out without it
+            elsewhere, hint = [], f" (could not list the stack's topics: {error})"
+        else:
+            hint = (f"; geometry_msgs/Twist is published on {', '.join(elsewhere)}: remap it to {self.cmd_topic}"
+                    if elsewhere else f"; nothing publishes geometry_msgs/Twist on {self.cmd_topic}")
+        print(f"{self.program}: no {self.cmd_topic} from the {self.middleware} stack in the first {tick.tick + 1} "
+              f"control periods (tick {tick.tick}, t={tick.t:.3f} s): the robot stands still and each tick waits "
+              f"{self.cmd_wait:g} s{hint}", file=sys.stderr, flush=True)
+
     def check_stack(self) -> None:
         stack = self.stack
         if stack is not None and stack.poll() is not None:
@@ -93,7 +117,10 @@ class RosBridge(SystemUnderTest):
         with self._lock:
             self._lock.wait_for(lambda: self._commands > seen, timeout=self.cmd_wait)
             command = self._command
+            silent = self._commands == 0
             outcome = self._outcome.get(self.goal.index) if self.goal is not None else None
+        if silent and tick.tick == SILENT_TICKS - 1:
+            self.warn_silent(tick)
         if outcome is not None and self.status is NavStatus.ACTIVE:
             self.report(*outcome)
         return command if command is not None else Twist2D()

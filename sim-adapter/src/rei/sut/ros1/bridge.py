@@ -62,6 +62,7 @@ class Ros1Bridge(RosBridge):
 
         self.m = messages
         self.settings = settings
+        self.cmd_topic = settings.cmd_topic
         self.frames = messages.Frames()
         self._with_map = False
         self._scan_time = 0.1
@@ -115,6 +116,11 @@ class Ros1Bridge(RosBridge):
 
     def publish_clock(self, t: float) -> None:
         self._clock.publish(self.m.clock(t))
+
+    def twist_publishers(self) -> list[str]:
+        import rospy
+
+        return sorted(topic for topic, kind in rospy.get_published_topics() if kind == "geometry_msgs/Twist")
 
     def on_end(self, reason: str) -> None:
         with contextlib.suppress(Exception):

@@ -58,6 +58,7 @@ class Ros2Bridge(RosBridge):
     """The SUT callbacks in ROS 2 terms over DDS; ``stack`` is the started navigation stack (watched each tick)."""
 
     middleware = "ROS 2"
+    program = "rei ros2-bridge"
 
     def __init__(self, settings: Ros2BridgeSettings, domain: int, participant: Any,
                  stack: ManagedProcess | None = None) -> None:
