@@ -64,3 +64,18 @@ def test_a_stack_that_dies_ends_the_run_in_error_with_its_log(run_cli, repo_root
 def test_a_holonomic_robot_strafes_on_cmd_vel_s_linear_y(strafes, repo_root: Path) -> None:
     """The strafe example through the bridge: the ramming node plays its sideways-only script."""
     strafes(lambda script, out: f"ros1:python3 {repo_root / NODES / 'ram_node.py'} _script:={script} {out}")
+
+
+def test_a_stack_without_the_move_base_server_is_named_in_the_join_timeout_s_error(
+        run_cli, repo_root: Path, tmp_path: Path, processes_mentioning) -> None:
+    """A stack serving no move_base action: REI's join timeout (60 s by default, as the bridge's own wait for the
+    server, and counted from earlier) ended the run with "no command for tick 0" and a sut.log that said only that
+    the stack was started; now the bridge's note of what it waits for is in the error's last lines."""
+    out = tmp_path / "out"
+    result = run_cli("run", repo_root / EXAMPLE, "-o", out, "--sut-join-timeout", "12", "--sut",
+                     f"ros1:python3 -c \"import time; time.sleep(60)\" {out}", timeout=300)
+    assert result.returncode == 2, result.stdout + result.stderr
+    error = _summary(out)["error"]
+    assert "no command for tick 0" in error and "no move_base action server after 5 s" in error, error
+    assert "move_base_msgs/MoveBaseAction" in error
+    assert processes_mentioning(out) == []

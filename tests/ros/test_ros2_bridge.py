@@ -158,6 +158,21 @@ def test_a_ros2_stack_that_dies_ends_the_run_in_error_with_its_log(run_cli, repo
     assert processes_mentioning(out) == []
 
 
+def test_a_ros2_stack_without_the_action_server_is_named_in_the_join_timeout_s_error(
+        run_cli, repo_root: Path, tmp_path: Path, processes_mentioning) -> None:
+    """A stack that is not matched (no /clock subscription, no NavigateToPose server): REI's join timeout ended the
+    run with "no command for tick 0" before the bridge's own 60 s wait said what was missing; now the bridge's note
+    of it is in the error's last lines."""
+    out = tmp_path / "out"
+    result = run_cli("run", repo_root / EXAMPLE, "-o", out, "--sut-join-timeout", "12", "--sut",
+                     f"ros2:python3 -c \"import time; time.sleep(60)\" {out}", timeout=300)
+    assert result.returncode == 2, result.stdout + result.stderr
+    error = _summary(out)["error"]
+    assert "no command for tick 0" in error and "the stack is not matched after 5 s" in error, error
+    assert "a /clock subscription (rt/clock)" in error
+    assert processes_mentioning(out) == []
+
+
 def test_a_holonomic_robot_strafes_on_cmd_vel_s_linear_y(strafes, repo_root: Path) -> None:
     """The strafe example through the bridge: the reference node plays the sideways-only script."""
     strafes(lambda script, out: f"ros2:python3 {repo_root / NODES / 'reference_nav_node.py'} --script {script} {out}")

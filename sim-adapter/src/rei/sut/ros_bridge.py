@@ -23,6 +23,10 @@ from rei.sut.ros_conventions import CMD_WAIT
 
 #: Wall seconds a bridge waits for the stack's navigation action server (the stack's start-up).
 SERVER_TIMEOUT = 60.0
+#: Wall seconds of waiting for the stack's action server after which a bridge says what it waits for, once: REI's
+#: --sut-join-timeout (60 s, as SERVER_TIMEOUT, and counted from earlier) ends the run first, and its error shows
+#: the last lines of OUT/sut.log, so this line is what names the cause.
+WAIT_NOTE = 5.0
 #: Wall seconds a new goal may take to be taken by the server before the next clock goes out anyway.
 ACCEPT_TIMEOUT = 1.0
 #: Simulation seconds before t = 0 of the clock the stack starts with (one control period).

@@ -34,6 +34,7 @@ from rei.sut.ros_bridge import (
     PRE_START,
     SERVER_TIMEOUT,
     STACK_LOG,
+    WAIT_NOTE,
     RosBridge,
     run_bridge,
     session_occupancy,
@@ -154,9 +155,15 @@ class Ros1Bridge(RosBridge):
         found = threading.Event()
         waiter = threading.Thread(target=lambda: self._action.wait_for_server() and found.set(), daemon=True)
         waiter.start()
-        deadline = time.monotonic() + SERVER_TIMEOUT
+        started = time.monotonic()
+        deadline, noted = started + SERVER_TIMEOUT, False
         while not found.wait(0.1):
             self.check_stack()
+            if not noted and time.monotonic() > started + WAIT_NOTE:
+                noted = True
+                print(f"rei ros1-bridge: no {self.settings.action} action server after {WAIT_NOTE:g} s (tick 0 waits "
+                      f"for it): the stack must serve move_base_msgs/MoveBaseAction as {self.settings.action!r}; "
+                      f"waiting up to {SERVER_TIMEOUT:g} s or --sut-join-timeout", flush=True)
             if time.monotonic() > deadline:
                 raise SutConnectionError(f"no {self.settings.action} action server within {SERVER_TIMEOUT:g} s: the "
                                          "stack must serve move_base_msgs/MoveBaseAction")

@@ -34,6 +34,7 @@ from rei.sut.ros_bridge import (
     PRE_START,
     SERVER_TIMEOUT,
     STACK_LOG,
+    WAIT_NOTE,
     RosBridge,
     run_bridge,
     session_occupancy,
@@ -177,7 +178,8 @@ class Ros2Bridge(RosBridge):
     def _await_server(self) -> None:
         """Until the stack's /clock subscription and NavigateToPose server are matched, in wall time; the start
         clock is repeated until the /clock subscription is there, then sent once more."""
-        deadline = time.monotonic() + SERVER_TIMEOUT
+        started = time.monotonic()
+        deadline, noted = started + SERVER_TIMEOUT, False
         clock = self._writers["clock"]
         clock_matched = False
         while True:
@@ -187,9 +189,16 @@ class Ros2Bridge(RosBridge):
                 clock.write(self.m.clock(-PRE_START))  # after the match: once more, which that reader gets
             if clock_matched and self._action.server_ready():
                 return
-            if time.monotonic() > deadline:
+            now = time.monotonic()
+            if (not noted and now > started + WAIT_NOTE) or now > deadline:
                 missing = ([] if clock_matched else ["a /clock subscription (rt/clock)"]) + [
                     f"the action's {name}" for name in self._action.unmatched()]
+            if not noted and now > started + WAIT_NOTE:
+                noted = True
+                print(f"rei ros2-bridge: the stack is not matched after {WAIT_NOTE:g} s on ROS domain {self.domain} "
+                      f"(tick 0 waits for it); missing: {', '.join(missing)}; waiting up to {SERVER_TIMEOUT:g} s or "
+                      "--sut-join-timeout", flush=True)
+            if now > deadline:
                 raise SutConnectionError(
                     f"the stack was not matched within {SERVER_TIMEOUT:g} s on ROS domain {self.domain}; missing: "
                     f"{', '.join(missing)}. It must subscribe /clock and serve nav2_msgs/action/NavigateToPose as "
