@@ -13,6 +13,9 @@ import re
 import subprocess
 import sys
 from pathlib import Path
+from typing import Any
+
+import pytest
 
 from rei.campaign.backends import RUNTIME_ENV_ENV
 
@@ -44,3 +47,55 @@ def test_a_runtime_env_that_is_not_json_is_refused(tmp_path: Path) -> None:
     assert done.returncode == 2, done.stdout + done.stderr
     assert done.stderr.startswith("rei: error: cannot connect to Ray at local: $REI_RAY_RUNTIME_ENV: not a JSON "
                                   "object nor a JSON file"), done.stderr
+
+
+def _closed_port() -> int:
+    import socket
+
+    with socket.socket() as s:  # bound, not listening: a connection there is refused
+        s.bind(("127.0.0.1", 0))
+        return int(s.getsockname()[1])
+
+
+def test_a_wrong_address_is_refused_at_once_naming_it(tmp_path: Path) -> None:
+    """A user's typo in --ray HOST:PORT: Ray alone retried for many minutes (a warning every few seconds) before
+    failing; REI refuses it within seconds, saying nothing answers there."""
+    import time
+
+    address = f"127.0.0.1:{_closed_port()}"
+    spec = tmp_path / "spec.yaml"
+    spec.write_text(f"groups:\n  - name: example\n    cases: [{EXAMPLE}]\n", encoding="utf-8")
+    started = time.monotonic()
+    done = subprocess.run([sys.executable, "-m", "rei.cli", "campaign", str(spec), "-o", str(tmp_path / "out"),
+                           "--ray", address], capture_output=True, text=True, timeout=120, check=False)
+    assert time.monotonic() - started < 60, done.stderr
+    assert done.returncode == 2, done.stdout + done.stderr
+    assert done.stderr.strip().splitlines()[-1].startswith(
+        f"rei: error: cannot connect to Ray at {address}: nothing answers at {address} (Connection refused); is the "
+        "cluster's head started there"), done.stderr
+    assert not (tmp_path / "out" / "runs.csv").exists()
+
+
+def test_a_missing_token_is_named_when_the_driver_cannot_connect(monkeypatch: Any) -> None:
+    """A head started as the docs say asks for Ray's token (Ray's default); a driver without it got only Ray's
+    'Failed to connect to Ray cluster', and now the fix besides."""
+    import socket
+
+    import ray
+
+    from rei.campaign import backends
+
+    def refuse(**_: Any) -> None:
+        raise ConnectionError("Failed to connect to Ray cluster at 127.0.0.1:6379")
+
+    monkeypatch.setattr(ray, "init", refuse)
+    monkeypatch.delenv("RAY_AUTH_MODE", raising=False)
+    with socket.socket() as head:  # something listens: the address is right
+        head.bind(("127.0.0.1", 0))
+        head.listen()
+        address = f"127.0.0.1:{head.getsockname()[1]}"
+        with pytest.raises(backends.RayUnavailableError) as refused:
+            backends.connect_ray(address, 1)
+    assert str(refused.value) == (f"cannot connect to Ray at {address}: Failed to connect to Ray cluster at "
+                                  f"127.0.0.1:6379; {backends.AUTH_HINT}")
+    assert "RAY_AUTH_MODE=token" in backends.AUTH_HINT

@@ -186,6 +186,7 @@ class RayBackend:
                 self.close()
                 raise
         else:
+            _reachable(address)
             ray.init(address=address, **init)
         # every node runs can go to (those offering the resource 'rei') is asked once whether it can run them (Java,
         # the monitor jar, pybullet, the router when the runs start one): one that cannot is named now rather than
@@ -325,6 +326,39 @@ def _runtime_env() -> dict[str, Any] | None:
     return env
 
 
+#: Seconds a cluster's head has to accept a connection before ``--ray HOST:PORT`` is refused (Ray itself would try
+#: again for minutes, printing a warning every few seconds).
+CONNECT_TIMEOUT = 10.0
+_HOST_PORT = re.compile(r"^(?:\[(?P<v6>[^\]]+)\]|(?P<host>[^:/\[\]]+)):(?P<port>\d+)$")
+#: What the driver needs when the head asks for Ray's token (``ray start --head``'s default), and that Ray's own
+#: error leaves out.
+AUTH_HINT = ("if the cluster asks for Ray's authentication token (`ray start --head` does by default), give this "
+             "machine the head's: RAY_AUTH_MODE=token and RAY_AUTH_TOKEN_PATH=FILE or RAY_AUTH_TOKEN=TOKEN "
+             "(docs/campaigns.md#setting-up-a-cluster)")
+
+
+class NoHeadError(ConnectionError):
+    """Nothing accepts a connection at the address of ``--ray HOST:PORT``."""
+
+
+def _reachable(address: str, timeout: float = CONNECT_TIMEOUT) -> None:
+    """Refuses at once a ``HOST:PORT`` where nothing accepts a connection, which Ray would retry for minutes;
+    other forms (``auto``, ``ray://...``) are Ray's to resolve."""
+    import socket
+
+    match = _HOST_PORT.match(address.strip())
+    if match is None:
+        return
+    host = match["v6"] or match["host"]
+    try:
+        with socket.create_connection((host, int(match["port"])), timeout=timeout):
+            pass
+    except OSError as error:
+        why = "timed out" if isinstance(error, TimeoutError) else (error.strerror or str(error))
+        raise NoHeadError(f"nothing answers at {address} ({why}); is the cluster's head started there (`ray start "
+                          "--head --port=PORT` prints the address to give), and is the address right?") from None
+
+
 class RayUnavailableError(RuntimeError):
     """The runs have nowhere to go: Ray is missing, its cluster can not be reached or some of its nodes cannot run
     REI (the message says which)."""
@@ -341,5 +375,10 @@ def connect_ray(address: str, workers: int, router: bool = False, people: bool =
         raise RayUnavailableError("--ray needs Ray: pip install 'rei[campaign-ray]'") from None
     except NodesUnfitError as error:
         raise RayUnavailableError(str(error)) from None
-    except Exception as error:  # noqa: BLE001 - any failure to reach the cluster is the user's to fix
+    except NoHeadError as error:
         raise RayUnavailableError(f"cannot connect to Ray at {address}: {error}") from None
+    except Exception as error:  # noqa: BLE001 - any failure to reach the cluster is the user's to fix
+        hint = ""
+        if address != "local" and os.environ.get("RAY_AUTH_MODE", "").strip().lower() != "token":
+            hint = f"; {AUTH_HINT}"  # Ray says only that it failed to connect, after retrying
+        raise RayUnavailableError(f"cannot connect to Ray at {address}: {error}{hint}") from None
