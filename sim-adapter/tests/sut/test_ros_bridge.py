@@ -12,7 +12,7 @@ from rei.sut.ros_bridge import SILENT_TICKS, RosBridge
 
 
 class _Bridge(RosBridge):
-    def __init__(self, elsewhere: list[str], answers: bool = False) -> None:
+    def __init__(self, elsewhere: list[tuple[str, str]] | None, answers: bool = False) -> None:
         super().__init__(cmd_wait=0.0)
         self.elsewhere, self.answers = elsewhere, answers
 
@@ -23,7 +23,7 @@ class _Bridge(RosBridge):
         if self.answers:
             self.command_received(Twist2D(0.1, 0.0))
 
-    def twist_publishers(self) -> list[str]:
+    def velocity_publishers(self) -> list[tuple[str, str]] | None:
         return self.elsewhere
 
 
@@ -35,7 +35,7 @@ def _ticks(bridge: RosBridge, n: int) -> None:
 def test_a_stack_that_publishes_its_commands_elsewhere_is_told_where_once(capsys: pytest.CaptureFixture[str]) -> None:
     """A stack publishing on /mobile_base/cmd_vel left the robot standing, each tick waiting cmd_wait (a simple
     navigation run took ten minutes of wall time) and said nothing anywhere."""
-    bridge = _Bridge(["/cmd_vel", "/mobile_base/cmd_vel"])
+    bridge = _Bridge([("/cmd_vel", "geometry_msgs/Twist"), ("/mobile_base/cmd_vel", "geometry_msgs/Twist")])
     _ticks(bridge, SILENT_TICKS - 1)
     assert capsys.readouterr().err == ""
     _ticks(bridge, 3 * SILENT_TICKS)
@@ -43,12 +43,24 @@ def test_a_stack_that_publishes_its_commands_elsewhere_is_told_where_once(capsys
     assert err.count("\n") == 1, err
     assert (f"rei ros1-bridge: no /cmd_vel from the ROS stack in the first {SILENT_TICKS} control periods "
             f"(tick {SILENT_TICKS - 1}, t=1.900 s)") in err
-    assert "geometry_msgs/Twist is published on /mobile_base/cmd_vel: remap it to /cmd_vel" in err
+    assert "it publishes geometry_msgs/Twist on /mobile_base/cmd_vel: REI reads geometry_msgs/Twist on /cmd_vel" in err
+
+
+def test_a_stack_that_publishes_twist_stamped_is_told_its_type(capsys: pytest.CaptureFixture[str]) -> None:
+    """Nav2's enable_stamped_cmd_vel: TwistStamped on /cmd_vel, which a Twist reader never matches."""
+    _ticks(_Bridge([("/cmd_vel", "geometry_msgs/TwistStamped")]), SILENT_TICKS)
+    assert "it publishes geometry_msgs/TwistStamped on /cmd_vel: REI reads geometry_msgs/Twist" in \
+        capsys.readouterr().err
 
 
 def test_a_silent_stack_without_another_twist_topic_is_told_so(capsys: pytest.CaptureFixture[str]) -> None:
     _ticks(_Bridge([]), SILENT_TICKS)
     assert "nothing publishes geometry_msgs/Twist on /cmd_vel" in capsys.readouterr().err
+
+
+def test_a_bridge_that_cannot_list_topics_asks(capsys: pytest.CaptureFixture[str]) -> None:
+    _ticks(_Bridge(None), SILENT_TICKS)
+    assert "does it publish geometry_msgs/Twist (not TwistStamped) on /cmd_vel?" in capsys.readouterr().err
 
 
 def test_a_stack_that_answers_hears_nothing(capsys: pytest.CaptureFixture[str]) -> None:

@@ -85,20 +85,27 @@ class RosBridge(SystemUnderTest):
         with self._lock:
             self._outcome[goal_index] = (status, text)
 
-    def twist_publishers(self) -> list[str]:
-        """Other topics the stack publishes velocity commands on (geometry_msgs/Twist), for the warning of a
-        silent /cmd_vel; none known by default."""
-        return []
+    def velocity_publishers(self) -> list[tuple[str, str]] | None:
+        """The topics the stack publishes velocity commands on, with their types (geometry_msgs/Twist or
+        TwistStamped), for the warning of a silent /cmd_vel; None when the middleware cannot list them."""
+        return None
 
     def warn_silent(self, tick: Tick) -> None:
         """No /cmd_vel in the first SILENT_TICKS periods: say where the stack's commands may have gone."""
         try:
-            elsewhere = [topic for topic in self.twist_publishers() if topic != self.cmd_topic]
+            found = self.velocity_publishers()
         except Exception as error:  # noqa: BLE001 - only a hint: the warning goes out without it
-            elsewhere, hint = [], f" (could not list the stack's topics: {error})"
+            found, failed = None, f" (could not list the stack's topics: {error})"
         else:
-            hint = (f"; geometry_msgs/Twist is published on {', '.join(elsewhere)}: remap it to {self.cmd_topic}"
-                    if elsewhere else f"; nothing publishes geometry_msgs/Twist on {self.cmd_topic}")
+            failed = ""
+        expected = (self.cmd_topic, "geometry_msgs/Twist")
+        elsewhere = [f"{kind} on {topic}" for topic, kind in found or () if (topic, kind) != expected]
+        if found is None:
+            hint = f"; does it publish geometry_msgs/Twist (not TwistStamped) on {self.cmd_topic}?{failed}"
+        elif elsewhere:
+            hint = f"; it publishes {', '.join(elsewhere)}: REI reads geometry_msgs/Twist on {self.cmd_topic}"
+        else:
+            hint = f"; nothing publishes geometry_msgs/Twist on {self.cmd_topic}"
         print(f"{self.program}: no {self.cmd_topic} from the {self.middleware} stack in the first {tick.tick + 1} "
               f"control periods (tick {tick.tick}, t={tick.t:.3f} s): the robot stands still and each tick waits "
               f"{self.cmd_wait:g} s{hint}", file=sys.stderr, flush=True)

@@ -118,10 +118,11 @@ class Ros1Bridge(RosBridge):
     def publish_clock(self, t: float) -> None:
         self._clock.publish(self.m.clock(t))
 
-    def twist_publishers(self) -> list[str]:
+    def velocity_publishers(self) -> list[tuple[str, str]]:
         import rospy
 
-        return sorted(topic for topic, kind in rospy.get_published_topics() if kind == "geometry_msgs/Twist")
+        return sorted((topic, kind) for topic, kind in rospy.get_published_topics()
+                      if kind in ("geometry_msgs/Twist", "geometry_msgs/TwistStamped"))
 
     def on_end(self, reason: str) -> None:
         with contextlib.suppress(Exception):
