@@ -100,8 +100,18 @@ def check_command(command: str, cwd: Path | None = None) -> list[str]:
         if not (path.is_file() and os.access(path, os.X_OK)):
             raise SutLaunchError(f"--sut: {path} is not an executable file")
     elif shutil.which(program, path=_search_path(os.environ)) is None:
-        raise SutLaunchError(f"--sut: program {program!r} not found on PATH")
+        raise SutLaunchError(f"--sut: program {program!r} not found on PATH{_prefix_hint(program)}")
     return argv
+
+
+def _prefix_hint(program: str) -> str:
+    """For a program that looks like a misspelt bridge prefix ("ros:...", "ROS1:...", "ros1 :..."): which there
+    are."""
+    prefix = program.partition(":")[0]
+    if ":" not in program and program.lower() not in BRIDGES:
+        return ""
+    known = " or ".join(f"'{name}:COMMAND'" for name in BRIDGES)
+    return f" (a ROS stack is run with --sut {known}, no space before the colon; {prefix!r} is no bridge)"
 
 
 def start(command: str, connection: Connection, out_dir: Path, cwd: Path | None = None) -> ManagedProcess:
