@@ -68,3 +68,19 @@ def test_a_subclass_that_does_not_call_super_init_is_served() -> None:
     client = _serve_messages(OwnInit(0.2), _tick(0), _GOAL, _tick(1), _END)
     assert [topic for topic, _ in client.published] == ["command", "status", "status", "command"]
     assert client.published[2][1] == {"goal_id": 0, "status": "ACTIVE", "text": "going"}
+
+
+def test_a_refusal_says_the_router_s_words_and_the_run_id_to_check() -> None:
+    """A wrong REI_RUN_ID printed autobahn's repr: "the router refused: ApplicationError(error=<wamp.error.
+    not_authorized>, args=[...], kwargs={}, enc_algo=None, callee=None, ..."."""
+    from autobahn.wamp.exception import ApplicationError
+
+    from rei.sut.client import _refusal
+
+    error = ApplicationError("wamp.error.not_authorized", 'session is not authorized to subscribe to topic '
+                             '"rei.run.abc.sut.tick" on realm "rei"')
+    message = _refusal(error, "abc")
+    assert message.startswith('the router refused: wamp.error.not_authorized: session is not authorized to '
+                              'subscribe to topic "rei.run.abc.sut.tick"')
+    assert "is REI_RUN_ID='abc' the id of the run you joined?" in message
+    assert "enc_algo" not in message

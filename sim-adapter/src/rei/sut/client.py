@@ -230,7 +230,7 @@ def run(sut: SystemUnderTest, *, environ: Mapping[str, str] = os.environ, name: 
         raise SutConnectionError(str(error)) from None
     except Exception as error:
         if type(error).__module__.startswith("autobahn"):  # refused by the router (e.g. not authorized)
-            raise SutConnectionError(f"the router refused: {error}") from None
+            raise SutConnectionError(_refusal(error, run_id)) from None
         raise
     finally:
         try:
@@ -251,6 +251,16 @@ def main(sut: SystemUnderTest, *, name: str | None = None) -> NoReturn:
         traceback.print_exc()
         sys.exit(EXIT_CALLBACK)
     sys.exit(0)
+
+
+def _refusal(error: Exception, run_id: str) -> str:
+    """What the router's refusal says (not autobahn's repr of it), with the usual cause of a not_authorized."""
+    uri, args = getattr(error, "error", None), getattr(error, "args", ())
+    text = f"{uri}: {args[0]}" if uri and args and isinstance(args[0], str) else str(error)
+    if uri == "wamp.error.not_authorized":
+        text += (f" (the sut role may use only rei.run.<REI_RUN_ID>.sut.tick, goal, cancel, end, command, status "
+                 f"and hello: is REI_RUN_ID={run_id!r} the id of the run you joined?)")
+    return f"the router refused: {text}"
 
 
 def _read(reader: Any, payload: Any, what: str) -> Any:
