@@ -99,3 +99,25 @@ def test_a_missing_token_is_named_when_the_driver_cannot_connect(monkeypatch: An
     assert str(refused.value) == (f"cannot connect to Ray at {address}: Failed to connect to Ray cluster at "
                                   f"127.0.0.1:6379; {backends.AUTH_HINT}")
     assert "RAY_AUTH_MODE=token" in backends.AUTH_HINT
+
+
+def test_a_node_whose_rei_is_another_build_is_named_at_connect_time(tmp_path: Path) -> None:
+    """A node left with an older wheel (every wheel is rei 0.1.0), or one built from an edited tree, ran the
+    driver's runs with other code, unnoticed; now the check compares the node's REI sources with the driver's.
+    Here the runtime environment puts a copy of REI with one line changed ahead of the installed one."""
+    import shutil
+
+    import rei
+    from rei.campaign.nodes import build_id, check_node
+
+    assert check_node(False, False, build=build_id()) == check_node(False, False)  # the same build: no lack
+    other = tmp_path / "other" / "rei"
+    shutil.copytree(Path(rei.__file__).resolve().parent, other, ignore=shutil.ignore_patterns("__pycache__"))
+    with open(other / "campaign" / "plan.py", "a", encoding="utf-8") as f:
+        f.write("# edited after the driver's wheel was built\n")
+    done = _campaign(tmp_path, json.dumps({"py_modules": [str(other)]}))
+    assert done.returncode == 2, done.stdout + done.stderr
+    assert re.search(r"rei: error: node \S+ \([0-9a-f]{12}\): its REI is another build than the driver's "
+                     rf"\([0-9a-f]{{12}} there, {build_id()[:12]} here\): install the driver's REI there",
+                     done.stderr), done.stderr
+    assert not (tmp_path / "out" / "runs.csv").exists()  # no run was tried

@@ -153,7 +153,7 @@ class RayBackend:
                  log: Callable[[str], None] = print, router: bool = False, people: bool = False) -> None:
         import ray
 
-        from rei.campaign.nodes import RESOURCE, Watch, check_cluster
+        from rei.campaign.nodes import RESOURCE, Watch, build_id, check_cluster
 
         if attempts < 1:
             raise ValueError(f"attempts must be >= 1, got {attempts}")
@@ -203,7 +203,7 @@ class RayBackend:
                                   "REI's runs:\n" + "\n".join(f"{name}: {lack}" for name, lack in problems))
         # a node that joins later is checked before it gets a run: by the driver when it notices it, or by the
         # run's task that lands there first (it then returns without running, and the run goes elsewhere)
-        self._needs = (router, people)
+        self._needs = (router, people, build_id())
         self._watch = Watch(ray, fit, router, people, log)
         # a CPU and a 'rei' each: only the nodes offering it get runs; max_retries=0: REI tries a lost task again
         # itself (above); Ray's own retry would hide the attempt

@@ -40,10 +40,42 @@ CHECK_TIMEOUT = 120.0
 _ANSI = re.compile(r"\x1b\[[0-9;]*m")
 
 
-def check_node(router: bool, people: bool = False) -> list[str]:
+_BUILD: list[str] = []
+
+
+def build_id() -> str:
+    """This REI's build: a SHA-256 of its package's Python sources (paths and contents; not the people server,
+    which only the wheel carries there), the same for a wheel and the tree it was built from, whatever the version
+    number (every wheel is 0.1.0) and whether that tree was committed."""
+    if not _BUILD:
+        import hashlib
+        from pathlib import Path
+
+        import rei
+
+        root = Path(rei.__file__).resolve().parent
+        digest = hashlib.sha256()
+        for path in sorted(root.rglob("*.py")):
+            relative = path.relative_to(root).as_posix()
+            if relative.startswith("pedestrians/") or "__pycache__" in relative:
+                continue
+            digest.update(relative.encode() + b"\0" + path.read_bytes() + b"\0")
+        _BUILD.append(digest.hexdigest())
+    return _BUILD[0]
+
+
+#: What a node whose REI is not the driver's lacks (its build, the driver's).
+OTHER_BUILD = ("its REI is another build than the driver's ({0} there, {1} here): install the driver's REI there "
+               "(the wheel scripts/build-wheel.sh builds from the driver's tree; docs/campaigns.md#setting-up-a-cluster)")
+
+
+def check_node(router: bool, people: bool = False, build: str | None = None) -> list[str]:
     """On the node: what it lacks to run REI's runs (empty: nothing). ``router``: the runs start a WAMP router;
-    ``people``: they move people who see the robot (JuPedSim's people server)."""
+    ``people``: they move people who see the robot (JuPedSim's people server); ``build``: the driver's
+    ``build_id``, which the node's must be (its runs would otherwise run other code than the driver's)."""
     problems = []
+    if build is not None and build != build_id():
+        problems.append(OTHER_BUILD.format(build_id()[:12], build[:12]))
     try:
         import pybullet  # noqa: F401 - the simulation
     except ImportError as error:
@@ -74,14 +106,14 @@ def check_node(router: bool, people: bool = False) -> list[str]:
     return problems
 
 
-_LACKS: dict[tuple[bool, bool], list[str]] = {}
+_LACKS: dict[tuple[bool, bool, str | None], list[str]] = {}
 
 
-def node_lacks(router: bool, people: bool = False) -> list[str]:
+def node_lacks(router: bool, people: bool = False, build: str | None = None) -> list[str]:
     """``check_node``, asked once per process (a Ray worker runs many runs): what a run's task asks before it runs."""
-    if (router, people) not in _LACKS:
-        _LACKS[router, people] = check_node(router, people)
-    return _LACKS[router, people]
+    if (router, people, build) not in _LACKS:
+        _LACKS[router, people, build] = check_node(router, people, build)
+    return _LACKS[router, people, build]
 
 
 def name(node: dict[str, Any]) -> str:
@@ -95,7 +127,7 @@ def ask(ray: Any, node: dict[str, Any], router: bool, people: bool = False) -> A
 
     remote = ray.remote(num_cpus=0, max_retries=0)(check_node)
     return remote.options(scheduling_strategy=NodeAffinitySchedulingStrategy(node["NodeID"], soft=False)).remote(
-        router, people)
+        router, people, build=build_id())
 
 
 def answer(ray: Any, ref: Any) -> list[str]:
@@ -108,6 +140,9 @@ def answer(ray: Any, ref: Any) -> list[str]:
         # the innermost cause is the last line of the node's traceback ("ModuleNotFoundError: No module ...")
         cause = lines[-1] if lines else type(error).__name__
         hint = "install REI there (pip install rei-*.whl, docs/campaigns.md#setting-up-a-cluster)"
+        if "check_node()" in cause:  # its REI's check takes other arguments: an older or newer REI
+            hint = ("its REI is another version than the driver's: install the driver's REI there (the wheel "
+                    "scripts/build-wheel.sh builds from the driver's tree; docs/campaigns.md#setting-up-a-cluster)")
         return [f"cannot run REI's check ({cause}); {hint}"]
 
 

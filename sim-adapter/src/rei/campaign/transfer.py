@@ -170,10 +170,10 @@ def sweep_monitor_folders(wait: float = 0.0) -> None:
 
 
 def run_shipped(task: dict[str, Any], case: Bundle, extra: Bundle, fields: dict[str, Any], attempt: int,
-                needs: tuple[bool, bool] = (False, False)) -> dict[str, Any]:
+                needs: tuple[Any, ...] = (False, False)) -> dict[str, Any]:
     """The Ray task: the run in a temporary folder of this node's, its files returned as object store chunks.
     First it asks whether this node can run it (rei.campaign.nodes.node_lacks; ``needs``: the runs' router and
-    people): one that cannot returns ``{"unfit": what it lacks, "node": its id}`` without running."""
+    people, and the driver's REI build): one that cannot returns ``{"unfit": what it lacks, "node": its id}`` without running."""
     import ray
 
     from rei.campaign.nodes import node_lacks
