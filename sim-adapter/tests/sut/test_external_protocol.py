@@ -209,3 +209,17 @@ def test_uris_are_the_run_s_and_only_the_protocol_s() -> None:
     assert protocol.uri("r1", "tick") == "rei.run.r1.sut.tick"
     with pytest.raises(ValueError, match="no SUT URI named 'state'"):
         protocol.uri("r1", "state")
+
+
+def test_a_message_with_keyword_arguments_is_rejected_naming_them() -> None:
+    """publish(uri, tick=0, v=0.1, w=0.0) was rejected as "missing tick, v, w; unknown args, kwargs": fields the
+    user never sent."""
+    from rei.sut.external.controller import _odd
+
+    sent = _odd((), {"tick": 0, "v": 0.1, "w": 0.0})
+    for result in (_check(sent, tick=0), protocol.check_status(_odd((), {"goal_id": 0, "status": "ACTIVE"}),
+                                                                 current_goal=0)):
+        assert isinstance(result, Rejected)
+        assert "keyword arguments (" in result.reason and "args[0]" in result.reason, result.reason
+        assert "unknown" not in result.reason
+    assert "keyword arguments (tick, v, w): send the map" in _check(sent, tick=0).reason

@@ -290,4 +290,4 @@ def _realtime(payload: Any, tick: int, limits: RobotLimits) -> Command | Rejecte
 
 def _odd(args: tuple[Any, ...], kwargs: dict[str, Any]) -> Any:
     """A message that is not one positional map: passed on as is, so the checks reject it with a reason."""
-    return {"args": list(args), "kwargs": kwargs} if kwargs else list(args)
+    return protocol.KeywordArguments(args, kwargs) if kwargs else list(args)

@@ -305,6 +305,15 @@ def check_status(payload: Any, *, current_goal: int | None) -> Status | Rejected
     return Status(goal_id, status, text)
 
 
+@dataclass(frozen=True, slots=True)
+class KeywordArguments:
+    """A message sent with keyword arguments (``publish(uri, tick=3, v=0.1, w=0.0)``), which REI does not take: the
+    checks reject it naming them, not as a map of odd fields."""
+
+    args: tuple[Any, ...]
+    kwargs: Mapping[str, Any]
+
+
 def is_int(value: Any) -> bool:
     return isinstance(value, int) and not isinstance(value, bool)
 
@@ -314,4 +323,7 @@ def _is_number(value: Any) -> bool:
 
 
 def _kind(value: Any) -> str:
+    if isinstance(value, KeywordArguments):
+        return (f"keyword arguments ({', '.join(map(str, value.kwargs))}): send the map as the message's single "
+                f"positional argument (args[0])")
     return f"{type(value).__name__} {_SHORT.repr(value)}"  # reprlib: a 1 MB payload is not copied to be cut
