@@ -134,6 +134,38 @@ def test_a_sut_the_user_starts_attaches_with_the_run_s_environment(
     assert processes_mentioning(tmp_path) == []
 
 
+def test_ctrl_c_during_a_run_with_an_external_sut_says_when_and_keeps_the_streams(
+    rei_script: Path, repo_root: Path, tmp_path: Path, processes_mentioning
+) -> None:
+    """Ctrl-C said only "ended in ERROR: interrupted": not where the simulation was, which is where the recorded
+    streams end."""
+    import signal
+
+    out = tmp_path / "out"
+    run = subprocess.Popen([str(rei_script), "run", str(repo_root / EXAMPLE), "-o", str(out), "--no-humans", "--sut",
+                            _program("silent_sut.py", out), "--sut-clock", "realtime", "--sut-deadline", "60"],
+                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                           env={**os.environ, "REI_HOME": str(repo_root)})
+    try:
+        deadline = time.monotonic() + 120
+        while "joined" not in (out / "simulation.log").read_text(errors="replace") if (
+                out / "simulation.log").is_file() else True:
+            assert run.poll() is None and time.monotonic() < deadline, run.communicate()
+            time.sleep(0.2)
+        time.sleep(3.0)  # the realtime clock: about 3 s simulated
+        run.send_signal(signal.SIGINT)
+        output, _ = run.communicate(timeout=120)
+    finally:
+        if run.poll() is None:
+            run.kill()
+    assert run.returncode == 2, output
+    assert "ended in ERROR: interrupted (Ctrl-C) at about t=" in output, output
+    stated = float(output.split("interrupted (Ctrl-C) at about t=")[1].split(" s")[0])
+    recorded = [m["t"] for m in read_recording(out / "streams" / "state.msgpack")]
+    assert 1.0 <= stated and abs(recorded[-1] - stated) < 2.0, (stated, recorded[-1])
+    assert processes_mentioning(tmp_path) == []
+
+
 def test_what_a_sut_leaves_in_its_process_group_is_stopped_too(
     run_cli, repo_root: Path, tmp_path: Path, processes_mentioning
 ) -> None:

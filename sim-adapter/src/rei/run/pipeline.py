@@ -130,9 +130,9 @@ def run_pipeline(case_dir: Path, out: Path, options: PipelineOptions, *, run_id:
         run.supervise()
         run.drain()
     except _Interrupted as error:
-        status, reason = "ERROR", error.reason
+        status, reason = "ERROR", error.reason + (run.when() if isinstance(error, _Signalled) else "")
     except KeyboardInterrupt:
-        status, reason = "ERROR", "interrupted"
+        status, reason = "ERROR", f"interrupted (Ctrl-C){run.when()}"
     except Exception as error:  # noqa: BLE001 - the run must still be written up and its processes stopped
         status, reason = "ERROR", f"{type(error).__name__}: {error}"
     finally:
@@ -254,6 +254,12 @@ class _Run:
             record = read_signals(self.out / SIGNALS_FILE)
             if self.evaluator.reconcile(record) or restarts:
                 self.emitted = record
+
+    def when(self) -> str:
+        """Where the simulation was, for a run stopped from outside: the recorded streams end about there."""
+        if self.sim is None:
+            return " before the simulation started"
+        return f" at about t={self.progress['t']:.0f} s simulated"
 
     def stop(self) -> str | None:
         """Stop every part, whatever happened; returns a problem met on the way, if any."""
@@ -408,8 +414,12 @@ def _await_viewer(viewer: ViewServer) -> None:
             print("view:   no page connected; running anyway", flush=True)
 
 
+class _Signalled(_Interrupted):
+    """The run was stopped by a signal (SIGTERM), not by what one of its parts did."""
+
+
 def _raise_interrupted(signum: int, frame: object) -> None:
-    raise _Interrupted(f"stopped by {signal.Signals(signum).name}")
+    raise _Signalled(f"stopped by {signal.Signals(signum).name}")
 
 
 def _json(path: Path) -> dict[str, Any]:
