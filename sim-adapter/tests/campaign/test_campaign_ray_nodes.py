@@ -100,6 +100,19 @@ def test_a_missing_token_is_named_when_the_driver_cannot_connect(monkeypatch: An
                                   f"127.0.0.1:6379; {backends.AUTH_HINT}")
     assert "RAY_AUTH_MODE=token" in backends.AUTH_HINT
 
+    def mismatch(**_: Any) -> None:  # a failure that says its cause gets no token hint
+        raise RuntimeError("Version mismatch: the cluster was started with Ray 2.59.0, this process has 2.60.0")
+
+    monkeypatch.setattr(ray, "init", mismatch)
+    with socket.socket() as head:
+        head.bind(("127.0.0.1", 0))
+        head.listen()
+        address = f"127.0.0.1:{head.getsockname()[1]}"
+        with pytest.raises(backends.RayUnavailableError) as refused:
+            backends.connect_ray(address, 1)
+    assert str(refused.value) == (f"cannot connect to Ray at {address}: Version mismatch: the cluster was started "
+                                  "with Ray 2.59.0, this process has 2.60.0")
+
 
 def test_a_node_whose_rei_is_another_build_is_named_at_connect_time(tmp_path: Path) -> None:
     """A node left with an older wheel (every wheel is rei 0.1.0), or one built from an edited tree, ran the

@@ -379,6 +379,7 @@ def connect_ray(address: str, workers: int, router: bool = False, people: bool =
         raise RayUnavailableError(f"cannot connect to Ray at {address}: {error}") from None
     except Exception as error:  # noqa: BLE001 - any failure to reach the cluster is the user's to fix
         hint = ""
-        if address != "local" and os.environ.get("RAY_AUTH_MODE", "").strip().lower() != "token":
+        if (address != "local" and os.environ.get("RAY_AUTH_MODE", "").strip().lower() != "token"
+                and re.search(r"failed to connect|auth|token", str(error), re.IGNORECASE)):
             hint = f"; {AUTH_HINT}"  # Ray says only that it failed to connect, after retrying
         raise RayUnavailableError(f"cannot connect to Ray at {address}: {error}{hint}") from None
