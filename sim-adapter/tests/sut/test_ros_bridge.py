@@ -66,3 +66,19 @@ def test_a_bridge_that_cannot_list_topics_asks(capsys: pytest.CaptureFixture[str
 def test_a_stack_that_answers_hears_nothing(capsys: pytest.CaptureFixture[str]) -> None:
     _ticks(_Bridge([], answers=True), 2 * SILENT_TICKS)
     assert capsys.readouterr().err == ""
+
+
+def test_a_stack_started_by_a_bridge_started_by_hand_finds_rei_s_python_first(tmp_path) -> None:
+    """`rei ros1-bridge --ros-master URI -- python3 examples/sut/ros1/reference_nav_node.py`, started by hand with
+    --sut-attach as docs/ros.md says, ran the node with the shell's python3: "No module named 'numpy'"; the same
+    command through --sut "ros1:..." got REI's Python first on PATH."""
+    import sys
+    from pathlib import Path
+
+    from rei.sut.ros1.environment import ros_environment
+    from rei.sut.ros2.environment import ros2_environment
+
+    own = str(Path(sys.executable).parent)
+    for env in (ros_environment("http://127.0.0.1:11311", tmp_path, {"PATH": "/usr/bin:/bin"}),
+                ros2_environment(7, "<CycloneDDS/>", tmp_path, {"PATH": "/usr/bin:/bin"})):
+        assert env["PATH"] == f"{own}:/usr/bin:/bin"

@@ -84,7 +84,9 @@ def bridged(command: str, argv: list[str], out_dir: Path) -> list[str]:
     return [*BRIDGES[prefix], "--ros-home", str(out_dir / "ros"), "--", *argv]
 
 
-def _search_path(base: Mapping[str, str]) -> str:
+def search_path(base: Mapping[str, str]) -> str:
+    """``PATH`` with this Python's environment first: what a started SUT (and a bridge's stack) gets, so
+    ``python3 my_nav.py`` imports ``rei`` and ``rei nav-sut`` is found."""
     own = str(Path(sys.executable).parent)
     rest = base.get("PATH", os.defpath)
     return own if not rest else f"{own}{os.pathsep}{rest}"
@@ -99,7 +101,7 @@ def check_command(command: str, cwd: Path | None = None) -> list[str]:
         path = Path(program) if cwd is None else cwd / program
         if not (path.is_file() and os.access(path, os.X_OK)):
             raise SutLaunchError(f"--sut: {path} is not an executable file")
-    elif shutil.which(program, path=_search_path(os.environ)) is None:
+    elif shutil.which(program, path=search_path(os.environ)) is None:
         raise SutLaunchError(f"--sut: program {program!r} not found on PATH{_prefix_hint(program)}")
     return argv
 
@@ -117,7 +119,7 @@ def _prefix_hint(program: str) -> str:
 def start(command: str, connection: Connection, out_dir: Path, cwd: Path | None = None) -> ManagedProcess:
     """Start the SUT (or its bridge) in its own process group, in ``cwd``, with its output in ``out_dir/sut.log``."""
     argv = bridged(command, check_command(command, cwd), out_dir)
-    env = {**connection.environment(), "PATH": _search_path(os.environ), "PYTHONUNBUFFERED": "1"}
+    env = {**connection.environment(), "PATH": search_path(os.environ), "PYTHONUNBUFFERED": "1"}
     try:
         return ManagedProcess("system under test", argv, out_dir / LOG_FILE, env=env, cwd=cwd)
     except OSError as error:

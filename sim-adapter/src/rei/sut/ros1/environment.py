@@ -57,9 +57,12 @@ def import_rospy() -> None:
 def ros_environment(master_uri: str, home: Path, base: Mapping[str, str] = os.environ) -> dict[str, str]:
     """The environment of a ROS process of this run: its master, loopback only, logs under ``home``.
 
-    REI's own variables (the router and its credentials) are left out: the stack talks ROS, not WAMP."""
+    REI's own variables (the router and its credentials) are left out: the stack talks ROS, not WAMP. ``PATH`` has
+    REI's Python environment first, as for any started SUT (docs/sut.md), also when the bridge was started by hand."""
+    from rei.sut.external.process import search_path
+
     env = {key: value for key, value in base.items() if not key.startswith("REI_")}
-    env.update({"ROS_MASTER_URI": master_uri, "ROS_IP": "127.0.0.1", "ROS_HOME": str(home),
+    env.update({"PATH": search_path(base), "ROS_MASTER_URI": master_uri, "ROS_IP": "127.0.0.1", "ROS_HOME": str(home),
                 "ROS_LOG_DIR": str(home / "log"), "PYTHONUNBUFFERED": "1"})
     env.pop("ROS_HOSTNAME", None)  # it would win over ROS_IP
     return env

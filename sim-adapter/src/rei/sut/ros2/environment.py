@@ -146,10 +146,13 @@ def ros2_environment(domain: int, config: str, home: Path, base: Mapping[str, st
 
     REI's own variables (the router and its credentials) are left out: the stack talks ROS, not WAMP. A
     ``CYCLONEDDS_URI`` of the user's is kept, REI's configuration after it (Cyclone merges them, the later one
-    winning), so the loopback set-up holds; ``RMW_IMPLEMENTATION`` is left as the user set it."""
+    winning), so the loopback set-up holds; ``RMW_IMPLEMENTATION`` is left as the user set it. ``PATH`` has REI's
+    Python environment first, as for any started SUT (docs/sut.md), also when the bridge was started by hand."""
+    from rei.sut.external.process import search_path
+
     env = {key: value for key, value in base.items() if not key.startswith("REI_")}
     user_config = base.get("CYCLONEDDS_URI", "").strip()
-    env.update({"ROS_DOMAIN_ID": str(domain), "CYCLONEDDS_URI": f"{user_config},{config}" if user_config else config,
+    env.update({"PATH": search_path(base), "ROS_DOMAIN_ID": str(domain), "CYCLONEDDS_URI": f"{user_config},{config}" if user_config else config,
                 "ROS_LOCALHOST_ONLY": "1", "ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST", "ROS_HOME": str(home),
                 "ROS_LOG_DIR": str(home / "log"), "PYTHONUNBUFFERED": "1"})
     return env
