@@ -163,6 +163,10 @@ def test_ctrl_c_during_a_run_with_an_external_sut_says_when_and_keeps_the_stream
     stated = float(output.split("interrupted (Ctrl-C) at about t=")[1].split(" s")[0])
     recorded = [m["t"] for m in read_recording(out / "streams" / "state.msgpack")]
     assert 1.0 <= stated and abs(recorded[-1] - stated) < 2.0, (stated, recorded[-1])
+    # the simulation, stopped by rei run's SIGTERM, still writes its summary: how far it got, the SUT's exit code
+    sim = _sim(out)
+    assert sim["error"].startswith("stopped by SIGTERM at t=") and abs(sim["sim_time"] - recorded[-1]) < 0.5, sim
+    assert sim["sut"]["exit_code"] is not None, sim["sut"]
     assert processes_mentioning(tmp_path) == []
 
 

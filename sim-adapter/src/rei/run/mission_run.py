@@ -132,6 +132,7 @@ def run_mission(
     control_every = max(1, round(options.physics_rate / options.control_rate))
     wall_start = time.perf_counter()
     error = None
+    interrupted: BaseException | None = None
     external = None
     executor: MissionExecutor | None = None
     with contextlib.ExitStack() as stack:
@@ -184,6 +185,10 @@ def run_mission(
                     next_progress += 1.0
         except SutError as broken:
             error = str(broken)
+        except (SystemExit, KeyboardInterrupt) as stopping:  # SIGTERM (rei sim's sigterm_unwinds: `rei run` stops
+            interrupted = stopping  # it so) or Ctrl-C: the summary is still written (the SUT's exit code, how far)
+            error = f"{'interrupted (Ctrl-C)' if isinstance(stopping, KeyboardInterrupt) else 'stopped by SIGTERM'} " \
+                    f"at t={sim.t:.3f} s"
         wall_time = time.perf_counter() - wall_start
         people = None if sim.crowd is None else people_cost(sim.crowd, sim.t)
         stack.close()  # stops the SUT first: its exit code belongs in the summary
@@ -197,6 +202,8 @@ def run_mission(
             faults=[{"sensor": f.sensor, "kind": f.kind, **fault_fields(f), "description": f.describe()}
                     for f in sim.faults.faults])
     _write_summary(out_dir, case_dir, options, result)
+    if interrupted is not None:
+        raise interrupted
     return result
 
 
