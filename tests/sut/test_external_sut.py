@@ -70,6 +70,22 @@ def test_a_sut_that_never_answers_ends_the_run_in_error_within_its_deadline(
     assert processes_mentioning(tmp_path) == []  # the silent SUT ignored `end` and was stopped
 
 
+def test_a_sut_that_subscribes_after_hello_is_told_why_tick_0_never_came(
+    run_cli, repo_root: Path, tmp_path: Path, processes_mentioning
+) -> None:
+    """Calling hello before subscribing (the router drops tick 0) ended in "no command for tick 0 ... within 3 s"
+    and nothing else: the same words as a SUT that hangs."""
+    out = tmp_path / "out"
+    result = run_cli("run", repo_root / EXAMPLE, "-o", out, "--sut", _program("late_subscriber_sut.py", out),
+                     "--sut-deadline", "2", "--sut-join-timeout", "3", timeout=300)
+    assert result.returncode == 2, result.stdout + result.stderr
+    error = _summary(out)["error"]
+    assert "no command for tick 0 at t=0.000 s within 3 s" in error
+    assert "nothing at all came from it since it called hello" in error
+    assert "subscribed to tick only after calling hello" in error and "subscribed after hello" in error
+    assert processes_mentioning(tmp_path) == []
+
+
 def test_a_sut_that_dies_ends_the_run_in_error_with_its_exit_code_and_log(
     run_cli, repo_root: Path, tmp_path: Path, processes_mentioning
 ) -> None:

@@ -269,9 +269,16 @@ class ExternalController(Controller):
         raise SutError(f"the {process.describe_exit()} {when}{self._log_tail()}")
 
     def _rejection_note(self) -> str:
-        if not self.stats.rejected:
+        stats = self.stats
+        if not stats.rejected:
+            if self._tick == 0 and not (stats.statuses or stats.stale or stats.dropped):
+                return ("; nothing at all came from it since it called hello: it hangs, or it subscribed to tick "
+                        "only after calling hello, and the router drops events for which nobody is subscribed "
+                        "(subscribe to tick, goal, cancel and end first, docs/sut.md)")
             return ""
-        return f"; {self.stats.rejected} messages were rejected, the last: {self.stats.first_rejections[-1]}"
+        count = "1 message was" if stats.rejected == 1 else f"{stats.rejected} messages were"
+        last = "the last" if stats.rejected == len(stats.first_rejections) else "the last logged"
+        return f"; {count} rejected, {last}: {stats.first_rejections[-1]}"
 
     def _log_tail(self) -> str:
         if self._process is None:
