@@ -385,6 +385,43 @@ def test_a_node_lost_in_the_middle_of_a_campaign_loses_no_run_and_repeats_none(t
     print(f"campaign of 4 runs with a node lost (cluster start included): {time.monotonic() - started:.1f} s")
 
 
+def test_a_campaign_that_loses_its_last_node_says_so_and_ends_instead_of_waiting_forever(tmp_path: Path,
+                                                                                        cluster: Cluster) -> None:
+    """The cluster's only worker node dies in the middle of a campaign: its runs were tried again and then waited
+    for a node without end, saying nothing. Now the wait is said at once and bounded ($REI_RAY_NODE_WAIT): the runs
+    left are ERROR naming why (exit 1, --retry-errors redoes them), each run recorded once (writing such a result,
+    of a run none of whose files arrived, was a traceback too)."""
+    spec = _spec(tmp_path, 3, "1.0 0.1 0.0\n")
+    only = cluster.add_node("only")
+    cluster.wait_for_cpus(1)
+    out = tmp_path / "out"
+    argv = [str(Path(sys.executable).parent / "rei"), "campaign", str(spec), "-o", str(out), "--ray",
+            cluster.env["RAY_ADDRESS"]]
+    with open(tmp_path / "campaign.log", "wb") as log:
+        campaign = subprocess.Popen(argv, stdout=log, stderr=subprocess.STDOUT, start_new_session=True,
+                                    env={**os.environ, "REI_HOME": str(REPO_ROOT), **cluster.env,
+                                         "REI_RAY_NODE_WAIT": "5"})
+    try:
+        deadline = time.monotonic() + 180
+        while not any(only.glob("rei-run-*/run/streams")):
+            assert campaign.poll() is None, (tmp_path / "campaign.log").read_text(errors="replace")
+            assert time.monotonic() < deadline, "no run ever started on the node"
+            time.sleep(0.1)
+        os.kill(cluster.raylet("only"), signal.SIGKILL)
+        code = campaign.wait(120)
+    finally:
+        if campaign.poll() is None:
+            os.killpg(campaign.pid, signal.SIGKILL)
+            campaign.wait()
+    text = (tmp_path / "campaign.log").read_text(errors="replace")
+    assert code == 1, text
+    assert text.count("no alive Ray node can take REI's runs now") == 1, text
+    rows = _runs(out)
+    assert sorted(r["key"] for r in rows) == sorted({r["key"] for r in rows}) and len(rows) == 3, rows
+    assert all(r["status"] == "ERROR" for r in rows), rows
+    assert all("no alive Ray node could take the run for 5 s ($REI_RAY_NODE_WAIT)" in r["error"] for r in rows), rows
+
+
 def test_a_search_on_a_node_that_cannot_see_out_finds_what_a_local_search_finds(tmp_path: Path, cluster: Cluster,
                                                                                run_cli: Any,
                                                                                node_env: NodeEnv) -> None:

@@ -21,7 +21,7 @@ from pathlib import Path
 from typing import Any
 
 from rei.campaign.forkserver import ForkServer, ForkServerError
-from rei.campaign.nodes import NodesUnfitError
+from rei.campaign.nodes import RESOURCE, NodesUnfitError
 from rei.campaign.plan import RunTask
 from rei.campaign.supervise import KILL_GRACE, Outcome, supervise
 from rei.campaign.transfer import folder_bundle, inputs, receive, run_shipped, sweep_monitor_folders
@@ -153,7 +153,7 @@ class RayBackend:
                  log: Callable[[str], None] = print, router: bool = False, people: bool = False) -> None:
         import ray
 
-        from rei.campaign.nodes import RESOURCE, Watch, build_id, check_cluster
+        from rei.campaign.nodes import Watch, build_id, check_cluster
 
         if attempts < 1:
             raise ValueError(f"attempts must be >= 1, got {attempts}")
@@ -161,6 +161,9 @@ class RayBackend:
         self._temp_dir: Path | None = None
         self._saved_env: dict[str, str | None] = {}
         self.attempts = attempts
+        #: seconds the runs in flight wait for a node that can take them once none is alive (a cluster that lost
+        #: its last worker node; an autoscaler may bring one): then they are ERROR, and --retry-errors redoes them
+        self.node_wait = _node_wait()
         self._log = log
         #: bytes sent to the nodes (case bundles once each, the tasks' other inputs) and received from them (run
         #: files): the campaign's metrics (campaign.json: transfer)
@@ -243,6 +246,16 @@ class RayBackend:
         try:
             while refs and not stop.is_set():
                 self._watch.poll()
+                stranded = self._watch.stranded()
+                if stranded is not None and stranded > self.node_wait:  # the cluster lost every node runs go to
+                    why = (f"no alive Ray node could take the run for {self.node_wait:.0f} s (${NODE_WAIT_ENV}): each "
+                           f"offering '{RESOURCE}' was lost or cannot run REI's runs")
+                    for ref, (task, attempt, _) in list(refs.items()):
+                        del refs[ref]
+                        with contextlib.suppress(Exception):
+                            ray.cancel(ref)
+                        on_outcome(task, Outcome(task.key, None, False, False, 0.0, 0.0, why, "?", attempt))
+                    break
                 ready, _ = ray.wait(list(refs), num_returns=1, timeout=0.5)
                 for ref in ready:
                     task, attempt, fields = refs.pop(ref)
@@ -303,6 +316,21 @@ class RayBackend:
                 os.environ[key] = value
         if self._temp_dir is not None:
             shutil.rmtree(self._temp_dir, ignore_errors=True)
+
+
+#: Environment variable: seconds the runs wait for a Ray node that can take them when none is alive (default 300).
+NODE_WAIT_ENV = "REI_RAY_NODE_WAIT"
+
+
+def _node_wait() -> float:
+    value = os.environ.get(NODE_WAIT_ENV, "").strip()
+    try:
+        wait = float(value) if value else 300.0
+    except ValueError:
+        raise ValueError(f"${NODE_WAIT_ENV}: seconds, got {value!r}") from None
+    if wait < 0:
+        raise ValueError(f"${NODE_WAIT_ENV}: seconds, got {value!r}")
+    return wait
 
 
 #: Environment variable naming a Ray runtime environment for the runs' tasks: a JSON file, or the JSON itself

@@ -191,6 +191,7 @@ class Watch:
         self._asked: dict[Any, dict[str, Any]] = {}
         self._next = 0.0
         self._lock = threading.Lock()
+        self._stranded: float | None = None  # since when no alive node can take a run (monotonic); None: one can
 
     def poll(self) -> None:
         """Notices the nodes that joined and reads the answers of those asked; Ray's node list out of reach (its
@@ -208,10 +209,23 @@ class Watch:
             self._next = time.monotonic() + self._every
             nodes = offering(self._ray.nodes())
             self.slots = sum(_slots(node) for node in nodes if node["NodeID"] not in self.unfit)
+            if self.slots == 0 and self._stranded is None:
+                self._stranded = time.monotonic()
+                self._log(f"no alive Ray node can take REI's runs now (each offering '{RESOURCE}' was lost or cannot "
+                          "run them): the runs left wait for one to join; Ctrl-C stops, and the same command "
+                          "resumes")
+            elif self.slots > 0 and self._stranded is not None:
+                self._stranded = None
+                self._log("a Ray node that can take REI's runs is alive again: the runs go on")
             for node in nodes:
                 if node["NodeID"] not in self._known:
                     self._known.add(node["NodeID"])
                     self._asked[ask(self._ray, node, *self._needs)] = node
+
+    def stranded(self) -> float | None:
+        """Seconds since no alive node can take a run, as of the latest ``poll``; None: one can."""
+        with self._lock:
+            return None if self._stranded is None else time.monotonic() - self._stranded
 
     def refused(self, node_id: str, lacks: list[str]) -> None:
         """A run's task found its node cannot run it (and did not run it)."""

@@ -88,7 +88,13 @@ def make_result(task: RunTask, outcome: Outcome) -> RunResult:
 
 
 def write_result(task: RunTask, result: RunResult) -> Path:
+    """``result.json`` of the run. A run none of whose files arrived (a Ray task lost on each try, or with no node
+    left to take it) has no folder yet: it gets one with its task.json, so it is recorded (runs.csv) as a run that
+    ended in ERROR is, and --retry-errors redoes it."""
     path = Path(task.run_dir) / RESULT_FILE
+    if not (path.parent / "task.json").exists():
+        path.parent.mkdir(parents=True, exist_ok=True)
+        (path.parent / "task.json").write_text(json.dumps(task.to_dict(), indent=2) + "\n", encoding="utf-8")
     tmp = path.with_name(path.name + ".tmp")
     tmp.write_text(json.dumps(result.to_dict(), indent=2) + "\n", encoding="utf-8")
     os.replace(tmp, path)
