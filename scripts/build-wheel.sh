@@ -51,5 +51,13 @@ cp "$ROOT/pedestrians/jupedsim_server.py" "$STAGE/src/rei/pedestrians/"
 rm -f "$OUT"/rei-*.whl
 PIP_NO_INPUT=1 "$PYTHON" -m pip wheel --quiet --disable-pip-version-check --no-deps -w "$OUT" "$STAGE" >&2
 wheel="$(ls "$OUT"/rei-*.whl)"
+# every wheel is rei 0.1.0: one built from uncommitted changes is told from the committed tree only by its contents
+# (a node's REI must be the driver's build, which rei campaign/search check at connect time)
+dirty="$(git -C "$ROOT" status --porcelain -- sim-adapter/src pedestrians/jupedsim_server.py 2>/dev/null || true)"
+if [ -n "$dirty" ]; then
+    echo "build-wheel: warning: built from uncommitted changes ($(printf '%s\n' "$dirty" | wc -l) file(s), e.g." \
+         "$(printf '%s\n' "$dirty" | head -1 | cut -c4-)): the wheel holds them as they are now; nodes must run the" \
+         "driver's build (docs/campaigns.md#setting-up-a-cluster)" >&2
+fi
 echo "build-wheel: $wheel ($(du -h "$wheel" | cut -f1), jars: $ROLES)" >&2
 echo "$wheel"

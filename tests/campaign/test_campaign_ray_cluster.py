@@ -602,3 +602,16 @@ def test_the_wheel_carries_the_monitor_jar_and_the_people_server_and_names_what_
         "a Python of its own (python -m venv V && V/bin/pip install numpy shapely deprecated msgpack && V/bin/pip "
         "install --no-deps jupedsim==1.4.2, as scripts/setup-people.sh does) and set REI_PEOPLE_PYTHON to "
         "V/bin/python")], []]
+
+
+def test_a_wheel_built_from_uncommitted_changes_says_so(tmp_path: Path) -> None:
+    """Every wheel is rei 0.1.0: one built from an edited tree was told from the committed one by nothing. The tree
+    is seen dirty here through an index of the test's own (empty: every file is untracked), the checkout untouched."""
+    built = subprocess.run(["bash", str(REPO_ROOT / "scripts" / "build-wheel.sh"), "-o", str(tmp_path / "dist")],
+                           capture_output=True, text=True, timeout=300, check=False,
+                           env={**os.environ, "GIT_INDEX_FILE": str(tmp_path / "empty-index")})
+    assert built.returncode == 0, built.stderr
+    assert re.search(r"^build-wheel: warning: built from uncommitted changes \(\d+ file\(s\), e\.g\. \S+\): the wheel "
+                     r"holds them as they are now; nodes must run the driver's build", built.stderr, re.MULTILINE), \
+        built.stderr
+    assert Path(built.stdout.strip().splitlines()[-1]).is_file()  # a warning: the wheel is built all the same
