@@ -134,3 +134,19 @@ def test_a_node_whose_rei_is_another_build_is_named_at_connect_time(tmp_path: Pa
                      rf"\([0-9a-f]{{12}} there, {build_id()[:12]} here\): install the driver's REI there",
                      done.stderr), done.stderr
     assert not (tmp_path / "out" / "runs.csv").exists()  # no run was tried
+
+
+def test_exit_code_3_of_a_driver_that_cannot_run_rei_is_documented(tmp_path: Path) -> None:
+    """A driver without Java (or installed from a wheel without the cli jar) exits 3, which neither `rei campaign
+    --help` nor `rei search --help` listed among their exit codes."""
+    spec = tmp_path / "spec.yaml"
+    spec.write_text(f"groups:\n  - name: example\n    cases: [{EXAMPLE}]\n", encoding="utf-8")
+    done = subprocess.run([sys.executable, "-m", "rei.cli", "campaign", str(spec), "-o", str(tmp_path / "out"),
+                           "--no-service"], capture_output=True, text=True, timeout=120, check=False,
+                          env={**os.environ, "JAVA_HOME": str(tmp_path)})
+    assert done.returncode == 3, done.stdout + done.stderr
+    assert done.stderr.strip().endswith(f"JAVA_HOME={tmp_path} has no bin/java; fix JAVA_HOME or unset it")
+    for command in ("campaign", "search"):
+        helped = subprocess.run([sys.executable, "-m", "rei.cli", command, "--help"], capture_output=True, text=True,
+                                timeout=60, check=True)
+        assert re.search(r"3: this\s+machine cannot run REI \(no Java", helped.stdout), helped.stdout

@@ -12,8 +12,10 @@ Tables 5 and 7), OUT/runs.csv, OUT/metrics.csv (the navigation metrics per room 
 OUT/report.html. `--controller` runs every variant with that in-process controller instead of the spec's (the
 same spec against another system under test); `--compare BASELINE` then compares the campaign with an earlier
 one as `rei compare BASELINE OUT -o OUT/compare` does. Exit 0: every run completed (and no metric regressed);
-1: some ended in ERROR, or a metric regressed; 2: bad spec or arguments; 130: interrupted; 143: SIGTERM outside
-the runs (while the outputs are written, say), which stops what the campaign started and exits at once.
+1: some ended in ERROR, or a metric regressed; 2: bad spec or arguments, or a Ray cluster that cannot take the
+runs; 3: this machine cannot run REI (no Java, or a jar this installation lacks: a wheel built without --jars cli,
+say); 130: interrupted; 143: SIGTERM outside the runs (while the outputs are written, say), which stops what the
+campaign started and exits at once.
 """
 
 from __future__ import annotations

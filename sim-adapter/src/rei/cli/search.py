@@ -13,7 +13,9 @@ next. Each distinct failure is then shrunk to a smaller case that fails the same
 OUT/verdicts.xml, OUT/search.html, every candidate as OUT/candidates/*.rei and its run in OUT/runs/. A stopped
 search resumes when started again with the same OUT. Exit 0: no failure found; 1: failures found; 2: bad spec
 or arguments, the room editor's engine failed (the search stops), or no failure found but evaluations in ERROR (or
-none simulated); 130: interrupted (Ctrl-C); 143: stopped by SIGTERM.
+none simulated), or a Ray cluster that cannot take the runs; 3: this machine cannot run REI (no Java, or a jar
+this installation lacks: a wheel built without --jars cli,monitor,room-editor, say); 130: interrupted (Ctrl-C);
+143: stopped by SIGTERM.
 """
 
 from __future__ import annotations
