@@ -15,6 +15,7 @@ pair and group them by room and by variant.
 from __future__ import annotations
 
 import dataclasses
+import json
 import re
 from dataclasses import asdict, dataclass
 from pathlib import Path
@@ -79,6 +80,17 @@ class RunTask:
     @classmethod
     def from_dict(cls, data: dict[str, Any]) -> RunTask:
         return cls(**data)
+
+
+#: A run folder's task (what the run is): written before it runs, or by the driver for a run that ran nowhere; with
+#: a result.json beside it, the run is finished.
+TASK_FILE = "task.json"
+
+
+def write_task(task: RunTask, folder: Path) -> None:
+    """``folder``/task.json, the folder made if need be."""
+    folder.mkdir(parents=True, exist_ok=True)
+    (folder / TASK_FILE).write_text(json.dumps(task.to_dict(), indent=2) + "\n", encoding="utf-8")
 
 
 @dataclass(frozen=True, slots=True)

@@ -15,7 +15,7 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
 
-from rei.campaign.plan import RunTask
+from rei.campaign.plan import TASK_FILE, RunTask, write_task
 from rei.campaign.supervise import Outcome
 
 RESULT_FILE = "result.json"
@@ -92,9 +92,8 @@ def write_result(task: RunTask, result: RunResult) -> Path:
     left to take it) has no folder yet: it gets one with its task.json, so it is recorded (runs.csv) as a run that
     ended in ERROR is, and --retry-errors redoes it."""
     path = Path(task.run_dir) / RESULT_FILE
-    if not (path.parent / "task.json").exists():
-        path.parent.mkdir(parents=True, exist_ok=True)
-        (path.parent / "task.json").write_text(json.dumps(task.to_dict(), indent=2) + "\n", encoding="utf-8")
+    if not (path.parent / TASK_FILE).exists():
+        write_task(task, path.parent)
     tmp = path.with_name(path.name + ".tmp")
     tmp.write_text(json.dumps(result.to_dict(), indent=2) + "\n", encoding="utf-8")
     os.replace(tmp, path)
@@ -104,7 +103,7 @@ def write_result(task: RunTask, result: RunResult) -> Path:
 def finished_result(task: RunTask) -> RunResult | None:
     """The result of an earlier attempt at exactly this task (same task.json), or None."""
     run_dir = Path(task.run_dir)
-    data, recorded = _json(run_dir / RESULT_FILE), _json(run_dir / "task.json")
+    data, recorded = _json(run_dir / RESULT_FILE), _json(run_dir / TASK_FILE)
     if isinstance(recorded, dict) and "case_stamp" not in recorded:  # recorded before tasks carried it
         recorded["case_stamp"] = task.case_stamp
     if data is None or recorded != task.to_dict():

@@ -27,7 +27,7 @@ from typing import Any, Protocol
 
 from rei.campaign.aggregate import metric_rows, metrics_csv, runs_csv, summary_csv
 from rei.campaign.machine import Sample, usage
-from rei.campaign.plan import Plan, RunTask, plan_campaign
+from rei.campaign.plan import Plan, RunTask, plan_campaign, write_task
 from rei.campaign.prepare import STAMP, Prepared, needs_generation, prepare_case
 from rei.campaign.results import RunResult, finished_result, make_result, write_result
 from rei.campaign.spec import Spec
@@ -95,9 +95,7 @@ def run_campaign(spec: Spec, out: Path, backend: Backend, *, retry_errors: bool 
             problem = by_folder[task.case_dir].error
             if problem is not None:  # the case could not be generated: the run is an ERROR, not a crash
                 # recorded as a run that ended in ERROR is (its folder, the task.json that makes it finished)
-                Path(task.run_dir).mkdir(parents=True, exist_ok=True)
-                (Path(task.run_dir) / "task.json").write_text(json.dumps(task.to_dict(), indent=2) + "\n",
-                                                               encoding="utf-8")
+                write_task(task, Path(task.run_dir))
                 _record(task, Outcome(task.key, None, False, False, 0.0, 0.0, problem, "-"), log, problem)
                 executed += 1
                 ungenerated += 1

@@ -9,7 +9,6 @@ rei.campaign.forkserver) and the Ray tasks (new processes).
 
 from __future__ import annotations
 
-import json
 import os
 import signal
 import subprocess
@@ -22,7 +21,7 @@ from pathlib import Path
 from typing import Any, Protocol
 
 from rei.campaign.forkserver import WORKER_LOG, ForkServer, ForkServerError
-from rei.campaign.plan import RunTask
+from rei.campaign.plan import RunTask, write_task
 from rei.run.jvm import tail
 
 #: Seconds a stopped worker gets for SIGTERM before SIGKILL.
@@ -78,7 +77,7 @@ def supervise(task: RunTask, stop: threading.Event | None = None,
     run_dir.mkdir(parents=True, exist_ok=True)
     for stale in ("summary.json", "result.json"):
         (run_dir / stale).unlink(missing_ok=True)
-    (run_dir / "task.json").write_text(json.dumps(task.to_dict(), indent=2) + "\n", encoding="utf-8")
+    write_task(task, run_dir)
     log = run_dir / WORKER_LOG
     started = time.perf_counter()
     timed_out = interrupted = False

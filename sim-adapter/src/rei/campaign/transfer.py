@@ -25,7 +25,7 @@ from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
-from rei.campaign.plan import RunTask
+from rei.campaign.plan import TASK_FILE, RunTask, write_task
 
 #: Bytes per object store chunk of a returned file: big enough for few round trips, small enough to bound memory.
 CHUNK = 4 * 1024 * 1024
@@ -194,7 +194,7 @@ def run_shipped(task: dict[str, Any], case: Bundle, extra: Bundle, fields: dict[
         outcome = supervise(local, command=die_with_parent(worker_command(run_dir)), env=env)
         files = []
         for path in sorted(run_dir.rglob("*")):
-            if not path.is_file() or path == run_dir / "task.json":  # the driver writes its own task.json
+            if not path.is_file() or path == run_dir / TASK_FILE:  # the driver writes its own task.json
                 continue
             chunks = []
             with open(path, "rb") as f:
@@ -230,7 +230,7 @@ def receive(task: RunTask, files: list[tuple[str, list[Any]]], get: Callable[[An
                     received += len(data)
         if work is not None and (staging / "summary.json").is_file():
             _driver_paths(staging / "summary.json", task, work, fields or {})
-        (staging / "task.json").write_text(json.dumps(task.to_dict(), indent=2) + "\n", encoding="utf-8")
+        write_task(task, staging)
         if run_dir.exists():
             shutil.rmtree(run_dir)
         os.replace(staging, run_dir)

@@ -29,10 +29,9 @@ import time
 from pathlib import Path
 from typing import Any, Self
 
-from rei.campaign.plan import RunTask
+from rei.campaign.plan import TASK_FILE, RunTask
 from rei.lifetime import sigterm_unwinds
 
-TASK_FILE = "task.json"
 #: The warm monitor JVM's socket (rei.run.jvm.JarServer), set by the local backend for its workers.
 MONITOR_SERVER_ENV = "REI_MONITOR_SERVER"
 TIMING_FILE = "timing.json"
