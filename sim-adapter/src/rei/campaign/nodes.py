@@ -23,6 +23,7 @@ the node named once with what it lacks; so a late node's shortcomings never turn
 from __future__ import annotations
 
 import contextlib
+import functools
 import re
 import threading
 import time
@@ -40,28 +41,24 @@ CHECK_TIMEOUT = 120.0
 _ANSI = re.compile(r"\x1b\[[0-9;]*m")
 
 
-_BUILD: list[str] = []
-
-
+@functools.cache
 def build_id() -> str:
     """This REI's build: a SHA-256 of its package's Python sources (paths and contents; not the people server,
     which only the wheel carries there), the same for a wheel and the tree it was built from, whatever the version
     number (every wheel is 0.1.0) and whether that tree was committed."""
-    if not _BUILD:
-        import hashlib
-        from pathlib import Path
+    import hashlib
+    from pathlib import Path
 
-        import rei
+    import rei
 
-        root = Path(rei.__file__).resolve().parent
-        digest = hashlib.sha256()
-        for path in sorted(root.rglob("*.py")):
-            relative = path.relative_to(root).as_posix()
-            if relative.startswith("pedestrians/") or "__pycache__" in relative:
-                continue
-            digest.update(relative.encode() + b"\0" + path.read_bytes() + b"\0")
-        _BUILD.append(digest.hexdigest())
-    return _BUILD[0]
+    root = Path(rei.__file__).resolve().parent
+    digest = hashlib.sha256()
+    for path in sorted(root.rglob("*.py")):
+        relative = path.relative_to(root).as_posix()
+        if relative.startswith("pedestrians/") or "__pycache__" in relative:
+            continue
+        digest.update(relative.encode() + b"\0" + path.read_bytes() + b"\0")
+    return digest.hexdigest()
 
 
 #: What a node whose REI is not the driver's lacks (its build, the driver's).
