@@ -206,10 +206,8 @@ class Search:
                 self._met |= {f["element"] for f in found}
                 self.progress.errors += trial.user_attrs.get("status") == "ERROR"
                 self.progress.failing += bool(found)
-            elif trial.user_attrs.get("status") == "invalid":
-                self.progress.invalid += 1
-            elif trial.user_attrs.get("status") == "unplannable":
-                self.progress.unplannable += 1
+            elif trial.user_attrs.get("status") in ("invalid", "unplannable"):
+                self._count_unrun(trial.user_attrs["status"])
         done = self.progress.simulated
         self.log(f"search {self.spec.name} ({self.spec.sampler}): budget {self.spec.budget} evaluations, "
                  f"{done} finished already, {max(0, self.spec.budget - done)} to run on {self.pool.workers} "
@@ -287,11 +285,15 @@ class Search:
                        patterns=str(spec.patterns) if spec.patterns else None,
                        utilities=str(spec.utilities) if spec.utilities else None)
 
-    def _invalid(self, trial: optuna.Trial, status: str, problems: tuple[str, ...]) -> None:
+    def _count_unrun(self, status: str) -> None:
+        """A candidate that did not run: refused by the validators ("invalid") or by the navigability check."""
         if status == "unplannable":
             self.progress.unplannable += 1
         else:
             self.progress.invalid += 1
+
+    def _invalid(self, trial: optuna.Trial, status: str, problems: tuple[str, ...]) -> None:
+        self._count_unrun(status)
         trial.set_user_attr("key", self.key(trial.number))
         trial.set_user_attr("status", status)
         trial.set_user_attr("problems", list(problems))
