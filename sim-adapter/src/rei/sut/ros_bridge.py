@@ -113,8 +113,13 @@ class RosBridge(SystemUnderTest):
     def check_stack(self) -> None:
         stack = self.stack
         if stack is not None and stack.poll() is not None:
-            raise SutConnectionError(f"the {self.middleware} {stack.describe_exit()}; last lines of {stack.log}:\n"
-                                     f"{stack.log_tail(10)}")
+            raise SutConnectionError(f"the {self.middleware} {stack.describe_exit()}{self.stack_says()}")
+
+    def stack_says(self) -> str:
+        """The stack's last lines for an error's end (where it says why it failed), if REI started it."""
+        if self.stack is None:
+            return ""
+        return f"; last lines of {self.stack.log}:\n{self.stack.log_tail(10)}"
 
     # -- SystemUnderTest -----------------------------------------------------------------------------------
 

@@ -167,13 +167,7 @@ class Ros2Bridge(RosBridge):
         elif time.monotonic() > deadline:
             raise SutConnectionError(
                 f"the {self.settings.action} action server (matched on ROS domain {self.domain}) did not answer "
-                f"goal {index}'s send_goal request within {ANSWER_TIMEOUT:g} s{self._stack_says()}")
-
-    def _stack_says(self) -> str:
-        """The stack's last lines (where a node that could not take a goal says why), if REI started it."""
-        if self.stack is None:
-            return ""
-        return f"; last lines of {self.stack.log}:\n{self.stack.log_tail(10)}"
+                f"goal {index}'s send_goal request within {ANSWER_TIMEOUT:g} s{self.stack_says()}")
 
     def _await_server(self) -> None:
         """Until the stack's /clock subscription and NavigateToPose server are matched, in wall time; the start
@@ -190,10 +184,11 @@ class Ros2Bridge(RosBridge):
             if clock_matched and self._action.server_ready():
                 return
             now = time.monotonic()
-            if (not noted and now > started + WAIT_NOTE) or now > deadline:
+            note = not noted and now > started + WAIT_NOTE
+            if note or now > deadline:
                 missing = ([] if clock_matched else ["a /clock subscription (rt/clock)"]) + [
                     f"the action's {name}" for name in self._action.unmatched()]
-            if not noted and now > started + WAIT_NOTE:
+            if note:
                 noted = True
                 print(f"rei ros2-bridge: the stack is not matched after {WAIT_NOTE:g} s on ROS domain {self.domain} "
                       f"(tick 0 waits for it); missing: {', '.join(missing)}; waiting up to {SERVER_TIMEOUT:g} s or "

@@ -152,7 +152,8 @@ def ros2_environment(domain: int, config: str, home: Path, base: Mapping[str, st
 
     env = {key: value for key, value in base.items() if not key.startswith("REI_")}
     user_config = base.get("CYCLONEDDS_URI", "").strip()
-    env.update({"PATH": search_path(base), "ROS_DOMAIN_ID": str(domain), "CYCLONEDDS_URI": f"{user_config},{config}" if user_config else config,
-                "ROS_LOCALHOST_ONLY": "1", "ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST", "ROS_HOME": str(home),
+    env.update({"PATH": search_path(base), "ROS_DOMAIN_ID": str(domain),
+                "CYCLONEDDS_URI": f"{user_config},{config}" if user_config else config, "ROS_LOCALHOST_ONLY": "1",
+                "ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST", "ROS_HOME": str(home),
                 "ROS_LOG_DIR": str(home / "log"), "PYTHONUNBUFFERED": "1"})
     return env
